@@ -1,0 +1,65 @@
+//! Coverage against the reference, sample by sample.
+
+use crate::frame::Frame;
+
+/// How one sample of a candidate differs from the reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SampleDiff {
+    Same,
+    /// Covered fewer times than the reference covers it.
+    Missing,
+    /// Covered more times than the reference covers it.
+    Extra,
+    /// Covered as often, but the last primitive to cover it differs: the
+    /// sample went to the wrong side of a shared edge.
+    WrongOwner,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoverageMetrics {
+    pub samples: u64,
+    pub reference_covered: u64,
+    pub candidate_covered: u64,
+    /// Samples covered fewer times than the reference.
+    pub missing: u64,
+    /// Samples covered more times than the reference.
+    pub extra: u64,
+    pub wrong_owner: u64,
+    /// One entry per sample.
+    pub mask: Vec<SampleDiff>,
+}
+
+impl CoverageMetrics {
+    pub fn mismatched(&self) -> u64 {
+        self.missing + self.extra + self.wrong_owner
+    }
+}
+
+pub fn compare(reference: &Frame, candidate: &Frame) -> CoverageMetrics {
+    let mut m = CoverageMetrics {
+        samples: reference.sample_count() as u64,
+        reference_covered: reference.covered_samples(),
+        candidate_covered: candidate.covered_samples(),
+        missing: 0,
+        extra: 0,
+        wrong_owner: 0,
+        mask: Vec::with_capacity(reference.sample_count()),
+    };
+    for i in 0..reference.sample_count() {
+        let (r, c) = (reference.coverage[i], candidate.coverage[i]);
+        let diff = if c < r {
+            m.missing += 1;
+            SampleDiff::Missing
+        } else if c > r {
+            m.extra += 1;
+            SampleDiff::Extra
+        } else if reference.last[i] != candidate.last[i] {
+            m.wrong_owner += 1;
+            SampleDiff::WrongOwner
+        } else {
+            SampleDiff::Same
+        };
+        m.mask.push(diff);
+    }
+    m
+}

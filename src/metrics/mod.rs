@@ -1,0 +1,143 @@
+//! Metrics: how a candidate's frame differs from the reference's, and the
+//! verdict against a case's expectations.
+
+pub mod coverage;
+pub mod interpolation;
+pub mod watertight;
+
+use crate::frame::Frame;
+use crate::scene::{Number, Scene};
+
+pub use coverage::{CoverageMetrics, SampleDiff};
+pub use interpolation::ChannelError;
+pub use watertight::WatertightMetrics;
+
+/// The default interpolation bound, relative to the channel's largest vertex
+/// magnitude M: |error| ≤ 2^-16 · max(1, M) (SPEC.md, "Interpolation
+/// tolerance"). That is 128 f32 ulps of M: loose enough for any f32 plane
+/// setup, tight enough to catch a wrong weight, vertex or formula.
+pub const DEFAULT_RELATIVE_BOUND: f64 = 1.0 / 65536.0;
+
+/// Everything measured for one candidate on one case.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Metrics {
+    pub coverage: CoverageMetrics,
+    pub watertight: Option<WatertightMetrics>,
+    pub channels: Vec<ChannelError>,
+}
+
+/// Measures a candidate against the reference. `interior` is given for
+/// mesh cases (`expect.watertight`).
+pub fn measure(
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+    interior: Option<&[bool]>,
+) -> Metrics {
+    let coverage = coverage::compare(reference, candidate);
+    let watertight = interior.map(|inside| watertight::measure(inside, reference, candidate));
+    let mut channels = Vec::new();
+    let expect = &scene.expect;
+    let bound = |magnitude: f64| {
+        expect
+            .max_abs_error
+            .unwrap_or(DEFAULT_RELATIVE_BOUND * magnitude.max(1.0))
+    };
+    if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
+        let m = largest(
+            scene
+                .triangles()
+                .flat_map(|t| t.vertices.iter().map(|v| &v.z)),
+        );
+        channels.push(interpolation::channel_error(
+            "depth",
+            reference,
+            candidate,
+            exact,
+            values,
+            bound(m),
+            expect.max_ulp_error,
+        ));
+    }
+    for (k, (exact, values)) in reference
+        .attributes
+        .iter()
+        .zip(&candidate.attributes)
+        .enumerate()
+    {
+        let m = largest(
+            scene
+                .triangles()
+                .flat_map(|t| t.vertices.iter().map(move |v| &v.attributes[k])),
+        );
+        channels.push(interpolation::channel_error(
+            &format!("attribute {k}"),
+            reference,
+            candidate,
+            exact,
+            values,
+            bound(m),
+            expect.max_ulp_error,
+        ));
+    }
+    Metrics {
+        coverage,
+        watertight,
+        channels,
+    }
+}
+
+fn largest<'a>(values: impl Iterator<Item = &'a Number>) -> f64 {
+    values.map(|v| v.abs().to_f64_lossy()).fold(0.0, f64::max)
+}
+
+/// Why a candidate fails a case; empty when it passes.
+pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
+    let mut out = Vec::new();
+    let expect = &scene.expect;
+    let c = &m.coverage;
+    if c.mismatched() > expect.max_mismatched_samples {
+        out.push(format!(
+            "coverage: {} samples differ from the reference ({} missing, {} extra, {} wrong owner; {} allowed)",
+            c.mismatched(),
+            c.missing,
+            c.extra,
+            c.wrong_owner,
+            expect.max_mismatched_samples
+        ));
+    }
+    if c.reference_covered > 0 && c.candidate_covered == 0 {
+        out.push(
+            "coverage: the candidate drew nothing where the reference draws something".to_owned(),
+        );
+    }
+    if let Some(w) = &m.watertight {
+        if !w.is_watertight() {
+            out.push(format!(
+                "watertight: {} holes and {} overdrawn samples",
+                w.holes, w.overdraw
+            ));
+        }
+    }
+    for ch in &m.channels {
+        if !ch.within_bounds() {
+            let ulp = ch
+                .allowed_ulp
+                .map(|u| format!(" or {u} ulp"))
+                .unwrap_or_default();
+            out.push(format!(
+                "{}: max error {:.3e} ({:.1} ulp) exceeds {:.3e}{ulp}",
+                ch.channel, ch.max_abs, ch.max_ulp, ch.allowed_abs
+            ));
+        }
+    }
+    if let Some(expected) = expect.samples_covered {
+        let covered = reference.covered_samples();
+        if covered != expected {
+            out.push(format!(
+                "reference: covers {covered} samples but the case expects {expected}"
+            ));
+        }
+    }
+    out
+}

@@ -1,0 +1,35 @@
+//! Watertightness of a mesh: no hole inside it, no sample covered twice.
+
+use crate::frame::Frame;
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WatertightMetrics {
+    /// Samples in the mesh's interior (see `reference::mesh_interior`).
+    pub interior: u64,
+    /// Interior samples the candidate leaves uncovered.
+    pub holes: u64,
+    /// Samples the candidate covers more than once where the reference
+    /// covers them at most once.
+    pub overdraw: u64,
+}
+
+impl WatertightMetrics {
+    pub fn is_watertight(&self) -> bool {
+        self.holes == 0 && self.overdraw == 0
+    }
+}
+
+pub fn measure(interior: &[bool], reference: &Frame, candidate: &Frame) -> WatertightMetrics {
+    let mut m = WatertightMetrics {
+        interior: 0,
+        holes: 0,
+        overdraw: 0,
+    };
+    for (i, &inside) in interior.iter().enumerate() {
+        let c = candidate.coverage[i];
+        m.interior += u64::from(inside);
+        m.holes += u64::from(inside && c == 0);
+        m.overdraw += u64::from(c > 1 && reference.coverage[i] <= 1);
+    }
+    m
+}

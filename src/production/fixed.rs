@@ -1,0 +1,186 @@
+//! Fixed-point coordinates and the bit-width limits that keep edge functions
+//! from overflowing.
+
+use std::ops::{Add, BitOr, Mul, Sub};
+
+use dashu_int::ops::{BitTest, PowerOfTwo};
+use dashu_int::IBig;
+
+use crate::scene::rules::limits;
+use crate::scene::Number;
+
+/// A fixed-point format with `frac_bits` fraction bits.
+///
+/// The production rasterizer works one bit finer than the snapping grid, so
+/// that pixel centres, at odd multiples of 2^-(subpixel_bits+1), are
+/// integers too: with 8 subpixel bits, coordinates are 16.9 fixed point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Format {
+    pub frac_bits: u32,
+}
+
+/// A coordinate in some [`Format`]: `raw` units of 2^-frac_bits pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Fixed(pub i64);
+
+/// Finest format: 16 subpixel bits plus the centre bit.
+pub const MAX_FRAC_BITS: u32 = limits::MAX_SUBPIXEL_BITS + 1;
+
+/// Bits of a coordinate's integer part, sign included: |x| ≤ 2^15 px.
+const INT_BITS: u32 = limits::COORD_LIMIT.trailing_zeros() + 1;
+
+/// Bits an edge function needs at `frac_bits`, sign included.
+///
+/// A coordinate is at most 2^(INT_BITS - 1 + f) units (|x| ≤ 2^15 px), so a
+/// difference of two (vertex to vertex, or vertex to a sample inside the
+/// canvas) is at most 2^(INT_BITS + f), a product of two differences at most
+/// 2^(2(INT_BITS + f)), and an edge function, two products apart plus the tie
+/// bias, at most 2^(2(INT_BITS + f) + 1) + 1. That takes 2(INT_BITS + f) + 2
+/// bits of magnitude and one of sign: the "2b + 3 bits" of b-bit coordinates
+/// (51 for 16.8).
+pub const fn edge_bits(frac_bits: u32) -> u32 {
+    2 * (INT_BITS + frac_bits) + 3
+}
+
+/// The finest format whose edge functions fit in i64.
+pub const I64_MAX_FRAC_BITS: u32 = 14;
+const _: () = assert!(edge_bits(I64_MAX_FRAC_BITS) <= 64);
+const _: () = assert!(edge_bits(I64_MAX_FRAC_BITS + 1) > 64);
+const _: () = assert!(edge_bits(MAX_FRAC_BITS) <= 128);
+// Coordinates themselves always fit in i64.
+const _: () = assert!(INT_BITS + MAX_FRAC_BITS < 63);
+
+impl Format {
+    /// The format for a scene snapped to `subpixel_bits`.
+    pub fn snapped(subpixel_bits: u32) -> Format {
+        Format {
+            frac_bits: subpixel_bits + 1,
+        }
+    }
+
+    /// Snaps `n` to the subpixel grid (ties to even) and returns it in this
+    /// format.
+    pub fn snap(self, n: &Number, subpixel_bits: u32) -> Fixed {
+        // round(p·2^b / q), ties to even, as ⌊(2p·2^b + q) / 2q⌋, with the
+        // result made even again where the division was an exact tie.
+        let p = n.numerator();
+        let q = IBig::from(n.denominator().clone());
+        let twice = (p << (subpixel_bits as usize + 1)) + &q;
+        let two_q = &q * IBig::from(2u8);
+        let (mut rounded, rest) = div_floor(&twice, &two_q);
+        if rest == IBig::ZERO && (&rounded % IBig::from(2u8)) != IBig::ZERO {
+            rounded -= IBig::ONE;
+        }
+        let units: i64 = (&rounded)
+            .try_into()
+            .expect("coordinates are bounded by COORD_LIMIT");
+        Fixed(units << (self.frac_bits - subpixel_bits))
+    }
+
+    /// `n` in this format when it is exactly representable.
+    pub fn exact(self, n: &Number) -> Option<Fixed> {
+        let scaled = n.numerator() << self.frac_bits as usize;
+        let q = IBig::from(n.denominator().clone());
+        let (units, rest) = div_floor(&scaled, &q);
+        (rest == IBig::ZERO).then(|| Fixed((&units).try_into().expect("bounded coordinates")))
+    }
+
+    /// The finest-needed format for unsnapped coordinates, when all of them
+    /// are dyadic with at most MAX_FRAC_BITS - 1 fraction bits.
+    pub fn for_exact<'a>(numbers: impl Iterator<Item = &'a Number>) -> Option<Format> {
+        let mut frac_bits = 1;
+        for n in numbers {
+            let d = n.denominator();
+            if !d.is_power_of_two() {
+                return None;
+            }
+            frac_bits = frac_bits.max(d.bit_len() as u32); // 2^k has k+1 bits
+        }
+        (frac_bits <= MAX_FRAC_BITS).then_some(Format { frac_bits })
+    }
+
+    /// Units per pixel.
+    pub fn one(self) -> i64 {
+        1 << self.frac_bits
+    }
+
+    /// The centre of pixel column or row `i`.
+    pub fn centre(self, i: i64) -> Fixed {
+        Fixed((i << self.frac_bits) + (1 << (self.frac_bits - 1)))
+    }
+
+    /// Whether edge functions fit in i64 at this format.
+    pub fn fits_i64(self) -> bool {
+        self.frac_bits <= I64_MAX_FRAC_BITS
+    }
+}
+
+fn div_floor(a: &IBig, b: &IBig) -> (IBig, IBig) {
+    let mut q = a / b;
+    let mut r = a - &q * b;
+    if r < IBig::ZERO {
+        q -= IBig::ONE;
+        r += b;
+    }
+    (q, r)
+}
+
+/// Integers an edge function can be held in: i64 where
+/// [`Format::fits_i64`], i128 otherwise.
+pub trait EdgeInt:
+    Copy
+    + Ord
+    + Default
+    + From<i64>
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + BitOr<Output = Self>
+    + Send
+    + Sync
+{
+    fn to_f64(self) -> f64;
+}
+
+impl EdgeInt for i64 {
+    fn to_f64(self) -> f64 {
+        self as f64
+    }
+}
+
+impl EdgeInt for i128 {
+    fn to_f64(self) -> f64 {
+        self as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn snapping_ties_go_to_even() {
+        let f = Format::snapped(0);
+        let n = |s: &str| Number::from_string(s).unwrap();
+        assert_eq!(f.snap(&n("0.5"), 0), Fixed(0));
+        assert_eq!(f.snap(&n("1.5"), 0), Fixed(4));
+        assert_eq!(f.snap(&n("2.5"), 0), Fixed(4));
+        assert_eq!(f.snap(&n("-0.5"), 0), Fixed(0));
+        assert_eq!(f.snap(&n("-1.5"), 0), Fixed(-4));
+        assert_eq!(f.snap(&n("-1.25"), 0), Fixed(-2));
+        let f8 = Format::snapped(8);
+        assert_eq!(f8.snap(&n("1/3"), 8), Fixed(85 * 2));
+        assert_eq!(f8.snap(&n("32768"), 8), Fixed(32768 << 9));
+    }
+
+    #[test]
+    fn exact_formats_need_dyadic_coordinates() {
+        let n = |s: &str| Number::from_string(s).unwrap();
+        let dyadic = [n("1/4"), n("3"), n("-5/1024")];
+        assert_eq!(
+            Format::for_exact(dyadic.iter()),
+            Some(Format { frac_bits: 11 })
+        );
+        assert_eq!(Format::for_exact([n("0.1")].iter()), None);
+    }
+}

@@ -1,0 +1,142 @@
+//! The production rasterizer: fixed point, integer coverage decisions,
+//! f32 interpolation. It imports the scene model and the output types, and
+//! never the reference.
+
+pub mod fixed;
+pub mod setup;
+pub mod traverse;
+
+use fixed::{EdgeInt, Fixed, Format};
+use setup::{Shading, TriangleSetup};
+use traverse::Sink;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{Interpolation, Scene};
+
+/// The production rasterizer.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Production;
+
+impl Rasterizer for Production {
+    fn name(&self) -> &str {
+        "production"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        // Ideal geometry only when its coordinates are dyadic: checked per scene.
+        Capabilities::everything()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let format = match scene.rules.subpixel_bits {
+            Some(bits) => Format::snapped(bits),
+            None => Format::for_exact(
+                scene
+                    .triangles()
+                    .flat_map(|t| t.vertices.iter().flat_map(|v| [&v.x, &v.y])),
+            )
+            .ok_or_else(|| {
+                RasterError::Unsupported(format!(
+                    "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
+                    fixed::MAX_FRAC_BITS - 1
+                ))
+            })?,
+        };
+        let mut frame = Frame::new(
+            scene.canvas.width,
+            scene.canvas.height,
+            plan.depth,
+            plan.attributes,
+        );
+        if format.fits_i64() {
+            draw::<i64>(scene, plan, format, &mut frame);
+        } else {
+            draw::<i128>(scene, plan, format, &mut frame);
+        }
+        Ok(frame)
+    }
+}
+
+fn draw<E: EdgeInt>(scene: &Scene, plan: &Plan, format: Format, frame: &mut Frame) {
+    for (index, triangle) in scene.triangles().enumerate() {
+        let positions = triangle.vertices.each_ref().map(|v| {
+            let place = |n| match scene.rules.subpixel_bits {
+                Some(bits) => format.snap(n, bits),
+                None => format
+                    .exact(n)
+                    .expect("Format::for_exact checked every coordinate"),
+            };
+            [place(&v.x), place(&v.y)]
+        });
+        let Some(setup) = setup::setup::<E>(
+            positions,
+            triangle,
+            format,
+            scene.rules.fill_rule,
+            scene.rules.cull,
+            scene.canvas,
+            plan,
+        ) else {
+            continue;
+        };
+        let mut sink = FrameSink {
+            frame: &mut *frame,
+            index,
+            format,
+            setup: &setup,
+        };
+        traverse::traverse(&setup, &mut sink);
+    }
+}
+
+/// Writes covered pixels, and their interpolated values, into a frame.
+struct FrameSink<'a, E> {
+    frame: &'a mut Frame,
+    index: usize,
+    format: Format,
+    setup: &'a TriangleSetup<E>,
+}
+
+impl<E> Sink for FrameSink<'_, E> {
+    fn span(&mut self, y: i64, x0: i64, x1: i64) {
+        let width = self.frame.width as usize;
+        let row = y as usize * width;
+        for x in x0..x1 {
+            self.frame.hit(row + x as usize, self.index);
+        }
+        let Shading::Values {
+            interpolation,
+            anchor,
+            depth,
+            attributes,
+            inv_w,
+        } = &self.setup.shading
+        else {
+            return;
+        };
+        let scale = 1.0 / self.format.one() as f32;
+        let offset = |centre: Fixed, anchor: Fixed| (centre.0 - anchor.0) as f32 * scale;
+        let ry = offset(self.format.centre(y), anchor[1]);
+        for x in x0..x1 {
+            let i = row + x as usize;
+            let rx = offset(self.format.centre(x), anchor[0]);
+            if let (Some(plane), Some(out)) = (depth, self.frame.depth.as_mut()) {
+                out[i] = f64::from(plane.at(rx, ry));
+            }
+            let w = match interpolation {
+                Interpolation::Perspective => inv_w.at(rx, ry),
+                _ => 1.0,
+            };
+            for (channel, plane) in self.frame.attributes.iter_mut().zip(attributes) {
+                let value = match interpolation {
+                    Interpolation::Flat => plane.origin,
+                    Interpolation::Linear => plane.at(rx, ry),
+                    Interpolation::Perspective => plane.at(rx, ry) / w,
+                };
+                channel[i] = f64::from(value);
+            }
+        }
+    }
+}

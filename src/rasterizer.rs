@@ -1,0 +1,61 @@
+//! The one trait every rasterizer implements: the reference, the production
+//! rasterizer, deliberately wrong variants, and (later) third-party adapters.
+
+use std::fmt;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::scene::Scene;
+
+/// What a rasterizer can be asked to do. A case outside its capabilities is
+/// reported as unsupported, never as passed or failed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Capabilities {
+    pub triangles: bool,
+    /// Cases with `subpixel_bits: null` (exact, unsnapped coordinates).
+    pub ideal_geometry: bool,
+    pub attributes: bool,
+    pub depth: bool,
+}
+
+impl Capabilities {
+    pub fn everything() -> Capabilities {
+        Capabilities {
+            triangles: true,
+            ideal_geometry: true,
+            attributes: true,
+            depth: true,
+        }
+    }
+}
+
+/// Why a rasterizer produced no frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum RasterError {
+    /// The scene asks for something this rasterizer does not do.
+    Unsupported(String),
+    /// The rasterizer broke.
+    Failed(String),
+}
+
+impl fmt::Display for RasterError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RasterError::Unsupported(why) => write!(f, "unsupported: {why}"),
+            RasterError::Failed(why) => write!(f, "failed: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for RasterError {}
+
+pub trait Rasterizer: Send + Sync {
+    /// The name used on the command line and in reports.
+    fn name(&self) -> &str;
+
+    fn capabilities(&self) -> Capabilities;
+
+    /// Draws the scene's primitives in order, without depth testing; each
+    /// sample keeps the values of the last primitive that covered it.
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>;
+}

@@ -1,0 +1,3 @@
+//! Outputs for people: magnified PNG images of frames and their differences.
+
+pub mod png;

@@ -1,0 +1,672 @@
+//! Reading a case file into a [`Scene`], with errors that name the file and
+//! the JSON path of the offending value.
+//!
+//! The file is parsed into a `serde_json::Value` (with `arbitrary_precision`,
+//! so every number keeps the text it was written as) and then walked by hand.
+//! Walking by hand, rather than deriving `Deserialize`, is what lets every
+//! error carry its JSON path, suggest the field that was meant, and read
+//! numbers exactly.
+
+use std::fmt;
+
+use serde_json::{Map, Value};
+
+use super::number::Number;
+use super::rules::{limits, Cull, FillRule, Interpolation, Rules};
+use super::{Canvas, Effects, Expect, Primitive, Scene, Triangle, Vertex};
+
+/// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    pub max_canvas_pixels: u64,
+    pub max_primitives: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_canvas_pixels: limits::DEFAULT_MAX_CANVAS_PIXELS,
+            max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
+        }
+    }
+}
+
+/// A case that cannot be read: where, and why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CaseError {
+    /// The case file, as given to the loader.
+    pub file: String,
+    /// JSON path of the offending value (`$.primitives[2].triangle[0]`), or
+    /// `line L column C` for a syntax error.
+    pub location: String,
+    pub message: String,
+}
+
+impl fmt::Display for CaseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}: {}", self.file, self.location, self.message)
+    }
+}
+
+impl std::error::Error for CaseError {}
+
+/// Reads the text of one case file. `file` names it in errors.
+pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, CaseError> {
+    let value: Value = serde_json::from_str(text).map_err(|e| CaseError {
+        file: file.to_owned(),
+        location: format!("line {} column {}", e.line(), e.column()),
+        message: format!("invalid JSON: {}", strip_position(&e.to_string())),
+    })?;
+    let reader = Reader { file, limits };
+    reader.scene(&value).map_err(|(path, message)| CaseError {
+        file: file.to_owned(),
+        location: path.to_string(),
+        message,
+    })
+}
+
+fn strip_position(message: &str) -> &str {
+    message.find(" at line ").map_or(message, |i| &message[..i])
+}
+
+/// A JSON path under construction, e.g. `$.primitives[3].triangle[1]`.
+#[derive(Clone, Debug)]
+struct Path(String);
+
+impl Path {
+    fn root() -> Path {
+        Path("$".to_owned())
+    }
+    fn key(&self, key: &str) -> Path {
+        Path(format!("{}.{key}", self.0))
+    }
+    fn index(&self, i: usize) -> Path {
+        Path(format!("{}[{i}]", self.0))
+    }
+}
+
+impl fmt::Display for Path {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+type Fail = (Path, String);
+type Result<T, E = Fail> = std::result::Result<T, E>;
+
+fn fail<T>(path: &Path, message: impl Into<String>) -> Result<T> {
+    Err((path.clone(), message.into()))
+}
+
+fn kind(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// An object's fields, checked against the names a section allows.
+struct Fields<'a> {
+    map: &'a Map<String, Value>,
+    path: Path,
+}
+
+impl<'a> Fields<'a> {
+    fn new(value: &'a Value, path: &Path, allowed: &[&str]) -> Result<Fields<'a>> {
+        let Value::Object(map) = value else {
+            return fail(path, format!("expected an object, found {}", kind(value)));
+        };
+        for key in map.keys() {
+            if key.starts_with("//") || allowed.contains(&key.as_str()) {
+                continue;
+            }
+            let hint = match closest(key, allowed) {
+                Some(name) => format!("; did you mean \"{name}\"?"),
+                None => format!("; expected one of {}", allowed.join(", ")),
+            };
+            return fail(&path.key(key), format!("unknown field \"{key}\"{hint}"));
+        }
+        Ok(Fields {
+            map,
+            path: path.clone(),
+        })
+    }
+
+    fn get(&self, key: &str) -> Option<(&'a Value, Path)> {
+        self.map.get(key).map(|v| (v, self.path.key(key)))
+    }
+
+    fn require(&self, key: &str) -> Result<(&'a Value, Path)> {
+        self.get(key)
+            .ok_or_else(|| (self.path.clone(), format!("missing field \"{key}\"")))
+    }
+}
+
+/// The allowed name nearest to `key`, if it is plausibly a misspelling.
+fn closest<'n>(key: &str, allowed: &[&'n str]) -> Option<&'n str> {
+    allowed
+        .iter()
+        .map(|name| (edit_distance(key, name), *name))
+        .filter(|(d, name)| *d <= 2.max(name.len() / 3))
+        .min()
+        .map(|(_, name)| name)
+}
+
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let above = row[j + 1];
+            row[j + 1] = (above + 1)
+                .min(row[j] + 1)
+                .min(diagonal + usize::from(ca != *cb));
+            diagonal = above;
+        }
+    }
+    row[b.len()]
+}
+
+fn string<'v>(value: &'v Value, path: &Path) -> Result<&'v str> {
+    value.as_str().ok_or_else(|| {
+        (
+            path.clone(),
+            format!("expected a string, found {}", kind(value)),
+        )
+    })
+}
+
+fn array<'v>(value: &'v Value, path: &Path) -> Result<&'v Vec<Value>> {
+    value.as_array().ok_or_else(|| {
+        (
+            path.clone(),
+            format!("expected an array, found {}", kind(value)),
+        )
+    })
+}
+
+fn boolean(value: &Value, path: &Path) -> Result<bool> {
+    value.as_bool().ok_or_else(|| {
+        (
+            path.clone(),
+            format!("expected true or false, found {}", kind(value)),
+        )
+    })
+}
+
+/// An exact number: a JSON number read as its decimal text, or a string
+/// holding a fraction or decimal.
+fn number(value: &Value, path: &Path) -> Result<Number> {
+    let parsed = match value {
+        Value::Number(n) => Number::from_decimal(n.as_str()),
+        Value::String(s) => Number::from_string(s),
+        other => {
+            return fail(
+                path,
+                format!(
+                    "expected a number or a fraction string, found {}",
+                    kind(other)
+                ),
+            )
+        }
+    };
+    parsed.map_err(|e| (path.clone(), e.to_string()))
+}
+
+/// A non-negative integer no larger than `max`.
+fn count(value: &Value, path: &Path, max: u64) -> Result<u64> {
+    let n = number(value, path)?;
+    if !n.is_integer() || n < Number::ZERO {
+        return fail(path, format!("expected a whole number ≥ 0, found {n}"));
+    }
+    if n > Number::from_int(max as i64) {
+        return fail(path, format!("{n} is larger than the limit {max}"));
+    }
+    Ok(n.numerator()
+        .to_string()
+        .parse()
+        .expect("a bounded integer"))
+}
+
+fn within(n: &Number, path: &Path, low: &Number, high: &Number, what: &str) -> Result<()> {
+    if n < low || n > high {
+        return fail(
+            path,
+            format!("{what} {n} is outside the documented range [{low}, {high}]"),
+        );
+    }
+    Ok(())
+}
+
+fn named<T>(value: &Value, path: &Path, parse: fn(&str) -> Option<T>, names: &[&str]) -> Result<T> {
+    let s = string(value, path)?;
+    parse(s).ok_or_else(|| {
+        let hint = match closest(s, names) {
+            Some(name) => format!("; did you mean \"{name}\"?"),
+            None => String::new(),
+        };
+        (
+            path.clone(),
+            format!("\"{s}\" is not one of {}{hint}", names.join(", ")),
+        )
+    })
+}
+
+struct Reader<'a> {
+    #[allow(dead_code)]
+    file: &'a str,
+    limits: &'a Limits,
+}
+
+impl Reader<'_> {
+    fn scene(&self, value: &Value) -> Result<Scene> {
+        let root = Path::root();
+        let fields = Fields::new(
+            value,
+            &root,
+            &[
+                "name",
+                "description",
+                "canvas",
+                "rules",
+                "primitives",
+                "effects",
+                "expect",
+            ],
+        )?;
+        let (name, name_path) = fields.require("name")?;
+        let name = string(name, &name_path)?.to_owned();
+        if name.trim().is_empty() {
+            return fail(&name_path, "the case name is empty");
+        }
+        let description = match fields.get("description") {
+            Some((v, p)) => string(v, &p)?.to_owned(),
+            None => String::new(),
+        };
+        let (canvas, canvas_path) = fields.require("canvas")?;
+        let canvas = self.canvas(canvas, &canvas_path)?;
+        let rules = match fields.get("rules") {
+            Some((v, p)) => self.rules(v, &p)?,
+            None => Rules::default(),
+        };
+        let (primitives, primitives_path) = fields.require("primitives")?;
+        let primitives = self.primitives(primitives, &primitives_path)?;
+        let effects = match fields.get("effects") {
+            Some((v, p)) => self.effects(v, &p)?,
+            None => Effects::default(),
+        };
+        let expect = match fields.get("expect") {
+            Some((v, p)) => self.expect(v, &p)?,
+            None => Expect::default(),
+        };
+        let attribute_count = primitives
+            .iter()
+            .map(|p| match p {
+                Primitive::Triangle(t) => t.vertices[0].attributes.len(),
+            })
+            .next()
+            .unwrap_or(0);
+        let has_depth = fields
+            .map
+            .get("primitives")
+            .and_then(Value::as_array)
+            .is_some_and(|ps| ps.iter().any(mentions_depth));
+        let scene = Scene {
+            name,
+            description,
+            canvas,
+            rules,
+            primitives,
+            effects,
+            expect,
+            attribute_count,
+            has_depth,
+        };
+        self.check_attribute_counts(&scene, &primitives_path)?;
+        Ok(scene)
+    }
+
+    fn canvas(&self, value: &Value, path: &Path) -> Result<Canvas> {
+        let fields = Fields::new(value, path, &["width", "height"])?;
+        let side = |key: &str| -> Result<u32> {
+            let (v, p) = fields.require(key)?;
+            let n = count(v, &p, u64::MAX >> 1)?;
+            if n == 0 || n > u64::from(limits::MAX_CANVAS_SIDE) {
+                return fail(
+                    &p,
+                    format!(
+                        "canvas {key} {n} is outside [1, {}]",
+                        limits::MAX_CANVAS_SIDE
+                    ),
+                );
+            }
+            Ok(n as u32)
+        };
+        let canvas = Canvas {
+            width: side("width")?,
+            height: side("height")?,
+        };
+        let pixels = canvas.pixel_count() as u64;
+        if pixels > self.limits.max_canvas_pixels {
+            return fail(
+                path,
+                format!(
+                    "canvas of {pixels} pixels exceeds the limit of {} (raise it with --max-canvas-pixels)",
+                    self.limits.max_canvas_pixels
+                ),
+            );
+        }
+        Ok(canvas)
+    }
+
+    fn rules(&self, value: &Value, path: &Path) -> Result<Rules> {
+        let fields = Fields::new(value, path, &["subpixel_bits", "fill_rule", "cull"])?;
+        let mut rules = Rules::default();
+        if let Some((v, p)) = fields.get("subpixel_bits") {
+            rules.subpixel_bits = match v {
+                Value::Null => None,
+                _ => {
+                    let bits = count(v, &p, u64::MAX >> 1)?;
+                    if bits > u64::from(limits::MAX_SUBPIXEL_BITS) {
+                        return fail(
+                            &p,
+                            format!(
+                                "subpixel_bits {bits} exceeds the limit of {}",
+                                limits::MAX_SUBPIXEL_BITS
+                            ),
+                        );
+                    }
+                    Some(bits as u32)
+                }
+            };
+        }
+        if let Some((v, p)) = fields.get("fill_rule") {
+            let names: Vec<&str> = FillRule::ALL.iter().map(|r| r.name()).collect();
+            rules.fill_rule = named(v, &p, FillRule::from_name, &names)?;
+        }
+        if let Some((v, p)) = fields.get("cull") {
+            rules.cull = named(v, &p, Cull::from_name, &["none", "cw", "ccw"])?;
+        }
+        Ok(rules)
+    }
+
+    fn primitives(&self, value: &Value, path: &Path) -> Result<Vec<Primitive>> {
+        let items = array(value, path)?;
+        if items.is_empty() {
+            return fail(
+                path,
+                "the primitive list is empty; a case draws at least one primitive",
+            );
+        }
+        if items.len() > self.limits.max_primitives {
+            return fail(
+                path,
+                format!(
+                    "{} primitives exceed the limit of {} (raise it with --max-primitives)",
+                    items.len(),
+                    self.limits.max_primitives
+                ),
+            );
+        }
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, item)| self.primitive(item, &path.index(i)))
+            .collect()
+    }
+
+    fn primitive(&self, value: &Value, path: &Path) -> Result<Primitive> {
+        let fields = Fields::new(value, path, &["triangle", "interpolation"])?;
+        let (vertices, vertices_path) = fields.require("triangle")?;
+        let list = array(vertices, &vertices_path)?;
+        if list.len() != 3 {
+            return fail(
+                &vertices_path,
+                format!("a triangle has 3 vertices, found {}", list.len()),
+            );
+        }
+        let v = |i: usize| self.vertex(&list[i], &vertices_path.index(i));
+        let vertices = [v(0)?, v(1)?, v(2)?];
+        let interpolation = match fields.get("interpolation") {
+            Some((v, p)) => named(
+                v,
+                &p,
+                Interpolation::from_name,
+                &["perspective", "linear", "flat"],
+            )?,
+            None => Interpolation::Perspective,
+        };
+        Ok(Primitive::Triangle(Triangle {
+            vertices,
+            interpolation,
+        }))
+    }
+
+    fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
+        match value {
+            Value::Array(_) => {
+                let (x, y) = self.position(value, path)?;
+                Ok(Vertex::at(x, y))
+            }
+            Value::Object(_) => {
+                let fields = Fields::new(value, path, &["position", "z", "w", "attributes"])?;
+                let (position, position_path) = fields.require("position")?;
+                let (x, y) = self.position(position, &position_path)?;
+                let mut vertex = Vertex::at(x, y);
+                let value_limit = Number::from_int(limits::VALUE_LIMIT);
+                if let Some((v, p)) = fields.get("z") {
+                    vertex.z = number(v, &p)?;
+                    within(&vertex.z, &p, &-value_limit.clone(), &value_limit, "z")?;
+                }
+                if let Some((v, p)) = fields.get("w") {
+                    let w = number(v, &p)?;
+                    if !w.is_positive() {
+                        return fail(&p, format!("w must be positive, found {w}; vertices behind the eye must be clipped before rasterization"));
+                    }
+                    within(
+                        &w,
+                        &p,
+                        &Number::ratio(1, limits::W_LIMIT),
+                        &Number::from_int(limits::W_LIMIT),
+                        "w",
+                    )?;
+                    vertex.w = w;
+                }
+                if let Some((v, p)) = fields.get("attributes") {
+                    let items = array(v, &p)?;
+                    if items.len() > limits::MAX_ATTRIBUTES {
+                        return fail(
+                            &p,
+                            format!(
+                                "{} attributes exceed the limit of {}",
+                                items.len(),
+                                limits::MAX_ATTRIBUTES
+                            ),
+                        );
+                    }
+                    for (i, item) in items.iter().enumerate() {
+                        let a = number(item, &p.index(i))?;
+                        within(
+                            &a,
+                            &p.index(i),
+                            &-value_limit.clone(),
+                            &value_limit,
+                            "attribute",
+                        )?;
+                        vertex.attributes.push(a);
+                    }
+                }
+                Ok(vertex)
+            }
+            other => fail(
+                path,
+                format!(
+                    "expected a vertex ([x, y] or {{\"position\": [x, y], ...}}), found {}",
+                    kind(other)
+                ),
+            ),
+        }
+    }
+
+    fn position(&self, value: &Value, path: &Path) -> Result<(Number, Number)> {
+        let items = array(value, path)?;
+        if items.len() != 2 {
+            return fail(
+                path,
+                format!("a position is [x, y], found {} values", items.len()),
+            );
+        }
+        let limit = Number::from_int(limits::COORD_LIMIT);
+        let x = number(&items[0], &path.index(0))?;
+        within(&x, &path.index(0), &-limit.clone(), &limit, "coordinate")?;
+        let y = number(&items[1], &path.index(1))?;
+        within(&y, &path.index(1), &-limit.clone(), &limit, "coordinate")?;
+        Ok((x, y))
+    }
+
+    fn effects(&self, value: &Value, path: &Path) -> Result<Effects> {
+        let fields = Fields::new(value, path, &["antialias", "motion_blur"])?;
+        for key in ["antialias", "motion_blur"] {
+            if let Some((_, p)) = fields.get(key) {
+                return fail(
+                    &p,
+                    format!("the {key} effect is not supported by this version of rastercheck yet"),
+                );
+            }
+        }
+        Ok(Effects::default())
+    }
+
+    fn expect(&self, value: &Value, path: &Path) -> Result<Expect> {
+        let fields = Fields::new(
+            value,
+            path,
+            &[
+                "max_mismatched_samples",
+                "watertight",
+                "samples_covered",
+                "max_abs_error",
+                "max_ulp_error",
+            ],
+        )?;
+        let mut expect = Expect::default();
+        if let Some((v, p)) = fields.get("max_mismatched_samples") {
+            expect.max_mismatched_samples = count(v, &p, u64::MAX >> 1)?;
+        }
+        if let Some((v, p)) = fields.get("watertight") {
+            expect.watertight = boolean(v, &p)?;
+        }
+        if let Some((v, p)) = fields.get("samples_covered") {
+            expect.samples_covered = Some(count(v, &p, u64::MAX >> 1)?);
+        }
+        let tolerance = |key: &str| -> Result<Option<f64>> {
+            let Some((v, p)) = fields.get(key) else {
+                return Ok(None);
+            };
+            let n = number(v, &p)?;
+            if n < Number::ZERO {
+                return fail(&p, format!("{key} must be ≥ 0, found {n}"));
+            }
+            within(
+                &n,
+                &p,
+                &Number::ZERO,
+                &Number::from_int(limits::VALUE_LIMIT),
+                key,
+            )?;
+            Ok(Some(n.to_f64_lossy()))
+        };
+        expect.max_abs_error = tolerance("max_abs_error")?;
+        expect.max_ulp_error = tolerance("max_ulp_error")?;
+        Ok(expect)
+    }
+
+    /// Every vertex of a case carries the same number of attributes, so that
+    /// every pixel of the frame has the same channels.
+    fn check_attribute_counts(&self, scene: &Scene, path: &Path) -> Result<()> {
+        for (i, t) in scene.triangles().enumerate() {
+            for (j, v) in t.vertices.iter().enumerate() {
+                if v.attributes.len() != scene.attribute_count {
+                    return fail(
+                        &path.index(i).key("triangle").index(j).key("attributes"),
+                        format!(
+                            "this vertex has {} attributes but the first vertex of the case has {}; every vertex carries the same number",
+                            v.attributes.len(),
+                            scene.attribute_count
+                        ),
+                    );
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Whether a primitive's JSON gives `z` on any vertex.
+fn mentions_depth(primitive: &Value) -> bool {
+    primitive
+        .get("triangle")
+        .and_then(Value::as_array)
+        .is_some_and(|vs| vs.iter().any(|v| v.get("z").is_some()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> std::result::Result<Scene, CaseError> {
+        parse_case(text, "test.json", &Limits::default())
+    }
+
+    const MINIMAL: &str = r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+        "primitives": [{"triangle": [[0, 0], [4, 0], [0, "4/3"]]}]}"#;
+
+    #[test]
+    fn minimal_case_reads_with_defaults() {
+        let scene = parse(MINIMAL).unwrap();
+        assert_eq!(scene.rules, Rules::default());
+        assert_eq!(scene.attribute_count, 0);
+        assert!(!scene.has_depth);
+        let t = scene.triangles().next().unwrap();
+        assert_eq!(t.vertices[2].y, Number::ratio(4, 3));
+    }
+
+    #[test]
+    fn errors_name_the_json_path() {
+        let e = parse(
+            r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+            "primitives": [{"triangle": [[0, 0], [4, 0], [0, 40000]]}]}"#,
+        )
+        .unwrap_err();
+        assert_eq!(e.location, "$.primitives[0].triangle[2][1]");
+        assert!(e.message.contains("outside the documented range"), "{e}");
+    }
+
+    #[test]
+    fn unknown_fields_suggest_the_right_one() {
+        let e = parse(r#"{"name": "t", "canvas": {"width": 4, "hieght": 4}, "primitives": []}"#)
+            .unwrap_err();
+        assert_eq!(e.location, "$.canvas.hieght");
+        assert!(e.message.contains("did you mean \"height\""), "{e}");
+    }
+
+    #[test]
+    fn syntax_errors_give_line_and_column() {
+        let e = parse("{\"name\": \"t\",\n \"canvas\": }").unwrap_err();
+        assert_eq!(e.location, "line 2 column 12");
+    }
+
+    #[test]
+    fn numbers_are_read_exactly() {
+        let text = MINIMAL.replace("\"4/3\"", "0.1");
+        let scene = parse(&text).unwrap();
+        let t = scene.triangles().next().unwrap();
+        assert_eq!(t.vertices[2].y, Number::ratio(1, 10));
+    }
+}

@@ -1,0 +1,211 @@
+//! The rules a case states: snapping, fill rule, culling, interpolation, and
+//! the documented limits on every input.
+//!
+//! These are names for conventions, not code that applies them: each
+//! rasterizer implements the rules on its own (see SPEC.md for their meaning).
+
+use std::fmt;
+
+/// Which edges own the samples that lie exactly on them.
+///
+/// Named after the D3D11 top-left rule (D3D11.3 functional spec §3.4.2.1)
+/// and its mirror images, so that third-party conventions can be stated and
+/// checked. In every rule but [`FillRule::AllEdges`], a horizontal edge is
+/// either "top" (the triangle lies below it, y pointing down) or "bottom",
+/// and any other edge is either "left" (the triangle lies to its right) or
+/// "right".
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FillRule {
+    /// D3D11 and Vulkan implementations: top and left edges own their samples.
+    TopLeft,
+    BottomRight,
+    TopRight,
+    BottomLeft,
+    /// Every edge owns its samples: closed triangles, not watertight.
+    AllEdges,
+}
+
+impl FillRule {
+    pub const ALL: [FillRule; 5] = [
+        FillRule::TopLeft,
+        FillRule::BottomRight,
+        FillRule::TopRight,
+        FillRule::BottomLeft,
+        FillRule::AllEdges,
+    ];
+
+    /// The four rules that each assign every shared-edge sample to exactly
+    /// one triangle. A sample every one of them puts inside a mesh lies in
+    /// the mesh's interior (SPEC.md, "Watertightness").
+    pub const CONSISTENT: [FillRule; 4] = [
+        FillRule::TopLeft,
+        FillRule::BottomRight,
+        FillRule::TopRight,
+        FillRule::BottomLeft,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            FillRule::TopLeft => "top-left",
+            FillRule::BottomRight => "bottom-right",
+            FillRule::TopRight => "top-right",
+            FillRule::BottomLeft => "bottom-left",
+            FillRule::AllEdges => "all-edges",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<FillRule> {
+        FillRule::ALL.into_iter().find(|r| r.name() == name)
+    }
+
+    /// Whether horizontal edges with the triangle below them own their samples.
+    pub fn owns_top(self) -> bool {
+        matches!(
+            self,
+            FillRule::TopLeft | FillRule::TopRight | FillRule::AllEdges
+        )
+    }
+
+    /// Whether horizontal edges with the triangle above them own their samples.
+    pub fn owns_bottom(self) -> bool {
+        matches!(
+            self,
+            FillRule::BottomRight | FillRule::BottomLeft | FillRule::AllEdges
+        )
+    }
+
+    /// Whether non-horizontal edges with the triangle to their right own their samples.
+    pub fn owns_left(self) -> bool {
+        matches!(
+            self,
+            FillRule::TopLeft | FillRule::BottomLeft | FillRule::AllEdges
+        )
+    }
+
+    /// Whether non-horizontal edges with the triangle to their left own their samples.
+    pub fn owns_right(self) -> bool {
+        matches!(
+            self,
+            FillRule::BottomRight | FillRule::TopRight | FillRule::AllEdges
+        )
+    }
+
+    /// The rule that gives every shared sample to the other triangle.
+    pub fn flipped(self) -> FillRule {
+        match self {
+            FillRule::TopLeft => FillRule::BottomRight,
+            FillRule::BottomRight => FillRule::TopLeft,
+            FillRule::TopRight => FillRule::BottomLeft,
+            FillRule::BottomLeft => FillRule::TopRight,
+            FillRule::AllEdges => FillRule::AllEdges,
+        }
+    }
+}
+
+impl fmt::Display for FillRule {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Which triangles are discarded by their winding as seen on screen (y down).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cull {
+    None,
+    /// Discard triangles whose vertices run clockwise on screen.
+    Clockwise,
+    /// Discard triangles whose vertices run counter-clockwise on screen.
+    CounterClockwise,
+}
+
+impl Cull {
+    pub fn name(self) -> &'static str {
+        match self {
+            Cull::None => "none",
+            Cull::Clockwise => "cw",
+            Cull::CounterClockwise => "ccw",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Cull> {
+        [Cull::None, Cull::Clockwise, Cull::CounterClockwise]
+            .into_iter()
+            .find(|c| c.name() == name)
+    }
+}
+
+/// How a primitive's attributes vary across it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Interpolation {
+    /// Barycentric weights divided by each vertex's w (perspective-correct).
+    Perspective,
+    /// Screen-space barycentric weights.
+    Linear,
+    /// The first vertex's values everywhere.
+    Flat,
+}
+
+impl Interpolation {
+    pub fn name(self) -> &'static str {
+        match self {
+            Interpolation::Perspective => "perspective",
+            Interpolation::Linear => "linear",
+            Interpolation::Flat => "flat",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Interpolation> {
+        [
+            Interpolation::Perspective,
+            Interpolation::Linear,
+            Interpolation::Flat,
+        ]
+        .into_iter()
+        .find(|i| i.name() == name)
+    }
+}
+
+/// Snapping, fill rule and culling for a whole case.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Rules {
+    /// Vertices snap to multiples of 2^-bits, ties to even; `None` keeps the
+    /// exact coordinates ("ideal geometry").
+    pub subpixel_bits: Option<u32>,
+    pub fill_rule: FillRule,
+    pub cull: Cull,
+}
+
+impl Default for Rules {
+    fn default() -> Self {
+        Rules {
+            subpixel_bits: Some(8),
+            fill_rule: FillRule::TopLeft,
+            cull: Cull::None,
+        }
+    }
+}
+
+/// Input limits. Every bound the rasterizers rely on for freedom from
+/// overflow derives from these constants; see SPEC.md, "Limits".
+pub mod limits {
+    /// |x| and |y| of every vertex, in pixels, before and after snapping:
+    /// D3D11's viewport range [-32768, 32767] plus one, so that a guard band
+    /// reaching ±32768 can be written.
+    pub const COORD_LIMIT: i64 = 1 << 15;
+    /// Largest `subpixel_bits`.
+    pub const MAX_SUBPIXEL_BITS: u32 = 16;
+    /// Largest canvas side, in pixels.
+    pub const MAX_CANVAS_SIDE: u32 = 1 << 14;
+    /// Default largest canvas area, in pixels (a 4096 × 4096 canvas).
+    pub const DEFAULT_MAX_CANVAS_PIXELS: u64 = 1 << 24;
+    /// Default largest number of primitives in one case.
+    pub const DEFAULT_MAX_PRIMITIVES: usize = 100_000;
+    /// Largest number of attributes a vertex may carry.
+    pub const MAX_ATTRIBUTES: usize = 16;
+    /// |attribute| and |z| bound, so that every f32 pipeline stays finite.
+    pub const VALUE_LIMIT: i64 = 1_000_000_000_000;
+    /// w lies in [1/W_LIMIT, W_LIMIT].
+    pub const W_LIMIT: i64 = 1_000_000;
+
+    const _: () = assert!(MAX_CANVAS_SIDE as i64 <= COORD_LIMIT);
+}

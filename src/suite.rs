@@ -1,0 +1,325 @@
+//! Finding case files, reading them, and running them through rasterizers
+//! against the reference. Both the CLI and the test harness go through here.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::frame::Frame;
+use crate::golden;
+use crate::metrics::{self, Metrics};
+use crate::mutants::{Mutant, Mutation};
+use crate::plan::Plan;
+use crate::production::Production;
+use crate::rasterizer::{RasterError, Rasterizer};
+use crate::reference::{self, Reference};
+use crate::scene::{parse_case, CaseError, Limits, Scene};
+
+/// A case file and its id: its path under `cases/`, without `.json`
+/// (`triangles/fan_center`).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub struct CaseFile {
+    pub id: String,
+    pub path: PathBuf,
+}
+
+/// What a walk over the given paths found.
+#[derive(Debug, Default)]
+pub struct Discovery {
+    pub cases: Vec<CaseFile>,
+    /// `invalid/` folders passed over (they hold negative tests; name one
+    /// explicitly to read it).
+    pub skipped: Vec<PathBuf>,
+    /// Paths that do not exist or cannot be read.
+    pub errors: Vec<String>,
+}
+
+/// Finds case files under `paths`, sorted by id. Folders are walked
+/// recursively; folders named `invalid` inside them are skipped.
+pub fn discover(paths: &[PathBuf]) -> Discovery {
+    let mut found = Discovery::default();
+    for path in paths {
+        if path.is_dir() {
+            walk(path, &mut found);
+        } else if path.is_file() {
+            found.cases.push(case_file(path));
+        } else {
+            found
+                .errors
+                .push(format!("{}: no such file or folder", path.display()));
+        }
+    }
+    found.cases.sort();
+    found.cases.dedup();
+    found
+}
+
+fn walk(dir: &Path, found: &mut Discovery) {
+    let entries = match std::fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) => return found.errors.push(format!("{}: {e}", dir.display())),
+    };
+    let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    paths.sort();
+    for path in paths {
+        if path.is_dir() {
+            if path.file_name().is_some_and(|n| n == "invalid") {
+                found.skipped.push(path);
+            } else {
+                walk(&path, found);
+            }
+        } else if path.extension().is_some_and(|e| e == "json") {
+            found.cases.push(case_file(&path));
+        }
+    }
+}
+
+/// The id of a case file: its path below the nearest folder named `cases`,
+/// without the extension; the path as given when there is none.
+pub fn case_file(path: &Path) -> CaseFile {
+    let without_ext = path.with_extension("");
+    let components: Vec<_> = without_ext.components().collect();
+    let start = components
+        .iter()
+        .rposition(|c| c.as_os_str() == "cases")
+        .map_or(0, |i| i + 1);
+    let id = components[start..]
+        .iter()
+        .filter(|c| matches!(c, std::path::Component::Normal(_)))
+        .map(|c| c.as_os_str().to_string_lossy())
+        .collect::<Vec<_>>()
+        .join("/");
+    CaseFile {
+        id,
+        path: path.to_owned(),
+    }
+}
+
+/// Reads and validates one case file.
+pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
+    let shown = file.path.display().to_string();
+    let text = std::fs::read_to_string(&file.path).map_err(|e| CaseError {
+        file: shown.clone(),
+        location: "$".to_owned(),
+        message: format!("cannot read the file: {e}"),
+    })?;
+    parse_case(&text, &shown, limits)
+}
+
+/// Every rasterizer the CLI can name.
+pub fn rasterizer_names() -> Vec<&'static str> {
+    let mut names = vec!["reference", "production"];
+    names.extend(Mutation::ALL.iter().map(|m| m.name()));
+    names
+}
+
+/// A rasterizer by its command-line name.
+pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
+    match name {
+        "reference" => Some(Box::new(Reference)),
+        "production" => Some(Box::new(Production)),
+        _ => Mutation::ALL
+            .into_iter()
+            .find(|m| m.name() == name)
+            .map(|m| Box::new(Mutant(m)) as Box<dyn Rasterizer>),
+    }
+}
+
+/// The reference's answer for a case, computed once and shared by every
+/// candidate.
+pub struct ReferenceRun {
+    pub plan: Plan,
+    pub frame: Frame,
+    /// The mesh interior, for cases that expect watertightness.
+    pub interior: Option<Vec<bool>>,
+    pub elapsed: Duration,
+}
+
+pub fn run_reference(scene: &Scene) -> ReferenceRun {
+    let started = Instant::now();
+    let plan = Plan::for_scene(scene);
+    let frame = reference::triangle::render(scene, &plan);
+    let interior = scene
+        .expect
+        .watertight
+        .then(|| reference::mesh_interior(scene));
+    ReferenceRun {
+        plan,
+        frame,
+        interior,
+        elapsed: started.elapsed(),
+    }
+}
+
+/// How a candidate did on a case.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    Pass,
+    Fail(Vec<String>),
+    Unsupported(String),
+    /// The rasterizer broke (crashed, or returned an error).
+    Error(String),
+}
+
+impl Verdict {
+    pub fn label(&self) -> &'static str {
+        match self {
+            Verdict::Pass => "PASS",
+            Verdict::Fail(_) => "FAIL",
+            Verdict::Unsupported(_) => "UNSUPPORTED",
+            Verdict::Error(_) => "ERROR",
+        }
+    }
+}
+
+/// One candidate on one case.
+pub struct CandidateRun {
+    pub rasterizer: String,
+    pub verdict: Verdict,
+    pub metrics: Option<Metrics>,
+    pub frame: Option<Frame>,
+    pub elapsed: Duration,
+}
+
+pub fn run_candidate(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    candidate: &dyn Rasterizer,
+) -> CandidateRun {
+    let started = Instant::now();
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        candidate.rasterize(scene, &reference.plan)
+    }));
+    let elapsed = started.elapsed();
+    let name = candidate.name().to_owned();
+    let frame = match result {
+        Ok(Ok(frame)) => frame,
+        Ok(Err(RasterError::Unsupported(why))) => {
+            return CandidateRun {
+                rasterizer: name,
+                verdict: Verdict::Unsupported(why),
+                metrics: None,
+                frame: None,
+                elapsed,
+            }
+        }
+        Ok(Err(RasterError::Failed(why))) => {
+            return CandidateRun {
+                rasterizer: name,
+                verdict: Verdict::Error(why),
+                metrics: None,
+                frame: None,
+                elapsed,
+            }
+        }
+        Err(panic) => {
+            let why = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "panicked".to_owned());
+            return CandidateRun {
+                rasterizer: name,
+                verdict: Verdict::Error(format!("panicked: {why}")),
+                metrics: None,
+                frame: None,
+                elapsed,
+            };
+        }
+    };
+    if (frame.width, frame.height) != (reference.frame.width, reference.frame.height)
+        || frame.attributes.len() != reference.frame.attributes.len()
+        || frame.depth.is_some() != reference.frame.depth.is_some()
+    {
+        let why = "returned a frame of the wrong size or with the wrong channels".to_owned();
+        return CandidateRun {
+            rasterizer: name,
+            verdict: Verdict::Error(why),
+            metrics: None,
+            frame: Some(frame),
+            elapsed,
+        };
+    }
+    let m = metrics::measure(
+        scene,
+        &reference.frame,
+        &frame,
+        reference.interior.as_deref(),
+    );
+    let failures = metrics::failures(scene, &reference.frame, &m);
+    let verdict = if failures.is_empty() {
+        Verdict::Pass
+    } else {
+        Verdict::Fail(failures)
+    };
+    CandidateRun {
+        rasterizer: name,
+        verdict,
+        metrics: Some(m),
+        frame: Some(frame),
+        elapsed,
+    }
+}
+
+/// Whether the reference still reproduces a case's golden file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum GoldenStatus {
+    Matches,
+    Missing(PathBuf),
+    Differs(String),
+}
+
+pub fn check_golden(root: &Path, id: &str, frame: &Frame) -> GoldenStatus {
+    let path = golden::path_for(root, id);
+    if !path.exists() {
+        return GoldenStatus::Missing(path);
+    }
+    match golden::check(frame, &path) {
+        Ok(()) => GoldenStatus::Matches,
+        Err(why) => GoldenStatus::Differs(why),
+    }
+}
+
+/// A one-line summary of a candidate's metrics.
+pub fn describe(run: &CandidateRun, reference: &ReferenceRun) -> String {
+    let Some(m) = &run.metrics else {
+        return match &run.verdict {
+            Verdict::Unsupported(why) | Verdict::Error(why) => why.clone(),
+            _ => String::new(),
+        };
+    };
+    let c = &m.coverage;
+    let mut parts = vec![if c.mismatched() == 0 {
+        format!(
+            "coverage {}/{} samples exact",
+            c.candidate_covered, c.samples
+        )
+    } else {
+        format!(
+            "coverage {} missing, {} extra, {} wrong owner of {} covered",
+            c.missing, c.extra, c.wrong_owner, c.reference_covered
+        )
+    }];
+    if let Some(w) = &m.watertight {
+        parts.push(format!(
+            "watertight: {} holes, {} overdraw in {} interior",
+            w.holes, w.overdraw, w.interior
+        ));
+    }
+    if let Some(worst) = m
+        .channels
+        .iter()
+        .max_by(|a, b| (a.max_abs / a.allowed_abs).total_cmp(&(b.max_abs / b.allowed_abs)))
+    {
+        let rms = m.channels.iter().map(|ch| ch.rms).fold(0.0, f64::max);
+        parts.push(format!(
+            "interp max {:.2e} ({:.1} ulp, {}) rms {:.1e} over {} channels",
+            worst.max_abs,
+            worst.max_ulp,
+            worst.channel,
+            rms,
+            m.channels.len()
+        ));
+    }
+    let _ = reference;
+    parts.join(" · ")
+}
