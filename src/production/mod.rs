@@ -6,7 +6,7 @@ pub mod fixed;
 pub mod setup;
 pub mod traverse;
 
-use fixed::{EdgeInt, Fixed, Format};
+use fixed::{EdgeInt, Format};
 use setup::{Shading, TriangleSetup};
 use traverse::Sink;
 
@@ -84,7 +84,6 @@ fn draw<E: EdgeInt>(scene: &Scene, plan: &Plan, format: Format, frame: &mut Fram
         let mut sink = FrameSink {
             frame: &mut *frame,
             index,
-            format,
             setup: &setup,
         };
         traverse::traverse(&setup, &mut sink);
@@ -95,45 +94,44 @@ fn draw<E: EdgeInt>(scene: &Scene, plan: &Plan, format: Format, frame: &mut Fram
 struct FrameSink<'a, E> {
     frame: &'a mut Frame,
     index: usize,
-    format: Format,
     setup: &'a TriangleSetup<E>,
 }
 
-impl<E> Sink for FrameSink<'_, E> {
+impl<E: EdgeInt> Sink for FrameSink<'_, E> {
     fn span(&mut self, y: i64, x0: i64, x1: i64) {
         let width = self.frame.width as usize;
         let row = y as usize * width;
         for x in x0..x1 {
             self.frame.hit(row + x as usize, self.index);
         }
-        let Shading::Values {
-            interpolation,
-            anchor,
-            depth,
-            attributes,
-            inv_w,
-        } = &self.setup.shading
+        let Shading::Values { interpolation, inv_area, opposite, depth, attributes, inv_w } = &self.setup.shading
         else {
             return;
         };
-        let scale = 1.0 / self.format.one() as f32;
-        let offset = |centre: Fixed, anchor: Fixed| (centre.0 - anchor.0) as f32 * scale;
-        let ry = offset(self.format.centre(y), anchor[1]);
+        // The exact edge values at the span's first pixel, bias removed,
+        // then stepped pixel by pixel.
+        let mut e = self.setup.edges.map(|edge| edge.at(x0, y) - edge.bias);
         for x in x0..x1 {
             let i = row + x as usize;
-            let rx = offset(self.format.centre(x), anchor[0]);
-            if let (Some(plane), Some(out)) = (depth, self.frame.depth.as_mut()) {
-                out[i] = f64::from(plane.at(rx, ry));
+            // λ for each vertex in the case's order.
+            let mut weight = [0f32; 3];
+            for k in 0..3 {
+                weight[opposite[k]] = (e[k].to_f64() * inv_area) as f32;
+                e[k] = e[k] + self.setup.edges[k].step_x;
             }
-            let w = match interpolation {
-                Interpolation::Perspective => inv_w.at(rx, ry),
+            let blend = |v: &[f32; 3]| weight[0] * v[0] + weight[1] * v[1] + weight[2] * v[2];
+            if let (Some(z), Some(out)) = (depth, self.frame.depth.as_mut()) {
+                out[i] = f64::from(blend(z));
+            }
+            let perspective_w = match interpolation {
+                Interpolation::Perspective => blend(inv_w),
                 _ => 1.0,
             };
-            for (channel, plane) in self.frame.attributes.iter_mut().zip(attributes) {
+            for (channel, values) in self.frame.attributes.iter_mut().zip(attributes) {
                 let value = match interpolation {
-                    Interpolation::Flat => plane.origin,
-                    Interpolation::Linear => plane.at(rx, ry),
-                    Interpolation::Perspective => plane.at(rx, ry) / w,
+                    Interpolation::Flat => values[0],
+                    Interpolation::Linear => blend(values),
+                    Interpolation::Perspective => blend(values) / perspective_w,
                 };
                 channel[i] = f64::from(value);
             }

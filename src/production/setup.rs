@@ -1,6 +1,6 @@
 //! Triangle setup: fixed-point vertices to edge equations with the tie-rule
-//! bias folded in, a pixel bounding box, and f32 plane equations for depth
-//! and attributes.
+//! bias folded in, a pixel bounding box, and per-vertex values for f32
+//! interpolation.
 
 use super::fixed::{EdgeInt, Fixed, Format};
 use crate::plan::Plan;
@@ -15,6 +15,8 @@ pub struct EdgeEquation<E> {
     pub at_origin: E,
     pub step_x: E,
     pub step_y: E,
+    /// What the tie rule added to the edge function (0 or -1).
+    pub bias: E,
 }
 
 impl<E: EdgeInt> EdgeEquation<E> {
@@ -39,36 +41,31 @@ impl PixelBox {
     }
 }
 
-/// A plane `value = origin + dx·(px - x0) + dy·(py - y0)` in f32, anchored
-/// at the first vertex (x0, y0), in pixels.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Plane {
-    pub origin: f32,
-    pub dx: f32,
-    pub dy: f32,
-}
-
-impl Plane {
-    #[inline]
-    pub fn at(&self, rx: f32, ry: f32) -> f32 {
-        self.origin + self.dx * rx + self.dy * ry
-    }
-}
-
-/// How a triangle's attributes are evaluated at a sample.
+/// How a triangle's values are interpolated at a sample.
+///
+/// Barycentric weights come from the exact integer edge functions, each
+/// divided by the exact integer area (one rounding each), as GPUs do. Then
+/// perspective interpolation is Σ λᵢ(aᵢ/wᵢ) / Σ λᵢ(1/wᵢ), whose denominator
+/// is a sum of non-negative terms, free of cancellation. f32 plane
+/// equations of a/w and 1/w were tried first and rejected: their
+/// denominator cancels when w varies a hundredfold, and the property test
+/// found errors of 1.2e-3 on values of 66, beyond the 2^-16 bound.
 #[derive(Clone, Debug)]
 pub enum Shading {
     /// Coverage only.
     None,
     Values {
         interpolation: Interpolation,
-        /// The anchor vertex in pixels, f32 relative offsets are taken from it.
-        anchor: [Fixed; 2],
-        depth: Option<Plane>,
-        /// Linear and flat: the value planes. Perspective: the planes of a/w.
-        attributes: Vec<Plane>,
-        /// Perspective only: the plane of 1/w.
-        inv_w: Plane,
+        /// 1 / (twice the area), in edge-function units.
+        inv_area: f64,
+        /// The vertex (in the case's order) whose weight edge i gives:
+        /// the one opposite it.
+        opposite: [usize; 3],
+        depth: Option<[f32; 3]>,
+        /// Per attribute, per vertex: aᵢ/wᵢ for perspective, aᵢ otherwise.
+        attributes: Vec<[f32; 3]>,
+        /// 1/wᵢ per vertex.
+        inv_w: [f32; 3],
     },
 }
 
@@ -116,7 +113,8 @@ pub fn setup<E: EdgeInt>(
     }
     let edges = [0, 1, 2].map(|i| edge_equation(order[i], order[(i + 1) % 3], format, rule));
     let shading = if plan.interpolates() {
-        shading(positions, triangle, format, plan, area.to_f64())
+        let opposite = if clockwise { [2, 0, 1] } else { [1, 0, 2] };
+        shading(triangle, opposite, plan, area.to_f64().abs())
     } else {
         Shading::None
     };
@@ -168,6 +166,7 @@ fn edge_equation<E: EdgeInt>(
     let one = format.one();
     EdgeEquation {
         at_origin: value + bias,
+        bias,
         step_x: E::from(-dy) * E::from(one),
         step_y: E::from(dx) * E::from(one),
     }
@@ -191,54 +190,26 @@ fn pixel_box(v: &[[Fixed; 2]; 3], format: Format, canvas: Canvas) -> PixelBox {
     PixelBox { x0, y0, x1, y1 }
 }
 
-/// f32 plane equations for depth and attributes, set up in f64 from the
-/// vertices in their original order (the first vertex is the flat one).
-fn shading(
-    positions: [[Fixed; 2]; 3],
-    triangle: &Triangle,
-    format: Format,
-    plan: &Plan,
-    area: f64,
-) -> Shading {
-    let scale = 1.0 / format.one() as f64;
-    let px = |p: Fixed| p.0 as f64 * scale;
-    let [p0, p1, p2] = positions;
-    let (dx1, dy1) = (px(p1[0]) - px(p0[0]), px(p1[1]) - px(p0[1]));
-    let (dx2, dy2) = (px(p2[0]) - px(p0[0]), px(p2[1]) - px(p0[1]));
-    let det = area * scale * scale;
-    let plane = |v: [f64; 3]| -> Plane {
-        let (d1, d2) = (v[1] - v[0], v[2] - v[0]);
-        Plane {
-            origin: v[0] as f32,
-            dx: ((d1 * dy2 - d2 * dy1) / det) as f32,
-            dy: ((d2 * dx1 - d1 * dx2) / det) as f32,
-        }
-    };
+/// Per-vertex values for interpolation, in f32.
+fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f64) -> Shading {
     let vs = &triangle.vertices;
-    let depth = plan
-        .depth
-        .then(|| plane([0, 1, 2].map(|i| vs[i].z.to_f64_lossy())));
     let inv_w = [0, 1, 2].map(|i| 1.0 / vs[i].w.to_f64_lossy());
     let interpolation = triangle.interpolation;
     let attributes = (0..plan.attributes)
         .map(|k| {
-            let a = [0, 1, 2].map(|i| vs[i].attributes[k].to_f64_lossy());
-            match interpolation {
-                Interpolation::Flat => Plane {
-                    origin: a[0] as f32,
-                    dx: 0.0,
-                    dy: 0.0,
-                },
-                Interpolation::Linear => plane(a),
-                Interpolation::Perspective => plane([0, 1, 2].map(|i| a[i] * inv_w[i])),
-            }
+            [0, 1, 2].map(|i| {
+                let a = vs[i].attributes[k].to_f64_lossy();
+                let a = if interpolation == Interpolation::Perspective { a * inv_w[i] } else { a };
+                a as f32
+            })
         })
         .collect();
     Shading::Values {
         interpolation,
-        anchor: p0,
-        depth,
+        inv_area: 1.0 / twice_area,
+        opposite,
+        depth: plan.depth.then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32)),
         attributes,
-        inv_w: plane(inv_w),
+        inv_w: inv_w.map(|v| v as f32),
     }
 }

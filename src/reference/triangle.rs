@@ -240,6 +240,17 @@ fn to_i128(v: &IBig) -> i128 {
     v.try_into().expect("checked by fits_fast_path")
 }
 
+/// Which integers the oracle computes coverage with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// i128 where `exact::I128_COORD_BOUND` proves it safe, big integers
+    /// otherwise.
+    Auto,
+    /// Big integers throughout: slower, and the differential check of the
+    /// fast path.
+    BigOnly,
+}
+
 /// How many triangles cover each sample under `rule` (coverage only).
 pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
     let (grid, triangles, fast) = on_grid(scene);
@@ -272,7 +283,13 @@ pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
 /// The exact frame: coverage under the scene's rule, and exact depth and
 /// attributes rounded to odd (see `exact::to_f64_round_odd`).
 pub fn render(scene: &Scene, plan: &Plan) -> Frame {
+    render_with(scene, plan, Arithmetic::Auto)
+}
+
+/// [`render`] with a choice of integer arithmetic.
+pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
     let (grid, triangles, fast) = on_grid(scene);
+    let fast = fast && arithmetic == Arithmetic::Auto;
     let mut frame = Frame::new(
         scene.canvas.width,
         scene.canvas.height,

@@ -1,0 +1,104 @@
+//! Property tests: the production rasterizer against the exact reference,
+//! and the reference's i128 fast path against its big-integer path, on
+//! random triangles over the whole supported range.
+//!
+//! Case counts: proptest's default (256), or `PROPTEST_CASES` for long runs
+//! (`PROPTEST_CASES=25600 cargo test --release --test properties`). Failures
+//! are shrunk to a minimal scene and saved in
+//! `tests/properties.proptest-regressions`, which is committed.
+
+use proptest::prelude::*;
+use rastercheck::metrics;
+use rastercheck::plan::Plan;
+use rastercheck::production::Production;
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::reference::triangle::{self, Arithmetic};
+use rastercheck::scene::rules::limits::COORD_LIMIT;
+use rastercheck::scene::{
+    Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene, Triangle, Vertex,
+};
+
+const SIZE: u32 = 24;
+
+/// A coordinate: on the half-pixel grid (forcing ties at sample centres),
+/// on the subpixel grid, free (snapping decides), or anywhere in the
+/// coordinate range.
+fn coordinate() -> impl Strategy<Value = Number> {
+    let span = i64::from(SIZE) + 8;
+    prop_oneof![
+        4 => (-8..2 * span).prop_map(|h| Number::ratio(h, 2)),
+        4 => (-8 * 4096..span * 4096).prop_map(|k| Number::ratio(k, 4096)),
+        2 => (-8i64 << 20..span << 20, 1i64..1 << 20).prop_map(|(n, d)| Number::ratio(n, d)),
+        1 => (-COORD_LIMIT..=COORD_LIMIT).prop_map(Number::from_int),
+    ]
+}
+
+fn fill_rule() -> impl Strategy<Value = FillRule> {
+    prop::sample::select(FillRule::ALL.to_vec())
+}
+
+fn rules() -> impl Strategy<Value = Rules> {
+    (
+        prop::sample::select(vec![Some(0u32), Some(1), Some(4), Some(8), Some(13), Some(14), Some(16)]),
+        fill_rule(),
+        prop::sample::select(vec![Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
+    )
+        .prop_map(|(subpixel_bits, fill_rule, cull)| Rules { subpixel_bits, fill_rule, cull })
+}
+
+fn vertex() -> impl Strategy<Value = Vertex> {
+    (coordinate(), coordinate(), -1000i64..1000, 1i64..400)
+        .prop_map(|(x, y, a, w)| {
+            let mut v = Vertex::at(x, y);
+            v.attributes = vec![Number::ratio(a, 10)];
+            v.w = Number::ratio(w, 100);
+            v
+        })
+}
+
+fn scene() -> impl Strategy<Value = Scene> {
+    (rules(), prop::collection::vec([vertex(), vertex(), vertex()], 1..4)).prop_map(|(rules, triangles)| Scene {
+        name: "property".to_owned(),
+        description: String::new(),
+        canvas: Canvas { width: SIZE, height: SIZE },
+        rules,
+        primitives: triangles
+            .into_iter()
+            .map(|vertices| Primitive::Triangle(Triangle { vertices, interpolation: Interpolation::Perspective }))
+            .collect(),
+        effects: Effects::default(),
+        expect: Expect::default(),
+        attribute_count: 1,
+        has_depth: false,
+    })
+}
+
+proptest! {
+    #[test]
+    fn production_coverage_equals_the_reference(scene in scene()) {
+        let plan = Plan::for_scene(&scene);
+        let reference = triangle::render(&scene, &plan);
+        let candidate = Production.rasterize(&scene, &plan).unwrap();
+        let m = metrics::coverage::compare(&reference, &candidate);
+        prop_assert_eq!(m.mismatched(), 0, "{} missing, {} extra, {} wrong owner", m.missing, m.extra, m.wrong_owner);
+    }
+
+    #[test]
+    fn production_interpolation_stays_within_the_documented_bound(scene in scene()) {
+        let plan = Plan::for_scene(&scene);
+        let reference = triangle::render(&scene, &plan);
+        let candidate = Production.rasterize(&scene, &plan).unwrap();
+        let m = metrics::measure(&scene, &reference, &candidate, None);
+        for ch in &m.channels {
+            prop_assert!(ch.within_bounds(), "{}: {:e} > {:e}", ch.channel, ch.max_abs, ch.allowed_abs);
+        }
+    }
+
+    #[test]
+    fn the_i128_fast_path_equals_big_integers(scene in scene()) {
+        let plan = Plan::for_scene(&scene);
+        let fast = triangle::render_with(&scene, &plan, Arithmetic::Auto);
+        let big = triangle::render_with(&scene, &plan, Arithmetic::BigOnly);
+        prop_assert_eq!(fast, big);
+    }
+}
