@@ -71,8 +71,11 @@ pub fn write(frame: &Frame, path: &Path) -> Result<(), String> {
         .map_err(|e| format!("{}: {e}", path.display()))
 }
 
+/// A golden file's size and its named f32 channels.
+pub type Channels = ((usize, usize), Vec<(String, Vec<f32>)>);
+
 /// Reads every f32 channel of a golden file, with the image size.
-pub fn read(path: &Path) -> Result<((usize, usize), Vec<(String, Vec<f32>)>), String> {
+pub fn read(path: &Path) -> Result<Channels, String> {
     let image =
         read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let layer = image

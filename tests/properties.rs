@@ -15,7 +15,8 @@ use rastercheck::rasterizer::Rasterizer;
 use rastercheck::reference::triangle::{self, Arithmetic};
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{
-    Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene, Triangle, Vertex,
+    Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene,
+    Triangle, Vertex,
 };
 
 const SIZE: u32 = 24;
@@ -39,38 +40,61 @@ fn fill_rule() -> impl Strategy<Value = FillRule> {
 
 fn rules() -> impl Strategy<Value = Rules> {
     (
-        prop::sample::select(vec![Some(0u32), Some(1), Some(4), Some(8), Some(13), Some(14), Some(16)]),
+        prop::sample::select(vec![
+            Some(0u32),
+            Some(1),
+            Some(4),
+            Some(8),
+            Some(13),
+            Some(14),
+            Some(16),
+        ]),
         fill_rule(),
         prop::sample::select(vec![Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
     )
-        .prop_map(|(subpixel_bits, fill_rule, cull)| Rules { subpixel_bits, fill_rule, cull })
-}
-
-fn vertex() -> impl Strategy<Value = Vertex> {
-    (coordinate(), coordinate(), -1000i64..1000, 1i64..400)
-        .prop_map(|(x, y, a, w)| {
-            let mut v = Vertex::at(x, y);
-            v.attributes = vec![Number::ratio(a, 10)];
-            v.w = Number::ratio(w, 100);
-            v
+        .prop_map(|(subpixel_bits, fill_rule, cull)| Rules {
+            subpixel_bits,
+            fill_rule,
+            cull,
         })
 }
 
-fn scene() -> impl Strategy<Value = Scene> {
-    (rules(), prop::collection::vec([vertex(), vertex(), vertex()], 1..4)).prop_map(|(rules, triangles)| Scene {
-        name: "property".to_owned(),
-        description: String::new(),
-        canvas: Canvas { width: SIZE, height: SIZE },
-        rules,
-        primitives: triangles
-            .into_iter()
-            .map(|vertices| Primitive::Triangle(Triangle { vertices, interpolation: Interpolation::Perspective }))
-            .collect(),
-        effects: Effects::default(),
-        expect: Expect::default(),
-        attribute_count: 1,
-        has_depth: false,
+fn vertex() -> impl Strategy<Value = Vertex> {
+    (coordinate(), coordinate(), -1000i64..1000, 1i64..400).prop_map(|(x, y, a, w)| {
+        let mut v = Vertex::at(x, y);
+        v.attributes = vec![Number::ratio(a, 10)];
+        v.w = Number::ratio(w, 100);
+        v
     })
+}
+
+fn scene() -> impl Strategy<Value = Scene> {
+    (
+        rules(),
+        prop::collection::vec([vertex(), vertex(), vertex()], 1..4),
+    )
+        .prop_map(|(rules, triangles)| Scene {
+            name: "property".to_owned(),
+            description: String::new(),
+            canvas: Canvas {
+                width: SIZE,
+                height: SIZE,
+            },
+            rules,
+            primitives: triangles
+                .into_iter()
+                .map(|vertices| {
+                    Primitive::Triangle(Triangle {
+                        vertices,
+                        interpolation: Interpolation::Perspective,
+                    })
+                })
+                .collect(),
+            effects: Effects::default(),
+            expect: Expect::default(),
+            attribute_count: 1,
+            has_depth: false,
+        })
 }
 
 proptest! {

@@ -104,7 +104,14 @@ impl<E: EdgeInt> Sink for FrameSink<'_, E> {
         for x in x0..x1 {
             self.frame.hit(row + x as usize, self.index);
         }
-        let Shading::Values { interpolation, inv_area, opposite, depth, attributes, inv_w } = &self.setup.shading
+        let Shading::Values {
+            interpolation,
+            inv_area,
+            opposite,
+            depth,
+            attributes,
+            inv_w,
+        } = &self.setup.shading
         else {
             return;
         };

@@ -199,7 +199,11 @@ fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f
         .map(|k| {
             [0, 1, 2].map(|i| {
                 let a = vs[i].attributes[k].to_f64_lossy();
-                let a = if interpolation == Interpolation::Perspective { a * inv_w[i] } else { a };
+                let a = if interpolation == Interpolation::Perspective {
+                    a * inv_w[i]
+                } else {
+                    a
+                };
                 a as f32
             })
         })
@@ -208,7 +212,9 @@ fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f
         interpolation,
         inv_area: 1.0 / twice_area,
         opposite,
-        depth: plan.depth.then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32)),
+        depth: plan
+            .depth
+            .then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32)),
         attributes,
         inv_w: inv_w.map(|v| v as f32),
     }

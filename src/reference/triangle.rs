@@ -142,20 +142,20 @@ impl<T: ExactInt> Setup<T> {
         Some(Setup { v, area, owns })
     }
 
-    /// The edge values at `p`, signed so that the interior is positive,
-    /// when `p` is covered; `None` otherwise. Value i belongs to the edge
-    /// opposite vertex (i+2)%3, i.e. it is the barycentric weight of that
-    /// vertex times the area.
+    /// The three orientations of `p` against the edges when `p` is
+    /// covered; `None` otherwise. Value i, for edge v[i]→v[i+1], carries the
+    /// area's sign and equals the area times the barycentric weight of the
+    /// opposite vertex v[i+2].
     fn covers(&self, p: &Point<T>) -> Option<[T; 3]> {
         let sign = self.area.signum();
         let mut values = [T::zero(), T::zero(), T::zero()];
-        for i in 0..3 {
+        for (i, value) in values.iter_mut().enumerate() {
             let e = orient(&self.v[i], &self.v[(i + 1) % 3], p);
             let inward = e.signum() * sign;
             if inward < 0 || (inward == 0 && !self.owns[i]) {
                 return None;
             }
-            values[i] = e;
+            *value = e;
         }
         Some(values)
     }
@@ -313,7 +313,7 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
             to_i128,
             rule,
             cull,
-            |i, p, e, a| write(i, p, e.clone().map(|v| IBig::from(v)), IBig::from(*a)),
+            |i, p, e, a| write(i, p, (*e).map(IBig::from), IBig::from(*a)),
         );
     } else {
         for_each_covered(

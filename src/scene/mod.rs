@@ -82,7 +82,7 @@ impl Vertex {
 pub struct Effects {}
 
 /// What a case expects of a rasterizer under test.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Expect {
     /// Samples whose coverage count may differ from the reference (default 0).
     pub max_mismatched_samples: u64,
@@ -95,18 +95,6 @@ pub struct Expect {
     pub max_abs_error: Option<f64>,
     /// Largest error in units in the last place of the exact value's f32.
     pub max_ulp_error: Option<f64>,
-}
-
-impl Default for Expect {
-    fn default() -> Self {
-        Expect {
-            max_mismatched_samples: 0,
-            watertight: false,
-            samples_covered: None,
-            max_abs_error: None,
-            max_ulp_error: None,
-        }
-    }
 }
 
 impl Scene {

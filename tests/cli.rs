@@ -1,0 +1,265 @@
+//! The binary as a user runs it: exit codes, output, files written.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn rastercheck(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+fn text(out: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+/// A fresh folder with a `cases/` tree holding the given files.
+fn workspace(name: &str, files: &[(&str, &str)]) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rastercheck-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    for (path, content) in files {
+        let path = dir.join(path);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, content).unwrap();
+    }
+    dir
+}
+
+const TIE_PAIR: &str = r#"{
+  "name": "diagonal_pair", "canvas": {"width": 8, "height": 8},
+  "primitives": [
+    {"triangle": [[0, 0], [8, 0], [8, 8]]},
+    {"triangle": [[0, 0], [8, 8], [0, 8]]}
+  ],
+  "expect": {"watertight": true}
+}"#;
+
+const SINGLE: &str = r#"{"name": "single", "canvas": {"width": 4, "height": 4},
+  "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]}]}"#;
+
+fn assert_no_panic(out: &Output) {
+    assert!(!text(out).contains("panicked"), "{}", text(out));
+}
+
+#[test]
+fn passing_cases_exit_0_with_a_line_each_and_a_summary() {
+    let dir = workspace(
+        "pass",
+        &[
+            ("cases/a/pair.json", TIE_PAIR),
+            ("cases/a/single.json", SINGLE),
+        ],
+    );
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    assert!(t.contains("PASS  a/pair"), "{t}");
+    assert!(t.contains("PASS  a/single"), "{t}");
+    assert!(t.contains("production: 2 passed, 0 failed"), "{t}");
+}
+
+#[test]
+fn a_failing_rasterizer_exits_1_and_says_why() {
+    let dir = workspace("fail", &[("cases/pair.json", TIE_PAIR)]);
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            "cases",
+            "-r",
+            "production",
+            "-r",
+            "mutant:flipped-ties",
+        ],
+    );
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(t.contains("FAIL  pair  mutant:flipped-ties"), "{t}");
+    assert!(t.contains("8 wrong owner"), "{t}");
+    assert!(t.contains("production: 1 passed"), "{t}");
+}
+
+#[test]
+fn malformed_json_exits_2_naming_the_file_and_place() {
+    let dir = workspace(
+        "malformed",
+        &[("cases/broken.json", "{\"name\": \"x\",\n \"canvas\": [1,\n")],
+    );
+    let out = rastercheck(&dir, &["run", "cases/broken.json"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains("cases/broken.json: line 3 column 0: invalid JSON"),
+        "{t}"
+    );
+    assert_no_panic(&out);
+}
+
+#[test]
+fn bad_values_exit_2_naming_the_json_path() {
+    let wrong_type = SINGLE.replace("[4, 0]", "[4, true]");
+    let non_finite = SINGLE.replace("[4, 0]", "[\"inf\", 0]");
+    let out_of_range = SINGLE.replace("[4, 0]", "[4, -32769]");
+    for (json, path, phrase) in [
+        (
+            wrong_type,
+            "$.primitives[0].triangle[1][1]",
+            "expected a number",
+        ),
+        (
+            non_finite,
+            "$.primitives[0].triangle[1][0]",
+            "is not finite",
+        ),
+        (
+            out_of_range,
+            "$.primitives[0].triangle[1][1]",
+            "outside the documented range",
+        ),
+    ] {
+        let dir = workspace("values", &[("cases/bad.json", &json)]);
+        let out = rastercheck(&dir, &["run", "cases"]);
+        let t = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{t}");
+        assert!(
+            t.contains(&format!("cases/bad.json: {path}: ")) && t.contains(phrase),
+            "{t}"
+        );
+        assert_no_panic(&out);
+    }
+}
+
+#[test]
+fn one_bad_case_does_not_stop_the_others() {
+    let dir = workspace(
+        "mixed",
+        &[
+            ("cases/a.json", SINGLE),
+            ("cases/b.json", "not json"),
+            ("cases/c.json", TIE_PAIR),
+        ],
+    );
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            "cases",
+            "-r",
+            "production",
+            "-r",
+            "mutant:flipped-ties",
+        ],
+    );
+    let t = text(&out);
+    // Bad input wins over a failure, and both good cases still ran.
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(t.contains("BAD   b"), "{t}");
+    assert!(t.contains("PASS  a  production"), "{t}");
+    assert!(t.contains("PASS  c  production"), "{t}");
+    assert!(t.contains("FAIL  c  mutant:flipped-ties"), "{t}");
+    assert!(t.contains("3 case files, 1 unreadable"), "{t}");
+}
+
+#[test]
+fn invalid_folders_are_skipped_unless_named() {
+    let dir = workspace(
+        "skip",
+        &[("cases/a.json", SINGLE), ("cases/invalid/x.json", "{")],
+    );
+    let out = rastercheck(&dir, &["run", "cases"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(
+        text(&out).contains("note: skipping cases/invalid"),
+        "{}",
+        text(&out)
+    );
+    let out = rastercheck(&dir, &["run", "cases/invalid"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    let dir = workspace("usage", &[("cases/a.json", SINGLE)]);
+    for args in [
+        &["run", "no/such/path"][..],
+        &["run", "cases", "-r", "no-such-rasterizer"],
+        &["run", "--no-such-flag"],
+        &["frobnicate"],
+    ] {
+        let out = rastercheck(&dir, args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", text(&out));
+        assert_no_panic(&out);
+    }
+}
+
+#[test]
+fn bless_writes_golden_files_that_run_then_checks() {
+    let dir = workspace("bless", &[("cases/pair.json", TIE_PAIR)]);
+    let out = rastercheck(&dir, &["bless", "cases"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(dir.join("reference/pair.exr").is_file());
+    let out = rastercheck(&dir, &["run", "cases"]);
+    assert!(
+        text(&out).contains("golden files: 1 match, 0 differ"),
+        "{}",
+        text(&out)
+    );
+
+    // A golden file from another case no longer matches: the run fails.
+    let other = workspace(
+        "bless-other",
+        &[(
+            "cases/pair.json",
+            &TIE_PAIR.replace("[8, 0], [8, 8]", "[8, 0], [8, 7]"),
+        )],
+    );
+    assert_eq!(rastercheck(&other, &["bless"]).status.code(), Some(0));
+    std::fs::copy(
+        other.join("reference/pair.exr"),
+        dir.join("reference/pair.exr"),
+    )
+    .unwrap();
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(
+        t.contains("GOLDEN pair  the reference no longer reproduces its golden file"),
+        "{t}"
+    );
+}
+
+#[test]
+fn show_writes_three_decodable_pngs() {
+    let dir = workspace("show", &[("cases/pair.json", TIE_PAIR)]);
+    let out = rastercheck(
+        &dir,
+        &[
+            "show",
+            "cases/pair.json",
+            "--out",
+            "shown",
+            "-r",
+            "mutant:flipped-ties",
+        ],
+    );
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    for name in ["reference.png", "mutant-flipped-ties.png", "diff.png"] {
+        let img =
+            image::open(dir.join("shown").join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        // 8 pixels magnified 32 times, the most auto-scaling gives.
+        assert_eq!(img.width(), 256, "{name}");
+    }
+    // The diff shows the 8 wrong-owner samples in yellow.
+    let diff = image::open(dir.join("shown/diff.png")).unwrap().to_rgb8();
+    let yellow = rastercheck::report::png::WRONG_OWNER;
+    let centre = |x: u32, y: u32| diff.get_pixel(x * 32 + 16, y * 32 + 10).0;
+    assert_eq!(centre(3, 3), yellow);
+    assert_ne!(centre(3, 4), yellow);
+}
