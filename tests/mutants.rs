@@ -251,3 +251,95 @@ fn golden_check_catches_a_changed_oracle() {
     assert!(err.contains("channel coverage"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
+
+/// Runs a rasterizer over every bundled triangle case; returns each case id
+/// with its failure reasons (empty when it passed).
+fn sweep(candidate: &dyn Rasterizer) -> Vec<(String, Vec<String>)> {
+    let cases = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/triangles");
+    let found = suite::discover(&[cases]);
+    assert!(
+        found.cases.len() >= 40,
+        "expected the bundled triangle cases"
+    );
+    found
+        .cases
+        .iter()
+        .map(|file| {
+            let s = suite::load(file, &Limits::default()).unwrap();
+            let r = run(&s, candidate);
+            let reasons = match r.verdict {
+                Verdict::Pass => Vec::new(),
+                Verdict::Fail(reasons) => reasons,
+                other => panic!("{}: {other:?}", file.id),
+            };
+            (file.id.clone(), reasons)
+        })
+        .collect()
+}
+
+fn is_tie_case(id: &str) -> bool {
+    let name = id.trim_start_matches("triangles/");
+    [
+        "fan_",
+        "pinwheel_",
+        "snap_tie_",
+        "quad_grid_rot",
+        "shared_edge_",
+    ]
+    .iter()
+    .any(|p| name.starts_with(p))
+        && name != "shared_edge_fractions_offgrid"
+        || ["top_left", "bottom_right", "top_right", "bottom_left"]
+            .iter()
+            .any(|r| name == format!("fill_rule_{r}"))
+}
+
+#[test]
+fn the_bundled_tie_cases_catch_a_flipped_tie_rule() {
+    let results = sweep(&Mutant(Mutation::FlippedTies));
+    let tie_cases: Vec<_> = results.iter().filter(|(id, _)| is_tie_case(id)).collect();
+    assert!(tie_cases.len() >= 30, "{} tie cases", tie_cases.len());
+    for (id, reasons) in tie_cases {
+        assert!(
+            reasons.iter().any(|r| r.starts_with("coverage:")),
+            "{id}: the flipped tie rule went unnoticed"
+        );
+    }
+}
+
+#[test]
+fn the_bundled_meshes_catch_closed_edges_as_overdraw() {
+    for (id, reasons) in sweep(&Mutant(Mutation::ClosedEdges)) {
+        let name = id.trim_start_matches("triangles/");
+        if name.starts_with("fan_")
+            || name.starts_with("quad_grid_rot")
+            || (name.starts_with("fill_rule_") && name != "fill_rule_all_edges")
+        {
+            assert!(
+                reasons
+                    .iter()
+                    .any(|r| r.starts_with("watertight:") && !r.contains(" 0 overdrawn")),
+                "{id}: {reasons:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_bundled_perspective_cases_catch_screen_space_interpolation() {
+    let caught: Vec<_> = sweep(&Mutant(Mutation::NoPerspective))
+        .into_iter()
+        .filter(|(id, _)| {
+            id.contains("interp_perspective_w_range")
+                || id.contains("interp_mixed_modes")
+                || id.contains("interp_perspective_fan")
+        })
+        .collect();
+    assert_eq!(caught.len(), 3);
+    for (id, reasons) in caught {
+        assert!(
+            reasons.iter().any(|r| r.contains("max error")),
+            "{id}: {reasons:?}"
+        );
+    }
+}

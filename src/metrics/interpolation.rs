@@ -9,7 +9,8 @@ pub struct ChannelError {
     pub channel: String,
     pub samples: u64,
     pub max_abs: f64,
-    /// Largest error in units in the last place of the exact value's f32.
+    /// Largest error in units in the last place of the exact value's f32,
+    /// over samples whose exact value is at least `ulp_floor` in magnitude.
     pub max_ulp: f64,
     pub rms: f64,
     /// The bound this channel is held to.
@@ -41,6 +42,7 @@ pub fn channel_error(
     values: &[f64],
     allowed_abs: f64,
     allowed_ulp: Option<f64>,
+    ulp_floor: f64,
 ) -> ChannelError {
     let (mut samples, mut max_abs, mut max_ulp, mut sum_sq) = (0u64, 0f64, 0f64, 0f64);
     for i in 0..reference.sample_count() {
@@ -51,7 +53,11 @@ pub fn channel_error(
         let error = if error.is_nan() { f64::INFINITY } else { error };
         samples += 1;
         max_abs = max_abs.max(error);
-        max_ulp = max_ulp.max(error / f32_ulp(exact[i]));
+        // An error of 1e-9 where the exact value is 0 is infinitely many
+        // ulps; near zero the absolute error is the measure.
+        if exact[i].abs() >= ulp_floor {
+            max_ulp = max_ulp.max(error / f32_ulp(exact[i]));
+        }
         sum_sq += error * error;
     }
     let rms = if samples == 0 {

@@ -57,6 +57,7 @@ pub fn measure(
             values,
             bound(m),
             expect.max_ulp_error,
+            DEFAULT_RELATIVE_BOUND * m.max(1.0),
         ));
     }
     for (k, (exact, values)) in reference
@@ -78,6 +79,7 @@ pub fn measure(
             values,
             bound(m),
             expect.max_ulp_error,
+            DEFAULT_RELATIVE_BOUND * m.max(1.0),
         ));
     }
     Metrics {
