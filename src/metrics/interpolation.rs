@@ -24,6 +24,15 @@ impl ChannelError {
     }
 }
 
+/// What a channel is held to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    pub allowed_abs: f64,
+    pub allowed_ulp: Option<f64>,
+    /// Ulps are counted only where |exact| is at least this.
+    pub ulp_floor: f64,
+}
+
 /// The spacing of f32 values at `x` (the f32 ulp of x's magnitude).
 pub fn f32_ulp(x: f64) -> f64 {
     let m = (x as f32).abs();
@@ -40,10 +49,13 @@ pub fn channel_error(
     candidate: &Frame,
     exact: &[f64],
     values: &[f64],
-    allowed_abs: f64,
-    allowed_ulp: Option<f64>,
-    ulp_floor: f64,
+    bounds: Bounds,
 ) -> ChannelError {
+    let Bounds {
+        allowed_abs,
+        allowed_ulp,
+        ulp_floor,
+    } = bounds;
     let (mut samples, mut max_abs, mut max_ulp, mut sum_sq) = (0u64, 0f64, 0f64, 0f64);
     for i in 0..reference.sample_count() {
         if reference.last[i] == 0 || reference.last[i] != candidate.last[i] {

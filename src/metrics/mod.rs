@@ -38,10 +38,12 @@ pub fn measure(
     let watertight = interior.map(|inside| watertight::measure(inside, reference, candidate));
     let mut channels = Vec::new();
     let expect = &scene.expect;
-    let bound = |magnitude: f64| {
-        expect
+    let bounds = |magnitude: f64| interpolation::Bounds {
+        allowed_abs: expect
             .max_abs_error
-            .unwrap_or(DEFAULT_RELATIVE_BOUND * magnitude.max(1.0))
+            .unwrap_or(DEFAULT_RELATIVE_BOUND * magnitude.max(1.0)),
+        allowed_ulp: expect.max_ulp_error,
+        ulp_floor: DEFAULT_RELATIVE_BOUND * magnitude.max(1.0),
     };
     if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
         let m = largest(
@@ -55,9 +57,7 @@ pub fn measure(
             candidate,
             exact,
             values,
-            bound(m),
-            expect.max_ulp_error,
-            DEFAULT_RELATIVE_BOUND * m.max(1.0),
+            bounds(m),
         ));
     }
     for (k, (exact, values)) in reference
@@ -77,9 +77,7 @@ pub fn measure(
             candidate,
             exact,
             values,
-            bound(m),
-            expect.max_ulp_error,
-            DEFAULT_RELATIVE_BOUND * m.max(1.0),
+            bounds(m),
         ));
     }
     Metrics {
