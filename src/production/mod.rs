@@ -7,6 +7,7 @@ pub mod setup;
 pub mod traverse;
 
 use fixed::{EdgeInt, Format};
+use glam::Vec3;
 use setup::{Shading, TriangleSetup};
 use traverse::Sink;
 
@@ -121,12 +122,12 @@ impl<E: EdgeInt> Sink for FrameSink<'_, E> {
         for x in x0..x1 {
             let i = row + x as usize;
             // λ for each vertex in the case's order.
-            let mut weight = [0f32; 3];
+            let mut weight = Vec3::ZERO;
             for k in 0..3 {
                 weight[opposite[k]] = (e[k].to_f64() * inv_area) as f32;
                 e[k] = e[k] + self.setup.edges[k].step_x;
             }
-            let blend = |v: &[f32; 3]| weight[0] * v[0] + weight[1] * v[1] + weight[2] * v[2];
+            let blend = |v: &Vec3| weight.dot(*v);
             if let (Some(z), Some(out)) = (depth, self.frame.depth.as_mut()) {
                 out[i] = f64::from(blend(z));
             }
@@ -136,7 +137,7 @@ impl<E: EdgeInt> Sink for FrameSink<'_, E> {
             };
             for (channel, values) in self.frame.attributes.iter_mut().zip(attributes) {
                 let value = match interpolation {
-                    Interpolation::Flat => values[0],
+                    Interpolation::Flat => values.x,
                     Interpolation::Linear => blend(values),
                     Interpolation::Perspective => blend(values) / perspective_w,
                 };

@@ -2,6 +2,8 @@
 //! bias folded in, a pixel bounding box, and per-vertex values for f32
 //! interpolation.
 
+use glam::Vec3;
+
 use super::fixed::{EdgeInt, Fixed, Format};
 use crate::plan::Plan;
 use crate::scene::{Canvas, Cull, FillRule, Interpolation, Triangle};
@@ -61,11 +63,11 @@ pub enum Shading {
         /// The vertex (in the case's order) whose weight edge i gives:
         /// the one opposite it.
         opposite: [usize; 3],
-        depth: Option<[f32; 3]>,
+        depth: Option<Vec3>,
         /// Per attribute, per vertex: aᵢ/wᵢ for perspective, aᵢ otherwise.
-        attributes: Vec<[f32; 3]>,
+        attributes: Vec<Vec3>,
         /// 1/wᵢ per vertex.
-        inv_w: [f32; 3],
+        inv_w: Vec3,
     },
 }
 
@@ -197,15 +199,17 @@ fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f
     let interpolation = triangle.interpolation;
     let attributes = (0..plan.attributes)
         .map(|k| {
-            [0, 1, 2].map(|i| {
-                let a = vs[i].attributes[k].to_f64_lossy();
-                let a = if interpolation == Interpolation::Perspective {
-                    a * inv_w[i]
-                } else {
-                    a
-                };
-                a as f32
-            })
+            [0, 1, 2]
+                .map(|i| {
+                    let a = vs[i].attributes[k].to_f64_lossy();
+                    let a = if interpolation == Interpolation::Perspective {
+                        a * inv_w[i]
+                    } else {
+                        a
+                    };
+                    a as f32
+                })
+                .into()
         })
         .collect();
     Shading::Values {
@@ -214,8 +218,8 @@ fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f
         opposite,
         depth: plan
             .depth
-            .then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32)),
+            .then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32).into()),
         attributes,
-        inv_w: inv_w.map(|v| v as f32),
+        inv_w: inv_w.map(|v| v as f32).into(),
     }
 }
