@@ -214,7 +214,7 @@ fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> 
                 result.verdict.label(),
                 file.id,
                 result.rasterizer,
-                suite::describe(&result, &reference)
+                suite::describe(&result)
             );
             if let Verdict::Fail(reasons) = &result.verdict {
                 for reason in reasons {
@@ -302,11 +302,7 @@ fn show(case: PathBuf, out: PathBuf, name: &str, scale: Option<u32>, limits: Lim
     let reference = suite::run_reference(&scene);
     let result = suite::run_candidate(&scene, &reference, candidate.as_ref());
     let (Some(frame), Some(metrics)) = (&result.frame, &result.metrics) else {
-        eprintln!(
-            "{}: {}",
-            candidate.name(),
-            suite::describe(&result, &reference)
-        );
+        eprintln!("{}: {}", candidate.name(), suite::describe(&result));
         return FAIL;
     };
     let scale = scale.unwrap_or_else(|| png::auto_scale(frame)).clamp(1, 64);
@@ -327,7 +323,7 @@ fn show(case: PathBuf, out: PathBuf, name: &str, scale: Option<u32>, limits: Lim
                 "{} {}: {}",
                 result.verdict.label(),
                 candidate.name(),
-                suite::describe(&result, &reference)
+                suite::describe(&result)
             );
             println!("key: magenta = missing, red = extra, yellow = wrong owner, grey = covered alike; cyan = snapped edges");
             if matches!(result.verdict, Verdict::Pass) {

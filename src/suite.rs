@@ -180,6 +180,18 @@ pub struct CandidateRun {
     pub elapsed: Duration,
 }
 
+impl CandidateRun {
+    fn without_frame(rasterizer: String, verdict: Verdict, elapsed: Duration) -> CandidateRun {
+        CandidateRun {
+            rasterizer,
+            verdict,
+            metrics: None,
+            frame: None,
+            elapsed,
+        }
+    }
+}
+
 pub fn run_candidate(
     scene: &Scene,
     reference: &ReferenceRun,
@@ -194,22 +206,10 @@ pub fn run_candidate(
     let frame = match result {
         Ok(Ok(frame)) => frame,
         Ok(Err(RasterError::Unsupported(why))) => {
-            return CandidateRun {
-                rasterizer: name,
-                verdict: Verdict::Unsupported(why),
-                metrics: None,
-                frame: None,
-                elapsed,
-            }
+            return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed)
         }
         Ok(Err(RasterError::Failed(why))) => {
-            return CandidateRun {
-                rasterizer: name,
-                verdict: Verdict::Error(why),
-                metrics: None,
-                frame: None,
-                elapsed,
-            }
+            return CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
         }
         Err(panic) => {
             let why = panic
@@ -217,13 +217,11 @@ pub fn run_candidate(
                 .map(|s| s.to_string())
                 .or_else(|| panic.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "panicked".to_owned());
-            return CandidateRun {
-                rasterizer: name,
-                verdict: Verdict::Error(format!("panicked: {why}")),
-                metrics: None,
-                frame: None,
+            return CandidateRun::without_frame(
+                name,
+                Verdict::Error(format!("panicked: {why}")),
                 elapsed,
-            };
+            );
         }
     };
     if (frame.width, frame.height) != (reference.frame.width, reference.frame.height)
@@ -280,7 +278,7 @@ pub fn check_golden(root: &Path, id: &str, frame: &Frame) -> GoldenStatus {
 }
 
 /// A one-line summary of a candidate's metrics.
-pub fn describe(run: &CandidateRun, reference: &ReferenceRun) -> String {
+pub fn describe(run: &CandidateRun) -> String {
     let Some(m) = &run.metrics else {
         return match &run.verdict {
             Verdict::Unsupported(why) | Verdict::Error(why) => why.clone(),
@@ -320,6 +318,5 @@ pub fn describe(run: &CandidateRun, reference: &ReferenceRun) -> String {
             m.channels.len()
         ));
     }
-    let _ = reference;
     parts.join(" · ")
 }

@@ -71,7 +71,7 @@ fn valid_case(file: &CaseFile) -> Result<(), Failed> {
         other => problems.push(format!(
             "production: {}: {}",
             other.label(),
-            suite::describe(&run, &reference)
+            suite::describe(&run)
         )),
     }
     if problems.is_empty() {

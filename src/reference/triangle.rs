@@ -251,20 +251,34 @@ pub enum Arithmetic {
     BigOnly,
 }
 
-/// How many triangles cover each sample under `rule` (coverage only).
-pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
+/// Visits every covered sample of the scene under `rule`, converting the
+/// edge values and area to big integers only when `with_values` asks.
+fn visit_scene<F>(
+    scene: &Scene,
+    rule: FillRule,
+    arithmetic: Arithmetic,
+    with_values: bool,
+    mut visit: F,
+) where
+    F: FnMut(usize, usize, Option<([IBig; 3], IBig)>),
+{
     let (grid, triangles, fast) = on_grid(scene);
-    let mut counts = vec![0u16; scene.canvas.pixel_count()];
-    let mut count = |_: usize, pixel: usize| counts[pixel] = counts[pixel].saturating_add(1);
-    if fast {
+    let cull = scene.rules.cull;
+    if fast && arithmetic == Arithmetic::Auto {
         for_each_covered(
             &grid,
             scene.canvas,
             &triangles,
             to_i128,
             rule,
-            scene.rules.cull,
-            |_, p, _, _| count(0, p),
+            cull,
+            |i, p, e, a| {
+                visit(
+                    i,
+                    p,
+                    with_values.then(|| ((*e).map(IBig::from), IBig::from(*a))),
+                )
+            },
         );
     } else {
         for_each_covered(
@@ -273,10 +287,18 @@ pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
             &triangles,
             IBig::clone,
             rule,
-            scene.rules.cull,
-            |_, p, _, _| count(0, p),
+            cull,
+            |i, p, e, a| visit(i, p, with_values.then(|| (e.clone(), a.clone()))),
         );
     }
+}
+
+/// How many triangles cover each sample under `rule` (coverage only).
+pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
+    let mut counts = vec![0u16; scene.canvas.pixel_count()];
+    visit_scene(scene, rule, Arithmetic::Auto, false, |_, pixel, _| {
+        counts[pixel] = counts[pixel].saturating_add(1)
+    });
     counts
 }
 
@@ -288,8 +310,6 @@ pub fn render(scene: &Scene, plan: &Plan) -> Frame {
 
 /// [`render`] with a choice of integer arithmetic.
 pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
-    let (grid, triangles, fast) = on_grid(scene);
-    let fast = fast && arithmetic == Arithmetic::Auto;
     let mut frame = Frame::new(
         scene.canvas.width,
         scene.canvas.height,
@@ -297,35 +317,18 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
         plan.attributes,
     );
     let values: Vec<VertexValues> = scene.triangles().map(VertexValues::new).collect();
-    let rule = scene.rules.fill_rule;
-    let cull = scene.rules.cull;
-    let mut write = |index: usize, pixel: usize, e: [IBig; 3], area: IBig| {
-        frame.hit(pixel, index);
-        if plan.interpolates() {
-            values[index].write(&mut frame, pixel, plan, &e, &area);
-        }
-    };
-    if fast {
-        for_each_covered(
-            &grid,
-            scene.canvas,
-            &triangles,
-            to_i128,
-            rule,
-            cull,
-            |i, p, e, a| write(i, p, (*e).map(IBig::from), IBig::from(*a)),
-        );
-    } else {
-        for_each_covered(
-            &grid,
-            scene.canvas,
-            &triangles,
-            IBig::clone,
-            rule,
-            cull,
-            |i, p, e, a| write(i, p, e.clone(), a.clone()),
-        );
-    }
+    visit_scene(
+        scene,
+        scene.rules.fill_rule,
+        arithmetic,
+        plan.interpolates(),
+        |index, pixel, exact| {
+            frame.hit(pixel, index);
+            if let Some((e, area)) = exact {
+                values[index].write(&mut frame, pixel, plan, &e, &area);
+            }
+        },
+    );
     frame
 }
 

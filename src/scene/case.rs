@@ -57,7 +57,7 @@ pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, Case
         location: format!("line {} column {}", e.line(), e.column()),
         message: format!("invalid JSON: {}", strip_position(&e.to_string())),
     })?;
-    let reader = Reader { file, limits };
+    let reader = Reader { limits };
     reader.scene(&value).map_err(|(path, message)| CaseError {
         file: file.to_owned(),
         location: path.to_string(),
@@ -259,8 +259,6 @@ fn named<T>(value: &Value, path: &Path, parse: fn(&str) -> Option<T>, names: &[&
 }
 
 struct Reader<'a> {
-    #[allow(dead_code)]
-    file: &'a str,
     limits: &'a Limits,
 }
 
