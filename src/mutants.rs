@@ -55,12 +55,16 @@ impl Mutation {
             Mutation::FlippedTies => scene.rules.fill_rule = scene.rules.fill_rule.flipped(),
             Mutation::ClosedEdges => scene.rules.fill_rule = FillRule::AllEdges,
             Mutation::VertexNudge => {
-                for Primitive::Triangle(t) in &mut scene.primitives {
-                    t.vertices[0].x = &t.vertices[0].x + &step;
+                for primitive in &mut scene.primitives {
+                    let first = &mut primitive.vertices_mut()[0];
+                    first.x = &first.x + &step;
                 }
             }
             Mutation::Shrunk => {
-                for Primitive::Triangle(t) in &mut scene.primitives {
+                for t in scene.primitives.iter_mut().filter_map(|p| match p {
+                    Primitive::Triangle(t) => Some(t),
+                    Primitive::Line(_) => None,
+                }) {
                     let sum = |f: fn(&crate::scene::Vertex) -> &Number| {
                         t.vertices.iter().fold(Number::ZERO, |acc, v| &acc + f(v))
                     };
@@ -81,9 +85,13 @@ impl Mutation {
                 }
             }
             Mutation::NoPerspective => {
-                for Primitive::Triangle(t) in &mut scene.primitives {
-                    if t.interpolation == Interpolation::Perspective {
-                        t.interpolation = Interpolation::Linear;
+                for primitive in &mut scene.primitives {
+                    let interpolation = match primitive {
+                        Primitive::Triangle(t) => &mut t.interpolation,
+                        Primitive::Line(l) => &mut l.interpolation,
+                    };
+                    if *interpolation == Interpolation::Perspective {
+                        *interpolation = Interpolation::Linear;
                     }
                 }
             }

@@ -137,7 +137,7 @@ pub struct ReferenceRun {
 pub fn run_reference(scene: &Scene) -> ReferenceRun {
     let started = Instant::now();
     let plan = Plan::for_scene(scene);
-    let frame = reference::triangle::render(scene, &plan);
+    let frame = reference::render(scene, &plan);
     let interior = scene
         .expect
         .watertight

@@ -12,7 +12,7 @@ use rastercheck::metrics;
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
-use rastercheck::reference::triangle::{self, Arithmetic};
+use rastercheck::reference::{self, Arithmetic};
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{
     Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene,
@@ -101,7 +101,7 @@ proptest! {
     #[test]
     fn production_coverage_equals_the_reference(scene in scene()) {
         let plan = Plan::for_scene(&scene);
-        let reference = triangle::render(&scene, &plan);
+        let reference = reference::render(&scene, &plan);
         let candidate = Production.rasterize(&scene, &plan).unwrap();
         let m = metrics::coverage::compare(&reference, &candidate);
         prop_assert_eq!(m.mismatched(), 0, "{} missing, {} extra, {} wrong owner", m.missing, m.extra, m.wrong_owner);
@@ -110,7 +110,7 @@ proptest! {
     #[test]
     fn production_interpolation_stays_within_the_documented_bound(scene in scene()) {
         let plan = Plan::for_scene(&scene);
-        let reference = triangle::render(&scene, &plan);
+        let reference = reference::render(&scene, &plan);
         let candidate = Production.rasterize(&scene, &plan).unwrap();
         let m = metrics::measure(&scene, &reference, &candidate, None);
         for ch in &m.channels {
@@ -121,8 +121,8 @@ proptest! {
     #[test]
     fn the_i128_fast_path_equals_big_integers(scene in scene()) {
         let plan = Plan::for_scene(&scene);
-        let fast = triangle::render_with(&scene, &plan, Arithmetic::Auto);
-        let big = triangle::render_with(&scene, &plan, Arithmetic::BigOnly);
+        let fast = reference::render_with(&scene, &plan, Arithmetic::Auto);
+        let big = reference::render_with(&scene, &plan, Arithmetic::BigOnly);
         prop_assert_eq!(fast, big);
     }
 }

@@ -46,11 +46,7 @@ pub fn measure(
         ulp_floor: DEFAULT_RELATIVE_BOUND * magnitude.max(1.0),
     };
     if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
-        let m = largest(
-            scene
-                .triangles()
-                .flat_map(|t| t.vertices.iter().map(|v| &v.z)),
-        );
+        let m = largest(scene.vertices().map(|v| &v.z));
         channels.push(interpolation::channel_error(
             "depth",
             reference,
@@ -66,11 +62,7 @@ pub fn measure(
         .zip(&candidate.attributes)
         .enumerate()
     {
-        let m = largest(
-            scene
-                .triangles()
-                .flat_map(|t| t.vertices.iter().map(move |v| &v.attributes[k])),
-        );
+        let m = largest(scene.vertices().map(|v| &v.attributes[k]));
         channels.push(interpolation::channel_error(
             &format!("attribute {k}"),
             reference,

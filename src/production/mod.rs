@@ -3,10 +3,11 @@
 //! never the reference.
 
 pub mod fixed;
+pub mod line;
 pub mod setup;
 pub mod traverse;
 
-use fixed::{EdgeInt, Format};
+use fixed::{EdgeInt, Fixed, Format};
 use glam::Vec3;
 use setup::{Shading, TriangleSetup};
 use traverse::Sink;
@@ -14,7 +15,7 @@ use traverse::Sink;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Interpolation, Scene};
+use crate::scene::{Interpolation, Number, Primitive, Scene, Triangle};
 
 /// The production rasterizer.
 #[derive(Clone, Copy, Debug, Default)]
@@ -33,17 +34,14 @@ impl Rasterizer for Production {
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let format = match scene.rules.subpixel_bits {
             Some(bits) => Format::snapped(bits),
-            None => Format::for_exact(
-                scene
-                    .triangles()
-                    .flat_map(|t| t.vertices.iter().flat_map(|v| [&v.x, &v.y])),
-            )
-            .ok_or_else(|| {
-                RasterError::Unsupported(format!(
+            None => {
+                Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
+                    RasterError::Unsupported(format!(
                     "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
                     fixed::MAX_FRAC_BITS - 1
                 ))
-            })?,
+                })?
+            }
         };
         let mut frame = Frame::new(
             scene.canvas.width,
@@ -52,43 +50,79 @@ impl Rasterizer for Production {
             plan.attributes,
         );
         if format.fits_i64() {
-            draw::<i64>(scene, plan, format, &mut frame);
+            draw::<i64>(scene, plan, format, &mut frame)?;
         } else {
-            draw::<i128>(scene, plan, format, &mut frame);
+            draw::<i128>(scene, plan, format, &mut frame)?;
         }
         Ok(frame)
     }
 }
 
-fn draw<E: EdgeInt>(scene: &Scene, plan: &Plan, format: Format, frame: &mut Frame) {
-    for (index, triangle) in scene.triangles().enumerate() {
-        let positions = triangle.vertices.each_ref().map(|v| {
-            let place = |n| match scene.rules.subpixel_bits {
-                Some(bits) => format.snap(n, bits),
-                None => format
-                    .exact(n)
-                    .expect("Format::for_exact checked every coordinate"),
-            };
-            [place(&v.x), place(&v.y)]
-        });
-        let Some(setup) = setup::setup::<E>(
-            positions,
-            triangle,
-            format,
-            scene.rules.fill_rule,
-            scene.rules.cull,
-            scene.canvas,
-            plan,
-        ) else {
-            continue;
-        };
-        let mut sink = FrameSink {
-            frame: &mut *frame,
-            index,
-            setup: &setup,
-        };
-        traverse::traverse(&setup, &mut sink);
+fn draw<E: EdgeInt>(
+    scene: &Scene,
+    plan: &Plan,
+    format: Format,
+    frame: &mut Frame,
+) -> Result<(), RasterError> {
+    let place = |n: &Number| match scene.rules.subpixel_bits {
+        Some(bits) => format.snap(n, bits),
+        None => format
+            .exact(n)
+            .expect("Format::for_exact checked every coordinate"),
+    };
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        match primitive {
+            Primitive::Triangle(triangle) => {
+                let positions = triangle
+                    .vertices
+                    .each_ref()
+                    .map(|v| [place(&v.x), place(&v.y)]);
+                draw_triangle::<E>(scene, plan, format, index, triangle, positions, frame);
+            }
+            Primitive::Line(line) => {
+                let ends = line.vertices.each_ref().map(|v| [place(&v.x), place(&v.y)]);
+                line::draw::<E>(
+                    line,
+                    ends,
+                    format,
+                    scene.rules.fill_rule,
+                    scene.canvas,
+                    plan,
+                    index,
+                    frame,
+                )?;
+            }
+        }
     }
+    Ok(())
+}
+
+fn draw_triangle<E: EdgeInt>(
+    scene: &Scene,
+    plan: &Plan,
+    format: Format,
+    index: usize,
+    triangle: &Triangle,
+    positions: [[Fixed; 2]; 3],
+    frame: &mut Frame,
+) {
+    let Some(setup) = setup::setup::<E>(
+        positions,
+        triangle,
+        format,
+        scene.rules.fill_rule,
+        scene.rules.cull,
+        scene.canvas,
+        plan,
+    ) else {
+        return;
+    };
+    let mut sink = FrameSink {
+        frame,
+        index,
+        setup: &setup,
+    };
+    traverse::traverse(&setup, &mut sink);
 }
 
 /// Writes covered pixels, and their interpolated values, into a frame.

@@ -69,19 +69,20 @@ fn picture(scene: &Scene, scale: u32, colour: impl Fn(usize) -> [u8; 3]) -> RgbI
     img
 }
 
-/// Draws the triangles' snapped edges.
+/// Draws the primitives' snapped edges (a line's centre line).
 fn outline(scene: &Scene, scale: u32, img: &mut RgbImage) {
     let grid = scene.rules.subpixel_bits.map(|b| f64::from(1u32 << b));
     let snap = |v: f64| grid.map_or(v, |g| (v * g).round_ties_even() / g);
     let s = f64::from(scale);
-    for t in scene.triangles() {
-        let p: Vec<(f64, f64)> = t
-            .vertices
+    for primitive in &scene.primitives {
+        let p: Vec<(f64, f64)> = primitive
+            .vertices()
             .iter()
             .map(|v| (snap(v.x.to_f64_lossy()) * s, snap(v.y.to_f64_lossy()) * s))
             .collect();
-        for i in 0..3 {
-            let (a, b) = (p[i], p[(i + 1) % 3]);
+        let edges = if p.len() == 2 { 1 } else { p.len() };
+        for i in 0..edges {
+            let (a, b) = (p[i], p[(i + 1) % p.len()]);
             let steps =
                 ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as usize).clamp(1, 1 << 20);
             for k in 0..=steps {

@@ -12,8 +12,10 @@ use std::fmt;
 use serde_json::{Map, Value};
 
 use super::number::Number;
-use super::rules::{limits, Cull, FillRule, Interpolation, Rules};
-use super::{Canvas, Effects, Expect, Primitive, Scene, Triangle, Vertex};
+use super::rules::{
+    limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, Rules,
+};
+use super::{Canvas, Effects, Expect, Line, Primitive, Scene, Triangle, Vertex};
 
 /// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -304,12 +306,8 @@ impl Reader<'_> {
             None => Expect::default(),
         };
         let attribute_count = primitives
-            .iter()
-            .map(|p| match p {
-                Primitive::Triangle(t) => t.vertices[0].attributes.len(),
-            })
-            .next()
-            .unwrap_or(0);
+            .first()
+            .map_or(0, |p| p.vertices()[0].attributes.len());
         let has_depth = fields
             .map
             .get("primitives")
@@ -420,6 +418,9 @@ impl Reader<'_> {
     }
 
     fn primitive(&self, value: &Value, path: &Path) -> Result<Primitive> {
+        if value.get("line").is_some() {
+            return self.line(value, path);
+        }
         let fields = Fields::new(value, path, &["triangle", "interpolation"])?;
         let (vertices, vertices_path) = fields.require("triangle")?;
         let list = array(vertices, &vertices_path)?;
@@ -431,17 +432,103 @@ impl Reader<'_> {
         }
         let v = |i: usize| self.vertex(&list[i], &vertices_path.index(i));
         let vertices = [v(0)?, v(1)?, v(2)?];
-        let interpolation = match fields.get("interpolation") {
+        let interpolation = self.interpolation(&fields)?;
+        Ok(Primitive::Triangle(Triangle {
+            vertices,
+            interpolation,
+        }))
+    }
+
+    fn interpolation(&self, fields: &Fields) -> Result<Interpolation> {
+        match fields.get("interpolation") {
             Some((v, p)) => named(
                 v,
                 &p,
                 Interpolation::from_name,
                 &["perspective", "linear", "flat"],
+            ),
+            None => Ok(Interpolation::Perspective),
+        }
+    }
+
+    fn line(&self, value: &Value, path: &Path) -> Result<Primitive> {
+        let fields = Fields::new(
+            value,
+            path,
+            &[
+                "line",
+                "rule",
+                "width",
+                "last_pixel",
+                "parameter",
+                "interpolation",
+            ],
+        )?;
+        let (vertices, vertices_path) = fields.require("line")?;
+        let list = array(vertices, &vertices_path)?;
+        if list.len() != 2 {
+            return fail(
+                &vertices_path,
+                format!("a line has 2 vertices, found {}", list.len()),
+            );
+        }
+        let v = |i: usize| self.vertex(&list[i], &vertices_path.index(i));
+        let vertices = [v(0)?, v(1)?];
+        let rule = match fields.get("rule") {
+            Some((v, p)) => named(
+                v,
+                &p,
+                LineRule::from_name,
+                &["midpoint", "rectangle", "parallelogram"],
             )?,
-            None => Interpolation::Perspective,
+            None => LineRule::Midpoint,
         };
-        Ok(Primitive::Triangle(Triangle {
+        let width = match fields.get("width") {
+            Some((v, p)) => {
+                if !rule.is_wide() {
+                    return fail(
+                        &p,
+                        format!(
+                            "a {} line has no width; only rectangle and parallelogram lines do",
+                            rule.name()
+                        ),
+                    );
+                }
+                let w = number(v, &p)?;
+                if !w.is_positive() {
+                    return fail(&p, format!("a line width must be positive, found {w}"));
+                }
+                within(
+                    &w,
+                    &p,
+                    &Number::ZERO,
+                    &Number::from_int(limits::MAX_LINE_WIDTH),
+                    "width",
+                )?;
+                w
+            }
+            None => Number::ONE,
+        };
+        let last_pixel = match fields.get("last_pixel") {
+            Some((v, p)) => {
+                if rule != LineRule::Midpoint {
+                    return fail(&p, "last_pixel applies to midpoint lines only");
+                }
+                named(v, &p, LastPixel::from_name, &["include", "exclude"])?
+            }
+            None => LastPixel::Include,
+        };
+        let parameter = match fields.get("parameter") {
+            Some((v, p)) => named(v, &p, LineParameter::from_name, &["major", "projected"])?,
+            None => LineParameter::Major,
+        };
+        let interpolation = self.interpolation(&fields)?;
+        Ok(Primitive::Line(Line {
             vertices,
+            rule,
+            width,
+            last_pixel,
+            parameter,
             interpolation,
         }))
     }
@@ -588,11 +675,15 @@ impl Reader<'_> {
     /// Every vertex of a case carries the same number of attributes, so that
     /// every pixel of the frame has the same channels.
     fn check_attribute_counts(&self, scene: &Scene, path: &Path) -> Result<()> {
-        for (i, t) in scene.triangles().enumerate() {
-            for (j, v) in t.vertices.iter().enumerate() {
+        for (i, primitive) in scene.primitives.iter().enumerate() {
+            let kind = match primitive {
+                Primitive::Triangle(_) => "triangle",
+                Primitive::Line(_) => "line",
+            };
+            for (j, v) in primitive.vertices().iter().enumerate() {
                 if v.attributes.len() != scene.attribute_count {
                     return fail(
-                        &path.index(i).key("triangle").index(j).key("attributes"),
+                        &path.index(i).key(kind).index(j).key("attributes"),
                         format!(
                             "this vertex has {} attributes but the first vertex of the case has {}; every vertex carries the same number",
                             v.attributes.len(),
@@ -608,10 +699,12 @@ impl Reader<'_> {
 
 /// Whether a primitive's JSON gives `z` on any vertex.
 fn mentions_depth(primitive: &Value) -> bool {
-    primitive
-        .get("triangle")
-        .and_then(Value::as_array)
-        .is_some_and(|vs| vs.iter().any(|v| v.get("z").is_some()))
+    ["triangle", "line"].iter().any(|kind| {
+        primitive
+            .get(kind)
+            .and_then(Value::as_array)
+            .is_some_and(|vs| vs.iter().any(|v| v.get("z").is_some()))
+    })
 }
 
 #[cfg(test)]
@@ -631,7 +724,7 @@ mod tests {
         assert_eq!(scene.rules, Rules::default());
         assert_eq!(scene.attribute_count, 0);
         assert!(!scene.has_depth);
-        let t = scene.triangles().next().unwrap();
+        let (_, t) = scene.triangles().next().unwrap();
         assert_eq!(t.vertices[2].y, Number::ratio(4, 3));
     }
 
@@ -664,7 +757,7 @@ mod tests {
     fn numbers_are_read_exactly() {
         let text = MINIMAL.replace("\"4/3\"", "0.1");
         let scene = parse(&text).unwrap();
-        let t = scene.triangles().next().unwrap();
+        let (_, t) = scene.triangles().next().unwrap();
         assert_eq!(t.vertices[2].y, Number::ratio(1, 10));
     }
 }

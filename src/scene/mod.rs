@@ -10,7 +10,7 @@ pub mod rules;
 
 pub use case::{parse_case, CaseError, Limits};
 pub use number::Number;
-pub use rules::{Cull, FillRule, Interpolation, Rules};
+pub use rules::{Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, Rules};
 
 /// One case: a canvas, rules, primitives, effects and expectations.
 #[derive(Clone, Debug)]
@@ -44,6 +44,45 @@ impl Canvas {
 #[derive(Clone, Debug)]
 pub enum Primitive {
     Triangle(Triangle),
+    Line(Line),
+}
+
+impl Primitive {
+    pub fn vertices(&self) -> &[Vertex] {
+        match self {
+            Primitive::Triangle(t) => &t.vertices,
+            Primitive::Line(l) => &l.vertices,
+        }
+    }
+
+    pub fn vertices_mut(&mut self) -> &mut [Vertex] {
+        match self {
+            Primitive::Triangle(t) => &mut t.vertices,
+            Primitive::Line(l) => &mut l.vertices,
+        }
+    }
+
+    pub fn interpolation(&self) -> Interpolation {
+        match self {
+            Primitive::Triangle(t) => t.interpolation,
+            Primitive::Line(l) => l.interpolation,
+        }
+    }
+}
+
+/// A line segment between two vertices, drawn under one of the line rules
+/// of SPEC.md §4.
+#[derive(Clone, Debug)]
+pub struct Line {
+    pub vertices: [Vertex; 2],
+    pub rule: LineRule,
+    /// Width in pixels for `rectangle` and `parallelogram` lines; 1 otherwise.
+    pub width: Number,
+    /// Whether a `midpoint` line draws the pixel at its second endpoint.
+    pub last_pixel: LastPixel,
+    /// How the interpolation parameter of a sample is found.
+    pub parameter: LineParameter,
+    pub interpolation: Interpolation,
 }
 
 #[derive(Clone, Debug)]
@@ -98,9 +137,19 @@ pub struct Expect {
 }
 
 impl Scene {
-    pub fn triangles(&self) -> impl Iterator<Item = &Triangle> {
-        self.primitives.iter().map(|p| match p {
-            Primitive::Triangle(t) => t,
-        })
+    /// The triangles, each with its index among all primitives.
+    pub fn triangles(&self) -> impl Iterator<Item = (usize, &Triangle)> {
+        self.primitives
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| match p {
+                Primitive::Triangle(t) => Some((i, t)),
+                Primitive::Line(_) => None,
+            })
+    }
+
+    /// Every vertex of every primitive.
+    pub fn vertices(&self) -> impl Iterator<Item = &Vertex> {
+        self.primitives.iter().flat_map(|p| p.vertices())
     }
 }

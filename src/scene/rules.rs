@@ -165,6 +165,83 @@ impl Interpolation {
     }
 }
 
+/// How a line decides which pixels it lights (SPEC.md §4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LineRule {
+    /// The pixel nearest the line in each column (x-major) or row
+    /// (y-major): the midpoint/Bresenham algorithm.
+    Midpoint,
+    /// A rectangle of the given width centred on the segment, sampled at
+    /// pixel centres under the fill rule.
+    Rectangle,
+    /// The segment swept along the minor axis by the given width (the
+    /// non-strict wide line), sampled under the fill rule.
+    Parallelogram,
+}
+
+impl LineRule {
+    pub const ALL: [LineRule; 3] = [
+        LineRule::Midpoint,
+        LineRule::Rectangle,
+        LineRule::Parallelogram,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LineRule::Midpoint => "midpoint",
+            LineRule::Rectangle => "rectangle",
+            LineRule::Parallelogram => "parallelogram",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<LineRule> {
+        LineRule::ALL.into_iter().find(|r| r.name() == name)
+    }
+
+    /// Whether the rule takes a `width`.
+    pub fn is_wide(self) -> bool {
+        matches!(self, LineRule::Rectangle | LineRule::Parallelogram)
+    }
+}
+
+/// Whether a midpoint line includes the pixel at its second endpoint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LastPixel {
+    Include,
+    /// Half-open, as Vulkan's Bresenham lines: strips join without doubles.
+    Exclude,
+}
+
+impl LastPixel {
+    pub fn from_name(name: &str) -> Option<LastPixel> {
+        match name {
+            "include" => Some(LastPixel::Include),
+            "exclude" => Some(LastPixel::Exclude),
+            _ => None,
+        }
+    }
+}
+
+/// Where along a line a sample's attributes are taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LineParameter {
+    /// From the sample's position along the major axis, as the incremental
+    /// midpoint algorithm steps it.
+    Major,
+    /// From the exact projection of the sample onto the segment.
+    Projected,
+}
+
+impl LineParameter {
+    pub fn from_name(name: &str) -> Option<LineParameter> {
+        match name {
+            "major" => Some(LineParameter::Major),
+            "projected" => Some(LineParameter::Projected),
+            _ => None,
+        }
+    }
+}
+
 /// Snapping, fill rule and culling for a whole case.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Rules {
@@ -206,6 +283,8 @@ pub mod limits {
     pub const VALUE_LIMIT: i64 = 1_000_000_000_000;
     /// w lies in [1/W_LIMIT, W_LIMIT].
     pub const W_LIMIT: i64 = 1_000_000;
+    /// Largest width of a wide line, in pixels.
+    pub const MAX_LINE_WIDTH: i64 = 1024;
 
     const _: () = assert!(MAX_CANVAS_SIDE as i64 <= COORD_LIMIT);
 }
