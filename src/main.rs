@@ -209,9 +209,14 @@ fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> 
             if quiet && slot == 0 {
                 continue;
             }
+            // A foil's failure is a measured departure, not a failure.
+            let label = match &result.verdict {
+                Verdict::Fail(_) if candidate.is_foil() => "FOIL",
+                other => other.label(),
+            };
             println!(
                 "{:5} {:width$}  {}  {}",
-                result.verdict.label(),
+                label,
                 file.id,
                 result.rasterizer,
                 suite::describe(&result)
@@ -226,14 +231,25 @@ fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> 
     println!();
     println!("{} case files, {} unreadable", found.cases.len(), bad_cases);
     for (candidate, t) in candidates.iter().zip(&tally) {
-        println!(
-            "{}: {} passed, {} failed, {} unsupported, {} errors",
-            candidate.name(),
-            t[0],
-            t[1],
-            t[2],
-            t[3]
-        );
+        if candidate.is_foil() {
+            println!(
+                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors",
+                candidate.name(),
+                t[0],
+                t[1],
+                t[2],
+                t[3]
+            );
+        } else {
+            println!(
+                "{}: {} passed, {} failed, {} unsupported, {} errors",
+                candidate.name(),
+                t[0],
+                t[1],
+                t[2],
+                t[3]
+            );
+        }
     }
     println!(
         "golden files: {golden_ok} match, {golden_bad} differ, {golden_missing} missing{}",
@@ -245,7 +261,12 @@ fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> 
     );
     if bad_input {
         BAD_INPUT
-    } else if golden_bad > 0 || tally.iter().any(|t| t[1] + t[3] > 0) {
+    } else if golden_bad > 0
+        || candidates
+            .iter()
+            .zip(&tally)
+            .any(|(c, t)| t[3] > 0 || (t[1] > 0 && !c.is_foil()))
+    {
         FAIL
     } else {
         PASS

@@ -55,6 +55,13 @@ pub trait Rasterizer: Send + Sync {
 
     fn capabilities(&self) -> Capabilities;
 
+    /// Whether this is a deliberately inexact method kept for measurement
+    /// (a foil, such as a float DDA): its departures from the reference are
+    /// reported, and never counted as failures.
+    fn is_foil(&self) -> bool {
+        false
+    }
+
     /// Draws the scene's primitives in order, without depth testing; each
     /// sample keeps the values of the last primitive that covered it.
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>;

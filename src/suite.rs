@@ -303,6 +303,12 @@ pub fn describe(run: &CandidateRun) -> String {
             w.holes, w.overdraw, w.interior
         ));
     }
+    if let Some(l) = &m.lines {
+        parts.push(format!(
+            "{} midpoint lines, {} crowded steps",
+            l.lines, l.crowded_steps
+        ));
+    }
     if let Some(worst) = m
         .channels
         .iter()

@@ -3,6 +3,7 @@
 
 pub mod coverage;
 pub mod interpolation;
+pub mod line;
 pub mod watertight;
 
 use crate::frame::Frame;
@@ -10,6 +11,7 @@ use crate::scene::{Number, Scene};
 
 pub use coverage::{CoverageMetrics, SampleDiff};
 pub use interpolation::ChannelError;
+pub use line::LineMetrics;
 pub use watertight::WatertightMetrics;
 
 /// The default interpolation bound, relative to the channel's largest vertex
@@ -23,6 +25,7 @@ pub const DEFAULT_RELATIVE_BOUND: f64 = 1.0 / 65536.0;
 pub struct Metrics {
     pub coverage: CoverageMetrics,
     pub watertight: Option<WatertightMetrics>,
+    pub lines: Option<LineMetrics>,
     pub channels: Vec<ChannelError>,
 }
 
@@ -75,6 +78,7 @@ pub fn measure(
     Metrics {
         coverage,
         watertight,
+        lines: line::measure(scene, candidate),
         channels,
     }
 }
@@ -108,6 +112,14 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
             out.push(format!(
                 "watertight: {} holes and {} overdrawn samples",
                 w.holes, w.overdraw
+            ));
+        }
+    }
+    if let Some(l) = &m.lines {
+        if l.crowded_steps > 0 {
+            out.push(format!(
+                "lines: {} major-axis steps hold more than one pixel of the same midpoint line",
+                l.crowded_steps
             ));
         }
     }

@@ -1,0 +1,49 @@
+//! Line metrics beyond coverage: a midpoint line lights at most one pixel
+//! per step along its major axis.
+
+use crate::frame::Frame;
+use crate::scene::{LineRule, Primitive, Scene};
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LineMetrics {
+    /// Midpoint lines in the case.
+    pub lines: u64,
+    /// Major-axis steps (columns of an x-major line, rows of a y-major one)
+    /// in which the candidate drew more than one pixel of the same line.
+    pub crowded_steps: u64,
+}
+
+/// `None` when the scene has no midpoint line. A line's pixels are those
+/// whose last primitive it is, so a later primitive drawn over it can only
+/// hide pixels, never add any. The major axis is read from the unsnapped
+/// endpoints.
+pub fn measure(scene: &Scene, candidate: &Frame) -> Option<LineMetrics> {
+    let mut m = LineMetrics {
+        lines: 0,
+        crowded_steps: 0,
+    };
+    let (w, h) = (candidate.width as usize, candidate.height as usize);
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        let Primitive::Line(line) = primitive else {
+            continue;
+        };
+        if line.rule != LineRule::Midpoint {
+            continue;
+        }
+        m.lines += 1;
+        let [a, b] = &line.vertices;
+        let x_major = (&b.x - &a.x).abs() >= (&b.y - &a.y).abs();
+        let id = index as u32 + 1;
+        let (steps, across) = if x_major { (w, h) } else { (h, w) };
+        for step in 0..steps {
+            let drawn = (0..across)
+                .filter(|&k| {
+                    let (x, y) = if x_major { (step, k) } else { (k, step) };
+                    candidate.last[y * w + x] == id
+                })
+                .count();
+            m.crowded_steps += u64::from(drawn > 1);
+        }
+    }
+    (m.lines > 0).then_some(m)
+}
