@@ -15,8 +15,8 @@ use rastercheck::rasterizer::Rasterizer;
 use rastercheck::reference::{self, Arithmetic};
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{
-    Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene,
-    Triangle, Vertex,
+    Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter,
+    LineRule, Number, Primitive, Rules, Scene, Triangle, Vertex,
 };
 
 const SIZE: u32 = 24;
@@ -97,7 +97,66 @@ fn scene() -> impl Strategy<Value = Scene> {
         })
 }
 
+/// A scene of one line, under any rule and width.
+fn line_scene() -> impl Strategy<Value = Scene> {
+    (
+        rules(),
+        vertex(),
+        vertex(),
+        prop::sample::select(LineRule::ALL.to_vec()),
+        prop::sample::select(vec![
+            Number::ONE,
+            Number::from_int(2),
+            Number::ratio(5, 2),
+            Number::ratio(1, 3),
+        ]),
+        prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
+    )
+        .prop_map(|(rules, a, b, rule, width, parameter)| {
+            let width = if rule.is_wide() { width } else { Number::ONE };
+            let line = Line {
+                vertices: [a, b],
+                rule,
+                width,
+                last_pixel: LastPixel::Include,
+                parameter,
+                interpolation: Interpolation::Perspective,
+            };
+            Scene {
+                name: "property".to_owned(),
+                description: String::new(),
+                canvas: Canvas {
+                    width: SIZE,
+                    height: SIZE,
+                },
+                rules,
+                primitives: vec![Primitive::Line(line)],
+                effects: Effects::default(),
+                expect: Expect::default(),
+                attribute_count: 1,
+                has_depth: false,
+            }
+        })
+}
+
+fn reversed(scene: &Scene) -> Scene {
+    let mut scene = scene.clone();
+    for p in &mut scene.primitives {
+        p.vertices_mut().reverse();
+    }
+    scene
+}
+
 proptest! {
+    #[test]
+    fn reference_lines_are_the_same_drawn_either_way(scene in line_scene()) {
+        let plan = Plan::for_scene(&scene);
+        let forward = reference::render(&scene, &plan);
+        let backward = reference::render(&reversed(&scene), &plan);
+        prop_assert_eq!(forward.coverage, backward.coverage);
+    }
+
+
     #[test]
     fn production_coverage_equals_the_reference(scene in scene()) {
         let plan = Plan::for_scene(&scene);
