@@ -9,6 +9,7 @@ use crate::golden;
 use crate::metrics::{self, Metrics};
 use crate::mutants::{Mutant, Mutation};
 use crate::plan::Plan;
+use crate::production::foils::{DdaF32, DdaF64};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference::{self, Reference};
@@ -107,7 +108,7 @@ pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
 
 /// Every rasterizer the CLI can name.
 pub fn rasterizer_names() -> Vec<&'static str> {
-    let mut names = vec!["reference", "production"];
+    let mut names = vec!["reference", "production", "dda-f32", "dda-f64"];
     names.extend(Mutation::ALL.iter().map(|m| m.name()));
     names
 }
@@ -117,6 +118,8 @@ pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
     match name {
         "reference" => Some(Box::new(Reference)),
         "production" => Some(Box::new(Production)),
+        "dda-f32" => Some(Box::new(DdaF32)),
+        "dda-f64" => Some(Box::new(DdaF64)),
         _ => Mutation::ALL
             .into_iter()
             .find(|m| m.name() == name)

@@ -2,7 +2,10 @@
 //! per step along its major axis.
 
 use crate::frame::Frame;
-use crate::scene::{LineRule, Primitive, Scene};
+use dashu_int::ops::Abs;
+
+use crate::reference::exact::snap;
+use crate::scene::{LineRule, Number, Primitive, Scene};
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LineMetrics {
@@ -15,8 +18,8 @@ pub struct LineMetrics {
 
 /// `None` when the scene has no midpoint line. A line's pixels are those
 /// whose last primitive it is, so a later primitive drawn over it can only
-/// hide pixels, never add any. The major axis is read from the unsnapped
-/// endpoints.
+/// hide pixels, never add any. The major axis is that of the snapped
+/// endpoints (SPEC.md §4), found with the oracle's own snapping.
 pub fn measure(scene: &Scene, candidate: &Frame) -> Option<LineMetrics> {
     let mut m = LineMetrics {
         lines: 0,
@@ -31,8 +34,13 @@ pub fn measure(scene: &Scene, candidate: &Frame) -> Option<LineMetrics> {
             continue;
         }
         m.lines += 1;
+        let place = |n: &Number| match scene.rules.subpixel_bits {
+            Some(bits) => snap(n, bits),
+            None => n.as_rbig().clone(),
+        };
         let [a, b] = &line.vertices;
-        let x_major = (&b.x - &a.x).abs() >= (&b.y - &a.y).abs();
+        let (dx, dy) = (place(&b.x) - place(&a.x), place(&b.y) - place(&a.y));
+        let x_major = dx.abs() >= dy.abs();
         let id = index as u32 + 1;
         let (steps, across) = if x_major { (w, h) } else { (h, w) };
         for step in 0..steps {

@@ -3,6 +3,7 @@
 //! never the reference.
 
 pub mod fixed;
+pub mod foils;
 pub mod line;
 pub mod setup;
 pub mod traverse;

@@ -90,6 +90,35 @@ pub fn setup<E: EdgeInt>(
     canvas: Canvas,
     plan: &Plan,
 ) -> Option<TriangleSetup<E>> {
+    setup_with_ownership(
+        positions,
+        triangle,
+        format,
+        rule,
+        cull,
+        canvas,
+        plan,
+        |_, _| None,
+    )
+}
+
+/// [`setup`], with a hook for the one caller that needs to decide an edge's
+/// ownership itself: a wide line split into two triangles gives the samples
+/// on their shared diagonal to exactly one of them whatever the fill rule
+/// (`all-edges` included). `ownership(a, b)` is asked about each edge a→b
+/// as traversed clockwise on screen; `None` keeps the fill rule's answer
+/// ([`edge_owned`]).
+#[allow(clippy::too_many_arguments)]
+pub fn setup_with_ownership<E: EdgeInt>(
+    positions: [[Fixed; 2]; 3],
+    triangle: &Triangle,
+    format: Format,
+    rule: FillRule,
+    cull: Cull,
+    canvas: Canvas,
+    plan: &Plan,
+    ownership: impl Fn([Fixed; 2], [Fixed; 2]) -> Option<bool>,
+) -> Option<TriangleSetup<E>> {
     let [p0, p1, p2] = positions;
     let area = cross::<E>(p0, p1, p2);
     if area == E::default() {
@@ -113,7 +142,11 @@ pub fn setup<E: EdgeInt>(
     if bounds.is_empty() {
         return None;
     }
-    let edges = [0, 1, 2].map(|i| edge_equation(order[i], order[(i + 1) % 3], format, rule));
+    let edges = [0, 1, 2].map(|i| {
+        let (a, b) = (order[i], order[(i + 1) % 3]);
+        let owned = ownership(a, b).unwrap_or_else(|| edge_owned(a, b, rule));
+        edge_equation(a, b, format, owned)
+    });
     let shading = if plan.interpolates() {
         let opposite = if clockwise { [2, 0, 1] } else { [1, 0, 2] };
         shading(triangle, opposite, plan, area.to_f64().abs())
@@ -133,22 +166,15 @@ fn cross<E: EdgeInt>(a: [Fixed; 2], b: [Fixed; 2], c: [Fixed; 2]) -> E {
     d(b[0], a[0]) * d(c[1], a[1]) - d(b[1], a[1]) * d(c[0], a[0])
 }
 
-/// The edge a→b of a clockwise triangle. Its function,
-/// `(bx - ax)(py - ay) - (by - ay)(px - ax)`, is positive inside; the bias
-/// makes a sample on the edge count as inside only when the rule gives the
-/// edge its samples.
-fn edge_equation<E: EdgeInt>(
-    a: [Fixed; 2],
-    b: [Fixed; 2],
-    format: Format,
-    rule: FillRule,
-) -> EdgeEquation<E> {
+/// Whether the edge a→b of a clockwise triangle owns the samples on it
+/// under `rule`.
+pub fn edge_owned(a: [Fixed; 2], b: [Fixed; 2], rule: FillRule) -> bool {
     let dx = b[0].0 - a[0].0;
     let dy = b[1].0 - a[1].0;
     // Walking clockwise with y down, the triangle is on the right-hand side:
     // an edge heading east (dy = 0, dx > 0) has it below, so it is a top
     // edge; one heading north (dy < 0) has it to the east, a left edge.
-    let owned = if dy == 0 {
+    if dy == 0 {
         if dx > 0 {
             rule.owns_top()
         } else {
@@ -158,7 +184,20 @@ fn edge_equation<E: EdgeInt>(
         rule.owns_left()
     } else {
         rule.owns_right()
-    };
+    }
+}
+
+/// The edge a→b of a clockwise triangle. Its function,
+/// `(bx - ax)(py - ay) - (by - ay)(px - ax)`, is positive inside; the bias
+/// makes a sample on the edge count as inside only when `owned`.
+fn edge_equation<E: EdgeInt>(
+    a: [Fixed; 2],
+    b: [Fixed; 2],
+    format: Format,
+    owned: bool,
+) -> EdgeEquation<E> {
+    let dx = b[0].0 - a[0].0;
+    let dy = b[1].0 - a[1].0;
     let centre = format.centre(0);
     let value = E::from(dx) * (E::from(centre.0) - E::from(a[1].0))
         - E::from(dy) * (E::from(centre.0) - E::from(a[0].0));
