@@ -6,7 +6,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Interpolation, Number, Primitive, Scene};
+use crate::scene::{FillRule, Interpolation, LastPixel, LineRule, Number, Primitive, Scene};
 
 /// A bug, applied by rewriting the scene the production rasterizer sees.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -27,15 +27,20 @@ pub enum Mutation {
     /// Perspective-correct interpolation done linearly in screen space.
     /// Caught by the interpolation error bound.
     NoPerspective,
+    /// Midpoint lines drawn as one-pixel-wide rectangles: the "thin
+    /// rectangle" mistaken for Bresenham. Caught by the one-pixel-per-step
+    /// line metric and by coverage.
+    ThickLines,
 }
 
 impl Mutation {
-    pub const ALL: [Mutation; 5] = [
+    pub const ALL: [Mutation; 6] = [
         Mutation::FlippedTies,
         Mutation::ClosedEdges,
         Mutation::VertexNudge,
         Mutation::Shrunk,
         Mutation::NoPerspective,
+        Mutation::ThickLines,
     ];
 
     pub fn name(self) -> &'static str {
@@ -45,6 +50,7 @@ impl Mutation {
             Mutation::VertexNudge => "mutant:vertex-nudge",
             Mutation::Shrunk => "mutant:shrunk",
             Mutation::NoPerspective => "mutant:no-perspective",
+            Mutation::ThickLines => "mutant:thick-lines",
         }
     }
 
@@ -92,6 +98,16 @@ impl Mutation {
                     };
                     if *interpolation == Interpolation::Perspective {
                         *interpolation = Interpolation::Linear;
+                    }
+                }
+            }
+            Mutation::ThickLines => {
+                for primitive in &mut scene.primitives {
+                    if let Primitive::Line(line) = primitive {
+                        if line.rule == LineRule::Midpoint {
+                            line.rule = LineRule::Rectangle;
+                            line.last_pixel = LastPixel::Include;
+                        }
                     }
                 }
             }
