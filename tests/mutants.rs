@@ -343,3 +343,56 @@ fn the_bundled_perspective_cases_catch_screen_space_interpolation() {
         );
     }
 }
+
+fn bundled(id: &str) -> Scene {
+    let path =
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("cases/{id}.json"));
+    suite::load(&suite::case_file(&path), &Limits::default()).unwrap()
+}
+
+fn departures(id: &str, name: &str) -> u64 {
+    let s = bundled(id);
+    let foil = suite::rasterizer(name).unwrap();
+    assert!(foil.is_foil());
+    let r = run(&s, foil.as_ref());
+    assert_eq!(run(&s, &Production).verdict, Verdict::Pass, "{id}");
+    r.metrics.unwrap().coverage.mismatched()
+}
+
+#[test]
+fn the_suite_catches_the_float_dda_on_long_and_tie_lines() {
+    // f32 drifts over 2048 columns; both round exact ties down the screen
+    // where the midpoint rule goes up.
+    assert!(departures("lines/midpoint_long_shallow_2048", "dda-f32") > 0);
+    assert!(departures("lines/midpoint_long_steep_2048", "dda-f32") > 0);
+    for foil in ["dda-f32", "dda-f64"] {
+        assert!(
+            departures("lines/midpoint_tie_slope_half", foil) > 0,
+            "{foil}"
+        );
+        assert!(
+            departures("lines/midpoint_tie_slope_two", foil) > 0,
+            "{foil}"
+        );
+    }
+}
+
+#[test]
+fn the_line_metric_catches_thin_rectangles_drawn_for_midpoint_lines() {
+    let s = bundled("lines/midpoint_star_16");
+    let r = run(&s, &Mutant(Mutation::ThickLines));
+    let crowded = r
+        .metrics
+        .as_ref()
+        .unwrap()
+        .lines
+        .as_ref()
+        .unwrap()
+        .crowded_steps;
+    assert!(crowded > 0);
+    assert!(
+        reasons(&r).iter().any(|m| m.starts_with("lines:")),
+        "{:?}",
+        reasons(&r)
+    );
+}

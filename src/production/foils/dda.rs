@@ -4,11 +4,12 @@
 //!
 //! For an x-major `midpoint` line they walk the columns from the v0 end, start
 //! at y(c) computed in float at the first column drawn, and add the float
-//! slope m = dy/dx once per column; the row is ⌈y⌉ − 1, SPEC.md §4.1's tie
-//! rule applied to the float y (y-major lines are the same with the axes
-//! swapped). Which columns are drawn is decided exactly, as production does,
-//! so the foils depart from the rule only through rounding: the f32 walker
-//! visibly on long shallow lines and at exact ties, the f64 one rarely.
+//! slope m = dy/dx once per column; the row is `round(y − ½)`, the textbook
+//! DDA's rounding of the pixel-centre coordinate, halves away from zero
+//! (y-major lines are the same with the axes swapped). Which columns are
+//! drawn is decided exactly, as production does, so the foils depart from
+//! the rule through rounding (the f32 walker visibly on long lines) and at
+//! exact ties, where `round` goes down the screen and SPEC.md §4.1 goes up.
 //! Triangles and wide lines are production's.
 
 use std::ops::{Add, Div, Mul, Sub};
@@ -70,16 +71,16 @@ pub(crate) trait Float:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
 {
     fn from_i64(v: i64) -> Self;
-    /// ⌈self⌉ − 1, saturating.
-    fn ceil_minus_one(self) -> i64;
+    /// The textbook DDA's pixel: round(self − ½), halves away from zero.
+    fn nearest_pixel(self) -> i64;
 }
 
 impl Float for f32 {
     fn from_i64(v: i64) -> f32 {
         v as f32
     }
-    fn ceil_minus_one(self) -> i64 {
-        self.ceil() as i64 - 1
+    fn nearest_pixel(self) -> i64 {
+        (self - 0.5).round() as i64
     }
 }
 
@@ -87,8 +88,8 @@ impl Float for f64 {
     fn from_i64(v: i64) -> f64 {
         v as f64
     }
-    fn ceil_minus_one(self) -> i64 {
-        self.ceil() as i64 - 1
+    fn nearest_pixel(self) -> i64 {
+        (self - 0.5).round() as i64
     }
 }
 
@@ -187,7 +188,7 @@ pub(crate) fn dda<F: Float>(
     let step = if forward { slope } else { zero - slope };
     for k in 0..end - first {
         let major = if forward { first + k } else { end - 1 - k };
-        let m = minor.ceil_minus_one();
+        let m = minor.nearest_pixel();
         if (0..minor_size).contains(&m) {
             if u == 0 {
                 visit(major, m);
