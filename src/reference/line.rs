@@ -61,6 +61,9 @@ pub fn visit<F: FnMut(usize, RBig)>(
         LineRule::Midpoint => midpoint(grid, canvas, line.last_pixel, a, b, major, |x, y, p| {
             visit(y as usize * width + x as usize, parameter(&p))
         }),
+        LineRule::DiamondExit => diamond_exit(grid, canvas, a, b, major, |x, y, p| {
+            visit(y as usize * width + x as usize, parameter(&p))
+        }),
         LineRule::Rectangle | LineRule::Parallelogram => {
             let region = Region::new(grid, line, a, b, major, rule);
             let half = region.reach(grid);
@@ -125,6 +128,150 @@ fn midpoint<F: FnMut(u32, u32, Point<IBig>)>(
         sample[major] = c;
         sample[minor] = grid.centre(i64::from(j));
         draw(pixel[0], pixel[1], sample);
+    }
+}
+
+/// The diamond-exit rule: a pixel is lit when the segment meets its diamond
+/// and v1 does not lie in it. `draw(x, y, sample)`.
+///
+/// Candidates: a segment through a diamond passes, at the diamond's centre
+/// column (row, for y-major), within half a pixel of its centre, because
+/// |slope| ≤ 1 along the major axis. So for every column whose centre lies
+/// within a pixel of the segment's span, the two rows nearest the line's
+/// height there (and one more on each side, to be generous) are tested
+/// exactly.
+fn diamond_exit<F: FnMut(u32, u32, Point<IBig>)>(
+    grid: &Grid,
+    canvas: Canvas,
+    a: &Point<IBig>,
+    b: &Point<IBig>,
+    major: usize,
+    mut draw: F,
+) {
+    let minor = 1 - major;
+    let sizes = [canvas.width, canvas.height];
+    let d = [&b[0] - &a[0], &b[1] - &a[1]];
+    let lo = a[major].clone().min(b[major].clone()) - &grid.scale;
+    let hi = a[major].clone().max(b[major].clone()) + &grid.scale;
+    for i in grid.centre_range(&lo, &hi, sizes[major]) {
+        let c = grid.centre(i64::from(i));
+        // The line's minor coordinate at c, in pixels, rounded down.
+        let mut num = &a[minor] * &d[major] + (&c - &a[major]) * &d[minor];
+        let mut den = &d[major] * &grid.scale;
+        if den < IBig::ZERO {
+            num = -num;
+            den = -den;
+        }
+        let near = super::exact::floor_div(&num, &den);
+        for j in [
+            &near - IBig::from(2u8),
+            &near - IBig::ONE,
+            near.clone(),
+            &near + IBig::ONE,
+        ] {
+            if j < IBig::ZERO || j >= IBig::from(sizes[minor]) {
+                continue;
+            }
+            let j: u32 = (&j).try_into().unwrap();
+            let mut pixel = [0u32; 2];
+            pixel[major] = i;
+            pixel[minor] = j;
+            let centre = [
+                grid.centre(i64::from(pixel[0])),
+                grid.centre(i64::from(pixel[1])),
+            ];
+            let diamond = Diamond {
+                centre: centre.clone(),
+                half: &grid.scale >> 1,
+                y_major: major == 1,
+            };
+            if diamond.meets(a, &d) && !diamond.contains(b) {
+                draw(pixel[0], pixel[1], centre);
+            }
+        }
+    }
+}
+
+/// A pixel's diamond with D3D11's border conventions (SPEC.md §4.2).
+struct Diamond {
+    centre: Point<IBig>,
+    /// Half a pixel, in grid units.
+    half: IBig,
+    /// Whether the right corner belongs to it (y-major lines).
+    y_major: bool,
+}
+
+impl Diamond {
+    /// The four borders as (α, β, strict): α·u + β·v < half (strict) or
+    /// ≤ half. Upper-left, upper-right, lower-left, lower-right.
+    const BORDERS: [(i8, i8, bool); 4] =
+        [(-1, -1, true), (1, -1, true), (-1, 1, false), (1, 1, false)];
+
+    fn right_corner(&self) -> Point<IBig> {
+        [&self.centre[0] + &self.half, self.centre[1].clone()]
+    }
+
+    fn contains(&self, p: &Point<IBig>) -> bool {
+        let (u, v) = (&p[0] - &self.centre[0], &p[1] - &self.centre[1]);
+        let inside = Diamond::BORDERS.iter().all(|&(alpha, beta, strict)| {
+            let value = IBig::from(alpha) * &u + IBig::from(beta) * &v;
+            if strict {
+                value < self.half
+            } else {
+                value <= self.half
+            }
+        });
+        inside || (self.y_major && *p == self.right_corner())
+    }
+
+    /// Whether the segment a + s·d, s ∈ [0, 1], meets the diamond.
+    fn meets(&self, a: &Point<IBig>, d: &Point<IBig>) -> bool {
+        let (u0, v0) = (&a[0] - &self.centre[0], &a[1] - &self.centre[1]);
+        // The feasible s form an interval; each bound is (value, open).
+        let mut low = (RBig::ZERO, false);
+        let mut high = (RBig::ONE, false);
+        for &(alpha, beta, strict) in &Diamond::BORDERS {
+            let (alpha, beta) = (IBig::from(alpha), IBig::from(beta));
+            // e + s·f (<, ≤) half.
+            let e = &alpha * &u0 + &beta * &v0;
+            let f = &alpha * &d[0] + &beta * &d[1];
+            let room = &self.half - &e;
+            if f == IBig::ZERO {
+                let holds = if strict {
+                    room > IBig::ZERO
+                } else {
+                    room >= IBig::ZERO
+                };
+                if !holds {
+                    return self.y_major && self.passes_right_corner(a, d);
+                }
+                continue;
+            }
+            let bound = RBig::from_parts_signed(room, f.clone());
+            if f > IBig::ZERO {
+                // s < bound (or ≤).
+                if bound < high.0 || (bound == high.0 && strict) {
+                    high = (bound, strict);
+                }
+            } else if bound > low.0 || (bound == low.0 && strict) {
+                low = (bound, strict);
+            }
+        }
+        let meets = low.0 < high.0 || (low.0 == high.0 && !low.1 && !high.1);
+        meets || (self.y_major && self.passes_right_corner(a, d))
+    }
+
+    fn passes_right_corner(&self, a: &Point<IBig>, d: &Point<IBig>) -> bool {
+        let corner = self.right_corner();
+        let b = [&a[0] + &d[0], &a[1] + &d[1]];
+        if orient(a, &b, &corner) != IBig::ZERO {
+            return false;
+        }
+        let within = |k: usize| {
+            corner[k] >= a[k].clone().min(b[k].clone())
+                && corner[k] <= a[k].clone().max(b[k].clone())
+        };
+        within(0) && within(1)
     }
 }
 
@@ -236,7 +383,9 @@ impl Region {
                     [&limit - &twice, &limit + &twice],
                 )
             }
-            LineRule::Midpoint => unreachable!("midpoint lines are not regions"),
+            LineRule::Midpoint | LineRule::DiamondExit => {
+                unreachable!("thin lines are not regions")
+            }
         };
         let borders = [
             (ends[0].0.clone(), ends[0].1.clone()),
@@ -272,5 +421,63 @@ pub fn write(line: &Line, frame: &mut Frame, pixel: usize, plan: &Plan, t: &RBig
             }
         };
         frame.attributes[k][pixel] = to_f64_round_odd(&exact);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::Plan;
+    use crate::scene::{parse_case, Limits};
+
+    /// The pixels a one-line case lights, as (x, y).
+    fn lit(line: &str) -> Vec<(usize, usize)> {
+        let json = format!(
+            r#"{{"name": "t", "canvas": {{"width": 6, "height": 6}}, "primitives": [{line}]}}"#
+        );
+        let scene = parse_case(&json, "t.json", &Limits::default()).unwrap();
+        let frame = crate::reference::render(&scene, &Plan::for_scene(&scene));
+        (0..36)
+            .filter(|&i| frame.coverage[i] > 0)
+            .map(|i| (i % 6, i / 6))
+            .collect()
+    }
+
+    #[test]
+    fn diamond_exit_leaves_out_the_diamond_the_line_ends_in() {
+        let pixels = lit(r#"{"line": [[0.5, 0.5], [4.5, 0.5]], "rule": "diamond-exit"}"#);
+        assert_eq!(pixels, [(0, 0), (1, 0), (2, 0), (3, 0)]);
+    }
+
+    #[test]
+    fn diamond_exit_owns_bottom_corners_not_top_ones() {
+        // Along y = 1: the bottom corners of row 0 (included), the top
+        // corners of row 1 (excluded).
+        let pixels = lit(r#"{"line": [[0.5, 1], [4.5, 1]], "rule": "diamond-exit"}"#);
+        assert_eq!(pixels, [(0, 0), (1, 0), (2, 0), (3, 0)]);
+    }
+
+    #[test]
+    fn diamond_exit_owns_right_corners_for_y_major_lines_only() {
+        // Along x = 1, y-major: the right corners of column 0 (included for
+        // y-major lines), the left corners of column 1 (excluded).
+        let pixels = lit(r#"{"line": [[1, 0.5], [1, 4.5]], "rule": "diamond-exit"}"#);
+        assert_eq!(pixels, [(0, 0), (0, 1), (0, 2), (0, 3)]);
+        // An x-major line through a right corner alone lights nothing there.
+        let pixels = lit(r#"{"line": [[1, 2.5], [2, 2.5]], "rule": "diamond-exit"}"#);
+        assert_eq!(pixels, [(1, 2)]);
+    }
+
+    #[test]
+    fn midpoint_ties_go_up_and_left() {
+        // Slope 1/2 from a centre: at x = 1.5 the line is at y = 1, between rows.
+        assert_eq!(
+            lit(r#"{"line": [[0.5, 0.5], [2.5, 1.5]]}"#),
+            [(0, 0), (1, 0), (2, 1)]
+        );
+        // Slope 2: at y = 1.5 the line is at x = 1, between columns.
+        assert_eq!(
+            lit(r#"{"line": [[0.5, 0.5], [1.5, 2.5]]}"#),
+            [(0, 0), (0, 1), (1, 2)]
+        );
     }
 }

@@ -171,6 +171,9 @@ pub enum LineRule {
     /// The pixel nearest the line in each column (x-major) or row
     /// (y-major): the midpoint/Bresenham algorithm.
     Midpoint,
+    /// D3D11's and OpenGL's aliased line: a pixel is lit when the segment
+    /// leaves its diamond.
+    DiamondExit,
     /// A rectangle of the given width centred on the segment, sampled at
     /// pixel centres under the fill rule.
     Rectangle,
@@ -180,8 +183,9 @@ pub enum LineRule {
 }
 
 impl LineRule {
-    pub const ALL: [LineRule; 3] = [
+    pub const ALL: [LineRule; 4] = [
         LineRule::Midpoint,
+        LineRule::DiamondExit,
         LineRule::Rectangle,
         LineRule::Parallelogram,
     ];
@@ -189,6 +193,7 @@ impl LineRule {
     pub fn name(self) -> &'static str {
         match self {
             LineRule::Midpoint => "midpoint",
+            LineRule::DiamondExit => "diamond-exit",
             LineRule::Rectangle => "rectangle",
             LineRule::Parallelogram => "parallelogram",
         }
