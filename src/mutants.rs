@@ -31,16 +31,21 @@ pub enum Mutation {
     /// rectangle" mistaken for Bresenham. Caught by the one-pixel-per-step
     /// line metric and by coverage.
     ThickLines,
+    /// Diamond-exit lines drawn by the half-open midpoint rule, as a driver
+    /// that serves D3D-style lines with Bresenham would. Caught by coverage
+    /// where the two rules part: corners, borders and ends.
+    MidpointForDiamond,
 }
 
 impl Mutation {
-    pub const ALL: [Mutation; 6] = [
+    pub const ALL: [Mutation; 7] = [
         Mutation::FlippedTies,
         Mutation::ClosedEdges,
         Mutation::VertexNudge,
         Mutation::Shrunk,
         Mutation::NoPerspective,
         Mutation::ThickLines,
+        Mutation::MidpointForDiamond,
     ];
 
     pub fn name(self) -> &'static str {
@@ -51,6 +56,7 @@ impl Mutation {
             Mutation::Shrunk => "mutant:shrunk",
             Mutation::NoPerspective => "mutant:no-perspective",
             Mutation::ThickLines => "mutant:thick-lines",
+            Mutation::MidpointForDiamond => "mutant:midpoint-for-diamond",
         }
     }
 
@@ -101,18 +107,31 @@ impl Mutation {
                     }
                 }
             }
-            Mutation::ThickLines => {
-                for primitive in &mut scene.primitives {
-                    if let Primitive::Line(line) = primitive {
-                        if line.rule == LineRule::Midpoint {
-                            line.rule = LineRule::Rectangle;
-                            line.last_pixel = LastPixel::Include;
-                        }
-                    }
-                }
-            }
+            Mutation::ThickLines => swap_line_rule(
+                &mut scene,
+                LineRule::Midpoint,
+                LineRule::Rectangle,
+                LastPixel::Include,
+            ),
+            Mutation::MidpointForDiamond => swap_line_rule(
+                &mut scene,
+                LineRule::DiamondExit,
+                LineRule::Midpoint,
+                LastPixel::Exclude,
+            ),
         }
         scene
+    }
+}
+
+fn swap_line_rule(scene: &mut Scene, from: LineRule, to: LineRule, last_pixel: LastPixel) {
+    for primitive in &mut scene.primitives {
+        if let Primitive::Line(line) = primitive {
+            if line.rule == from {
+                line.rule = to;
+                line.last_pixel = last_pixel;
+            }
+        }
     }
 }
 

@@ -396,3 +396,25 @@ fn the_line_metric_catches_thin_rectangles_drawn_for_midpoint_lines() {
         reasons(&r)
     );
 }
+
+#[test]
+fn coverage_catches_bresenham_served_for_diamond_exit_lines() {
+    // Half-open midpoint lines agree with diamond-exit on most lines; these
+    // cases hold the endpoints and borders where the two rules part.
+    for id in [
+        "lines/diamond_endpoints_edges",
+        "lines/diamond_subpixel_4bits",
+        "lines/diamond_subpixel_8bits",
+        "lines/diamond_strip",
+        "lines/diamond_colour_interpolation",
+    ] {
+        let s = bundled(id);
+        assert_eq!(run(&s, &Production).verdict, Verdict::Pass, "{id}");
+        let r = run(&s, &Mutant(Mutation::MidpointForDiamond));
+        assert!(
+            reasons(&r)[0].starts_with("coverage:"),
+            "{id}: {:?}",
+            reasons(&r)
+        );
+    }
+}
