@@ -25,6 +25,7 @@ pub mod production;
 pub mod rasterizer;
 pub mod reference;
 pub mod report;
+pub mod runner;
 pub mod scene;
 pub mod suite;
 

@@ -9,6 +9,12 @@ use clap::{Args, Parser, Subcommand};
 use rastercheck::golden;
 use rastercheck::report::png;
 use rastercheck::scene::Limits;
+use std::io::IsTerminal;
+
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::report;
+use rastercheck::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
+use rastercheck::runner::{self, CaseOutcome, Problem, Selection};
 use rastercheck::suite::{self, GoldenStatus, Verdict};
 
 #[derive(Parser)]
@@ -25,20 +31,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Run cases through rasterizers and compare them with the exact reference.
-    Run {
-        /// Case files or folders (default: cases). Folders named `invalid`
-        /// are skipped unless named directly.
-        paths: Vec<PathBuf>,
-        /// Rasterizer to check; repeat for several (default: production).
-        /// `rastercheck rasterizers` lists them.
-        #[arg(long = "rasterizer", short = 'r')]
-        rasterizers: Vec<String>,
-        /// Print only failures and the summary.
-        #[arg(long, short = 'q')]
-        quiet: bool,
-        #[command(flatten)]
-        limits: LimitArgs,
-    },
+    Run(RunArgs),
     /// Rewrite the golden reference files (reference/<case>.exr) from the oracle.
     Bless {
         /// Case files or folders (default: cases).
@@ -64,6 +57,39 @@ enum Command {
     },
     /// List the rasterizers that can be named with --rasterizer.
     Rasterizers,
+}
+
+#[derive(Args)]
+struct RunArgs {
+    /// Case files or folders (default: cases). Folders named `invalid`
+    /// are skipped unless named directly.
+    paths: Vec<PathBuf>,
+    /// Rasterizer to check; repeat for several (default: production).
+    /// `rastercheck rasterizers` lists them.
+    #[arg(long = "rasterizer", short = 'r')]
+    rasterizers: Vec<String>,
+    /// Print only failures and the summary, and no progress bar.
+    #[arg(long, short = 'q')]
+    quiet: bool,
+    /// Write report.json, junit.xml, summary.md, index.html, images and
+    /// error maps into this folder.
+    #[arg(long, value_name = "DIR")]
+    report: Option<PathBuf>,
+    /// Only cases whose id matches this glob (`*` within a segment, `**`
+    /// across segments): --filter 'triangles/fan_*'.
+    #[arg(long)]
+    filter: Option<String>,
+    /// Only cases of this family (the first segment of the id).
+    #[arg(long)]
+    family: Option<String>,
+    /// Run the i-th of n shards (1-based): every n-th selected case.
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
+    /// Worker threads (default: one per core). Results do not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    #[command(flatten)]
+    limits: LimitArgs,
 }
 
 #[derive(Args)]
@@ -99,12 +125,7 @@ fn main() -> ExitCode {
         }
     };
     ExitCode::from(match cli.command {
-        Command::Run {
-            paths,
-            rasterizers,
-            quiet,
-            limits,
-        } => run(paths, rasterizers, quiet, limits.limits()),
+        Command::Run(args) => run(args),
         Command::Bless { paths, limits } => bless(paths, limits.limits()),
         Command::Show {
             case,
@@ -147,11 +168,12 @@ fn discover(paths: Vec<PathBuf>) -> (suite::Discovery, bool) {
     (found, bad)
 }
 
-fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> u8 {
-    let names = if names.is_empty() {
+fn run(args: RunArgs) -> u8 {
+    let limits = args.limits.limits();
+    let names = if args.rasterizers.is_empty() {
         vec!["production".to_owned()]
     } else {
-        names
+        args.rasterizers.clone()
     };
     let mut candidates = Vec::new();
     for name in &names {
@@ -166,110 +188,235 @@ fn run(paths: Vec<PathBuf>, names: Vec<String>, quiet: bool, limits: Limits) -> 
             }
         }
     }
-    let (found, mut bad_input) = discover(paths);
-    if found.cases.is_empty() {
-        eprintln!("error: no case files found");
+    let shard = match args
+        .shard
+        .as_deref()
+        .map(Selection::parse_shard)
+        .transpose()
+    {
+        Ok(shard) => shard,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return BAD_INPUT;
+        }
+    };
+    let selection = Selection {
+        filter: args.filter.clone(),
+        family: args.family.clone(),
+        shard,
+    };
+    let (found, mut bad_input) = discover(args.paths.clone());
+    let files = selection.apply(found.cases);
+    if files.is_empty() {
+        eprintln!(
+            "error: no case files found{}",
+            if selection == Selection::default() {
+                ""
+            } else {
+                " that match the selection"
+            }
+        );
         return BAD_INPUT;
     }
-    let root = PathBuf::from(".");
-    let width = found.cases.iter().map(|c| c.id.len()).max().unwrap_or(0);
-    let mut tally = vec![[0usize; 4]; candidates.len()];
-    let (mut bad_cases, mut golden_ok, mut golden_missing, mut golden_bad) = (0, 0, 0, 0);
-    for file in &found.cases {
-        let scene = match suite::load(file, &limits) {
-            Ok(scene) => scene,
-            Err(e) => {
-                println!("BAD   {:width$}  {e}", file.id);
-                bad_cases += 1;
-                bad_input = true;
-                continue;
-            }
-        };
-        let reference = suite::run_reference(&scene);
-        match suite::check_golden(&root, &file.id, &reference.frame) {
-            GoldenStatus::Matches => golden_ok += 1,
-            GoldenStatus::Missing(_) => golden_missing += 1,
-            GoldenStatus::Differs(why) => {
-                golden_bad += 1;
-                println!(
-                    "GOLDEN {:width$}  the reference no longer reproduces its golden file: {why}",
-                    file.id
-                );
-            }
-        }
-        for (k, candidate) in candidates.iter().enumerate() {
-            let result = suite::run_candidate(&scene, &reference, candidate.as_ref());
-            let slot = match result.verdict {
-                Verdict::Pass => 0,
-                Verdict::Fail(_) => 1,
-                Verdict::Unsupported(_) => 2,
-                Verdict::Error(_) => 3,
-            };
-            tally[k][slot] += 1;
-            if quiet && slot == 0 {
-                continue;
-            }
-            // A foil's failure is a measured departure, not a failure.
-            let label = match &result.verdict {
-                Verdict::Fail(_) if candidate.is_foil() => "FOIL",
-                other => other.label(),
-            };
-            println!(
-                "{:5} {:width$}  {}  {}",
-                label,
-                file.id,
-                result.rasterizer,
-                suite::describe(&result)
-            );
-            if let Verdict::Fail(reasons) = &result.verdict {
-                for reason in reasons {
-                    println!("        {reason}");
-                }
-            }
+    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
+    let mut report = Report::new(
+        std::env::args().skip(1).collect(),
+        candidates
+            .iter()
+            .map(|c| RasterizerInfo {
+                name: c.name().to_owned(),
+                foil: c.is_foil(),
+            })
+            .collect(),
+        LimitsInfo {
+            max_canvas_pixels: limits.max_canvas_pixels,
+            max_primitives: limits.max_primitives,
+        },
+    );
+    report.cases = files.iter().map(CaseEntry::not_run).collect();
+    if let Some(dir) = &args.report {
+        // Written first, so that a run that is killed still leaves a report
+        // that lists what did not run.
+        if let Err(e) = report::write_json(dir, &mut report) {
+            eprintln!("error: {e}");
+            return BAD_INPUT;
         }
     }
+
+    let progress = Progress::new(files.len(), args.quiet);
+    let root = PathBuf::from(".");
+    let outcomes = runner::run_all(&files, &limits, &candidates, &root, args.threads, &|_| {
+        progress.tick()
+    });
+    progress.finish();
+
+    let colour = std::io::stdout().is_terminal();
+    let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    for outcome in &outcomes {
+        print_outcome(outcome, &candidates, args.quiet, colour, width);
+        bad_input |= matches!(outcome.problem, Some(Problem::Unreadable(_)));
+    }
+    report.cases = outcomes
+        .iter()
+        .map(|o| CaseEntry::from_outcome(o, &foils))
+        .collect();
+    report.complete = true;
+    report.tally();
+    let t = report.totals.clone();
+    let failed = t.reference_failed > 0
+        || t.golden.differing > 0
+        || t.verdicts.iter().any(|v| v.tally.fail + v.tally.error > 0);
     println!();
-    println!("{} case files, {} unreadable", found.cases.len(), bad_cases);
-    for (candidate, t) in candidates.iter().zip(&tally) {
+    println!("{} case files, {} unreadable", t.cases, t.unreadable);
+    for (candidate, v) in candidates.iter().zip(&t.verdicts) {
+        let x = &v.tally;
         if candidate.is_foil() {
             println!(
                 "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors",
-                candidate.name(),
-                t[0],
-                t[1],
-                t[2],
-                t[3]
+                v.rasterizer, x.pass, x.foil, x.unsupported, x.error
             );
         } else {
             println!(
                 "{}: {} passed, {} failed, {} unsupported, {} errors",
-                candidate.name(),
-                t[0],
-                t[1],
-                t[2],
-                t[3]
+                v.rasterizer, x.pass, x.fail, x.unsupported, x.error
             );
         }
     }
+    let g = &t.golden;
     println!(
-        "golden files: {golden_ok} match, {golden_bad} differ, {golden_missing} missing{}",
-        if golden_missing > 0 {
+        "golden files: {} match, {} differ, {} missing{}",
+        g.matching,
+        g.differing,
+        g.missing,
+        if g.missing > 0 {
             " (rastercheck bless writes them)"
         } else {
             ""
         }
     );
+    if let Some(dir) = &args.report {
+        match report::write_all(dir, &mut report, &outcomes) {
+            Ok(written) => println!("report: {} ({} files)", dir.display(), written.len()),
+            Err(e) => {
+                eprintln!("error: writing the report: {e}");
+                return BAD_INPUT;
+            }
+        }
+    }
     if bad_input {
         BAD_INPUT
-    } else if golden_bad > 0
-        || candidates
-            .iter()
-            .zip(&tally)
-            .any(|(c, t)| t[3] > 0 || (t[1] > 0 && !c.is_foil()))
-    {
+    } else if failed {
         FAIL
     } else {
         PASS
+    }
+}
+
+/// One line per candidate (failures only with `quiet`), with reasons.
+fn print_outcome(
+    outcome: &CaseOutcome,
+    candidates: &[Box<dyn Rasterizer>],
+    quiet: bool,
+    colour: bool,
+    width: usize,
+) {
+    let id = &outcome.file.id;
+    match &outcome.problem {
+        Some(Problem::Unreadable(e)) => {
+            return println!("{} {id:width$}  {e}", paint("BAD  ", RED, colour))
+        }
+        Some(Problem::ReferenceFailed(e)) => {
+            return println!(
+                "{} {id:width$}  the reference failed on this case: {e}",
+                paint("ERROR", RED, colour)
+            )
+        }
+        None => {}
+    }
+    if let Some(GoldenStatus::Differs(why)) = &outcome.golden {
+        println!(
+            "{} {id:width$}  the reference no longer reproduces its golden file: {why}",
+            paint("GOLDEN", RED, colour)
+        );
+    }
+    for (result, candidate) in outcome.candidates.iter().zip(candidates) {
+        let (label, tint) = match &result.verdict {
+            Verdict::Pass => ("PASS", GREEN),
+            Verdict::Fail(_) if candidate.is_foil() => ("FOIL", YELLOW),
+            Verdict::Fail(_) => ("FAIL", RED),
+            Verdict::Unsupported(_) => ("UNSUPPORTED", YELLOW),
+            Verdict::Error(_) => ("ERROR", RED),
+        };
+        if quiet && matches!(result.verdict, Verdict::Pass) {
+            continue;
+        }
+        println!(
+            "{} {id:width$}  {}  {}",
+            paint(&format!("{label:5}"), tint, colour),
+            result.rasterizer,
+            suite::describe(result)
+        );
+        if let Verdict::Fail(reasons) = &result.verdict {
+            for reason in reasons {
+                println!("        {reason}");
+            }
+        }
+    }
+}
+
+const RED: &str = "31";
+const GREEN: &str = "32";
+const YELLOW: &str = "33";
+
+/// ANSI colour, only on a terminal.
+fn paint(text: &str, colour_code: &str, colour: bool) -> String {
+    if colour {
+        format!("\x1b[{colour_code}m{text}\x1b[0m")
+    } else {
+        text.to_owned()
+    }
+}
+
+/// A progress bar on a terminal, shown once a run has lasted a second.
+struct Progress {
+    bar: Option<indicatif::ProgressBar>,
+    started: std::time::Instant,
+}
+
+impl Progress {
+    fn new(total: usize, quiet: bool) -> Progress {
+        let tty = std::io::stderr().is_terminal();
+        let bar = (tty && !quiet).then(|| {
+            let bar = indicatif::ProgressBar::with_draw_target(
+                Some(total as u64),
+                indicatif::ProgressDrawTarget::hidden(),
+            );
+            if let Ok(style) =
+                indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} cases {elapsed}")
+            {
+                bar.set_style(style);
+            }
+            bar
+        });
+        Progress {
+            bar,
+            started: std::time::Instant::now(),
+        }
+    }
+
+    fn tick(&self) {
+        if let Some(bar) = &self.bar {
+            if bar.is_hidden() && self.started.elapsed().as_secs_f64() > 1.0 {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+            bar.inc(1);
+        }
+    }
+
+    fn finish(&self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
     }
 }
 

@@ -215,11 +215,7 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
         }
         Err(panic) => {
-            let why = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "panicked".to_owned());
+            let why = panic_message(&*panic);
             return CandidateRun::without_frame(
                 name,
                 Verdict::Error(format!("panicked: {why}")),
@@ -259,6 +255,15 @@ pub fn run_candidate(
         frame: Some(frame),
         elapsed,
     }
+}
+
+/// The message a panic carried.
+pub fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
+    panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "panicked".to_owned())
 }
 
 /// Whether the reference still reproduces a case's golden file.

@@ -1,3 +1,111 @@
-//! Outputs for people: magnified PNG images of frames and their differences.
+//! Outputs: for people, magnified PNG images and (with `--report`) an HTML
+//! page; for machines, `report.json`, `junit.xml` and `summary.md`.
+//!
+//! `write_all` writes the whole folder:
+//!
+//! ```text
+//! DIR/report.json          the run, machine-readable (SPEC.md §10)
+//! DIR/junit.xml            one testcase per case × rasterizer
+//! DIR/summary.md           totals, failures first, worst metrics
+//! DIR/images/<id>/*.png    reference, candidate and difference mask, for
+//!                          every result that is not a pass
+//! ```
 
+pub mod json;
+pub mod junit;
 pub mod png;
+pub mod summary;
+
+use std::path::{Path, PathBuf};
+
+use json::Report;
+
+use crate::runner::CaseOutcome;
+use crate::suite::Verdict;
+
+/// Results that get pictures, at most: the page must stay loadable.
+pub const MAX_PICTURED: usize = 200;
+
+fn write_file(path: &Path, content: &[u8]) -> Result<PathBuf, String> {
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+    }
+    std::fs::write(path, content).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path.to_owned())
+}
+
+/// Writes `report.json` alone (used before a run starts, so that an
+/// interrupted run leaves a report saying what did not run).
+pub fn write_json(dir: &Path, report: &mut Report) -> Result<PathBuf, String> {
+    report.tally();
+    write_file(&dir.join("report.json"), report.to_json().as_bytes())
+}
+
+/// Writes every output for a finished run.
+pub fn write_all(
+    dir: &Path,
+    report: &mut Report,
+    outcomes: &[CaseOutcome],
+) -> Result<Vec<PathBuf>, String> {
+    let mut written = Vec::new();
+    written.extend(write_pictures(dir, report, outcomes)?);
+    written.push(write_json(dir, report)?);
+    written.push(write_file(
+        &dir.join("junit.xml"),
+        junit::render(report).as_bytes(),
+    )?);
+    written.push(write_file(
+        &dir.join("summary.md"),
+        summary::render(report).as_bytes(),
+    )?);
+    Ok(written)
+}
+
+/// PNGs for every result that is not a pass, recorded in the entry's files.
+fn write_pictures(
+    dir: &Path,
+    report: &mut Report,
+    outcomes: &[CaseOutcome],
+) -> Result<Vec<PathBuf>, String> {
+    let mut written = Vec::new();
+    let mut pictured = 0;
+    for (entry, outcome) in report.cases.iter_mut().zip(outcomes) {
+        let (Some(scene), Some(reference)) = (&outcome.scene, &outcome.reference) else {
+            continue;
+        };
+        for (result, run) in entry.results.iter_mut().zip(&outcome.candidates) {
+            let (Some(frame), Some(metrics)) = (&run.frame, &run.metrics) else {
+                continue;
+            };
+            if matches!(run.verdict, Verdict::Pass) || pictured >= MAX_PICTURED {
+                continue;
+            }
+            pictured += 1;
+            let folder = dir.join("images").join(&entry.id);
+            let scale = png::auto_scale(frame);
+            let paths = png::write_comparison(
+                scene,
+                &reference.frame,
+                &run.rasterizer,
+                frame,
+                &metrics.coverage.mask,
+                &folder,
+                scale,
+            )?;
+            for path in paths {
+                result.files.push(relative(dir, &path));
+                written.push(path);
+            }
+        }
+    }
+    Ok(written)
+}
+
+/// `path` relative to `dir`, with forward slashes.
+pub fn relative(dir: &Path, path: &Path) -> String {
+    let rel = path.strip_prefix(dir).unwrap_or(path);
+    rel.components()
+        .map(|c| c.as_os_str().to_string_lossy())
+        .collect::<Vec<_>>()
+        .join("/")
+}

@@ -1,0 +1,374 @@
+//! `report.json`: the machine-readable report (schema in SPEC.md §10).
+//!
+//! Built from the run's outcomes; every other output (JUnit, the markdown
+//! summary, the HTML page) is written from this model, so they cannot
+//! disagree.
+
+use serde::Serialize;
+
+use crate::metrics::Metrics;
+use crate::runner::{CaseOutcome, Problem, Tally};
+use crate::scene::Scene;
+use crate::suite::{GoldenStatus, Verdict};
+
+pub const SCHEMA: &str = "rastercheck-report/1";
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    pub schema: &'static str,
+    pub tool: Tool,
+    /// False while the run is under way, or when it was cut short: cases
+    /// with status `not-run` did not run.
+    pub complete: bool,
+    /// The command line, for reproducing the run.
+    pub command: Vec<String>,
+    pub rasterizers: Vec<RasterizerInfo>,
+    pub limits: LimitsInfo,
+    /// Random seeds the run used (none yet: every case is deterministic).
+    pub seeds: Vec<u64>,
+    pub totals: Totals,
+    pub cases: Vec<CaseEntry>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Tool {
+    pub name: &'static str,
+    pub version: &'static str,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct RasterizerInfo {
+    pub name: String,
+    pub foil: bool,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct LimitsInfo {
+    pub max_canvas_pixels: u64,
+    pub max_primitives: usize,
+}
+
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Totals {
+    pub cases: usize,
+    pub unreadable: usize,
+    pub reference_failed: usize,
+    pub not_run: usize,
+    /// Per rasterizer, in the order of `rasterizers`.
+    pub verdicts: Vec<RasterizerTotals>,
+    pub golden: GoldenTotals,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct RasterizerTotals {
+    pub rasterizer: String,
+    #[serde(flatten)]
+    pub tally: Tally,
+}
+
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct GoldenTotals {
+    pub matching: usize,
+    pub differing: usize,
+    pub missing: usize,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct CaseEntry {
+    pub id: String,
+    pub path: String,
+    /// The first segment of the id.
+    pub family: String,
+    /// `ran`, `unreadable`, `reference-failed` or `not-run`.
+    pub status: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rules: Option<RulesInfo>,
+    /// `match`, `differ` or `missing`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub golden: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub golden_detail: Option<String>,
+    pub reference_ms: f64,
+    pub results: Vec<ResultEntry>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct RulesInfo {
+    pub canvas: [u32; 2],
+    pub subpixel_bits: Option<u32>,
+    pub fill_rule: &'static str,
+    pub cull: &'static str,
+    pub primitives: usize,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ResultEntry {
+    pub rasterizer: String,
+    /// `pass`, `fail`, `foil` (a foil's departure), `unsupported` or `error`.
+    pub verdict: &'static str,
+    pub reasons: Vec<String>,
+    pub time_ms: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub metrics: Option<MetricsEntry>,
+    /// Files written for this result, relative to the report folder.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub files: Vec<String>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct MetricsEntry {
+    pub coverage: CoverageEntry,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub watertight: Option<WatertightEntry>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lines: Option<LinesEntry>,
+    pub channels: Vec<ChannelEntry>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct CoverageEntry {
+    pub samples: u64,
+    pub reference_covered: u64,
+    pub candidate_covered: u64,
+    pub missing: u64,
+    pub extra: u64,
+    pub wrong_owner: u64,
+    pub mismatched: u64,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct WatertightEntry {
+    pub interior: u64,
+    pub holes: u64,
+    pub overdraw: u64,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct LinesEntry {
+    pub lines: u64,
+    pub crowded_steps: u64,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ChannelEntry {
+    pub channel: String,
+    pub samples: u64,
+    pub max_abs: f64,
+    pub max_ulp: f64,
+    pub rms: f64,
+    pub allowed_abs: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub allowed_ulp: Option<f64>,
+}
+
+impl MetricsEntry {
+    pub fn from_metrics(m: &Metrics) -> MetricsEntry {
+        let c = &m.coverage;
+        MetricsEntry {
+            coverage: CoverageEntry {
+                samples: c.samples,
+                reference_covered: c.reference_covered,
+                candidate_covered: c.candidate_covered,
+                missing: c.missing,
+                extra: c.extra,
+                wrong_owner: c.wrong_owner,
+                mismatched: c.mismatched(),
+            },
+            watertight: m.watertight.as_ref().map(|w| WatertightEntry {
+                interior: w.interior,
+                holes: w.holes,
+                overdraw: w.overdraw,
+            }),
+            lines: m.lines.as_ref().map(|l| LinesEntry {
+                lines: l.lines,
+                crowded_steps: l.crowded_steps,
+            }),
+            channels: m
+                .channels
+                .iter()
+                .map(|ch| ChannelEntry {
+                    channel: ch.channel.clone(),
+                    samples: ch.samples,
+                    max_abs: ch.max_abs,
+                    max_ulp: ch.max_ulp,
+                    rms: ch.rms,
+                    allowed_abs: ch.allowed_abs,
+                    allowed_ulp: ch.allowed_ulp,
+                })
+                .collect(),
+        }
+    }
+}
+
+fn verdict_name(verdict: &Verdict, foil: bool) -> &'static str {
+    match verdict {
+        Verdict::Pass => "pass",
+        Verdict::Fail(_) if foil => "foil",
+        Verdict::Fail(_) => "fail",
+        Verdict::Unsupported(_) => "unsupported",
+        Verdict::Error(_) => "error",
+    }
+}
+
+fn rules_info(scene: &Scene) -> RulesInfo {
+    RulesInfo {
+        canvas: [scene.canvas.width, scene.canvas.height],
+        subpixel_bits: scene.rules.subpixel_bits,
+        fill_rule: scene.rules.fill_rule.name(),
+        cull: scene.rules.cull.name(),
+        primitives: scene.primitives.len(),
+    }
+}
+
+fn millis(d: std::time::Duration) -> f64 {
+    d.as_secs_f64() * 1000.0
+}
+
+impl CaseEntry {
+    /// A case that has not run (yet).
+    pub fn not_run(file: &crate::suite::CaseFile) -> CaseEntry {
+        CaseEntry {
+            id: file.id.clone(),
+            path: file.path.display().to_string(),
+            family: family(&file.id),
+            status: "not-run",
+            error: None,
+            name: None,
+            description: None,
+            rules: None,
+            golden: None,
+            golden_detail: None,
+            reference_ms: 0.0,
+            results: Vec::new(),
+        }
+    }
+
+    /// The entry for a finished case; `foil[k]` tells whether candidate k
+    /// is a foil.
+    pub fn from_outcome(outcome: &CaseOutcome, foil: &[bool]) -> CaseEntry {
+        let mut entry = CaseEntry::not_run(&outcome.file);
+        entry.status = match &outcome.problem {
+            None => "ran",
+            Some(Problem::Unreadable(_)) => "unreadable",
+            Some(Problem::ReferenceFailed(_)) => "reference-failed",
+        };
+        entry.error = outcome.problem.as_ref().map(|p| match p {
+            Problem::Unreadable(e) => e.clone(),
+            Problem::ReferenceFailed(e) => format!("the reference failed: {e}"),
+        });
+        if let Some(scene) = &outcome.scene {
+            entry.name = Some(scene.name.clone());
+            entry.description = Some(scene.description.clone());
+            entry.rules = Some(rules_info(scene));
+        }
+        (entry.golden, entry.golden_detail) = match &outcome.golden {
+            None => (None, None),
+            Some(GoldenStatus::Matches) => (Some("match"), None),
+            Some(GoldenStatus::Missing(path)) => {
+                (Some("missing"), Some(path.display().to_string()))
+            }
+            Some(GoldenStatus::Differs(why)) => (Some("differ"), Some(why.clone())),
+        };
+        entry.reference_ms = millis(outcome.reference_time());
+        entry.results = outcome
+            .candidates
+            .iter()
+            .zip(foil)
+            .map(|(run, &is_foil)| ResultEntry {
+                rasterizer: run.rasterizer.clone(),
+                verdict: verdict_name(&run.verdict, is_foil),
+                reasons: match &run.verdict {
+                    Verdict::Pass => Vec::new(),
+                    Verdict::Fail(reasons) => reasons.clone(),
+                    Verdict::Unsupported(why) | Verdict::Error(why) => vec![why.clone()],
+                },
+                time_ms: millis(run.elapsed),
+                metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
+                files: Vec::new(),
+            })
+            .collect();
+        entry
+    }
+}
+
+/// The family of a case id: its first path segment.
+pub fn family(id: &str) -> String {
+    match id.split_once('/') {
+        Some((family, _)) => family.to_owned(),
+        None => "(top)".to_owned(),
+    }
+}
+
+impl Report {
+    pub fn new(
+        command: Vec<String>,
+        rasterizers: Vec<RasterizerInfo>,
+        limits: LimitsInfo,
+    ) -> Report {
+        Report {
+            schema: SCHEMA,
+            tool: Tool {
+                name: "rastercheck",
+                version: env!("CARGO_PKG_VERSION"),
+            },
+            complete: false,
+            command,
+            rasterizers,
+            limits,
+            seeds: Vec::new(),
+            totals: Totals::default(),
+            cases: Vec::new(),
+        }
+    }
+
+    /// Recounts the totals from the case entries.
+    pub fn tally(&mut self) {
+        let mut totals = Totals {
+            cases: self.cases.len(),
+            verdicts: self
+                .rasterizers
+                .iter()
+                .map(|r| RasterizerTotals {
+                    rasterizer: r.name.clone(),
+                    tally: Tally::default(),
+                })
+                .collect(),
+            ..Totals::default()
+        };
+        for case in &self.cases {
+            match case.status {
+                "unreadable" => totals.unreadable += 1,
+                "reference-failed" => totals.reference_failed += 1,
+                "not-run" => totals.not_run += 1,
+                _ => {}
+            }
+            match case.golden {
+                Some("match") => totals.golden.matching += 1,
+                Some("differ") => totals.golden.differing += 1,
+                Some("missing") => totals.golden.missing += 1,
+                _ => {}
+            }
+            for (result, totals) in case.results.iter().zip(totals.verdicts.iter_mut()) {
+                let tally = &mut totals.tally;
+                match result.verdict {
+                    "pass" => tally.pass += 1,
+                    "fail" => tally.fail += 1,
+                    "foil" => tally.foil += 1,
+                    "unsupported" => tally.unsupported += 1,
+                    _ => tally.error += 1,
+                }
+            }
+        }
+        self.totals = totals;
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("the report serializes")
+    }
+}

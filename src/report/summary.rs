@@ -1,0 +1,99 @@
+//! `summary.md`: a short markdown summary that fits a CI job summary:
+//! totals, the failures first, then the worst metrics.
+
+use super::json::{CaseEntry, Report, ResultEntry};
+
+pub fn render(report: &Report) -> String {
+    let t = &report.totals;
+    let mut md = String::from("# rastercheck\n\n");
+    if !report.complete {
+        md.push_str(&format!(
+            "**The run did not finish: {} cases did not run.**\n\n",
+            t.not_run
+        ));
+    }
+    md.push_str(&format!(
+        "{} cases; {} unreadable; golden files: {} match, {} differ, {} missing.\n\n",
+        t.cases, t.unreadable, t.golden.matching, t.golden.differing, t.golden.missing
+    ));
+    md.push_str("| rasterizer | pass | fail | foil departures | unsupported | error |\n|---|---:|---:|---:|---:|---:|\n");
+    for v in &t.verdicts {
+        let x = &v.tally;
+        md.push_str(&format!(
+            "| {} | {} | {} | {} | {} | {} |\n",
+            v.rasterizer, x.pass, x.fail, x.foil, x.unsupported, x.error
+        ));
+    }
+    let problems: Vec<&CaseEntry> = report
+        .cases
+        .iter()
+        .filter(|c| c.error.is_some() || c.golden == Some("differ"))
+        .collect();
+    let failures: Vec<(&CaseEntry, &ResultEntry)> = report
+        .cases
+        .iter()
+        .flat_map(|c| c.results.iter().map(move |r| (c, r)))
+        .filter(|(_, r)| matches!(r.verdict, "fail" | "error"))
+        .collect();
+    if !problems.is_empty() || !failures.is_empty() {
+        md.push_str("\n## Failures\n\n");
+        for case in problems {
+            let why = case
+                .error
+                .clone()
+                .or_else(|| case.golden_detail.clone())
+                .unwrap_or_default();
+            md.push_str(&format!(
+                "- `{}` ({}): {}\n",
+                case.id,
+                case.status,
+                one_line(&why)
+            ));
+        }
+        for (case, result) in &failures {
+            md.push_str(&format!(
+                "- `{}` **{}** {}: {}\n",
+                case.id,
+                result.rasterizer,
+                result.verdict,
+                one_line(&result.reasons.join("; "))
+            ));
+        }
+    }
+    let mut worst: Vec<(f64, String)> = report
+        .cases
+        .iter()
+        .flat_map(|c| c.results.iter().map(move |r| (c, r)))
+        .filter_map(|(c, r)| {
+            let m = r.metrics.as_ref()?;
+            let ch = m.channels.iter().max_by(|a, b| {
+                (a.max_abs / a.allowed_abs).total_cmp(&(b.max_abs / b.allowed_abs))
+            })?;
+            Some((
+                ch.max_abs / ch.allowed_abs,
+                format!(
+                    "| `{}` | {} | {} | {:.3e} | {:.1} | {:.3e} |",
+                    c.id, r.rasterizer, ch.channel, ch.max_abs, ch.max_ulp, ch.allowed_abs
+                ),
+            ))
+        })
+        .collect();
+    worst.sort_by(|a, b| b.0.total_cmp(&a.0));
+    if !worst.is_empty() {
+        md.push_str("\n## Worst interpolation errors\n\n| case | rasterizer | channel | max error | max ulp | bound |\n|---|---|---|---:|---:|---:|\n");
+        for (_, row) in worst.iter().take(10) {
+            md.push_str(row);
+            md.push('\n');
+        }
+    }
+    md
+}
+
+fn one_line(text: &str) -> String {
+    let line = text.replace('\n', " ");
+    if line.chars().count() > 300 {
+        format!("{}…", line.chars().take(300).collect::<String>())
+    } else {
+        line
+    }
+}

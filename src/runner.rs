@@ -1,0 +1,270 @@
+//! Running many cases: selection (filter, family, shard), parallel execution
+//! with results in a fixed order, and one outcome per case that the
+//! reports are written from.
+//!
+//! A case's work is independent of every other's and of the thread that
+//! does it, so the outcomes are identical for any thread count; only the
+//! timings differ.
+
+use std::path::Path;
+use std::time::Duration;
+
+use rayon::prelude::*;
+
+use crate::rasterizer::Rasterizer;
+use crate::scene::{Limits, Scene};
+use crate::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
+
+/// Which of the discovered cases to run.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Selection {
+    /// A glob over case ids: `*` matches within a path segment, `**` across
+    /// segments, `?` one character (`triangles/fan_*`, `**/*tie*`).
+    pub filter: Option<String>,
+    /// The first segment of the id (`triangles`, `lines`).
+    pub family: Option<String>,
+    /// `(i, n)`: the i-th of n shards, 1-based.
+    pub shard: Option<(usize, usize)>,
+}
+
+impl Selection {
+    /// Parses `i/n` with 1 ≤ i ≤ n.
+    pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+        let bad = || format!("--shard takes i/n with 1 ≤ i ≤ n, such as 2/4; got {text:?}");
+        let (i, n) = text.split_once('/').ok_or_else(bad)?;
+        let (i, n): (usize, usize) = (
+            i.trim().parse().map_err(|_| bad())?,
+            n.trim().parse().map_err(|_| bad())?,
+        );
+        if i == 0 || n == 0 || i > n {
+            return Err(bad());
+        }
+        Ok((i, n))
+    }
+
+    /// The selected cases, in their original (sorted) order. Shards take
+    /// every n-th case of what the filter and family leave, so the union of
+    /// the shards is exactly that set, each case once, and shards stay
+    /// balanced as cases are added.
+    pub fn apply(&self, cases: Vec<CaseFile>) -> Vec<CaseFile> {
+        let kept = cases.into_iter().filter(|c| {
+            self.family
+                .as_ref()
+                .is_none_or(|f| c.id.split('/').next() == Some(f.as_str()))
+                && self.filter.as_ref().is_none_or(|g| glob_match(g, &c.id))
+        });
+        match self.shard {
+            None => kept.collect(),
+            Some((i, n)) => kept
+                .enumerate()
+                .filter(|(k, _)| k % n == i - 1)
+                .map(|(_, c)| c)
+                .collect(),
+        }
+    }
+}
+
+/// Whether `text` matches the glob `pattern` (`*`, `**`, `?`).
+pub fn glob_match(pattern: &str, text: &str) -> bool {
+    fn go(p: &[u8], t: &[u8]) -> bool {
+        match p.first() {
+            None => t.is_empty(),
+            Some(b'*') if p.get(1) == Some(&b'*') => {
+                let rest = &p[2..];
+                (0..=t.len()).any(|k| go(rest, &t[k..]))
+            }
+            Some(b'*') => {
+                let rest = &p[1..];
+                let segment = t.iter().position(|&c| c == b'/').unwrap_or(t.len());
+                (0..=segment).any(|k| go(rest, &t[k..]))
+            }
+            Some(b'?') => !t.is_empty() && t[0] != b'/' && go(&p[1..], &t[1..]),
+            Some(&c) => t.first() == Some(&c) && go(&p[1..], &t[1..]),
+        }
+    }
+    go(pattern.as_bytes(), text.as_bytes())
+}
+
+/// Everything that happened to one case.
+pub struct CaseOutcome {
+    pub file: CaseFile,
+    /// `None` when the file could not be read.
+    pub scene: Option<Scene>,
+    /// Why the case could not be read (bad input), or why the reference
+    /// could not draw it.
+    pub problem: Option<Problem>,
+    pub reference: Option<ReferenceRun>,
+    pub golden: Option<GoldenStatus>,
+    pub candidates: Vec<CandidateRun>,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Problem {
+    /// The case file is bad input: the error names the file and JSON path.
+    Unreadable(String),
+    /// The reference itself broke on this case (a bug in rastercheck).
+    ReferenceFailed(String),
+}
+
+impl CaseOutcome {
+    pub fn reference_time(&self) -> Duration {
+        self.reference
+            .as_ref()
+            .map_or(Duration::ZERO, |r| r.elapsed)
+    }
+}
+
+/// Reads, draws with the reference, checks the golden file, and runs every
+/// candidate. Never panics: a panic in the oracle becomes a problem.
+pub fn run_case(
+    file: &CaseFile,
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+    root: &Path,
+) -> CaseOutcome {
+    let mut outcome = CaseOutcome {
+        file: file.clone(),
+        scene: None,
+        problem: None,
+        reference: None,
+        golden: None,
+        candidates: Vec::new(),
+    };
+    let scene = match suite::load(file, limits) {
+        Ok(scene) => scene,
+        Err(e) => {
+            outcome.problem = Some(Problem::Unreadable(e.to_string()));
+            return outcome;
+        }
+    };
+    let reference = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        suite::run_reference(&scene)
+    })) {
+        Ok(reference) => reference,
+        Err(panic) => {
+            outcome.problem = Some(Problem::ReferenceFailed(suite::panic_message(&*panic)));
+            outcome.scene = Some(scene);
+            return outcome;
+        }
+    };
+    outcome.golden = Some(suite::check_golden(root, &file.id, &reference.frame));
+    outcome.candidates = candidates
+        .iter()
+        .map(|c| suite::run_candidate(&scene, &reference, c.as_ref()))
+        .collect();
+    outcome.reference = Some(reference);
+    outcome.scene = Some(scene);
+    outcome
+}
+
+/// Runs every case on `threads` threads (all cores when `None`), calling
+/// `done` as each finishes. The outcomes come back in the order of `files`.
+pub fn run_all(
+    files: &[CaseFile],
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+    root: &Path,
+    threads: Option<usize>,
+    done: &(dyn Fn(&CaseOutcome) + Sync),
+) -> Vec<CaseOutcome> {
+    let work = || {
+        files
+            .par_iter()
+            .map(|file| {
+                let outcome = run_case(file, limits, candidates, root);
+                done(&outcome);
+                outcome
+            })
+            .collect()
+    };
+    match rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+    {
+        Ok(pool) => pool.install(work),
+        Err(_) => work(),
+    }
+}
+
+/// Counts of verdicts for one rasterizer.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Tally {
+    pub pass: usize,
+    pub fail: usize,
+    pub unsupported: usize,
+    pub error: usize,
+    /// Departures of a foil (counted apart from failures).
+    pub foil: usize,
+}
+
+impl Tally {
+    pub fn add(&mut self, verdict: &Verdict, foil: bool) {
+        match verdict {
+            Verdict::Pass => self.pass += 1,
+            Verdict::Fail(_) if foil => self.foil += 1,
+            Verdict::Fail(_) => self.fail += 1,
+            Verdict::Unsupported(_) => self.unsupported += 1,
+            Verdict::Error(_) => self.error += 1,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ids(names: &[&str]) -> Vec<CaseFile> {
+        names
+            .iter()
+            .map(|n| CaseFile {
+                id: (*n).to_owned(),
+                path: format!("cases/{n}.json").into(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn globs_match_within_and_across_segments() {
+        assert!(glob_match("triangles/fan_*", "triangles/fan_16_center"));
+        assert!(!glob_match("*fan*", "triangles/fan_16_center"));
+        assert!(glob_match("**fan*", "triangles/fan_16_center"));
+        assert!(glob_match("**/*tie*", "lines/midpoint_tie_slope_half"));
+        assert!(glob_match("lines/?iamond_strip", "lines/diamond_strip"));
+        assert!(!glob_match("lines/diamond", "lines/diamond_strip"));
+    }
+
+    #[test]
+    fn shards_partition_the_selection() {
+        let all = ids(&["a/1", "a/2", "a/3", "b/1", "b/2", "b/3", "b/4"]);
+        for n in 1..=8 {
+            let mut union: Vec<String> = (1..=n)
+                .flat_map(|i| {
+                    Selection {
+                        shard: Some((i, n)),
+                        ..Default::default()
+                    }
+                    .apply(all.clone())
+                })
+                .map(|c| c.id)
+                .collect();
+            union.sort();
+            let mut expected: Vec<String> = all.iter().map(|c| c.id.clone()).collect();
+            expected.sort();
+            assert_eq!(union, expected, "{n} shards");
+        }
+        let family = Selection {
+            family: Some("b".into()),
+            ..Default::default()
+        }
+        .apply(all);
+        assert_eq!(family.len(), 4);
+    }
+
+    #[test]
+    fn shard_syntax_is_checked() {
+        assert_eq!(Selection::parse_shard("2/4"), Ok((2, 4)));
+        for bad in ["0/4", "5/4", "2", "a/b", "1/0"] {
+            assert!(Selection::parse_shard(bad).is_err(), "{bad}");
+        }
+    }
+}
