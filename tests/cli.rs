@@ -263,3 +263,214 @@ fn show_writes_three_decodable_pngs() {
     assert_eq!(centre(3, 3), yellow);
     assert_ne!(centre(3, 4), yellow);
 }
+
+/// The report's cases with every timing removed, for comparing runs.
+fn without_timings(report: &str) -> serde_json::Value {
+    let mut value: serde_json::Value = serde_json::from_str(report).unwrap();
+    fn strip(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Object(map) => {
+                map.retain(|k, _| !k.ends_with("_ms") && k != "command");
+                map.values_mut().for_each(strip);
+            }
+            serde_json::Value::Array(items) => items.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    strip(&mut value);
+    value
+}
+
+fn bundled_cases() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let root = bundled_cases();
+    let out = std::env::temp_dir().join(format!("rastercheck-threads-{}", std::process::id()));
+    let mut reports = Vec::new();
+    for threads in ["1", "2", "5"] {
+        let dir = out.join(threads);
+        let run = rastercheck(
+            &root,
+            &[
+                "run",
+                "cases",
+                "-q",
+                "-r",
+                "production",
+                "-r",
+                "dda-f32",
+                "--threads",
+                threads,
+                "--report",
+                dir.to_str().unwrap(),
+            ],
+        );
+        assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+        reports.push((
+            std::fs::read_to_string(dir.join("report.json")).unwrap(),
+            text(&run),
+        ));
+    }
+    for (report, output) in &reports[1..] {
+        assert_eq!(without_timings(report), without_timings(&reports[0].0));
+        // Printed output is in the same order too (the report line names the folder).
+        let body = |t: &str| {
+            t.lines()
+                .filter(|l| !l.starts_with("report:"))
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        assert_eq!(body(output), body(&reports[0].1));
+    }
+    std::fs::remove_dir_all(out).ok();
+}
+
+fn report_ids(dir: &Path) -> Vec<String> {
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
+    report["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["id"].as_str().unwrap().to_owned())
+        .collect()
+}
+
+#[test]
+fn the_union_of_the_shards_is_the_whole_suite_each_case_once() {
+    let root = bundled_cases();
+    let out = std::env::temp_dir().join(format!("rastercheck-shards-{}", std::process::id()));
+    let whole_dir = out.join("whole");
+    assert_eq!(
+        rastercheck(
+            &root,
+            &[
+                "run",
+                "cases",
+                "-q",
+                "--report",
+                whole_dir.to_str().unwrap()
+            ]
+        )
+        .status
+        .code(),
+        Some(0)
+    );
+    let mut whole = report_ids(&whole_dir);
+    whole.sort();
+    assert!(whole.len() > 100);
+    let mut union = Vec::new();
+    for i in 1..=3 {
+        let dir = out.join(format!("shard{i}"));
+        let shard = format!("{i}/3");
+        let run = rastercheck(
+            &root,
+            &[
+                "run",
+                "cases",
+                "-q",
+                "--shard",
+                &shard,
+                "--report",
+                dir.to_str().unwrap(),
+            ],
+        );
+        assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+        let ids = report_ids(&dir);
+        assert!(!ids.is_empty());
+        union.extend(ids);
+    }
+    union.sort();
+    assert_eq!(union, whole);
+    std::fs::remove_dir_all(out).ok();
+}
+
+#[test]
+fn filter_and_family_select_cases() {
+    let root = bundled_cases();
+    let out = std::env::temp_dir().join(format!("rastercheck-select-{}", std::process::id()));
+    let run = rastercheck(
+        &root,
+        &[
+            "run",
+            "cases",
+            "--family",
+            "lines",
+            "--filter",
+            "**diamond*",
+            "--report",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    let ids = report_ids(&out);
+    assert!(!ids.is_empty());
+    assert!(
+        ids.iter().all(|id| id.starts_with("lines/diamond")),
+        "{ids:?}"
+    );
+    let bad = rastercheck(&root, &["run", "cases", "--shard", "4/3"]);
+    assert_eq!(bad.status.code(), Some(2), "{}", text(&bad));
+    std::fs::remove_dir_all(out).ok();
+}
+
+#[test]
+fn a_report_is_written_even_when_cases_are_bad_and_says_which() {
+    let dir = workspace(
+        "report-bad",
+        &[
+            ("cases/a.json", SINGLE),
+            ("cases/b.json", "{ nope"),
+            ("cases/c.json", TIE_PAIR),
+        ],
+    );
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            "cases",
+            "-r",
+            "production",
+            "-r",
+            "mutant:flipped-ties",
+            "--report",
+            "rep",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("rep/report.json")).unwrap())
+            .unwrap();
+    assert_eq!(report["complete"], true);
+    assert_eq!(report["totals"]["unreadable"], 1);
+    let b = &report["cases"][1];
+    assert_eq!(b["status"], "unreadable");
+    assert!(
+        b["error"]
+            .as_str()
+            .unwrap()
+            .contains("cases/b.json: line 1 column 3"),
+        "{b}"
+    );
+    assert_eq!(report["cases"][2]["results"][1]["verdict"], "fail");
+    let junit = std::fs::read_to_string(dir.join("rep/junit.xml")).unwrap();
+    assert!(
+        junit.contains("<testcase name=\"c\" classname=\"mutant:flipped-ties.(top)\""),
+        "{junit}"
+    );
+    assert!(
+        junit.contains("<failure message=\"coverage: 8 samples differ"),
+        "{junit}"
+    );
+    assert!(junit.contains("<error message=\"unreadable\">"), "{junit}");
+    let summary = std::fs::read_to_string(dir.join("rep/summary.md")).unwrap();
+    assert!(
+        summary.contains("`c` **mutant:flipped-ties** fail"),
+        "{summary}"
+    );
+    // The failing result got its pictures.
+    assert!(dir.join("rep/images/c/diff.png").is_file());
+}
