@@ -14,8 +14,10 @@
 //!   rasterizer. [`mutants`]: production with one deliberate bug each.
 //! - [`frame`]: what every rasterizer returns.
 //! - [`metrics`]: coverage, watertightness and interpolation error.
-//! - [`suite`]: discovery and running; [`golden`] and [`report`]: outputs.
+//! - [`suite`]: discovery and running; [`golden`] and [`report`]: outputs;
+//!   [`baseline`]: recorded metrics that later runs must not get worse than.
 
+pub mod baseline;
 pub mod frame;
 pub mod golden;
 pub mod metrics;
