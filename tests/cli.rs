@@ -250,14 +250,20 @@ fn show_writes_three_decodable_pngs() {
     );
     let t = text(&out);
     assert_eq!(out.status.code(), Some(1), "{t}");
-    for name in ["reference.png", "mutant-flipped-ties.png", "diff.png"] {
+    for name in [
+        "reference.png",
+        "mutant-flipped-ties.png",
+        "mutant-flipped-ties.diff.png",
+    ] {
         let img =
             image::open(dir.join("shown").join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         // 8 pixels magnified 32 times, the most auto-scaling gives.
         assert_eq!(img.width(), 256, "{name}");
     }
     // The diff shows the 8 wrong-owner samples in yellow.
-    let diff = image::open(dir.join("shown/diff.png")).unwrap().to_rgb8();
+    let diff = image::open(dir.join("shown/mutant-flipped-ties.diff.png"))
+        .unwrap()
+        .to_rgb8();
     let yellow = rastercheck::report::png::WRONG_OWNER;
     let centre = |x: u32, y: u32| diff.get_pixel(x * 32 + 16, y * 32 + 10).0;
     assert_eq!(centre(3, 3), yellow);
@@ -472,5 +478,7 @@ fn a_report_is_written_even_when_cases_are_bad_and_says_which() {
         "{summary}"
     );
     // The failing result got its pictures.
-    assert!(dir.join("rep/images/c/diff.png").is_file());
+    assert!(dir
+        .join("rep/images/c/mutant-flipped-ties.diff.png")
+        .is_file());
 }

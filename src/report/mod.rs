@@ -9,8 +9,13 @@
 //! DIR/summary.md           totals, failures first, worst metrics
 //! DIR/images/<id>/*.png    reference, candidate and difference mask, for
 //!                          every result that is not a pass
+//! DIR/exr/<id>/<rast>.exr  signed float error maps, for every result that
+//!                          is not a pass or has any nonzero error
+//! DIR/index.html           one self-contained page for people
 //! ```
 
+pub mod exr;
+pub mod html;
 pub mod json;
 pub mod junit;
 pub mod png;
@@ -49,6 +54,7 @@ pub fn write_all(
 ) -> Result<Vec<PathBuf>, String> {
     let mut written = Vec::new();
     written.extend(write_pictures(dir, report, outcomes)?);
+    written.extend(write_error_maps(dir, report, outcomes)?);
     written.push(write_json(dir, report)?);
     written.push(write_file(
         &dir.join("junit.xml"),
@@ -58,6 +64,42 @@ pub fn write_all(
         &dir.join("summary.md"),
         summary::render(report).as_bytes(),
     )?);
+    // Last: the page embeds the pictures written above.
+    written.push(write_file(
+        &dir.join("index.html"),
+        html::render(dir, report, outcomes).as_bytes(),
+    )?);
+    Ok(written)
+}
+
+/// EXR error maps for every result that is not a pass or has any error,
+/// recorded in the entry's files.
+fn write_error_maps(
+    dir: &Path,
+    report: &mut Report,
+    outcomes: &[CaseOutcome],
+) -> Result<Vec<PathBuf>, String> {
+    let mut written = Vec::new();
+    for (entry, outcome) in report.cases.iter_mut().zip(outcomes) {
+        let Some(reference) = &outcome.reference else {
+            continue;
+        };
+        for (result, run) in entry.results.iter_mut().zip(&outcome.candidates) {
+            let (Some(frame), Some(metrics)) = (&run.frame, &run.metrics) else {
+                continue;
+            };
+            if !exr::has_error(matches!(run.verdict, Verdict::Pass), metrics) {
+                continue;
+            }
+            let path = dir
+                .join("exr")
+                .join(&entry.id)
+                .join(exr::file_name(&run.rasterizer));
+            let path = exr::write(&reference.frame, frame, &path)?;
+            result.files.push(relative(dir, &path));
+            written.push(path);
+        }
+    }
     Ok(written)
 }
 

@@ -96,8 +96,9 @@ fn outline(scene: &Scene, scale: u32, img: &mut RgbImage) {
     }
 }
 
-/// Writes `reference.png`, `<candidate>.png` and `diff.png` into `dir`.
-/// Returns the paths written.
+/// Writes `reference.png`, `<candidate>.png` and `<candidate>.diff.png`
+/// into `dir` (`:` and `/` in the name become `-`), so that the results of
+/// several candidates on one case sit side by side. Returns the paths.
 pub fn write_comparison(
     scene: &Scene,
     reference: &Frame,
@@ -119,7 +120,7 @@ pub fn write_comparison(
             picture(scene, scale, |i| coverage_colour(candidate.coverage[i])),
         ),
         (
-            "diff.png".to_owned(),
+            format!("{file_name}.diff.png"),
             picture(scene, scale, |i| {
                 diff_colour(mask[i], reference.coverage[i] > 0)
             }),

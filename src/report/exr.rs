@@ -1,0 +1,119 @@
+//! Float error maps: `DIR/exr/<case id>/<rasterizer>.exr`, one per case ×
+//! rasterizer whose result is not a pass or shows any error at all.
+//!
+//! One layer named `error`, f32 channels, signed (candidate − reference):
+//!
+//! - `coverage.error`: the candidate's coverage count minus the reference's;
+//! - `owner.error`: 1 where the last primitive differs, else 0;
+//! - `depth.error`, `attribute.K.error`: interpolated value minus the exact
+//!   value, where both drew the same primitive last; 0 where nothing is
+//!   covered or the last primitives differ (not compared).
+
+use std::path::{Path, PathBuf};
+
+use ::exr::prelude::{
+    AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer, LayerAttributes, WritableImage,
+};
+
+use crate::frame::Frame;
+use crate::metrics::Metrics;
+
+/// Whether sample `i` has comparable interpolated values: the reference
+/// covers it and both frames drew the same primitive last (the metrics'
+/// rule, `metrics::interpolation`).
+pub fn compared(reference: &Frame, candidate: &Frame, i: usize) -> bool {
+    reference.last[i] != 0 && reference.last[i] == candidate.last[i]
+}
+
+/// Signed interpolation errors per channel, named as in the EXR file
+/// (`depth.error`, `attribute.K.error`), in the order of `Metrics::channels`
+/// (depth first). `None` where the sample is not compared.
+pub fn interpolation_errors(
+    reference: &Frame,
+    candidate: &Frame,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    let errors = |exact: &[f64], values: &[f64]| -> Vec<Option<f64>> {
+        (0..reference.sample_count())
+            .map(|i| compared(reference, candidate, i).then(|| values[i] - exact[i]))
+            .collect()
+    };
+    let mut out = Vec::new();
+    if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
+        out.push(("depth.error".to_owned(), errors(exact, values)));
+    }
+    for (k, (exact, values)) in reference
+        .attributes
+        .iter()
+        .zip(&candidate.attributes)
+        .enumerate()
+    {
+        out.push((format!("attribute.{k}.error"), errors(exact, values)));
+    }
+    out
+}
+
+/// Whether a result deserves an error map: it did not pass, or some sample
+/// differs in coverage, owner or value.
+pub fn has_error(passed: bool, metrics: &Metrics) -> bool {
+    !passed
+        || metrics.coverage.mismatched() > 0
+        || metrics
+            .channels
+            .iter()
+            .any(|ch| ch.max_abs != 0.0 || ch.max_abs.is_nan())
+}
+
+/// Every channel of the error map, named as stored.
+pub fn error_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<f32>)> {
+    let n = reference.sample_count();
+    let mut out = vec![
+        (
+            "coverage.error".to_owned(),
+            (0..n)
+                .map(|i| f32::from(candidate.coverage[i]) - f32::from(reference.coverage[i]))
+                .collect(),
+        ),
+        (
+            "owner.error".to_owned(),
+            (0..n)
+                .map(|i| f32::from(u8::from(candidate.last[i] != reference.last[i])))
+                .collect(),
+        ),
+    ];
+    for (name, errors) in interpolation_errors(reference, candidate) {
+        out.push((
+            name,
+            errors.iter().map(|e| e.unwrap_or(0.0) as f32).collect(),
+        ));
+    }
+    out
+}
+
+/// The file name of a rasterizer's map (as for its PNG: `:` and `/`
+/// become `-`).
+pub fn file_name(rasterizer: &str) -> String {
+    format!("{}.exr", rasterizer.replace([':', '/'], "-"))
+}
+
+/// Writes the error map of `candidate` against `reference` to `path`.
+pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBuf, String> {
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+    }
+    let size = (reference.width as usize, reference.height as usize);
+    let list = error_channels(reference, candidate)
+        .into_iter()
+        .map(|(name, values)| AnyChannel::new(name.as_str(), FlatSamples::F32(values)))
+        .collect();
+    let layer = Layer::new(
+        size,
+        LayerAttributes::named("error"),
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(list),
+    );
+    Image::from_layer(layer)
+        .write()
+        .to_file(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path.to_owned())
+}
