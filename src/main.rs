@@ -299,10 +299,11 @@ fn run(args: RunArgs) -> u8 {
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
-    let outcomes = runner::run_all(&files, &limits, &candidates, &root, args.threads, &|_| {
+    let mut outcomes = runner::run_all(&files, &limits, &candidates, &root, args.threads, &|_| {
         progress.tick()
     });
     progress.finish();
+    runner::reject_duplicate_names(&mut outcomes);
 
     let colour = std::io::stdout().is_terminal();
     let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);

@@ -186,6 +186,35 @@ pub fn run_all(
     }
 }
 
+/// Marks every case whose `name` an earlier case already uses as bad input:
+/// names identify cases in reports and baselines, so they must be unique in
+/// a run. Returns how many were marked.
+pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> usize {
+    let mut seen: std::collections::HashMap<String, String> = std::collections::HashMap::new();
+    let mut marked = 0;
+    for outcome in outcomes.iter_mut() {
+        let Some(name) = outcome.scene.as_ref().map(|s| s.name.clone()) else {
+            continue;
+        };
+        let path = outcome.file.path.display().to_string();
+        match seen.get(&name) {
+            None => {
+                seen.insert(name, path);
+            }
+            Some(first) => {
+                outcome.problem = Some(Problem::Unreadable(format!(
+                    "{path}: $.name: the case name {name:?} is also used by {first}; case names must be unique"
+                )));
+                outcome.reference = None;
+                outcome.golden = None;
+                outcome.candidates.clear();
+                marked += 1;
+            }
+        }
+    }
+    marked
+}
+
 /// Counts of verdicts for one rasterizer.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Tally {

@@ -482,3 +482,45 @@ fn a_report_is_written_even_when_cases_are_bad_and_says_which() {
         .join("rep/images/c/mutant-flipped-ties.diff.png")
         .is_file());
 }
+
+#[test]
+fn duplicate_case_names_are_bad_input_naming_both_files() {
+    let dir = workspace(
+        "dupes",
+        &[
+            ("cases/a.json", SINGLE),
+            ("cases/b.json", SINGLE),
+            ("cases/c.json", TIE_PAIR),
+        ],
+    );
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains(
+            "BAD   b  cases/b.json: $.name: the case name \"single\" is also used by cases/a.json"
+        ),
+        "{t}"
+    );
+    assert!(t.contains("PASS  a") && t.contains("PASS  c"), "{t}");
+}
+
+#[test]
+fn resource_limits_are_errors_not_crashes() {
+    let dir = workspace("limits", &[("cases/pair.json", TIE_PAIR)]);
+    let out = rastercheck(&dir, &["run", "cases", "--max-primitives", "1"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains("cases/pair.json: $.primitives: 2 primitives exceed the limit of 1"),
+        "{t}"
+    );
+    let out = rastercheck(&dir, &["run", "cases", "--max-canvas-pixels", "63"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains("cases/pair.json: $.canvas: canvas of 64 pixels exceeds the limit of 63"),
+        "{t}"
+    );
+    assert_no_panic(&out);
+}
