@@ -17,6 +17,7 @@
 //! - [`suite`]: discovery and running; [`golden`] and [`report`]: outputs;
 //!   [`baseline`]: recorded metrics that later runs must not get worse than.
 
+pub mod adapters;
 pub mod baseline;
 pub mod frame;
 pub mod golden;

@@ -110,6 +110,7 @@ pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
 pub fn rasterizer_names() -> Vec<&'static str> {
     let mut names = vec!["reference", "production", "dda-f32", "dda-f64"];
     names.extend(Mutation::ALL.iter().map(|m| m.name()));
+    names.extend(crate::adapters::names());
     names
 }
 
@@ -123,7 +124,8 @@ pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
         _ => Mutation::ALL
             .into_iter()
             .find(|m| m.name() == name)
-            .map(|m| Box::new(Mutant(m)) as Box<dyn Rasterizer>),
+            .map(|m| Box::new(Mutant(m)) as Box<dyn Rasterizer>)
+            .or_else(|| crate::adapters::by_name(name)),
     }
 }
 
