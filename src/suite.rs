@@ -9,7 +9,7 @@ use crate::golden;
 use crate::metrics::{self, Metrics};
 use crate::mutants::{Mutant, Mutation};
 use crate::plan::Plan;
-use crate::production::foils::{DdaF32, DdaF64};
+use crate::production::foils::{DdaF32, DdaF64, FloatF32, FloatF64};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference::{self, Reference};
@@ -108,7 +108,14 @@ pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
 
 /// Every rasterizer the CLI can name.
 pub fn rasterizer_names() -> Vec<&'static str> {
-    let mut names = vec!["reference", "production", "dda-f32", "dda-f64"];
+    let mut names = vec![
+        "reference",
+        "production",
+        "dda-f32",
+        "dda-f64",
+        "float-f32",
+        "float-f64",
+    ];
     names.extend(Mutation::ALL.iter().map(|m| m.name()));
     names.extend(crate::adapters::names());
     names
@@ -121,6 +128,8 @@ pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
         "production" => Some(Box::new(Production)),
         "dda-f32" => Some(Box::new(DdaF32)),
         "dda-f64" => Some(Box::new(DdaF64)),
+        "float-f32" => Some(Box::new(FloatF32)),
+        "float-f64" => Some(Box::new(FloatF64)),
         _ => Mutation::ALL
             .into_iter()
             .find(|m| m.name() == name)

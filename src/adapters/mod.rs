@@ -11,17 +11,55 @@
 //! `RasterError::Unsupported`, reported as such and never as a pass or
 //! failure.
 
+#[cfg(feature = "euc")]
+pub mod euc;
+pub mod external;
+#[cfg(any(feature = "tiny-skia", feature = "euc", feature = "vello"))]
+mod float_input;
+#[cfg(feature = "lavapipe")]
+pub mod lavapipe;
+#[cfg(feature = "tiny-skia")]
+pub mod tiny_skia;
+#[cfg(feature = "vello")]
+pub mod vello;
+
 use crate::rasterizer::Rasterizer;
 
 /// The names of the built-in adapters compiled into this binary.
+#[allow(clippy::vec_init_then_push)] // each push is behind its own feature
 pub fn names() -> Vec<&'static str> {
     #[allow(unused_mut)]
     let mut names = Vec::new();
+    #[cfg(feature = "lavapipe")]
+    names.push(lavapipe::NAME);
+    #[cfg(feature = "tiny-skia")]
+    names.push("tiny-skia");
+    #[cfg(feature = "euc")]
+    names.push("euc");
+    #[cfg(feature = "vello")]
+    names.push("vello-cpu");
     names
 }
 
-/// A built-in adapter by name; `external:PROGRAM` is handled by the caller.
+/// A built-in adapter by name, or an external program:
+/// `external:PROGRAM [ARGS]` and `external-persistent:PROGRAM [ARGS]`
+/// (split on whitespace; SPEC.md §12).
 pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
-    let _ = name;
+    #[cfg(feature = "lavapipe")]
+    if name == lavapipe::NAME {
+        return Some(Box::new(lavapipe::Lavapipe));
+    }
+    match name {
+        #[cfg(feature = "tiny-skia")]
+        "tiny-skia" => return Some(Box::new(tiny_skia::TinySkia)),
+        #[cfg(feature = "euc")]
+        "euc" => return Some(Box::new(euc::Euc)),
+        #[cfg(feature = "vello")]
+        "vello-cpu" => return Some(Box::new(vello::VelloCpu)),
+        _ => {}
+    }
+    if let Some(external) = external::by_name(name) {
+        return Some(external);
+    }
     None
 }

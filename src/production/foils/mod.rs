@@ -4,5 +4,7 @@
 //! SPEC.md.
 
 pub mod dda;
+pub mod float_edges;
 
 pub use dda::{DdaF32, DdaF64};
+pub use float_edges::{FloatF32, FloatF64};

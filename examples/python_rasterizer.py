@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""A small rasterizer in plain Python, judged by rastercheck.
+
+It speaks the external-process protocol of SPEC.md §12:
+
+    rastercheck run cases -r 'external:python3 examples/python_rasterizer.py'
+    rastercheck run cases -r 'external-persistent:python3 examples/python_rasterizer.py --persistent'
+
+It is written the way a first course assignment usually is, and it is meant
+to be caught:
+
+- triangles: float edge functions with an inside test of `>= 0`, so a pixel
+  centre exactly on an edge shared by two triangles is drawn by both
+  (overdraw), whatever fill rule the case asks for;
+- lines: the textbook float DDA (`y += slope`, row = floor(y)), which picks
+  the wrong row at exact ties and can drift on long lines;
+- interpolation: barycentric weights in floats, linear or perspective.
+
+Anything else (other line rules, more than one sample per pixel) is
+answered with {"unsupported": "..."}, which rastercheck reports as such.
+Standard library only.
+"""
+
+import json
+import math
+import sys
+
+
+def snap(v, bits):
+    """Rounds a coordinate to the subpixel grid (Python's round is ties-to-even)."""
+    if bits is None:
+        return v
+    scale = 2.0 ** bits
+    return round(v * scale) / scale
+
+
+def interpolate(weights, vertices, mode, plan):
+    """Depth then attributes at a point with barycentric `weights` (sum 1)."""
+    values = []
+    if plan["depth"]:
+        values.append(sum(b * v["z"] for b, v in zip(weights, vertices)))
+    for k in range(plan["attributes"]):
+        if mode == "flat":
+            values.append(vertices[0]["attributes"][k])
+        elif mode == "linear":
+            values.append(sum(b * v["attributes"][k] for b, v in zip(weights, vertices)))
+        else:  # perspective: interpolate a/w and 1/w linearly, then divide
+            num = sum(b * v["attributes"][k] / v["w"] for b, v in zip(weights, vertices))
+            den = sum(b / v["w"] for b, v in zip(weights, vertices))
+            values.append(num / den)
+    return values
+
+
+def triangle(prim, request):
+    rules, plan = request["rules"], request["plan"]
+    width, height = request["canvas"]["width"], request["canvas"]["height"]
+    vs = prim["triangle"]
+    (x0, y0), (x1, y1), (x2, y2) = [
+        (snap(v["x"], rules["subpixel_bits"]), snap(v["y"], rules["subpixel_bits"])) for v in vs
+    ]
+    # Twice the signed area; positive means clockwise on screen (y down).
+    area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0)
+    if area == 0 or (rules["cull"] == "cw" and area > 0) or (rules["cull"] == "ccw" and area < 0):
+        return []
+
+    def edge(ax, ay, bx, by, px, py):
+        return (bx - ax) * (py - ay) - (by - ay) * (px - ax)
+
+    fragments = []
+    # Only the pixels of the bounding box that lie on the canvas.
+    left, right = max(0, math.floor(min(x0, x1, x2))), min(width, math.ceil(max(x0, x1, x2)))
+    top, bottom = max(0, math.floor(min(y0, y1, y2))), min(height, math.ceil(max(y0, y1, y2)))
+    for y in range(top, bottom):
+        for x in range(left, right):
+            px, py = x + 0.5, y + 0.5
+            # Each weight is the edge function opposite a vertex, over the area.
+            w0 = edge(x1, y1, x2, y2, px, py) / area
+            w1 = edge(x2, y2, x0, y0, px, py) / area
+            w2 = edge(x0, y0, x1, y1, px, py) / area
+            if w0 >= 0 and w1 >= 0 and w2 >= 0:  # on an edge counts as inside
+                fragments.append([x, y] + interpolate((w0, w1, w2), vs, prim["interpolation"], plan))
+    return fragments
+
+
+def line(prim, request):
+    rules, plan = request["rules"], request["plan"]
+    width, height = request["canvas"]["width"], request["canvas"]["height"]
+    a, b = prim["line"]
+    x0, y0, x1, y1 = [snap(a["x"], rules["subpixel_bits"]), snap(a["y"], rules["subpixel_bits"]),
+                      snap(b["x"], rules["subpixel_bits"]), snap(b["y"], rules["subpixel_bits"])]
+    dx, dy = x1 - x0, y1 - y0
+    if dx == 0 and dy == 0:
+        return []
+    steep = abs(dy) > abs(dx)
+    if steep:  # walk rows instead of columns: swap the axes, and back at the end
+        x0, y0, x1, y1, dx, dy = y0, x0, y1, x1, dy, dx
+    step = 1 if dx > 0 else -1
+    slope = dy / dx
+    # Pixel centres c = i + 0.5 between x0 and x1 (the last one only if included).
+    first = math.ceil(x0 - 0.5) if step > 0 else math.floor(x0 - 0.5)
+    fragments = []
+    c = first + 0.5
+    y = y0 + (c - x0) * slope
+    while (c <= x1 if step > 0 else c >= x1):
+        if c == x1 and prim["last_pixel"] == "exclude":
+            break
+        column, row = first, math.floor(y)  # the naive DDA's row choice
+        px, py = (row, column) if steep else (column, row)
+        if 0 <= px < width and 0 <= py < height:
+            if prim["parameter"] == "major":
+                t = (c - x0) / dx
+            else:  # projection of the pixel centre onto the segment
+                t = ((c - x0) * dx + (row + 0.5 - y0) * dy) / (dx * dx + dy * dy)
+            t = min(1.0, max(0.0, t))
+            fragments.append([px, py] + interpolate((1 - t, t), prim["line"], prim["interpolation"], plan))
+        first += step
+        c += step
+        y += slope * step  # accumulates float error, as the textbook DDA does
+    return fragments
+
+
+def rasterize(request):
+    """One request in, one response out (both as Python dicts)."""
+    if request["plan"]["samples_per_pixel"] != 1:
+        return {"unsupported": "only one sample per pixel"}
+    out = []
+    for prim in request["primitives"]:
+        if "triangle" in prim:
+            out.append({"fragments": triangle(prim, request)})
+        elif prim["rule"] == "midpoint":
+            out.append({"fragments": line(prim, request)})
+        else:
+            return {"unsupported": "%s lines are not implemented" % prim["rule"]}
+    return {"primitives": out}
+
+
+def main():
+    if "--persistent" in sys.argv[1:]:
+        # JSON Lines: one request per line, one response per line, until bye.
+        for text in sys.stdin:
+            request = json.loads(text)
+            if request.get("bye"):
+                break
+            print(json.dumps(rasterize(request)), flush=True)
+    else:
+        print(json.dumps(rasterize(json.load(sys.stdin))))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,754 @@
+//! Rasterizers in other processes, in any language, speaking the protocol
+//! of SPEC.md §12: the scene goes out as one JSON request, the covered
+//! pixels of each primitive come back as one JSON response, and rastercheck
+//! composes the [`Frame`] itself, in primitive order.
+//!
+//! - `external:PROGRAM [ARGS]`: one process per case; the request on its
+//!   stdin, the response on its stdout.
+//! - `external-persistent:PROGRAM [ARGS]`: JSON Lines; a process is started
+//!   once per thread that needs one and reused for every later case, so a
+//!   driver is initialised once per run. `{"bye": true}` ends it.
+//!
+//! A program that crashes, hangs (past `RASTERCHECK_EXTERNAL_TIMEOUT`
+//! seconds, 30 by default), prints something that is not a response, or
+//! cannot be started is a [`RasterError::Failed`] for that case, with the
+//! tail of its stderr; the run goes on. Every process started here is
+//! waited for: killed first when it overstays, never left as a zombie.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::Path;
+use std::process::{Child, ChildStdin, Command, ExitStatus, Stdio};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::{Arc, Condvar, Mutex};
+use std::thread;
+use std::time::{Duration, Instant};
+
+use serde_json::{json, Value};
+
+use crate::frame::Frame;
+use crate::golden;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
+
+/// The protocol's name and version, sent in every request.
+pub const PROTOCOL: &str = "rastercheck-external/1";
+
+/// The environment variable that sets the per-case time limit, in seconds.
+pub const TIMEOUT_ENV: &str = "RASTERCHECK_EXTERNAL_TIMEOUT";
+
+/// The per-case time limit when the environment does not set one.
+pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(30);
+
+/// How long a persistent process may take to exit after `{"bye": true}`.
+const BYE_GRACE: Duration = Duration::from_secs(2);
+
+/// How long the output pipes may stay open after the process has exited
+/// (a grandchild holding them) before rastercheck stops waiting for them.
+const PIPE_GRACE: Duration = Duration::from_millis(500);
+
+/// How much of a program's stderr is kept, and how much is quoted.
+const STDERR_KEEP: usize = 64 * 1024;
+const STDERR_QUOTE_CHARS: usize = 1500;
+const STDERR_QUOTE_LINES: usize = 12;
+
+/// The adapter for `external:...` and `external-persistent:...` names, or
+/// `None` for any other name.
+pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
+    let (persistent, command) = if let Some(rest) = name.strip_prefix("external-persistent:") {
+        (true, rest)
+    } else if let Some(rest) = name.strip_prefix("external:") {
+        (false, rest)
+    } else {
+        return None;
+    };
+    let words: Vec<String> = command.split_whitespace().map(str::to_owned).collect();
+    let (program, args) = words.split_first()?;
+    Some(Box::new(External::new(
+        name,
+        program.clone(),
+        args.to_vec(),
+        persistent,
+    )))
+}
+
+/// A rasterizer that is another program.
+pub struct External {
+    name: String,
+    program: String,
+    args: Vec<String>,
+    /// The per-case time limit, or why the environment's value is refused.
+    timeout: Result<Duration, String>,
+    /// Idle processes of a persistent adapter; `None` in one-shot mode.
+    pool: Option<Mutex<Vec<Worker>>>,
+}
+
+impl External {
+    /// `name` is what reports call it; the program and its arguments are
+    /// run as given, in rastercheck's working directory.
+    pub fn new(name: &str, program: String, args: Vec<String>, persistent: bool) -> External {
+        External {
+            name: name.to_owned(),
+            program,
+            args,
+            timeout: timeout_from_env(),
+            pool: persistent.then(|| Mutex::new(Vec::new())),
+        }
+    }
+
+    /// The same adapter with another per-case time limit (the environment's
+    /// `RASTERCHECK_EXTERNAL_TIMEOUT` is the default).
+    pub fn with_timeout(mut self, timeout: Duration) -> External {
+        self.timeout = Ok(timeout);
+        self
+    }
+
+    fn command(&self) -> Command {
+        let mut command = Command::new(&self.program);
+        command
+            .args(&self.args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped());
+        command
+    }
+
+    fn start(&self) -> Result<Child, RasterError> {
+        self.command()
+            .spawn()
+            .map_err(|e| RasterError::Failed(format!("cannot start {:?}: {e}", self.program)))
+    }
+
+    /// One process for this case: request on stdin, response on stdout.
+    fn one_shot(&self, request: Vec<u8>, timeout: Duration) -> Result<Value, RasterError> {
+        let deadline = Instant::now() + timeout;
+        let mut child = self.start()?;
+        let stderr = StderrTail::collect(child.stderr.take());
+        let mut stdin = child.stdin.take().expect("stdin is piped");
+        // Written from a thread: a program may print before reading it all.
+        thread::spawn(move || {
+            let _ = stdin.write_all(&request);
+        });
+        let mut stdout = child.stdout.take().expect("stdout is piped");
+        let (send, output) = mpsc::channel();
+        thread::spawn(move || {
+            let mut bytes = Vec::new();
+            let _ = send.send(stdout.read_to_end(&mut bytes).map(|_| bytes));
+        });
+        let status = wait_until(&mut child, deadline);
+        let Some(status) = status else {
+            kill(&mut child);
+            return Err(failed(
+                format!("timed out after {}", seconds(timeout)),
+                &stderr,
+                0,
+            ));
+        };
+        if !status.success() {
+            return Err(failed(exit_description(status), &stderr, 0));
+        }
+        match output.recv_timeout(PIPE_GRACE) {
+            Ok(Ok(bytes)) => parse_response(&bytes).map_err(|why| failed(why, &stderr, 0)),
+            Ok(Err(e)) => Err(failed(format!("reading its output: {e}"), &stderr, 0)),
+            Err(_) => Err(failed(
+                "exited, but its output stayed open (does a process it started hold it?)"
+                    .to_owned(),
+                &stderr,
+                0,
+            )),
+        }
+    }
+
+    /// A line to a process of the pool, and a line back.
+    fn persistent(
+        &self,
+        pool: &Mutex<Vec<Worker>>,
+        mut request: Vec<u8>,
+        timeout: Duration,
+    ) -> Result<Value, RasterError> {
+        let deadline = Instant::now() + timeout;
+        let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
+        let mut worker = match idle {
+            Some(worker) => worker,
+            None => Worker::start(self.start()?),
+        };
+        request.push(b'\n');
+        let mark = worker.stderr.written();
+        let line = worker.exchange(request, deadline);
+        let result = match line {
+            Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            Err(Exchange::TimedOut) => Err((format!("timed out after {}", seconds(timeout)), true)),
+            Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
+            Err(Exchange::Broken(e)) => Err((format!("reading its output: {e}"), true)),
+        };
+        match result {
+            Ok(value) => {
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                Ok(value)
+            }
+            Err((why, kill_now)) => {
+                // The stream is out of step, or the process is gone: it is
+                // not used again, and a later case starts a fresh one.
+                let why = match worker.end(kill_now) {
+                    Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
+                    _ => why,
+                };
+                Err(failed(why, &worker.stderr, mark))
+            }
+        }
+    }
+}
+
+impl Rasterizer for External {
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Everything: the program says what it does not do, case by case.
+    fn capabilities(&self) -> Capabilities {
+        Capabilities::everything()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let timeout = self.timeout.clone().map_err(RasterError::Failed)?;
+        let request = serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
+        let response = match &self.pool {
+            None => self.one_shot(request, timeout)?,
+            Some(pool) => self.persistent(pool, request, timeout)?,
+        };
+        frame_from_response(&response, scene, plan)
+    }
+}
+
+impl Drop for External {
+    fn drop(&mut self) {
+        let Some(pool) = &self.pool else { return };
+        let mut workers = std::mem::take(&mut *pool.lock().unwrap_or_else(|e| e.into_inner()));
+        // Say goodbye to all first, so that they shut down together.
+        for worker in &mut workers {
+            worker.say_bye();
+        }
+        let deadline = Instant::now() + BYE_GRACE;
+        for worker in &mut workers {
+            if wait_until(&mut worker.child, deadline).is_none() {
+                kill(&mut worker.child);
+            }
+            worker.reaped = true;
+        }
+    }
+}
+
+fn timeout_from_env() -> Result<Duration, String> {
+    match std::env::var(TIMEOUT_ENV) {
+        Err(_) => Ok(DEFAULT_TIMEOUT),
+        Ok(text) => text
+            .trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|s| s.is_finite() && *s > 0.0 && *s < 1e9)
+            .map(Duration::from_secs_f64)
+            .ok_or_else(|| format!("{TIMEOUT_ENV}={text:?} is not a positive number of seconds")),
+    }
+}
+
+fn seconds(d: Duration) -> String {
+    format!("{} s", d.as_secs_f64())
+}
+
+fn exit_description(status: ExitStatus) -> String {
+    if let Some(code) = status.code() {
+        return format!("exited with status {code}");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        if let Some(signal) = status.signal() {
+            return format!("killed by signal {signal}");
+        }
+    }
+    format!("exited: {status}")
+}
+
+/// Polls until the child exits or the deadline passes; `None` on timeout.
+fn wait_until(child: &mut Child, deadline: Instant) -> Option<ExitStatus> {
+    let mut pause = Duration::from_micros(200);
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => return Some(status),
+            Ok(None) => {}
+            // Cannot be waited for: treat as exited, the caller kills it.
+            Err(_) => return None,
+        }
+        let now = Instant::now();
+        if now >= deadline {
+            return None;
+        }
+        thread::sleep(pause.min(deadline - now));
+        pause = (pause * 2).min(Duration::from_millis(10));
+    }
+}
+
+/// Kills a child and reaps it.
+fn kill(child: &mut Child) {
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+/// A failure, with what the program said on stderr since byte `mark`.
+fn failed(why: String, stderr: &StderrTail, mark: u64) -> RasterError {
+    stderr.wait_closed(PIPE_GRACE.min(Duration::from_millis(200)));
+    match stderr.since(mark) {
+        Some(tail) => RasterError::Failed(format!("{why}; stderr: {tail}")),
+        None => RasterError::Failed(format!("{why}; nothing on stderr")),
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The request.
+
+/// A number twice: its nearest f64, and (in the sibling `exact` object) its
+/// exact spelling.
+fn float(n: &Number) -> Value {
+    json!(n.to_f64_lossy())
+}
+
+fn exact(n: &Number) -> Value {
+    Value::String(n.to_exact_string())
+}
+
+fn vertex(v: &Vertex) -> Value {
+    json!({
+        "x": float(&v.x),
+        "y": float(&v.y),
+        "z": float(&v.z),
+        "w": float(&v.w),
+        "attributes": v.attributes.iter().map(float).collect::<Vec<_>>(),
+        "exact": {
+            "x": exact(&v.x),
+            "y": exact(&v.y),
+            "z": exact(&v.z),
+            "w": exact(&v.w),
+            "attributes": v.attributes.iter().map(exact).collect::<Vec<_>>(),
+        }
+    })
+}
+
+/// The request for one scene (SPEC.md §12.2).
+pub fn request(scene: &Scene, plan: &Plan) -> Value {
+    let primitives: Vec<Value> = scene
+        .primitives
+        .iter()
+        .map(|p| match p {
+            Primitive::Triangle(t) => json!({
+                "triangle": t.vertices.iter().map(vertex).collect::<Vec<_>>(),
+                "interpolation": t.interpolation.name(),
+            }),
+            Primitive::Line(l) => json!({
+                "line": l.vertices.iter().map(vertex).collect::<Vec<_>>(),
+                "rule": l.rule.name(),
+                "width": float(&l.width),
+                "last_pixel": match l.last_pixel {
+                    LastPixel::Include => "include",
+                    LastPixel::Exclude => "exclude",
+                },
+                "parameter": match l.parameter {
+                    LineParameter::Major => "major",
+                    LineParameter::Projected => "projected",
+                },
+                "interpolation": l.interpolation.name(),
+                "exact": { "width": exact(&l.width) },
+            }),
+        })
+        .collect();
+    json!({
+        "protocol": PROTOCOL,
+        "case": scene.name,
+        "canvas": { "width": scene.canvas.width, "height": scene.canvas.height },
+        "rules": {
+            "subpixel_bits": scene.rules.subpixel_bits,
+            "fill_rule": scene.rules.fill_rule.name(),
+            "cull": scene.rules.cull.name(),
+        },
+        "plan": {
+            "samples_per_pixel": plan.samples_per_pixel,
+            "depth": plan.depth,
+            "attributes": plan.attributes,
+        },
+        "primitives": primitives,
+    })
+}
+
+// ---------------------------------------------------------------------------
+// The response.
+
+fn parse_response(bytes: &[u8]) -> Result<Value, String> {
+    serde_json::from_slice(bytes).map_err(|e| {
+        let text = String::from_utf8_lossy(bytes);
+        let shown: String = text.chars().take(80).collect();
+        if text.trim().is_empty() {
+            "printed no response".to_owned()
+        } else {
+            format!(
+                "printed something that is not a JSON response ({e}): {shown:?}{}",
+                if text.chars().count() > 80 { "…" } else { "" }
+            )
+        }
+    })
+}
+
+/// Turns a response into a frame, checking it against the request.
+pub fn frame_from_response(
+    response: &Value,
+    scene: &Scene,
+    plan: &Plan,
+) -> Result<Frame, RasterError> {
+    let bad = |why: String| RasterError::Failed(format!("bad response: {why}"));
+    let Some(object) = response.as_object() else {
+        return Err(bad("not a JSON object".to_owned()));
+    };
+    if let Some(protocol) = object.get("protocol") {
+        if protocol.as_str() != Some(PROTOCOL) {
+            return Err(bad(format!(
+                "$.protocol is {protocol}; this rastercheck speaks {PROTOCOL:?}"
+            )));
+        }
+    }
+    if let Some(why) = object.get("unsupported") {
+        return Err(RasterError::Unsupported(text_of(why)));
+    }
+    if let Some(why) = object.get("error") {
+        return Err(RasterError::Failed(format!(
+            "the program reported an error: {}",
+            text_of(why)
+        )));
+    }
+    match (object.get("primitives"), object.get("exr")) {
+        (Some(primitives), None) => compose(primitives, scene, plan).map_err(bad),
+        (None, Some(path)) => {
+            let path = path
+                .as_str()
+                .ok_or_else(|| bad("$.exr must be a string (a file path)".to_owned()))?;
+            frame_from_exr(Path::new(path), scene, plan).map_err(bad)
+        }
+        (Some(_), Some(_)) => Err(bad("give either $.primitives or $.exr, not both".to_owned())),
+        (None, None) => Err(bad(
+            "expected $.primitives, $.exr, $.unsupported or $.error".to_owned(),
+        )),
+    }
+}
+
+fn text_of(value: &Value) -> String {
+    match value {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// Draws the fragments of each primitive, in primitive order.
+fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    let list = primitives
+        .as_array()
+        .ok_or("$.primitives must be an array")?;
+    if list.len() != scene.primitives.len() {
+        return Err(format!(
+            "$.primitives has {} entries; the request has {} primitives",
+            list.len(),
+            scene.primitives.len()
+        ));
+    }
+    let values = usize::from(plan.depth) + plan.attributes;
+    let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
+    for (p, entry) in list.iter().enumerate() {
+        let fragments = entry
+            .as_object()
+            .and_then(|o| o.get("fragments"))
+            .and_then(Value::as_array)
+            .ok_or_else(|| format!("$.primitives[{p}] must be an object with a fragments array"))?;
+        for (f, fragment) in fragments.iter().enumerate() {
+            let at = || format!("$.primitives[{p}].fragments[{f}]");
+            let numbers = fragment
+                .as_array()
+                .filter(|a| a.len() == 2 + values)
+                .ok_or_else(|| {
+                    format!(
+                        "{} must be an array of {} numbers: x, y{}{}",
+                        at(),
+                        2 + values,
+                        if plan.depth { ", depth" } else { "" },
+                        if plan.attributes > 0 {
+                            format!(", {} attributes", plan.attributes)
+                        } else {
+                            String::new()
+                        }
+                    )
+                })?;
+            let coordinate = |v: &Value, limit: u32| {
+                v.as_f64()
+                    .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
+                    .map(|c| c as u32)
+            };
+            let (Some(x), Some(y)) = (
+                coordinate(&numbers[0], width),
+                coordinate(&numbers[1], height),
+            ) else {
+                return Err(format!(
+                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+                    at(),
+                    numbers[0],
+                    numbers[1]
+                ));
+            };
+            let i = frame.index(x, y);
+            frame.hit(i, p);
+            for (k, v) in numbers[2..].iter().enumerate() {
+                let v = v
+                    .as_f64()
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| format!("{}[{}] must be a finite number", at(), k + 2))?;
+                match (&mut frame.depth, k) {
+                    (Some(depth), 0) => depth[i] = v,
+                    (Some(_), k) => frame.attributes[k - 1][i] = v,
+                    (None, k) => frame.attributes[k][i] = v,
+                }
+            }
+        }
+    }
+    Ok(frame)
+}
+
+/// Reads a frame from an EXR file with the channels of a golden file.
+fn frame_from_exr(path: &Path, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
+    let ((w, h), mut channels) = golden::read(path)?;
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    if (w, h) != (width as usize, height as usize) {
+        return Err(format!(
+            "{}: the image is {w}×{h}; the canvas is {width}×{height}",
+            path.display()
+        ));
+    }
+    let mut take = |name: &str| {
+        channels
+            .iter()
+            .position(|(n, _)| n == name)
+            .map(|at| channels.swap_remove(at).1)
+            .ok_or_else(|| format!("{}: no channel {name}", path.display()))
+    };
+    let coverage = take("coverage")?;
+    let primitive = take("primitive")?;
+    let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
+    let count = scene.primitives.len() as f32;
+    for (i, (&c, &p)) in coverage.iter().zip(&primitive).enumerate() {
+        let (x, y) = (i % w, i / w);
+        if !(c.fract() == 0.0 && (0.0..=f32::from(u16::MAX)).contains(&c)) {
+            return Err(format!("coverage at pixel ({x}, {y}) is {c}, not a count"));
+        }
+        if !(p.fract() == 0.0 && (0.0..=count).contains(&p)) || (p == 0.0) != (c == 0.0) {
+            return Err(format!(
+                "primitive at pixel ({x}, {y}) is {p} with coverage {c}: it must be index + 1 \
+                 of a primitive where coverage > 0, and 0 where coverage is 0"
+            ));
+        }
+        frame.coverage[i] = c as u16;
+        frame.last[i] = p as u32;
+    }
+    if let Some(depth) = &mut frame.depth {
+        *depth = take("depth")?.into_iter().map(f64::from).collect();
+    }
+    for k in 0..plan.attributes {
+        frame.attributes[k] = take(&format!("attribute.{k}"))?
+            .into_iter()
+            .map(f64::from)
+            .collect();
+    }
+    Ok(frame)
+}
+
+// ---------------------------------------------------------------------------
+// Processes.
+
+/// What a persistent exchange got instead of a line.
+enum Exchange {
+    TimedOut,
+    /// The process closed its stdout (it exited, most likely).
+    Closed,
+    Broken(std::io::Error),
+}
+
+/// One process of a persistent adapter.
+struct Worker {
+    child: Child,
+    /// Lines to write to its stdin, by a thread, so that a program that
+    /// stops reading cannot block rastercheck past the time limit.
+    requests: Option<Sender<Vec<u8>>>,
+    lines: Receiver<std::io::Result<String>>,
+    stderr: StderrTail,
+    reaped: bool,
+}
+
+impl Worker {
+    fn start(mut child: Child) -> Worker {
+        let stderr = StderrTail::collect(child.stderr.take());
+        let stdin: ChildStdin = child.stdin.take().expect("stdin is piped");
+        let (requests, to_write) = mpsc::channel::<Vec<u8>>();
+        thread::spawn(move || {
+            let mut stdin = stdin;
+            for request in to_write {
+                if stdin
+                    .write_all(&request)
+                    .and_then(|()| stdin.flush())
+                    .is_err()
+                {
+                    break;
+                }
+            }
+        });
+        let stdout = child.stdout.take().expect("stdout is piped");
+        let (send, lines) = mpsc::channel();
+        thread::spawn(move || {
+            for line in BufReader::new(stdout).lines() {
+                let stop = line.is_err();
+                if send.send(line).is_err() || stop {
+                    break;
+                }
+            }
+        });
+        Worker {
+            child,
+            requests: Some(requests),
+            lines,
+            stderr,
+            reaped: false,
+        }
+    }
+
+    /// Sends a request line and waits for the next non-blank line.
+    fn exchange(&mut self, request: Vec<u8>, deadline: Instant) -> Result<String, Exchange> {
+        if let Some(requests) = &self.requests {
+            // A send fails only when the writer stopped (the pipe broke);
+            // the read below then finds the output closed.
+            let _ = requests.send(request);
+        }
+        loop {
+            let left = deadline.saturating_duration_since(Instant::now());
+            match self.lines.recv_timeout(left) {
+                Ok(Ok(line)) if line.trim().is_empty() => continue,
+                Ok(Ok(line)) => return Ok(line),
+                Ok(Err(e)) => return Err(Exchange::Broken(e)),
+                Err(RecvTimeoutError::Timeout) => return Err(Exchange::TimedOut),
+                Err(RecvTimeoutError::Disconnected) => return Err(Exchange::Closed),
+            }
+        }
+    }
+
+    fn say_bye(&mut self) {
+        if let Some(requests) = self.requests.take() {
+            let _ = requests.send(b"{\"bye\": true}\n".to_vec());
+            // Dropping the sender closes stdin once the line is written.
+        }
+    }
+
+    /// Ends the process: killed at once, or first given a moment to exit by
+    /// itself (it closed its output). Returns its exit status if it exited
+    /// by itself.
+    fn end(&mut self, kill_now: bool) -> Option<ExitStatus> {
+        self.requests = None;
+        self.reaped = true;
+        if !kill_now {
+            if let Some(status) = wait_until(&mut self.child, Instant::now() + PIPE_GRACE) {
+                return Some(status);
+            }
+        }
+        kill(&mut self.child);
+        None
+    }
+}
+
+impl Drop for Worker {
+    fn drop(&mut self) {
+        if !self.reaped {
+            self.requests = None;
+            kill(&mut self.child);
+        }
+    }
+}
+
+/// The end of a program's stderr, collected by a thread.
+#[derive(Clone)]
+struct StderrTail(Arc<(Mutex<TailState>, Condvar)>);
+
+#[derive(Default)]
+struct TailState {
+    /// The last bytes read (at most `2 * STDERR_KEEP`).
+    bytes: Vec<u8>,
+    /// Bytes read in all, so that callers can mark a position.
+    written: u64,
+    closed: bool,
+}
+
+impl StderrTail {
+    fn collect(stderr: Option<std::process::ChildStderr>) -> StderrTail {
+        let tail = StderrTail(Arc::new((Mutex::new(TailState::default()), Condvar::new())));
+        let Some(mut stderr) = stderr else {
+            tail.0 .0.lock().unwrap().closed = true;
+            return tail;
+        };
+        let shared = tail.clone();
+        thread::spawn(move || {
+            let mut buffer = [0u8; 8192];
+            loop {
+                let n = stderr.read(&mut buffer).unwrap_or(0);
+                let (state, changed) = &*shared.0;
+                let mut state = state.lock().unwrap_or_else(|e| e.into_inner());
+                if n == 0 {
+                    state.closed = true;
+                    changed.notify_all();
+                    return;
+                }
+                state.bytes.extend_from_slice(&buffer[..n]);
+                state.written += n as u64;
+                if state.bytes.len() > 2 * STDERR_KEEP {
+                    let cut = state.bytes.len() - STDERR_KEEP;
+                    state.bytes.drain(..cut);
+                }
+            }
+        });
+        tail
+    }
+
+    fn written(&self) -> u64 {
+        self.0 .0.lock().unwrap_or_else(|e| e.into_inner()).written
+    }
+
+    /// Waits (at most `limit`) for the program to close its stderr.
+    fn wait_closed(&self, limit: Duration) {
+        let (state, changed) = &*self.0;
+        let state = state.lock().unwrap_or_else(|e| e.into_inner());
+        let _ = changed.wait_timeout_while(state, limit, |s| !s.closed);
+    }
+
+    /// The last lines written since byte `mark`, or `None` if there are none.
+    fn since(&self, mark: u64) -> Option<String> {
+        let state = self.0 .0.lock().unwrap_or_else(|e| e.into_inner());
+        let new = state
+            .written
+            .saturating_sub(mark)
+            .min(state.bytes.len() as u64) as usize;
+        let bytes = &state.bytes[state.bytes.len() - new..];
+        let text = String::from_utf8_lossy(bytes);
+        let text = text.trim_end();
+        if text.trim().is_empty() {
+            return None;
+        }
+        let lines: Vec<&str> = text.lines().collect();
+        let mut tail = lines[lines.len().saturating_sub(STDERR_QUOTE_LINES)..].join("\n");
+        let chars = tail.chars().count();
+        if chars > STDERR_QUOTE_CHARS {
+            tail = tail.chars().skip(chars - STDERR_QUOTE_CHARS).collect();
+            tail.insert(0, '…');
+        } else if lines.len() > STDERR_QUOTE_LINES {
+            tail.insert_str(0, "…\n");
+        }
+        Some(tail)
+    }
+}

@@ -1,0 +1,115 @@
+//! `tiny-skia`: tiny-skia 0.12's aliased path fill, one triangle at a time.
+//!
+//! Each triangle becomes a closed three-point path, filled with the winding
+//! rule and `anti_alias: false` into an 8-bit [`Mask`]; every non-zero mask
+//! pixel is a covered sample. The mask is read back and cleared after each
+//! triangle, so coverage counts and the last primitive per sample are exact.
+//!
+//! What the adapter decides, and what it leaves to the library:
+//!
+//! - **Snapping** is the adapter's: vertices are snapped exactly to the
+//!   case's grid and then rounded once to f32 (see `float_input`). tiny-skia
+//!   then converts every coordinate to 26.6 fixed point by *truncation*
+//!   (`(x * 64.0) as i32`, `edge.rs`), so it works on a 1/64 grid and rounds
+//!   toward zero: vertices finer than 6 subpixel bits move, and cases at 8
+//!   bits can differ for that reason. That is the library's behaviour and is
+//!   reported as found.
+//! - **Fill rule** is the library's own: Skia's scan converter includes a
+//!   sample that lies on a bottom or right edge and excludes one on a top or
+//!   left edge (`bottom-right`). The adapter never imitates a case's rule, so
+//!   a `top-left` case with samples on edges fails, which is the finding.
+//! - **Culling** is pipeline state, applied by the adapter on the exact
+//!   snapped positions before the library sees the triangle.
+//! - **Zero-area paths**: tiny-skia refuses paths whose bounds are nearly zero
+//!   wide or high, and draws nothing for them.
+//!
+//! Unsupported: lines (tiny-skia strokes hairlines with its own antialiased
+//! or Bresenham-like walk, none of SPEC.md §4's rules), depth and attributes
+//! (a path fill interpolates nothing), and more than one sample per pixel.
+//! The antialiased fill (4× vertical supersampling) waits for antialiasing
+//! cases.
+
+use tiny_skia::{FillRule, Mask, PathBuilder, Transform};
+
+use super::float_input::{
+    coverage_only, culled, single_sample, snapped_triangle, to_f32, triangles_only,
+};
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::Scene;
+
+/// tiny-skia's aliased (non-antialiased) path fill.
+pub struct TinySkia;
+
+impl Rasterizer for TinySkia {
+    fn name(&self) -> &str {
+        "tiny-skia"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            triangles: true,
+            ideal_geometry: true,
+            attributes: false,
+            depth: false,
+        }
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        triangles_only(scene, "tiny-skia")?;
+        coverage_only(plan, "tiny-skia")?;
+        single_sample(plan, "tiny-skia")?;
+        let (width, height) = (scene.canvas.width, scene.canvas.height);
+        let mut mask = Mask::new(width, height).ok_or_else(|| {
+            RasterError::Failed(format!("tiny-skia refused a {width}×{height} mask"))
+        })?;
+        let mut frame = Frame::new(width, height, false, 0);
+        for (index, triangle) in scene.triangles() {
+            let exact = snapped_triangle(triangle, scene.rules.subpixel_bits);
+            if culled(&exact, scene.rules.cull) {
+                continue;
+            }
+            let p = exact.each_ref().map(|v| [to_f32(&v[0]), to_f32(&v[1])]);
+            let mut builder = PathBuilder::new();
+            builder.move_to(p[0][0], p[0][1]);
+            builder.line_to(p[1][0], p[1][1]);
+            builder.line_to(p[2][0], p[2][1]);
+            builder.close();
+            // `None`: no area the library can describe (e.g. non-finite bounds).
+            let Some(path) = builder.finish() else {
+                continue;
+            };
+            mask.fill_path(&path, FillRule::Winding, false, Transform::identity());
+            // The fill writes only inside the path's bounds; read and clear
+            // them, one pixel wider for safety.
+            let b = path.bounds();
+            let clamp = |v: f32, max: u32| (v.max(0.0) as u64).min(u64::from(max)) as usize;
+            let (x0, x1) = (
+                clamp(b.left().floor() - 1.0, width),
+                clamp(b.right().ceil() + 1.0, width),
+            );
+            let (y0, y1) = (
+                clamp(b.top().floor() - 1.0, height),
+                clamp(b.bottom().ceil() + 1.0, height),
+            );
+            let data = mask.data_mut();
+            for y in y0..y1 {
+                let row = y * width as usize;
+                for (i, value) in data[row + x0..row + x1].iter_mut().enumerate() {
+                    if *value != 0 {
+                        frame.hit(row + x0 + i, index);
+                        *value = 0;
+                    }
+                }
+            }
+        }
+        if mask.data().iter().any(|&v| v != 0) {
+            return Err(RasterError::Failed(
+                "tiny-skia wrote outside a triangle's bounds; coverage would be misattributed"
+                    .to_owned(),
+            ));
+        }
+        Ok(frame)
+    }
+}

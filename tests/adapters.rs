@@ -1,0 +1,259 @@
+//! The pure-Rust third-party adapters on bundled cases, through the library
+//! API: each test pins a real, known finding (a tie rule, watertightness,
+//! closed edges), so a regression in the adapter or a change in the library
+//! shows up here. `adapters_print_family_counts` prints each adapter's
+//! pass/fail counts over `cases/triangles` (run with `--nocapture`).
+
+#![cfg(any(feature = "tiny-skia", feature = "euc", feature = "vello"))]
+
+use std::path::{Path, PathBuf};
+
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::scene::{FillRule, Limits, Scene};
+use rastercheck::suite::{self, CandidateRun, Verdict};
+
+fn case(id: &str) -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("cases")
+        .join(format!("{id}.json"));
+    suite::load(&suite::case_file(&path), &Limits::default())
+        .unwrap_or_else(|e| panic!("{id}: {e}"))
+}
+
+fn adapter(name: &str) -> Box<dyn Rasterizer> {
+    suite::rasterizer(name).unwrap_or_else(|| panic!("{name} is not registered"))
+}
+
+fn run(scene: &Scene, name: &str) -> CandidateRun {
+    let reference = suite::run_reference(scene);
+    suite::run_candidate(scene, &reference, adapter(name).as_ref())
+}
+
+/// (missing, extra, wrong owner) against the reference.
+fn mismatches(run: &CandidateRun) -> (u64, u64, u64) {
+    let c = &run.metrics.as_ref().expect("a frame was measured").coverage;
+    (c.missing, c.extra, c.wrong_owner)
+}
+
+/// (holes, overdraw) for a case that expects a watertight mesh.
+fn watertight(run: &CandidateRun) -> (u64, u64) {
+    let w = run
+        .metrics
+        .as_ref()
+        .expect("a frame was measured")
+        .watertight
+        .as_ref()
+        .expect("the case expects watertightness");
+    (w.holes, w.overdraw)
+}
+
+fn assert_pass(id: &str, scene: &Scene, name: &str) {
+    let r = run(scene, name);
+    assert_eq!(
+        r.verdict,
+        Verdict::Pass,
+        "{name} on {id}: {}",
+        suite::describe(&r)
+    );
+}
+
+#[test]
+fn adapters_are_registered() {
+    let names = suite::rasterizer_names();
+    #[cfg(feature = "tiny-skia")]
+    assert!(names.contains(&"tiny-skia"));
+    #[cfg(feature = "euc")]
+    assert!(names.contains(&"euc"));
+    #[cfg(feature = "vello")]
+    assert!(names.contains(&"vello-cpu"));
+    let _ = names;
+}
+
+#[cfg(feature = "tiny-skia")]
+mod tiny_skia {
+    use super::*;
+
+    #[test]
+    fn passes_a_triangle_with_no_sample_on_an_edge() {
+        // One huge triangle covering the whole canvas: no tie, no snapping issue.
+        let id = "triangles/guard_band_huge";
+        assert_pass(id, &case(id), "tiny-skia");
+    }
+
+    #[test]
+    fn gives_top_left_ties_to_the_other_triangle() {
+        // Two triangles share the square's diagonal; its 8 samples belong to
+        // the upper-right triangle under top-left, to the lower-left one
+        // under tiny-skia's bottom-right rule. Nothing is lost or doubled.
+        let r = run(&case("triangles/shared_edge_diagonal"), "tiny-skia");
+        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        assert_eq!(mismatches(&r), (0, 0, 8), "{}", suite::describe(&r));
+        assert_eq!(watertight(&r), (0, 0));
+    }
+
+    #[test]
+    fn is_watertight_on_a_fan_but_owns_the_other_edges() {
+        // A fan whose spokes and rim run through samples: every tie goes the
+        // bottom-right way, so the top-left case fails on owners and on the
+        // rim, with no hole and no sample drawn twice.
+        let id = "triangles/fan_16_square_ring";
+        let mut scene = case(id);
+        let r = run(&scene, "tiny-skia");
+        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        assert_eq!(watertight(&r), (0, 0), "{}", suite::describe(&r));
+        let (missing, extra, wrong_owner) = mismatches(&r);
+        assert!(missing > 0 && extra > 0 && wrong_owner > 0);
+
+        // The same mesh under the library's own rule passes exactly.
+        scene.rules.fill_rule = FillRule::BottomRight;
+        assert_pass(id, &scene, "tiny-skia");
+    }
+
+    #[test]
+    fn draws_a_fan_centre_on_a_sample_seven_times() {
+        // The 16 spokes of fan_16_center meet on the sample (8.5, 8.5).
+        // 7 of the 8 triangles above it (whose lowest vertex it is) draw it,
+        // where one triangle at most may. tiny-skia steps each edge in 16.16
+        // fixed point with a truncated slope, so a triangle's two edges can
+        // straddle the vertex on its last row. Not a tie-rule question: the
+        // case fails under bottom-right too.
+        let mut scene = case("triangles/fan_16_center");
+        scene.rules.fill_rule = FillRule::BottomRight;
+        let r = run(&scene, "tiny-skia");
+        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        assert_eq!(watertight(&r), (0, 1), "{}", suite::describe(&r));
+        let frame = r.frame.as_ref().unwrap();
+        assert_eq!(frame.coverage[frame.index(8, 8)], 7);
+    }
+
+    #[test]
+    fn follows_the_bottom_right_rule_on_the_fill_rule_case() {
+        let id = "triangles/fill_rule_top_left";
+        let mut scene = case(id);
+        assert!(matches!(run(&scene, "tiny-skia").verdict, Verdict::Fail(_)));
+        scene.rules.fill_rule = FillRule::BottomRight;
+        assert_pass(id, &scene, "tiny-skia");
+    }
+
+    #[test]
+    fn refuses_attributes() {
+        let r = run(&case("triangles/interp_linear"), "tiny-skia");
+        assert!(
+            matches!(r.verdict, Verdict::Unsupported(_)),
+            "{:?}",
+            r.verdict
+        );
+    }
+}
+
+#[cfg(feature = "euc")]
+mod euc {
+    use super::*;
+
+    #[test]
+    fn passes_triangles_with_no_sample_on_an_edge() {
+        for id in ["triangles/guard_band_huge", "triangles/interp_linear"] {
+            assert_pass(id, &case(id), "euc");
+        }
+    }
+
+    #[test]
+    fn interpolates_perspective_depth_and_attributes() {
+        let id = "triangles/interp_depth_perspective_w";
+        assert_pass(id, &case(id), "euc");
+    }
+
+    #[test]
+    fn draws_shared_edges_twice() {
+        // Closed edges: the 8 diagonal samples are covered by both triangles.
+        let r = run(&case("triangles/shared_edge_diagonal"), "euc");
+        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        assert_eq!(mismatches(&r), (0, 8, 0), "{}", suite::describe(&r));
+        assert_eq!(watertight(&r), (0, 8));
+    }
+
+    #[test]
+    fn draws_the_samples_a_zero_area_triangle_passes_through() {
+        // SPEC.md §2: a zero-area triangle covers nothing. euc's closed
+        // inside test keeps the samples on the segment (34 over 6 triangles).
+        let r = run(&case("triangles/degenerate_collinear_cull_none"), "euc");
+        assert_eq!(mismatches(&r), (0, 34, 0), "{}", suite::describe(&r));
+    }
+
+    #[test]
+    fn is_not_watertight_under_any_consistent_rule() {
+        let id = "triangles/shared_edge_diagonal";
+        let mut scene = case(id);
+        for rule in FillRule::CONSISTENT {
+            scene.rules.fill_rule = rule;
+            let r = run(&scene, "euc");
+            assert_eq!(watertight(&r).1, 8, "{rule}: {}", suite::describe(&r));
+        }
+    }
+}
+
+#[cfg(feature = "vello")]
+mod vello {
+    use super::*;
+    use rastercheck::adapters::vello::area_coverage;
+    use rastercheck::scene::parse_case;
+
+    const HALF_SQUARE: &str = r#"{"name": "half_square", "canvas": {"width": 4, "height": 4},
+        "primitives": [{"triangle": [[1, 1], [3, 1], [1, 3]]}]}"#;
+
+    #[test]
+    fn refuses_single_sample_cases() {
+        let scene = parse_case(HALF_SQUARE, "inline.json", &Limits::default()).unwrap();
+        let r = run(&scene, "vello-cpu");
+        assert!(
+            matches!(r.verdict, Verdict::Unsupported(_)),
+            "{:?}",
+            r.verdict
+        );
+    }
+
+    #[test]
+    fn measures_exact_areas() {
+        let scene = parse_case(HALF_SQUARE, "inline.json", &Limits::default()).unwrap();
+        let areas = area_coverage(&scene).unwrap();
+        let at = |x: usize, y: usize| areas[0][y * 4 + x];
+        assert_eq!(at(1, 1), 1.0);
+        for (x, y) in [(2, 1), (1, 2)] {
+            assert!((at(x, y) - 0.5).abs() <= 1.0 / 255.0, "{}", at(x, y));
+        }
+        assert_eq!(at(2, 2), 0.0);
+        assert_eq!(at(0, 0), 0.0);
+    }
+}
+
+fn triangle_cases() -> Vec<PathBuf> {
+    vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles")]
+}
+
+#[test]
+fn adapters_print_family_counts() {
+    let found = suite::discover(&triangle_cases());
+    assert!(found.errors.is_empty(), "{:?}", found.errors);
+    let names: Vec<&str> = ["tiny-skia", "euc"]
+        .into_iter()
+        .filter(|n| suite::rasterizer_names().contains(n))
+        .collect();
+    let mut counts = vec![[0usize; 4]; names.len()];
+    for file in &found.cases {
+        let scene = suite::load(file, &Limits::default()).expect("bundled cases load");
+        let reference = suite::run_reference(&scene);
+        for (name, count) in names.iter().zip(&mut counts) {
+            let r = suite::run_candidate(&scene, &reference, adapter(name).as_ref());
+            let slot = match r.verdict {
+                Verdict::Pass => 0,
+                Verdict::Fail(_) => 1,
+                Verdict::Unsupported(_) => 2,
+                Verdict::Error(ref why) => panic!("{name} broke on {}: {why}", file.id),
+            };
+            count[slot] += 1;
+        }
+    }
+    for (name, [pass, fail, unsupported, _]) in names.iter().zip(&counts) {
+        println!("triangles: {name}: {pass} passed, {fail} failed, {unsupported} unsupported");
+    }
+}
