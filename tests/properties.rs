@@ -210,3 +210,1184 @@ proptest! {
         prop_assert_eq!(fast, big);
     }
 }
+
+// ---------------------------------------------------------------------------
+// Invariances, watertight meshes, exact values at vertices, and the range.
+// ---------------------------------------------------------------------------
+
+use dashu_ratio::RBig;
+use rastercheck::frame::Frame;
+use rastercheck::rasterizer::RasterError;
+use rastercheck::reference::exact;
+use rastercheck::scene::rules::limits::{VALUE_LIMIT, W_LIMIT};
+use rastercheck::scene::{parse_case, Limits};
+
+/// Subpixel bits: every value 0..=16, and `null` (exact coordinates).
+fn any_bits() -> impl Strategy<Value = Option<u32>> {
+    prop_oneof![6 => (0u32..=16).prop_map(Some), 1 => Just(None)]
+}
+
+/// A coordinate near [lo, hi) (in pixels), or anywhere within ±`far`:
+/// on the half-pixel grid (ties at sample centres and pixel edges), on a
+/// dyadic grid of 2^-k for k in 0..=16 (snapping ties for coarser bits),
+/// a free rational with a denominator of up to 2^40, or an integer or a free
+/// rational anywhere in ±`far`.
+fn coord(lo: i64, hi: i64, far: i64) -> impl Strategy<Value = Number> {
+    prop_oneof![
+        4 => (2 * lo..2 * hi).prop_map(|h| Number::ratio(h, 2)),
+        3 => (0u32..=16, any::<u64>()).prop_map(move |(k, r)| {
+            let span = ((hi - lo) << k) as u64;
+            Number::ratio((lo << k) + (r % span) as i64, 1 << k)
+        }),
+        2 => (1i64..1 << 40, any::<u64>()).prop_map(move |(d, r)| {
+            let span = ((hi - lo) as u64) * d as u64;
+            Number::ratio(lo * d + (r % span) as i64, d)
+        }),
+        1 => (-far..=far).prop_map(Number::from_int),
+        1 => (1i64..1 << 40, any::<u64>()).prop_map(move |(d, r)| {
+            let span = (2 * far as u64) * d as u64 + 1;
+            Number::ratio(-far * d + (r % span) as i64, d)
+        }),
+    ]
+}
+
+/// A rational in [-limit, limit] (limit ≤ 10^12) with a denominator of up to
+/// 2^40, the limits themselves included.
+fn value_in(limit: i64) -> impl Strategy<Value = Number> {
+    prop_oneof![
+        3 => (-1000i64..=1000).prop_map(|n| Number::ratio(n, 8)),
+        2 => (-(limit - 1)..limit, 1i64..1 << 40, any::<u64>())
+            .prop_map(|(int, d, r)| &Number::from_int(int) + &Number::ratio((r % d as u64) as i64, d)),
+        1 => (1i64..1 << 40, -(1i64 << 22)..(1 << 22)).prop_map(|(d, n)| Number::ratio(n, d)),
+        1 => prop::sample::select(vec![-limit, limit, 0, -1, 1]).prop_map(Number::from_int),
+    ]
+}
+
+/// w in [10^-6, 10^6]: the limits themselves, simple values, and rationals
+/// with denominators up to 2^40.
+fn w_value() -> impl Strategy<Value = Number> {
+    prop_oneof![
+        1 => Just(Number::ratio(1, W_LIMIT)),
+        1 => Just(Number::from_int(W_LIMIT)),
+        3 => (1i64..400).prop_map(|w| Number::ratio(w, 100)),
+        // [10^-6, 10^6] as n / d with d ≤ 2^40.
+        2 => (1i64..1 << 40, any::<u64>()).prop_map(|(d, r)| {
+            let lo = (d + W_LIMIT - 1) / W_LIMIT; // ⌈d / 10^6⌉
+            let hi = (W_LIMIT as i128 * d as i128).min(i64::MAX as i128) as i64;
+            Number::ratio(lo.max(1) + (r % (hi - lo.max(1) + 1) as u64) as i64, d)
+        }),
+    ]
+}
+
+fn any_interpolation() -> impl Strategy<Value = Interpolation> {
+    prop::sample::select(vec![
+        Interpolation::Perspective,
+        Interpolation::Linear,
+        Interpolation::Flat,
+    ])
+}
+
+fn any_cull() -> impl Strategy<Value = Cull> {
+    prop::sample::select(vec![Cull::None, Cull::Clockwise, Cull::CounterClockwise])
+}
+
+/// A vertex at (x, y) with depth, w and `attributes` values in range.
+fn valued_vertex(
+    xy: impl Strategy<Value = (Number, Number)>,
+    attributes: usize,
+) -> impl Strategy<Value = Vertex> {
+    (
+        xy,
+        value_in(VALUE_LIMIT),
+        w_value(),
+        prop::collection::vec(value_in(VALUE_LIMIT), attributes),
+    )
+        .prop_map(|((x, y), z, w, attributes)| Vertex {
+            x,
+            y,
+            z,
+            w,
+            attributes,
+        })
+}
+
+fn scene_of(width: u32, height: u32, rules: Rules, primitives: Vec<Primitive>) -> Scene {
+    let attribute_count = primitives
+        .first()
+        .map_or(0, |p| p.vertices()[0].attributes.len());
+    Scene {
+        name: "property".to_owned(),
+        description: String::new(),
+        canvas: Canvas { width, height },
+        rules,
+        primitives,
+        effects: Effects::default(),
+        expect: Expect::default(),
+        attribute_count,
+        has_depth: true,
+    }
+}
+
+/// Production's frame, or `None` where it declines the scene: unsnapped
+/// coordinates that are not multiples of 2^-16, or line widths it cannot
+/// hold in fixed point (SPEC.md §8). Anything else is a failure.
+fn production(scene: &Scene, plan: &Plan) -> Result<Option<Frame>, TestCaseError> {
+    match Production.rasterize(scene, plan) {
+        Ok(frame) => Ok(Some(frame)),
+        Err(RasterError::Unsupported(why)) => {
+            prop_assert!(
+                scene.rules.subpixel_bits.is_none() || why.contains("width"),
+                "production declined a snapped scene: {why}"
+            );
+            Ok(None)
+        }
+        Err(e) => Err(TestCaseError::fail(format!("production broke: {e}"))),
+    }
+}
+
+/// Asserts production's interpolated values are within SPEC.md §6.3's bound.
+fn assert_values_within_bound(
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+) -> Result<(), TestCaseError> {
+    let m = metrics::measure(scene, reference, candidate, None);
+    for ch in &m.channels {
+        prop_assert!(
+            ch.within_bounds(),
+            "{}: {:e} > {:e}",
+            ch.channel,
+            ch.max_abs,
+            ch.allowed_abs
+        );
+    }
+    Ok(())
+}
+
+/// Asserts that sample (x, y) of `a` equals sample (x + dx, y + dy) of `b`
+/// wherever both are on the canvas: coverage, last primitive, depth and
+/// every attribute, bit for bit.
+fn assert_shifted(a: &Frame, b: &Frame, dx: i64, dy: i64, who: &str) -> Result<(), TestCaseError> {
+    let (w, h) = (i64::from(a.width), i64::from(a.height));
+    let mut compared = 0;
+    for y in 0..h {
+        for x in 0..w {
+            let (u, v) = (x + dx, y + dy);
+            if !(0..w).contains(&u) || !(0..h).contains(&v) {
+                continue;
+            }
+            let (i, j) = ((y * w + x) as usize, (v * w + u) as usize);
+            compared += 1;
+            prop_assert_eq!(
+                a.coverage[i],
+                b.coverage[j],
+                "{} coverage at ({}, {})",
+                who,
+                x,
+                y
+            );
+            prop_assert_eq!(a.last[i], b.last[j], "{} owner at ({}, {})", who, x, y);
+            if let (Some(da), Some(db)) = (&a.depth, &b.depth) {
+                prop_assert_eq!(
+                    da[i].to_bits(),
+                    db[j].to_bits(),
+                    "{} depth at ({}, {})",
+                    who,
+                    x,
+                    y
+                );
+            }
+            for (k, (ca, cb)) in a.attributes.iter().zip(&b.attributes).enumerate() {
+                prop_assert_eq!(
+                    ca[i].to_bits(),
+                    cb[j].to_bits(),
+                    "{} attribute {} at ({}, {}): {} vs {}",
+                    who,
+                    k,
+                    x,
+                    y,
+                    ca[i],
+                    cb[j]
+                );
+            }
+        }
+    }
+    prop_assert!(compared > 0);
+    Ok(())
+}
+
+const TSIZE: u32 = 32;
+
+/// A primitive near the canvas (or reaching anywhere in range, kept 64 px
+/// inside it so that a translation by up to 32 px stays in range).
+fn near_primitive() -> impl Strategy<Value = Primitive> {
+    let c = || coord(-8, i64::from(TSIZE) + 8, COORD_LIMIT - 64);
+    let v = move || valued_vertex((c(), c()), 1);
+    prop_oneof![
+        3 => ([v(), v(), v()], any_interpolation()).prop_map(|(vertices, interpolation)| {
+            Primitive::Triangle(Triangle { vertices, interpolation })
+        }),
+        1 => (
+            [v(), v()],
+            prop::sample::select(LineRule::ALL.to_vec()),
+            prop::sample::select(vec![Number::ONE, Number::from_int(3), Number::ratio(5, 2), Number::ratio(3, 4)]),
+            prop::sample::select(vec![LastPixel::Include, LastPixel::Exclude]),
+            prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
+            any_interpolation(),
+        )
+            .prop_map(|(vertices, rule, width, last_pixel, parameter, interpolation)| {
+                Primitive::Line(Line {
+                    vertices,
+                    rule,
+                    width: if rule.is_wide() { width } else { Number::ONE },
+                    last_pixel: if rule == LineRule::Midpoint { last_pixel } else { LastPixel::Include },
+                    parameter,
+                    interpolation,
+                })
+            }),
+    ]
+}
+
+fn near_scene(triangles_only: bool) -> impl Strategy<Value = Scene> {
+    (
+        any_bits(),
+        fill_rule(),
+        any_cull(),
+        prop::collection::vec(near_primitive(), 1..4),
+    )
+        .prop_map(move |(subpixel_bits, fill_rule, cull, mut primitives)| {
+            if triangles_only {
+                primitives.retain(|p| matches!(p, Primitive::Triangle(_)));
+            }
+            let rules = Rules {
+                subpixel_bits,
+                fill_rule,
+                cull,
+            };
+            scene_of(TSIZE, TSIZE, rules, primitives)
+        })
+        .prop_filter("at least one triangle", |s| !s.primitives.is_empty())
+}
+
+fn map_vertices(scene: &Scene, f: impl Fn(&mut Vertex)) -> Scene {
+    let mut scene = scene.clone();
+    for p in &mut scene.primitives {
+        p.vertices_mut().iter_mut().for_each(&f);
+    }
+    scene
+}
+
+fn map_triangles(scene: &Scene, f: impl Fn(&mut Triangle)) -> Scene {
+    let mut scene = scene.clone();
+    for p in &mut scene.primitives {
+        if let Primitive::Triangle(t) = p {
+            f(t);
+        }
+    }
+    scene
+}
+
+proptest! {
+    /// Moving every vertex by whole pixels moves the frame: exactly, for
+    /// coverage, owners and every value, in the reference and in production.
+    /// (With 0 subpixel bits a shift must be even: snapping's ties go to
+    /// even integers, so an odd shift moves a tie the other way.)
+    #[test]
+    fn whole_pixel_translation_shifts_the_frame_exactly(
+        scene in near_scene(false),
+        dx in -(TSIZE as i64 - 1)..TSIZE as i64,
+        dy in -(TSIZE as i64 - 1)..TSIZE as i64,
+    ) {
+        let (dx, dy) = if scene.rules.subpixel_bits == Some(0) { (dx / 2 * 2, dy / 2 * 2) } else { (dx, dy) };
+        let moved = map_vertices(&scene, |v| {
+            v.x = &v.x + &Number::from_int(dx);
+            v.y = &v.y + &Number::from_int(dy);
+        });
+        let plan = Plan::for_scene(&scene);
+        assert_shifted(&reference::render(&scene, &plan), &reference::render(&moved, &plan), dx, dy, "reference")?;
+        if let (Some(a), Some(b)) = (production(&scene, &plan)?, production(&moved, &plan)?) {
+            assert_shifted(&a, &b, dx, dy, "production")?;
+        }
+    }
+
+    /// (v0, v1, v2) → (v1, v2, v0) changes no coverage, and no value of a
+    /// linear or perspective triangle (flat takes the first vertex's).
+    #[test]
+    fn rotating_the_vertex_order_changes_nothing(scene in near_scene(true)) {
+        let scene = map_triangles(&scene, |t| {
+            if t.interpolation == Interpolation::Flat {
+                t.interpolation = Interpolation::Linear;
+            }
+        });
+        let rotated = map_triangles(&scene, |t| t.vertices.rotate_left(1));
+        let plan = Plan::for_scene(&scene);
+        let reference = reference::render(&scene, &plan);
+        prop_assert_eq!(&reference, &reference::render(&rotated, &plan));
+        if let (Some(a), Some(b)) = (production(&scene, &plan)?, production(&rotated, &plan)?) {
+            prop_assert_eq!(&a.coverage, &b.coverage);
+            prop_assert_eq!(&a.last, &b.last);
+            assert_values_within_bound(&rotated, &reference, &b)?;
+        }
+    }
+
+    /// (v0, v1, v2) → (v0, v2, v1) reverses the winding: with cull none it
+    /// changes nothing (flat included: v0 stays first); with culling, it
+    /// changes nothing when the culled winding is swapped too.
+    #[test]
+    fn reversing_the_winding_changes_nothing_but_culling(scene in near_scene(true)) {
+        let reversed = map_triangles(&scene, |t| t.vertices.swap(1, 2));
+        let mut reversed = reversed;
+        reversed.rules.cull = match scene.rules.cull {
+            Cull::None => Cull::None,
+            Cull::Clockwise => Cull::CounterClockwise,
+            Cull::CounterClockwise => Cull::Clockwise,
+        };
+        let plan = Plan::for_scene(&scene);
+        let reference = reference::render(&scene, &plan);
+        prop_assert_eq!(&reference, &reference::render(&reversed, &plan));
+        if let (Some(a), Some(b)) = (production(&scene, &plan)?, production(&reversed, &plan)?) {
+            prop_assert_eq!(&a.coverage, &b.coverage);
+            prop_assert_eq!(&a.last, &b.last);
+            assert_values_within_bound(&reversed, &reference, &b)?;
+        }
+    }
+}
+
+// --- Watertight meshes -----------------------------------------------------
+
+const MSIZE: u32 = 24;
+
+type Exact2 = [RBig; 2];
+
+/// Where a rasterizer puts a coordinate: snapped, or exact under `null`.
+fn placed(n: &Number, bits: Option<u32>) -> RBig {
+    match bits {
+        Some(b) => exact::snap(n, b),
+        None => n.as_rbig().clone(),
+    }
+}
+
+fn orient(a: &Exact2, b: &Exact2, c: &Exact2) -> std::cmp::Ordering {
+    let v = (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0]);
+    v.cmp(&RBig::ZERO)
+}
+
+/// A planar shape to triangulate into a mesh.
+#[derive(Clone, Debug)]
+enum Shape {
+    /// Points and triangles whose interiors do not overlap (before snapping).
+    Triangles(Vec<[Number; 2]>, Vec<[usize; 3]>),
+    /// A polygon, star-shaped around `centre`, to be ear-clipped after
+    /// snapping.
+    Star {
+        centre: [f64; 2],
+        points: Vec<[Number; 2]>,
+    },
+}
+
+/// Denominators of mesh vertices: a dyadic grid of 2^-k (grid-aligned,
+/// forcing ties), or a free odd denominator up to 2^40.
+fn denominator() -> impl Strategy<Value = i64> {
+    prop_oneof![
+        3 => (0u32..=16).prop_map(|k| 1i64 << k),
+        1 => (1i64..1 << 40).prop_map(|d| d | 1),
+    ]
+}
+
+fn to_number(v: f64, den: i64) -> Number {
+    Number::ratio((v * den as f64).round() as i64, den)
+}
+
+/// A mesh centre: a sample centre, or any coordinate on the canvas.
+fn mesh_centre() -> impl Strategy<Value = [Number; 2]> {
+    let m = i64::from(MSIZE);
+    prop_oneof![
+        (0..m, 0..m).prop_map(|(i, j)| [Number::ratio(2 * i + 1, 2), Number::ratio(2 * j + 1, 2)]),
+        (coord(0, m, m), coord(0, m, m)).prop_map(|(x, y)| [x, y]),
+    ]
+}
+
+/// Radii: a few pixels, the canvas, or far out in the guard band.
+fn radius_scale() -> impl Strategy<Value = f64> {
+    prop::sample::select(vec![1.5, 4.0, 12.0, 40.0, 20000.0])
+}
+
+/// `n` angles in order around a circle, each gap below π.
+fn angles(n: usize) -> impl Strategy<Value = Vec<f64>> {
+    (
+        prop::collection::vec(1.0f64..1.9, n),
+        0.0f64..std::f64::consts::TAU,
+    )
+        .prop_map(|(gaps, phase)| {
+            let total: f64 = gaps.iter().sum();
+            let mut a = phase;
+            gaps.iter()
+                .map(|g| {
+                    a += std::f64::consts::TAU * g / total;
+                    a
+                })
+                .collect()
+        })
+}
+
+/// A fan around a centre: around a sample centre, a free point, or a vertex
+/// of the snapping grid.
+fn fan() -> impl Strategy<Value = Shape> {
+    (3usize..16).prop_flat_map(|n| {
+        (
+            mesh_centre(),
+            angles(n),
+            prop::collection::vec(0.5f64..1.5, n),
+            radius_scale(),
+            denominator(),
+        )
+            .prop_map(move |(c, angles, radii, scale, den)| {
+                let (cx, cy) = (c[0].to_f64_lossy(), c[1].to_f64_lossy());
+                let mut points = vec![c];
+                for (a, r) in angles.iter().zip(&radii) {
+                    let r = r * scale;
+                    points.push([
+                        to_number(cx + r * a.cos(), den),
+                        to_number(cy + r * a.sin(), den),
+                    ]);
+                }
+                let triangles = (1..=n).map(|k| [0, k, k % n + 1]).collect();
+                Shape::Triangles(points, triangles)
+            })
+    })
+}
+
+/// A convex polygon (points on a circle), triangulated as a fan from its
+/// first vertex.
+fn convex_polygon() -> impl Strategy<Value = Shape> {
+    (3usize..14).prop_flat_map(|n| {
+        (mesh_centre(), angles(n), radius_scale(), denominator()).prop_map(
+            move |(c, angles, scale, den)| {
+                let (cx, cy) = (c[0].to_f64_lossy(), c[1].to_f64_lossy());
+                let points = angles
+                    .iter()
+                    .map(|a| {
+                        [
+                            to_number(cx + scale * a.cos(), den),
+                            to_number(cy + scale * a.sin(), den),
+                        ]
+                    })
+                    .collect();
+                let triangles = (1..n - 1).map(|k| [0, k, k + 1]).collect();
+                Shape::Triangles(points, triangles)
+            },
+        )
+    })
+}
+
+/// A simple polygon: star-shaped around a centre, with random radii.
+fn star_polygon() -> impl Strategy<Value = Shape> {
+    (4usize..14).prop_flat_map(|n| {
+        (
+            mesh_centre(),
+            angles(n),
+            prop::collection::vec(0.3f64..1.5, n),
+            radius_scale(),
+            denominator(),
+        )
+            .prop_map(move |(c, angles, radii, scale, den)| {
+                let centre = [c[0].to_f64_lossy(), c[1].to_f64_lossy()];
+                let points = angles
+                    .iter()
+                    .zip(&radii)
+                    .map(|(a, r)| {
+                        let r = r * scale;
+                        [
+                            to_number(centre[0] + r * a.cos(), den),
+                            to_number(centre[1] + r * a.sin(), den),
+                        ]
+                    })
+                    .collect();
+                Shape::Star { centre, points }
+            })
+    })
+}
+
+/// A jittered lattice (jitter below a quarter of the spacing keeps every
+/// triangle's orientation), each quad split along a random diagonal.
+fn jittered_grid() -> impl Strategy<Value = Shape> {
+    (1usize..=8, 1usize..=8).prop_flat_map(|(n, m)| {
+        (
+            (coord(-8, 1, 8), coord(-8, 1, 8)),
+            prop::sample::select(vec![0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 4000.0]),
+            prop::collection::vec((-0.24f64..0.24, -0.24f64..0.24), (n + 1) * (m + 1)),
+            prop::collection::vec(any::<bool>(), n * m),
+            denominator(),
+        )
+            .prop_map(move |((ox, oy), s, jitter, diagonals, den)| {
+                let (ox, oy) = (ox.to_f64_lossy(), oy.to_f64_lossy());
+                let at = |i: usize, j: usize| j * (n + 1) + i;
+                let points = (0..=m)
+                    .flat_map(|j| (0..=n).map(move |i| (i, j)))
+                    .map(|(i, j)| {
+                        let (jx, jy) = jitter[at(i, j)];
+                        let (x, y) = (ox + s * (i as f64 + jx), oy + s * (j as f64 + jy));
+                        [to_number(x, den), to_number(y, den)]
+                    })
+                    .collect();
+                let mut triangles = Vec::new();
+                for j in 0..m {
+                    for i in 0..n {
+                        let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                        if diagonals[j * n + i] {
+                            triangles.extend([[a, b, c], [a, c, d]]);
+                        } else {
+                            triangles.extend([[a, b, d], [b, c, d]]);
+                        }
+                    }
+                }
+                Shape::Triangles(points, triangles)
+            })
+    })
+}
+
+/// Ear clipping of a simple polygon given in `sign` winding. Vertices where
+/// the boundary runs straight on are dropped (they become T-junctions on a
+/// later triangle's edge, which keeps the tiling exact).
+fn ear_clip(points: &[Exact2], sign: std::cmp::Ordering) -> Option<Vec<[usize; 3]>> {
+    use std::cmp::Ordering::Equal;
+    let mut left: Vec<usize> = (0..points.len()).collect();
+    let mut triangles = Vec::new();
+    let corner = |left: &[usize], k: usize| {
+        let m = left.len();
+        (left[(k + m - 1) % m], left[k], left[(k + 1) % m])
+    };
+    while left.len() > 3 {
+        let m = left.len();
+        if let Some(k) = (0..m).find(|&k| {
+            let (a, b, c) = corner(&left, k);
+            orient(&points[a], &points[b], &points[c]) == Equal
+        }) {
+            left.remove(k);
+            continue;
+        }
+        let ear = (0..m).find(|&k| {
+            let (a, b, c) = corner(&left, k);
+            let (pa, pb, pc) = (&points[a], &points[b], &points[c]);
+            orient(pa, pb, pc) == sign
+                && left.iter().all(|&q| {
+                    q == a
+                        || q == b
+                        || q == c
+                        || [
+                            orient(pa, pb, &points[q]),
+                            orient(pb, pc, &points[q]),
+                            orient(pc, pa, &points[q]),
+                        ]
+                        .contains(&sign.reverse())
+                })
+        })?;
+        let (a, b, c) = corner(&left, ear);
+        triangles.push([a, b, c]);
+        left.remove(ear);
+    }
+    if orient(&points[left[0]], &points[left[1]], &points[left[2]]) == sign {
+        triangles.push([left[0], left[1], left[2]]);
+    }
+    Some(triangles)
+}
+
+/// A mesh scene: the shape snapped under `bits`, each triangle's winding
+/// reversed or its vertices rotated at random. `None` when snapping folded
+/// a triangle over (the shape is then no longer a mesh).
+fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Scene> {
+    let (points, triangles) = match shape {
+        Shape::Triangles(points, triangles) => (points, triangles),
+        Shape::Star { centre, points } => {
+            let placed_points: Vec<Exact2> = points
+                .iter()
+                .map(|p| p.each_ref().map(|c| placed(c, bits)))
+                .collect();
+            let c = centre.map(|v| {
+                Number::ratio((v * 65536.0).round() as i64, 65536)
+                    .as_rbig()
+                    .clone()
+            });
+            let n = placed_points.len();
+            let signs: Vec<_> = (0..n)
+                .map(|k| orient(&c, &placed_points[k], &placed_points[(k + 1) % n]))
+                .collect();
+            if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+                return None;
+            }
+            let triangles = ear_clip(&placed_points, signs[0])?;
+            (points, triangles)
+        }
+    };
+    let placed_points: Vec<Exact2> = points
+        .iter()
+        .map(|p| p.each_ref().map(|c| placed(c, bits)))
+        .collect();
+    let signs: Vec<_> = triangles
+        .iter()
+        .map(|t| {
+            orient(
+                &placed_points[t[0]],
+                &placed_points[t[1]],
+                &placed_points[t[2]],
+            )
+        })
+        .collect();
+    if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+        return None;
+    }
+    let primitives = triangles
+        .iter()
+        .zip(shuffles.iter().cycle())
+        .map(|(t, shuffle)| {
+            let mut vertices = t.map(|i| Vertex::at(points[i][0].clone(), points[i][1].clone()));
+            if shuffle & 1 != 0 {
+                vertices.swap(1, 2);
+            }
+            vertices.rotate_left(usize::from(shuffle >> 1) % 3);
+            Primitive::Triangle(Triangle {
+                vertices,
+                interpolation: Interpolation::Perspective,
+            })
+        })
+        .collect();
+    let rules = Rules {
+        subpixel_bits: bits,
+        fill_rule: FillRule::TopLeft,
+        cull: Cull::None,
+    };
+    let mut scene = scene_of(MSIZE, MSIZE, rules, primitives);
+    scene.has_depth = false;
+    Some(scene)
+}
+
+fn mesh_scene() -> impl Strategy<Value = Scene> {
+    (
+        prop_oneof![fan(), jittered_grid(), convex_polygon(), star_polygon()],
+        any_bits(),
+        prop::collection::vec(any::<u8>(), 1..32),
+    )
+        .prop_filter_map("snapping folded a triangle", |(shape, bits, shuffles)| {
+            mesh_scene_of(shape, bits, &shuffles)
+        })
+}
+
+/// Every interior sample covered once, and no sample covered twice.
+fn assert_mesh_coverage(frame: &Frame, interior: &[bool], who: &str) -> Result<(), TestCaseError> {
+    for (i, (&count, &inside)) in frame.coverage.iter().zip(interior).enumerate() {
+        let (x, y) = (i % MSIZE as usize, i / MSIZE as usize);
+        prop_assert!(
+            count <= 1,
+            "{}: sample ({}, {}) covered {} times",
+            who,
+            x,
+            y,
+            count
+        );
+        prop_assert!(
+            !inside || count == 1,
+            "{}: interior sample ({}, {}) is a hole",
+            who,
+            x,
+            y
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    /// Fans, jittered grids, convex fans and ear-clipped simple polygons,
+    /// with random windings: under each consistent rule, each interior
+    /// sample is covered exactly once and no sample twice (SPEC.md §3, §6.2).
+    #[test]
+    fn meshes_are_covered_exactly_once_under_every_consistent_rule(scene in mesh_scene()) {
+        let interior = reference::mesh_interior(&scene);
+        let plan = Plan::for_scene(&scene);
+        for rule in FillRule::CONSISTENT {
+            let mut scene = scene.clone();
+            scene.rules.fill_rule = rule;
+            assert_mesh_coverage(&reference::render(&scene, &plan), &interior, &format!("reference, {rule}"))?;
+            if let Some(frame) = production(&scene, &plan)? {
+                assert_mesh_coverage(&frame, &interior, &format!("production, {rule}"))?;
+            }
+        }
+    }
+}
+
+// --- Exact values at vertices ---------------------------------------------
+
+const VSIZE: u32 = 16;
+
+/// The pixel whose sample centre a placed position is, if on the canvas.
+fn centre_pixel(p: &[RBig; 2], size: u32) -> Option<usize> {
+    let half = RBig::from_parts(1.into(), 2u8.into());
+    let mut at = [0usize; 2];
+    for axis in 0..2 {
+        let t = &p[axis] - &half;
+        if t.denominator() != &dashu_int::UBig::ONE {
+            return None;
+        }
+        let i: i64 = t.numerator().try_into().ok()?;
+        if !(0..i64::from(size)).contains(&i) {
+            return None;
+        }
+        at[axis] = i as usize;
+    }
+    Some(at[1] * size as usize + at[0])
+}
+
+/// A vertex position: a sample centre on the canvas, a sample centre
+/// anywhere in range, or any coordinate.
+fn vertex_position() -> impl Strategy<Value = (Number, Number)> {
+    let near = || (0..i64::from(VSIZE)).prop_map(|i| Number::ratio(2 * i + 1, 2));
+    let anywhere = || (-COORD_LIMIT..COORD_LIMIT).prop_map(|i| Number::ratio(2 * i + 1, 2));
+    let free = || coord(-4, i64::from(VSIZE) + 4, COORD_LIMIT);
+    prop_oneof![
+        4 => (near(), near()),
+        1 => (anywhere(), anywhere()),
+        1 => (near(), anywhere()),
+        1 => (free(), free()),
+    ]
+}
+
+fn vertex_scene() -> impl Strategy<Value = Scene> {
+    (1usize..=3).prop_flat_map(|attributes| {
+        (
+            prop_oneof![4 => (1u32..=16).prop_map(Some), 1 => Just(None)],
+            fill_rule(),
+            any_interpolation(),
+            [
+                valued_vertex((near_centre(), near_centre()), attributes).boxed(),
+                valued_vertex(vertex_position(), attributes).boxed(),
+                valued_vertex(vertex_position(), attributes).boxed(),
+            ],
+        )
+            .prop_map(|(subpixel_bits, fill_rule, interpolation, vertices)| {
+                let rules = Rules {
+                    subpixel_bits,
+                    fill_rule,
+                    cull: Cull::None,
+                };
+                scene_of(
+                    VSIZE,
+                    VSIZE,
+                    rules,
+                    vec![Primitive::Triangle(Triangle {
+                        vertices,
+                        interpolation,
+                    })],
+                )
+            })
+    })
+}
+
+fn near_centre() -> impl Strategy<Value = Number> {
+    (0..i64::from(VSIZE)).prop_map(|i| Number::ratio(2 * i + 1, 2))
+}
+
+proptest! {
+    /// At a vertex that lies on a sample centre, the reference writes the
+    /// vertex's own depth and attributes (the first vertex's for flat), as
+    /// the correctly rounded f32 (checked against dashu's conversion), and
+    /// production is within SPEC.md §6.3's bound of them. Under `all-edges`
+    /// a triangle with area covers its vertices' samples.
+    #[test]
+    fn interpolation_reproduces_vertex_values_at_sample_centres(scene in vertex_scene()) {
+        let Primitive::Triangle(t) = &scene.primitives[0] else { unreachable!() };
+        let bits = scene.rules.subpixel_bits;
+        let positions: Vec<[RBig; 2]> = t.vertices.iter().map(|v| [placed(&v.x, bits), placed(&v.y, bits)]).collect();
+        let area = orient(&positions[0], &positions[1], &positions[2]);
+        let plan = Plan::for_scene(&scene);
+        let reference = reference::render(&scene, &plan);
+        let candidate = production(&scene, &plan)?;
+        let bound = |values: Vec<&Number>| {
+            metrics::DEFAULT_RELATIVE_BOUND
+                * values.iter().map(|v| v.abs().to_f64_lossy()).fold(1.0, f64::max)
+        };
+        for (i, p) in positions.iter().enumerate() {
+            let Some(pixel) = centre_pixel(p, VSIZE) else { continue };
+            if scene.rules.fill_rule == FillRule::AllEdges && !area.is_eq() {
+                prop_assert_eq!(reference.last[pixel], 1, "vertex {} not covered under all-edges", i);
+            }
+            let mut expected = vec![(
+                "depth",
+                &t.vertices[i].z,
+                reference.depth.as_ref().unwrap()[pixel],
+                candidate.as_ref().map(|c| c.depth.as_ref().unwrap()[pixel]),
+                bound(t.vertices.iter().map(|v| &v.z).collect()),
+            )];
+            let source = if t.interpolation == Interpolation::Flat { 0 } else { i };
+            for k in 0..scene.attribute_count {
+                expected.push((
+                    "attribute",
+                    &t.vertices[source].attributes[k],
+                    reference.attributes[k][pixel],
+                    candidate.as_ref().map(|c| c.attributes[k][pixel]),
+                    bound(t.vertices.iter().map(|v| &v.attributes[k]).collect()),
+                ));
+            }
+            if reference.last[pixel] != 1 {
+                continue;
+            }
+            for (what, value, exact_out, candidate_out, allowed) in expected {
+                let q = value.as_rbig();
+                prop_assert_eq!(exact_out.to_bits(), exact::to_f64_round_odd(q).to_bits(), "{} at vertex {}", what, i);
+                prop_assert_eq!((exact_out as f32).to_bits(), q.to_f32().value().to_bits(), "{} at vertex {}: f32", what, i);
+                if let (Some(out), Some(c)) = (candidate_out, &candidate) {
+                    if c.last[pixel] == 1 {
+                        prop_assert!((out - exact_out).abs() <= allowed, "production {} at vertex {}: {} vs {} (bound {:e})", what, i, out, exact_out, allowed);
+                    }
+                }
+            }
+        }
+    }
+}
+
+// --- The documented range --------------------------------------------------
+
+/// A coordinate anywhere in range, its very limits included.
+fn extreme_coord() -> impl Strategy<Value = Number> {
+    let l = COORD_LIMIT;
+    prop_oneof![
+        1 => prop::sample::select(vec![
+            Number::from_int(l),
+            Number::from_int(-l),
+            Number::ratio(2 * l - 1, 2),
+            Number::ratio(-(l << 40) + 1, 1 << 40),
+            Number::ratio((l << 40) - 1, 1 << 40),
+        ]),
+        4 => coord(-4, 20, l),
+    ]
+}
+
+/// A line width in (0, 1024], with denominators up to 2^40.
+fn line_width() -> impl Strategy<Value = Number> {
+    prop_oneof![
+        prop::sample::select(vec![
+            Number::from_int(1024),
+            Number::ratio(1, 1 << 40),
+            Number::ONE,
+            Number::ratio(1, 3),
+            Number::ratio(1023, 1),
+        ]),
+        (1i64..1 << 40).prop_flat_map(|d| (1..=1024 * d).prop_map(move |n| Number::ratio(n, d))),
+    ]
+}
+
+fn extreme_primitive(attributes: usize) -> impl Strategy<Value = Primitive> {
+    let v = move || valued_vertex((extreme_coord(), extreme_coord()), attributes);
+    prop_oneof![
+        2 => ([v(), v(), v()], any_interpolation()).prop_map(|(vertices, interpolation)| {
+            Primitive::Triangle(Triangle { vertices, interpolation })
+        }),
+        1 => (
+            [v(), v()],
+            prop::sample::select(LineRule::ALL.to_vec()),
+            line_width(),
+            prop::sample::select(vec![LastPixel::Include, LastPixel::Exclude]),
+            prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
+            any_interpolation(),
+        )
+            .prop_map(|(vertices, rule, width, last_pixel, parameter, interpolation)| {
+                Primitive::Line(Line {
+                    vertices,
+                    rule,
+                    width: if rule.is_wide() { width } else { Number::ONE },
+                    last_pixel: if rule == LineRule::Midpoint { last_pixel } else { LastPixel::Include },
+                    parameter,
+                    interpolation,
+                })
+            }),
+    ]
+}
+
+fn extreme_scene() -> impl Strategy<Value = Scene> {
+    prop::sample::select(vec![0usize, 1, 3, 16]).prop_flat_map(|attributes| {
+        (
+            any_bits(),
+            fill_rule(),
+            any_cull(),
+            1u32..=16,
+            1u32..=16,
+            any::<bool>(),
+            prop::collection::vec(extreme_primitive(attributes), 1..4),
+        )
+            .prop_map(
+                |(subpixel_bits, fill_rule, cull, width, height, has_depth, primitives)| {
+                    let rules = Rules {
+                        subpixel_bits,
+                        fill_rule,
+                        cull,
+                    };
+                    let mut scene = scene_of(width, height, rules, primitives);
+                    scene.has_depth = has_depth;
+                    scene
+                },
+            )
+    })
+}
+
+proptest! {
+    /// Anywhere in the documented range (coordinates to ±32768, w in
+    /// [10^-6, 10^6], values to ±10^12, rationals with 40-bit denominators,
+    /// every subpixel setting) the reference and production never panic,
+    /// and production, where it accepts the scene, agrees with the reference.
+    #[test]
+    fn nothing_panics_anywhere_in_the_documented_range(scene in extreme_scene()) {
+        use std::panic::{catch_unwind, AssertUnwindSafe};
+        let plan = Plan::for_scene(&scene);
+        let reference = catch_unwind(AssertUnwindSafe(|| reference::render(&scene, &plan)));
+        prop_assert!(reference.is_ok(), "the reference panicked");
+        let reference = reference.unwrap();
+        let candidate = catch_unwind(AssertUnwindSafe(|| production(&scene, &plan)));
+        prop_assert!(candidate.is_ok(), "production panicked");
+        if let Some(candidate) = candidate.unwrap()? {
+            let m = metrics::measure(&scene, &reference, &candidate, None);
+            prop_assert_eq!(m.coverage.mismatched(), 0, "{} missing, {} extra, {} wrong owner", m.coverage.missing, m.coverage.extra, m.coverage.wrong_owner);
+            for ch in &m.channels {
+                prop_assert!(ch.within_bounds(), "{}: {:e} > {:e}", ch.channel, ch.max_abs, ch.allowed_abs);
+            }
+        }
+    }
+}
+
+// --- The reader at the edges of the range ---------------------------------
+
+/// What a slot of the template case holds, which decides its range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Slot {
+    Side,
+    Bits,
+    Coord,
+    Value,
+    W,
+    Width,
+    Tolerance,
+}
+
+/// The template's slots: JSON path, kind, and in-range default.
+fn slots() -> Vec<(String, Slot, &'static str)> {
+    let mut s = vec![
+        ("$.canvas.width".to_owned(), Slot::Side, "8"),
+        ("$.canvas.height".to_owned(), Slot::Side, "8"),
+        ("$.rules.subpixel_bits".to_owned(), Slot::Bits, "8"),
+    ];
+    let defaults = [["0", "0"], ["8", "0"], ["0", "8"]];
+    for (i, d) in defaults.iter().enumerate() {
+        let v = format!("$.primitives[0].triangle[{i}]");
+        s.push((format!("{v}.position[0]"), Slot::Coord, d[0]));
+        s.push((format!("{v}.position[1]"), Slot::Coord, d[1]));
+        s.push((format!("{v}.z"), Slot::Value, "0.5"));
+        s.push((format!("{v}.w"), Slot::W, "1"));
+        s.push((format!("{v}.attributes[0]"), Slot::Value, "-3"));
+    }
+    for i in 0..2 {
+        s.push((
+            format!("$.primitives[1].line[{i}].position[0]"),
+            Slot::Coord,
+            "1",
+        ));
+        s.push((
+            format!("$.primitives[1].line[{i}].position[1]"),
+            Slot::Coord,
+            "2",
+        ));
+    }
+    s.push(("$.primitives[1].width".to_owned(), Slot::Width, "2"));
+    s.push((
+        "$.expect.max_abs_error".to_owned(),
+        Slot::Tolerance,
+        "0.001",
+    ));
+    s
+}
+
+/// The template case with `texts` in its slots (in `slots()` order).
+fn template(texts: &[String]) -> String {
+    let mut t = texts.iter();
+    let mut n = || t.next().unwrap().clone();
+    let canvas = format!(r#"{{"width": {}, "height": {}}}"#, n(), n());
+    let rules = format!(r#"{{"subpixel_bits": {}, "fill_rule": "top-left"}}"#, n());
+    let vertices: Vec<String> = (0..3)
+        .map(|_| {
+            format!(
+                r#"{{"position": [{}, {}], "z": {}, "w": {}, "attributes": [{}, 1]}}"#,
+                n(),
+                n(),
+                n(),
+                n(),
+                n()
+            )
+        })
+        .collect();
+    let ends: Vec<String> = (0..2)
+        .map(|_| {
+            format!(
+                r#"{{"position": [{}, {}], "attributes": [0, 0]}}"#,
+                n(),
+                n()
+            )
+        })
+        .collect();
+    let line = format!("[{}]", ends.join(", "));
+    format!(
+        r#"{{"name": "range", "canvas": {canvas}, "rules": {rules},
+  "primitives": [{{"triangle": [{}]}},
+    {{"line": {line}, "rule": "rectangle", "width": {}, "interpolation": "linear"}}],
+  "expect": {{"max_abs_error": {}}}}}"#,
+        vertices.join(", "),
+        n(),
+        n()
+    )
+}
+
+/// Exact text for `base + sign · step/den`, as a JSON number or fraction
+/// string.
+fn offset_text(base: i128, step: i128, den: i128, as_fraction: bool) -> String {
+    let n = base * den + step;
+    if as_fraction {
+        format!("\"{n}/{den}\"")
+    } else if den == 1 {
+        format!("{n}")
+    } else {
+        // den is a power of ten here.
+        let digits = den.to_string().len() - 1;
+        let (sign, m) = if n < 0 { ("-", -n) } else { ("", n) };
+        let int = m / den;
+        let frac = m % den;
+        format!("{sign}{int}.{frac:0digits$}")
+    }
+}
+
+/// A value for a slot of kind `slot` and whether it is in range: the limits
+/// themselves, a hair inside or outside them, far outside, the wrong sign,
+/// non-finite strings, and numbers too long to read.
+fn slot_value(slot: Slot) -> impl Strategy<Value = (String, bool)> {
+    let (lo, hi, lo_open): (i128, i128, bool) = match slot {
+        Slot::Side => (1, 16384, false),
+        Slot::Bits => (0, 16, false),
+        Slot::Coord => (-32768, 32768, false),
+        Slot::Value => (-1_000_000_000_000, 1_000_000_000_000, false),
+        // w ≥ 10^-6: scaled by the denominator below.
+        Slot::W => (0, 1_000_000, false),
+        Slot::Width => (0, 1024, true),
+        Slot::Tolerance => (0, 1_000_000_000_000, false),
+    };
+    let integral = matches!(slot, Slot::Side | Slot::Bits);
+    let dens: Vec<i128> = if integral {
+        vec![1]
+    } else {
+        vec![1, 10, 1_000_000, 1 << 40, 3, 1_000_000_000_000]
+    };
+    (
+        prop::sample::select(dens),
+        0u8..8,
+        any::<bool>(),
+        1i128..1000,
+    )
+        .prop_map(move |(den, pick, as_fraction, far)| {
+            let frac = as_fraction || ![1, 10, 1_000_000, 1_000_000_000_000].contains(&den);
+            match pick {
+                // The limits themselves (open at 0 for widths, at 10^-6 for w).
+                0 => match slot {
+                    Slot::W => (
+                        offset_text(0, den / 1_000_000, den, frac),
+                        den % 1_000_000 == 0,
+                    ),
+                    _ => (offset_text(lo, 0, den, frac), !lo_open),
+                },
+                1 => (offset_text(hi, 0, den, frac), true),
+                // A hair outside.
+                2 => match slot {
+                    Slot::W => (offset_text(0, den / 1_000_000 - 1, den, frac), false),
+                    _ => (offset_text(lo, -1, den, frac), false),
+                },
+                3 => (offset_text(hi, 1, den, frac), false),
+                // Far outside.
+                4 => (offset_text(hi * far, 1, den, frac), false),
+                5 => (offset_text(-hi * far - 1, 0, 1, false), false),
+                6 => (prop_oneof_text(far as usize, slot), false),
+                // A hair inside.
+                _ => match slot {
+                    Slot::W | Slot::Side | Slot::Bits => (
+                        offset_text(hi, -1, den, frac),
+                        hi * den - 1
+                            >= lo * den + if slot == Slot::W { den / 1_000_000 } else { 0 },
+                    ),
+                    _ => (offset_text(lo, 1, den, frac), true),
+                },
+            }
+        })
+}
+
+/// Texts that are never numbers in range: non-finite strings, zero
+/// denominators, too many digits, too large exponents; for integer slots,
+/// fractions.
+fn prop_oneof_text(k: usize, slot: Slot) -> String {
+    let texts = [
+        "\"NaN\"".to_owned(),
+        "\"-Infinity\"".to_owned(),
+        "\"inf\"".to_owned(),
+        "\"1/0\"".to_owned(),
+        format!("1{}", "0".repeat(1000)),
+        "1e1001".to_owned(),
+        "1e-1001".to_owned(),
+        "\"1e999999999\"".to_owned(),
+        "true".to_owned(),
+        "[1]".to_owned(),
+    ];
+    match slot {
+        Slot::Side | Slot::Bits if k % 3 == 0 => "\"3/2\"".to_owned(),
+        _ => texts[k % texts.len()].clone(),
+    }
+}
+
+proptest! {
+    /// Every number slot of a case, at its documented limits, a hair either
+    /// side and far beyond: in range it reads, out of range the reader
+    /// returns an error naming that slot's JSON path (never a panic).
+    #[test]
+    fn the_reader_accepts_the_range_and_names_the_path_beyond_it(
+        (index, (text, valid)) in (0..slots().len()).prop_flat_map(|i| (Just(i), slot_value(slots()[i].1)))
+    ) {
+        let slots = slots();
+        let mut texts: Vec<String> = slots.iter().map(|s| s.2.to_owned()).collect();
+        texts[index] = text.clone();
+        let case = template(&texts);
+        let result = std::panic::catch_unwind(|| parse_case(&case, "range.json", &Limits::default()));
+        prop_assert!(result.is_ok(), "the reader panicked on {}", case);
+        match result.unwrap() {
+            Ok(_) => prop_assert!(valid, "{} = {} was accepted", slots[index].0, text),
+            Err(e) => {
+                prop_assert!(!valid, "{} = {} was refused: {}", slots[index].0, text, e);
+                prop_assert_eq!(&e.location, &slots[index].0, "{} = {}: {}", slots[index].0, text, e);
+            }
+        }
+    }
+}
+
+/// The limits that belong to a whole object rather than one number.
+#[test]
+fn the_reader_names_the_object_that_breaks_a_count_limit() {
+    let parse = |text: &str| parse_case(text, "limits.json", &Limits::default());
+    let triangle = r#"{"triangle": [[0, 0], [1, 0], [0, 1]]}"#;
+    let case = |canvas: &str, primitives: &str| {
+        format!(r#"{{"name": "n", "canvas": {canvas}, "primitives": [{primitives}]}}"#)
+    };
+    let e = parse(&case(r#"{"width": 16384, "height": 1025}"#, triangle)).unwrap_err();
+    assert_eq!(e.location, "$.canvas", "{e}");
+    assert!(parse(&case(r#"{"width": 16384, "height": 1024}"#, triangle)).is_ok());
+    let vertex = |n: usize| {
+        format!(
+            r#"{{"position": [0, 0], "attributes": [{}]}}"#,
+            vec!["1"; n].join(", ")
+        )
+    };
+    let with_attributes = |n: usize| format!(r#"{{"triangle": [{v}, {v}, {v}]}}"#, v = vertex(n));
+    assert!(parse(&case(r#"{"width": 4, "height": 4}"#, &with_attributes(16))).is_ok());
+    let e = parse(&case(r#"{"width": 4, "height": 4}"#, &with_attributes(17))).unwrap_err();
+    assert_eq!(e.location, "$.primitives[0].triangle[0].attributes", "{e}");
+    let many = vec![triangle; 100_001].join(",");
+    let e = parse(&case(r#"{"width": 4, "height": 4}"#, &many)).unwrap_err();
+    assert_eq!(e.location, "$.primitives", "{e}");
+}
