@@ -1311,8 +1311,7 @@ fn slot_value(slot: Slot) -> impl Strategy<Value = (String, bool)> {
                 _ => match slot {
                     Slot::W | Slot::Side | Slot::Bits => (
                         offset_text(hi, -1, den, frac),
-                        hi * den - 1
-                            >= lo * den + if slot == Slot::W { den / 1_000_000 } else { 0 },
+                        hi * den > lo * den + if slot == Slot::W { den / 1_000_000 } else { 0 },
                     ),
                     _ => (offset_text(lo, 1, den, frac), true),
                 },
@@ -1337,7 +1336,7 @@ fn prop_oneof_text(k: usize, slot: Slot) -> String {
         "[1]".to_owned(),
     ];
     match slot {
-        Slot::Side | Slot::Bits if k % 3 == 0 => "\"3/2\"".to_owned(),
+        Slot::Side | Slot::Bits if k % 3 < 1 => "\"3/2\"".to_owned(),
         _ => texts[k % texts.len()].clone(),
     }
 }
