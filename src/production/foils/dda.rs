@@ -22,49 +22,19 @@ use crate::production::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Canvas, LastPixel, LineRule, Primitive, Scene};
 
-/// The DDA foil stepping in f32.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct DdaF32;
+foil!(
+    /// The DDA foil stepping in f32.
+    DdaF32,
+    "dda-f32",
+    rasterize::<f32>
+);
 
-/// The DDA foil stepping in f64.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct DdaF64;
-
-impl Rasterizer for DdaF32 {
-    fn name(&self) -> &str {
-        "dda-f32"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        rasterize::<f32>(scene, plan)
-    }
-}
-
-impl Rasterizer for DdaF64 {
-    fn name(&self) -> &str {
-        "dda-f64"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        rasterize::<f64>(scene, plan)
-    }
-}
+foil!(
+    /// The DDA foil stepping in f64.
+    DdaF64,
+    "dda-f64",
+    rasterize::<f64>
+);
 
 /// The float a DDA steps in.
 pub(crate) trait Float:

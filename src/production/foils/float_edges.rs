@@ -51,49 +51,19 @@ use crate::production::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Cull, FillRule, Interpolation, Primitive, Scene, Triangle};
 
-/// The float triangle foil in f32.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct FloatF32;
+foil!(
+    /// The float triangle foil in f32.
+    FloatF32,
+    "float-f32",
+    rasterize::<f32>
+);
 
-/// The float triangle foil in f64.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct FloatF64;
-
-impl Rasterizer for FloatF32 {
-    fn name(&self) -> &str {
-        "float-f32"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        rasterize::<f32>(scene, plan)
-    }
-}
-
-impl Rasterizer for FloatF64 {
-    fn name(&self) -> &str {
-        "float-f64"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        rasterize::<f64>(scene, plan)
-    }
-}
+foil!(
+    /// The float triangle foil in f64.
+    FloatF64,
+    "float-f64",
+    rasterize::<f64>
+);
 
 /// The float type the foil computes in.
 trait Float:

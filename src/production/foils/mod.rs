@@ -3,6 +3,35 @@
 //! not candidates for correctness; each documents where it departs from
 //! SPEC.md.
 
+/// Declares a foil: a unit struct whose `Rasterizer` impl gives its name,
+/// says it is a foil, takes production's capabilities, and draws with the
+/// given function of the scene and plan.
+macro_rules! foil {
+    ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct $name;
+
+        impl Rasterizer for $name {
+            fn name(&self) -> &str {
+                $label
+            }
+
+            fn is_foil(&self) -> bool {
+                true
+            }
+
+            fn capabilities(&self) -> Capabilities {
+                Production.capabilities()
+            }
+
+            fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+                $draw(scene, plan)
+            }
+        }
+    };
+}
+
 pub mod dda;
 pub mod float_edges;
 
