@@ -63,7 +63,7 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::metrics::Metrics;
 use crate::runner::{CaseOutcome, Problem, Selection};
-use crate::suite::{CandidateRun, CaseFile, Verdict};
+use crate::suite::{CandidateRun, CaseFile};
 
 pub const SCHEMA: &str = "rastercheck-baseline/1";
 
@@ -254,17 +254,6 @@ impl Value {
     }
 }
 
-/// The name a verdict is recorded under.
-pub fn verdict_name(verdict: &Verdict, foil: bool) -> &'static str {
-    match verdict {
-        Verdict::Pass => "pass",
-        Verdict::Fail(_) if foil => "foil",
-        Verdict::Fail(_) => "fail",
-        Verdict::Unsupported(_) => "unsupported",
-        Verdict::Error(_) => "error",
-    }
-}
-
 /// How bad a verdict is: pass = foil < fail < error. `None` for
 /// `unsupported` (nothing was drawn) and unknown names.
 fn verdict_rank(verdict: &str) -> Option<u8> {
@@ -309,7 +298,7 @@ impl Entry {
         Entry {
             case: case.to_owned(),
             rasterizer: rasterizer.to_owned(),
-            verdict: verdict_name(&run.verdict, foil).to_owned(),
+            verdict: run.verdict.recorded_name(foil).to_owned(),
             metrics: run.metrics.as_ref().map(metrics_of).unwrap_or_default(),
         }
     }

@@ -175,6 +175,18 @@ pub enum Verdict {
 }
 
 impl Verdict {
+    /// The name a verdict is recorded under in reports and baselines;
+    /// a foil's failure is a `foil` departure.
+    pub fn recorded_name(&self, foil: bool) -> &'static str {
+        match self {
+            Verdict::Pass => "pass",
+            Verdict::Fail(_) if foil => "foil",
+            Verdict::Fail(_) => "fail",
+            Verdict::Unsupported(_) => "unsupported",
+            Verdict::Error(_) => "error",
+        }
+    }
+
     pub fn label(&self) -> &'static str {
         match self {
             Verdict::Pass => "PASS",

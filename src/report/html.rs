@@ -28,7 +28,7 @@ use image::{Rgb, RgbImage};
 use super::exr::interpolation_errors;
 use super::json::{CaseEntry, ChannelEntry, MetricsEntry, Report, ResultEntry};
 use super::png::{EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
-use super::MAX_PICTURED;
+use super::{escape, MAX_PICTURED};
 use crate::frame::Frame;
 use crate::runner::CaseOutcome;
 
@@ -71,22 +71,6 @@ pub fn base64(bytes: &[u8]) -> String {
             } else {
                 out.push('=');
             }
-        }
-    }
-    out
-}
-
-/// Escapes text for HTML content and attribute values.
-pub fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
         }
     }
     out

@@ -206,16 +206,6 @@ impl MetricsEntry {
     }
 }
 
-fn verdict_name(verdict: &Verdict, foil: bool) -> &'static str {
-    match verdict {
-        Verdict::Pass => "pass",
-        Verdict::Fail(_) if foil => "foil",
-        Verdict::Fail(_) => "fail",
-        Verdict::Unsupported(_) => "unsupported",
-        Verdict::Error(_) => "error",
-    }
-}
-
 fn rules_info(scene: &Scene) -> RulesInfo {
     RulesInfo {
         canvas: [scene.canvas.width, scene.canvas.height],
@@ -282,7 +272,7 @@ impl CaseEntry {
             .zip(foil)
             .map(|(run, &is_foil)| ResultEntry {
                 rasterizer: run.rasterizer.clone(),
-                verdict: verdict_name(&run.verdict, is_foil),
+                verdict: run.verdict.recorded_name(is_foil),
                 reasons: match &run.verdict {
                     Verdict::Pass => Vec::new(),
                     Verdict::Fail(reasons) => reasons.clone(),
