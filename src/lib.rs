@@ -20,10 +20,13 @@
 pub mod adapters;
 pub mod baseline;
 pub mod frame;
+pub mod fuzz;
 pub mod golden;
+pub mod matrix;
 pub mod metrics;
 pub mod mutants;
 pub mod plan;
+pub mod probe;
 pub mod production;
 pub mod rasterizer;
 pub mod reference;

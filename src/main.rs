@@ -62,6 +62,69 @@ enum Command {
     /// run to them (`check`: exit 1 when a metric gets worse).
     #[command(subcommand)]
     Baseline(BaselineCommand),
+    /// Search random and adversarial scenes for a failure of one rasterizer,
+    /// shrink it to a minimal scene that fails the same check, and write it
+    /// as a case file (exit 1 when one is found, 0 when none).
+    Fuzz(FuzzArgs),
+    /// Run the cases through several rasterizers and print a conformance
+    /// matrix (rows: rasterizers, columns: case families) with findings.
+    Matrix(MatrixArgs),
+    /// Find a rasterizer's conventions from its rendered frames: fill
+    /// rule, y direction, subpixel precision, sample position,
+    /// interpolation error; write them as a profile for `run --profile`.
+    Probe {
+        /// The rasterizer to probe.
+        #[arg(long = "rasterizer", short = 'r')]
+        rasterizer: String,
+        /// Write the profile (schema rastercheck-profile/1) to this file.
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
+    },
+}
+
+#[derive(Args)]
+struct MatrixArgs {
+    /// Case files or folders (default: cases).
+    paths: Vec<PathBuf>,
+    /// Row; repeat for several (default: production, the foils, tiny-skia,
+    /// euc, the Python example and lavapipe).
+    #[arg(long = "rasterizer", short = 'r')]
+    rasterizers: Vec<String>,
+    /// Replace the text between `<!-- matrix:begin -->` and
+    /// `<!-- matrix:end -->` in this file with the matrix.
+    #[arg(long, value_name = "FILE")]
+    write_readme: Option<PathBuf>,
+    /// Worker threads (default: one per core). Results do not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    #[command(flatten)]
+    limits: LimitArgs,
+}
+
+#[derive(Args)]
+struct FuzzArgs {
+    /// The rasterizer to search for failures of.
+    #[arg(long = "rasterizer", short = 'r')]
+    rasterizer: String,
+    /// Scenes to try.
+    #[arg(long, default_value_t = 1000)]
+    cases: u64,
+    /// Seed of the scenes (default: from the clock; printed either way).
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Folder for the shrunk case files.
+    #[arg(long, value_name = "DIR", default_value = rastercheck::fuzz::default_out().to_str())]
+    out: PathBuf,
+    /// Only this family: triangles, lines or meshes (default: each in turn).
+    #[arg(long)]
+    family: Option<String>,
+    /// Only failures of this check count: coverage, holes, overdraw,
+    /// watertight (holes or overdraw), lines, interpolation or error.
+    #[arg(long)]
+    check: Option<String>,
+    /// Keep searching until this many failures are shrunk and written.
+    #[arg(long, default_value_t = 1)]
+    max_failures: usize,
 }
 
 #[derive(Subcommand)]
@@ -141,6 +204,11 @@ struct RunArgs {
     /// Worker threads (default: one per core). Results do not depend on it.
     #[arg(long)]
     threads: Option<usize>,
+    /// A profile written by `probe`: its rasterizer is judged under the
+    /// fill rule it declares instead of each case's (only the fill rule
+    /// is overridden). Repeat for several rasterizers.
+    #[arg(long, value_name = "FILE")]
+    profile: Vec<PathBuf>,
     #[command(flatten)]
     limits: LimitArgs,
 }
@@ -188,6 +256,9 @@ fn main() -> ExitCode {
             limits,
         } => show(case, out, &rasterizer, scale, limits.limits()),
         Command::Baseline(command) => baseline(command),
+        Command::Fuzz(args) => fuzz(args),
+        Command::Matrix(args) => matrix(args),
+        Command::Probe { rasterizer, out } => probe(&rasterizer, out),
         Command::Rasterizers => {
             for name in suite::rasterizer_names() {
                 println!("{name}");
@@ -224,11 +295,16 @@ fn discover(paths: Vec<PathBuf>) -> (suite::Discovery, bool) {
 
 fn run(args: RunArgs) -> u8 {
     let limits = args.limits.limits();
-    let names = if args.rasterizers.is_empty() {
-        vec!["production".to_owned()]
-    } else {
-        args.rasterizers.clone()
+    let (declared, names) = match rastercheck::probe::for_run(&args.profile, &args.rasterizers) {
+        Ok(found) => found,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return BAD_INPUT;
+        }
     };
+    for d in &declared {
+        println!("{}", d.note());
+    }
     let mut candidates = Vec::new();
     for name in &names {
         match suite::rasterizer(name) {
@@ -299,9 +375,15 @@ fn run(args: RunArgs) -> u8 {
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
-    let mut outcomes = runner::run_all(&files, &limits, &candidates, &root, args.threads, &|_| {
-        progress.tick()
-    });
+    let mut outcomes = rastercheck::probe::run_all_with_profiles(
+        &files,
+        &limits,
+        &mut candidates,
+        &declared,
+        &root,
+        args.threads,
+        &|_| progress.tick(),
+    );
     progress.finish();
     runner::reject_duplicate_names(&mut outcomes);
 
@@ -804,4 +886,152 @@ fn baseline_check(
     } else {
         PASS
     }
+}
+
+fn fuzz(args: FuzzArgs) -> u8 {
+    use rastercheck::fuzz;
+    let Some(candidate) = suite::rasterizer(&args.rasterizer) else {
+        eprintln!("error: {}", unknown_rasterizer(&args.rasterizer));
+        return BAD_INPUT;
+    };
+    let family = match args
+        .family
+        .as_deref()
+        .map(|f| (f, fuzz::Family::from_name(f)))
+    {
+        None => None,
+        Some((_, Some(family))) => Some(family),
+        Some((f, None)) => {
+            eprintln!("error: unknown family {f:?}; known: triangles, lines, meshes");
+            return BAD_INPUT;
+        }
+    };
+    let check = match args.check.as_deref().map(|c| (c, fuzz::kinds_named(c))) {
+        None => Vec::new(),
+        Some((_, Some(kinds))) => kinds,
+        Some((c, None)) => {
+            eprintln!("error: unknown check {c:?}; known: coverage, holes, overdraw, watertight, lines, interpolation, error");
+            return BAD_INPUT;
+        }
+    };
+    if args.cases == 0 || args.max_failures == 0 {
+        eprintln!("error: --cases and --max-failures must be at least 1");
+        return BAD_INPUT;
+    }
+    let seed = args.seed.unwrap_or_else(fuzz::clock_seed);
+    let mut command = format!("rastercheck fuzz -r '{}' --seed {seed}", args.rasterizer);
+    if let Some(f) = &args.family {
+        command += &format!(" --family {f}");
+    }
+    if let Some(c) = &args.check {
+        command += &format!(" --check {c}");
+    }
+    println!(
+        "fuzz: {} on {} cases{}, seed {seed} (--seed {seed} repeats this run)",
+        candidate.name(),
+        args.cases,
+        args.family
+            .as_ref()
+            .map_or(String::new(), |f| format!(" of {f}"))
+    );
+    let options = fuzz::Options {
+        seed,
+        cases: args.cases,
+        family,
+        check,
+        max_failures: args.max_failures,
+        out: args.out,
+        command,
+    };
+    let summary = match fuzz::search(candidate.as_ref(), &options, &mut |line| println!("{line}")) {
+        Ok(summary) => summary,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return BAD_INPUT;
+        }
+    };
+    println!(
+        "fuzz: {} cases, {} passed, {} failed and shrunk, {} unsupported{} (seed {seed})",
+        summary.cases,
+        summary.passed,
+        summary.found.len(),
+        summary.unsupported,
+        if summary.ignored > 0 {
+            format!(", {} failing other checks", summary.ignored)
+        } else {
+            String::new()
+        }
+    );
+    if summary.found.is_empty() {
+        PASS
+    } else {
+        FAIL
+    }
+}
+
+fn matrix(args: MatrixArgs) -> u8 {
+    use rastercheck::matrix;
+    let names = if args.rasterizers.is_empty() {
+        matrix::default_rows()
+    } else {
+        args.rasterizers
+    };
+    if let Some(name) = names.iter().find(|n| matrix::rasterizer(n).is_none()) {
+        eprintln!("error: {}", unknown_rasterizer(name));
+        return BAD_INPUT;
+    }
+    let (found, bad_input) = discover(args.paths);
+    if found.cases.is_empty() {
+        eprintln!("error: no case files found");
+        return BAD_INPUT;
+    }
+    let m = matrix::build(&found.cases, &args.limits.limits(), &names, args.threads);
+    print!("{}", m.to_markdown());
+    if m.unreadable > 0 {
+        eprintln!(
+            "error: {} case files could not be read (run `rastercheck run` to see why)",
+            m.unreadable
+        );
+    }
+    if let Some(file) = &args.write_readme {
+        let written = std::fs::read_to_string(file)
+            .map_err(|e| e.to_string())
+            .and_then(|text| matrix::replace_block(&text, &m.readme_block(&matrix::today())))
+            .and_then(|text| std::fs::write(file, text).map_err(|e| e.to_string()));
+        match written {
+            Ok(()) => println!("\nwrote the matrix into {}", file.display()),
+            Err(e) => {
+                eprintln!("error: {}: {e}", file.display());
+                return BAD_INPUT;
+            }
+        }
+    }
+    if bad_input || m.unreadable > 0 {
+        BAD_INPUT
+    } else {
+        PASS
+    }
+}
+
+fn probe(name: &str, out: Option<PathBuf>) -> u8 {
+    let Some(candidate) = suite::rasterizer(name) else {
+        eprintln!("error: {}", unknown_rasterizer(name));
+        return BAD_INPUT;
+    };
+    let profile = match rastercheck::probe::probe(candidate.as_ref()) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return FAIL;
+        }
+    };
+    print!("{}", profile.describe());
+    if let Some(file) = out {
+        if let Err(e) = std::fs::write(&file, profile.to_json()) {
+            eprintln!("error: {}: {e}", file.display());
+            return BAD_INPUT;
+        }
+        println!("wrote {}", file.display());
+    }
+    PASS
 }

@@ -1,0 +1,2007 @@
+//! Counterexample search and shrinking: `rastercheck fuzz`.
+//!
+//! The fuzzer draws random and adversarial scenes from a seed, runs each
+//! through the reference and a candidate rasterizer, and judges the
+//! candidate with the same metrics and verdicts as `run`
+//! ([`crate::metrics::failures`]). The first failure (or the first K) is shrunk to a
+//! minimal scene that still fails the **same check** and written out as a
+//! case file (SPEC.md §1) that `rastercheck run` reproduces.
+//!
+//! - **Generation** is deterministic from the seed: case `i` of seed `s`
+//!   comes from its own [`Rng`] stream, so a case can be regenerated without
+//!   the ones before it. Three families, taken in turn unless one is named:
+//!   random triangles (tie-forcing half-pixel vertices, subpixel-grid and
+//!   free rationals, vertices anywhere in the coordinate range, pairs sharing
+//!   an edge), lines of every rule (strips, wide lines, both `last_pixel`s),
+//!   and watertight meshes (fans around sample centres, jittered grids with
+//!   shared vertices, convex fans and ear-clipped star polygons) with
+//!   `expect.watertight: true`. No float function whose result may differ
+//!   between machines is used (the sines are a fixed polynomial).
+//! - **Failure kinds** ([`Kind`]): a candidate that breaks (error), holes and
+//!   overdraw in a mesh, crowded midpoint-line steps, coverage, and
+//!   interpolation. A scene failing several checks is shrunk for the first
+//!   in that order (or the one `--check` asks for).
+//! - **Shrinking** is a greedy delta-debugging loop. Each pass proposes
+//!   simpler scenes and keeps the first that still fails the same kind; the
+//!   loop stops when a whole round of passes makes no progress (or after
+//!   [`SHRINK_BUDGET`] evaluations). Passes: remove primitives (halves, then
+//!   quarters, ... then one at a time); crop the canvas to the failing
+//!   samples' neighbourhood and trim its sides, translating everything by
+//!   whole pixels; drop depth, attributes, w, and non-default rules, line
+//!   options and expectations that do not matter; move vertices to simpler
+//!   values (shared vertices together, then each on its own: integers near
+//!   the canvas, coarser dyadic grids, halfway in from far away); simplify
+//!   depth, w and attribute values; lower `subpixel_bits` when the snapping
+//!   still matters. Every accepted step makes a well-founded measure
+//!   smaller, so the loop ends; there is no randomness and no clock in it,
+//!   so the same seed always writes the same file.
+//! - **Mesh validity** is kept while shrinking: a scene that expects
+//!   watertightness must stay a mesh (no zero-area triangle, and no sample
+//!   covered twice under any of the four consistent fill rules), so a
+//!   shrunk mesh case says what every correct rasterizer does.
+
+use std::cmp::Ordering;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use dashu_int::UBig;
+use dashu_ratio::RBig;
+
+use crate::frame::Frame;
+use crate::metrics::{Metrics, SampleDiff};
+use crate::plan::Plan;
+use crate::rasterizer::Rasterizer;
+use crate::reference::{self, exact::snap};
+use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS, W_LIMIT};
+use crate::scene::{
+    Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter,
+    LineRule, Number, Primitive, Rules, Scene, Triangle, Vertex,
+};
+use crate::suite::{self, ReferenceRun, Verdict};
+
+/// Most candidate evaluations one shrink may spend.
+pub const SHRINK_BUDGET: u64 = 20_000;
+
+// --- Random numbers --------------------------------------------------------
+
+/// SplitMix64 (Steele, Lea and Flood, OOPSLA 2014): a small, fast,
+/// well-mixed generator whose stream depends only on its seed.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed)
+    }
+
+    /// The stream of case `index` of a run with `seed`.
+    pub fn for_case(seed: u64, index: u64) -> Rng {
+        let mut mix = Rng(seed ^ index.wrapping_mul(0xD1B5_4A32_D192_ED03));
+        Rng(mix.next_u64())
+    }
+
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, n), n > 0.
+    pub fn below(&mut self, n: u64) -> u64 {
+        ((u128::from(self.next_u64()) * u128::from(n)) >> 64) as u64
+    }
+
+    /// Uniform in [lo, hi), lo < hi.
+    pub fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + self.below((hi - lo) as u64) as i64
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+
+    /// True with probability `num / den`.
+    pub fn chance(&mut self, num: u64, den: u64) -> bool {
+        self.below(den) < num
+    }
+
+    pub fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
+        &items[self.below(items.len() as u64) as usize]
+    }
+}
+
+/// sin and cos by a fixed Taylor polynomial: the same bits on every machine
+/// (only IEEE +, −, ×, ÷ and remainder), unlike the platform's libm.
+fn sin_cos(angle: f64) -> (f64, f64) {
+    let pi = std::f64::consts::PI;
+    let mut x = angle % std::f64::consts::TAU;
+    if x > pi {
+        x -= std::f64::consts::TAU;
+    } else if x < -pi {
+        x += std::f64::consts::TAU;
+    }
+    let (mut s, mut c) = (0.0, 0.0);
+    let (mut ts, mut tc) = (x, 1.0);
+    for k in 0..16 {
+        s += ts;
+        c += tc;
+        let k = f64::from(k);
+        ts *= -x * x / ((2.0 * k + 2.0) * (2.0 * k + 3.0));
+        tc *= -x * x / ((2.0 * k + 1.0) * (2.0 * k + 2.0));
+    }
+    (s, c)
+}
+
+// --- Families and generation -----------------------------------------------
+
+/// What the fuzzer generates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// Random triangles, some sharing edges.
+    Triangles,
+    /// Lines of every rule, some in strips.
+    Lines,
+    /// Watertight meshes, with `expect.watertight: true`.
+    Meshes,
+}
+
+impl Family {
+    pub const ALL: [Family; 3] = [Family::Triangles, Family::Meshes, Family::Lines];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::Triangles => "triangles",
+            Family::Lines => "lines",
+            Family::Meshes => "meshes",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Family> {
+        Family::ALL.into_iter().find(|f| f.name() == name)
+    }
+}
+
+/// Case `index` of a run with `seed`: its family (the one asked for, or the
+/// families in turn) and its scene.
+pub fn generate(seed: u64, index: u64, family: Option<Family>) -> (Family, Scene) {
+    let family = family.unwrap_or(Family::ALL[(index % 3) as usize]);
+    let mut rng = Rng::for_case(seed, index);
+    loop {
+        let scene = match family {
+            Family::Triangles => Some(triangle_scene(&mut rng)),
+            Family::Lines => Some(line_scene(&mut rng)),
+            Family::Meshes => mesh_scene(&mut rng),
+        };
+        if let Some(mut scene) = scene.filter(|s| valid(s).is_ok()) {
+            scene.name = format!("fuzz_{}_{seed}_{index}", family.name());
+            return (family, scene);
+        }
+    }
+}
+
+fn num(r: &RBig) -> Number {
+    Number::from_string(&format!("{}/{}", r.numerator(), r.denominator()))
+        .expect("a ratio of integers is a number")
+}
+
+fn canvas(rng: &mut Rng) -> Canvas {
+    Canvas {
+        width: *rng.pick(&[8, 16, 24, 32]),
+        height: *rng.pick(&[8, 16, 24, 32]),
+    }
+}
+
+fn any_bits(rng: &mut Rng) -> Option<u32> {
+    match rng.below(10) {
+        0 => None,
+        1..=3 => Some(8),
+        _ => Some(rng.below(u64::from(MAX_SUBPIXEL_BITS) + 1) as u32),
+    }
+}
+
+fn any_rules(rng: &mut Rng) -> Rules {
+    Rules {
+        subpixel_bits: any_bits(rng),
+        fill_rule: *rng.pick(&FillRule::ALL),
+        cull: if rng.chance(3, 4) {
+            Cull::None
+        } else {
+            *rng.pick(&[Cull::Clockwise, Cull::CounterClockwise])
+        },
+    }
+}
+
+/// A coordinate over a canvas side of `size`: on the half-pixel grid (ties
+/// at sample centres and pixel edges), on a 1/4096 grid, a free rational,
+/// or an integer anywhere in the coordinate range.
+fn coordinate(rng: &mut Rng, size: u32) -> Number {
+    let span = i64::from(size) + 8;
+    match rng.below(11) {
+        0..=3 => Number::ratio(rng.range(-8, 2 * span), 2),
+        4..=7 => Number::ratio(rng.range(-8 * 4096, span * 4096), 4096),
+        8..=9 => Number::ratio(rng.range(-8 << 20, span << 20), rng.range(1, 1 << 20)),
+        _ => Number::from_int(rng.range(-COORD_LIMIT, COORD_LIMIT + 1)),
+    }
+}
+
+fn value(rng: &mut Rng) -> Number {
+    match rng.below(8) {
+        0 => Number::from_int(rng.range(-1_000_000_000_000, 1_000_000_000_001)),
+        1 => Number::ratio(rng.range(-(1 << 30), 1 << 30), rng.range(1, 1 << 30)),
+        _ => Number::ratio(rng.range(-1000, 1001), 8),
+    }
+}
+
+fn w_value(rng: &mut Rng) -> Number {
+    match rng.below(12) {
+        0 => Number::ratio(1, W_LIMIT),
+        1 => Number::from_int(W_LIMIT),
+        2..=5 => Number::ratio(rng.range(1, 400), 100),
+        _ => Number::ONE,
+    }
+}
+
+/// What the vertices of one scene carry besides their position.
+struct Values {
+    attributes: usize,
+    depth: bool,
+    w: bool,
+}
+
+impl Values {
+    fn any(rng: &mut Rng) -> Values {
+        Values {
+            attributes: *rng.pick(&[0, 0, 1, 2]),
+            depth: rng.chance(1, 3),
+            w: rng.chance(1, 2),
+        }
+    }
+
+    fn vertex(&self, rng: &mut Rng, x: Number, y: Number) -> Vertex {
+        let mut v = Vertex::at(x, y);
+        if self.depth {
+            v.z = value(rng);
+        }
+        if self.w {
+            v.w = w_value(rng);
+        }
+        v.attributes = (0..self.attributes).map(|_| value(rng)).collect();
+        v
+    }
+}
+
+fn any_interpolation(rng: &mut Rng) -> Interpolation {
+    *rng.pick(&[
+        Interpolation::Perspective,
+        Interpolation::Perspective,
+        Interpolation::Linear,
+        Interpolation::Flat,
+    ])
+}
+
+fn scene_of(canvas: Canvas, rules: Rules, primitives: Vec<Primitive>, values: &Values) -> Scene {
+    Scene {
+        name: String::new(),
+        description: String::new(),
+        canvas,
+        rules,
+        primitives,
+        effects: Effects::default(),
+        expect: Expect::default(),
+        attribute_count: values.attributes,
+        has_depth: values.depth,
+    }
+}
+
+fn triangle_scene(rng: &mut Rng) -> Scene {
+    let canvas = canvas(rng);
+    let values = Values::any(rng);
+    let mut primitives: Vec<Primitive> = Vec::new();
+    for _ in 0..rng.range(1, 5) {
+        let point = |rng: &mut Rng| {
+            let (x, y) = (
+                coordinate(rng, canvas.width),
+                coordinate(rng, canvas.height),
+            );
+            values.vertex(rng, x, y)
+        };
+        let vertices = match primitives.last() {
+            // The other side of an edge of the previous triangle: every
+            // sample on it must go to exactly one of the two.
+            Some(Primitive::Triangle(t)) if rng.chance(1, 3) => {
+                let k = rng.below(3) as usize;
+                let (a, b) = (&t.vertices[k], &t.vertices[(k + 1) % 3]);
+                let a = values.vertex(rng, a.x.clone(), a.y.clone());
+                let b = values.vertex(rng, b.x.clone(), b.y.clone());
+                [b, a, point(rng)]
+            }
+            _ => [point(rng), point(rng), point(rng)],
+        };
+        primitives.push(Primitive::Triangle(Triangle {
+            vertices,
+            interpolation: any_interpolation(rng),
+        }));
+    }
+    scene_of(canvas, any_rules(rng), primitives, &values)
+}
+
+fn line_scene(rng: &mut Rng) -> Scene {
+    let canvas = canvas(rng);
+    let values = Values::any(rng);
+    let mut primitives: Vec<Primitive> = Vec::new();
+    for _ in 0..rng.range(1, 4) {
+        let point = |rng: &mut Rng| {
+            let (x, y) = (
+                coordinate(rng, canvas.width),
+                coordinate(rng, canvas.height),
+            );
+            values.vertex(rng, x, y)
+        };
+        let start = match primitives.last() {
+            // A strip: this line starts where the last one ended.
+            Some(Primitive::Line(l)) if rng.chance(1, 2) => {
+                let end = &l.vertices[1];
+                values.vertex(rng, end.x.clone(), end.y.clone())
+            }
+            _ => point(rng),
+        };
+        let rule = *rng.pick(&LineRule::ALL);
+        let width = if rule.is_wide() {
+            match rng.below(12) {
+                0 => Number::ratio(1, 3),
+                1..=3 => Number::from_int(2),
+                4..=5 => Number::ratio(5, 2),
+                6..=7 => Number::ratio(1, 2),
+                8 => Number::from_int(3),
+                _ => Number::ONE,
+            }
+        } else {
+            Number::ONE
+        };
+        let last_pixel = if rule == LineRule::Midpoint && rng.chance(1, 2) {
+            LastPixel::Exclude
+        } else {
+            LastPixel::Include
+        };
+        primitives.push(Primitive::Line(Line {
+            vertices: [start, point(rng)],
+            rule,
+            width,
+            last_pixel,
+            parameter: *rng.pick(&[LineParameter::Major, LineParameter::Projected]),
+            interpolation: any_interpolation(rng),
+        }));
+    }
+    scene_of(canvas, any_rules(rng), primitives, &values)
+}
+
+// Meshes, after the strategies of tests/properties.rs.
+
+type Exact2 = [RBig; 2];
+
+fn placed(n: &Number, bits: Option<u32>) -> RBig {
+    match bits {
+        Some(b) => snap(n, b),
+        None => n.as_rbig().clone(),
+    }
+}
+
+fn orient(a: &Exact2, b: &Exact2, c: &Exact2) -> Ordering {
+    let v = (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0]);
+    v.cmp(&RBig::ZERO)
+}
+
+/// A planar shape to triangulate into a mesh.
+enum Shape {
+    /// Points and triangles whose interiors do not overlap.
+    Triangles(Vec<[Number; 2]>, Vec<[usize; 3]>),
+    /// A polygon, star-shaped around `centre`, to ear-clip after snapping.
+    Star {
+        centre: [f64; 2],
+        points: Vec<[Number; 2]>,
+    },
+}
+
+/// A dyadic denominator (grid-aligned vertices force ties), or a free odd
+/// one up to 2^40.
+fn denominator(rng: &mut Rng) -> i64 {
+    if rng.chance(3, 4) {
+        1 << rng.below(17)
+    } else {
+        rng.range(1, 1 << 40) | 1
+    }
+}
+
+fn to_number(v: f64, den: i64) -> Number {
+    Number::ratio((v * den as f64).round() as i64, den)
+}
+
+/// A sample centre, or a dyadic or free point on the canvas.
+fn mesh_centre(rng: &mut Rng, canvas: Canvas) -> [f64; 2] {
+    let (w, h) = (i64::from(canvas.width), i64::from(canvas.height));
+    if rng.chance(1, 2) {
+        [rng.range(0, w) as f64 + 0.5, rng.range(0, h) as f64 + 0.5]
+    } else {
+        [rng.uniform(0.0, w as f64), rng.uniform(0.0, h as f64)]
+    }
+}
+
+fn radius_scale(rng: &mut Rng) -> f64 {
+    *rng.pick(&[1.5, 4.0, 12.0, 40.0, 20000.0])
+}
+
+/// `n` increasing angles around a circle, each gap below π.
+fn angles(rng: &mut Rng, n: usize) -> Vec<f64> {
+    let gaps: Vec<f64> = (0..n).map(|_| rng.uniform(1.0, 1.9)).collect();
+    let total: f64 = gaps.iter().sum();
+    let mut a = rng.uniform(0.0, std::f64::consts::TAU);
+    gaps.iter()
+        .map(|g| {
+            a += std::f64::consts::TAU * g / total;
+            a
+        })
+        .collect()
+}
+
+fn exact_centre(c: [f64; 2], den: i64) -> [Number; 2] {
+    // A sample centre stays exact whatever the denominator.
+    c.map(|v| {
+        if (v * 2.0).fract() == 0.0 {
+            Number::ratio((v * 2.0) as i64, 2)
+        } else {
+            to_number(v, den)
+        }
+    })
+}
+
+fn fan(rng: &mut Rng, canvas: Canvas) -> Shape {
+    let n = rng.range(3, 16) as usize;
+    let c = mesh_centre(rng, canvas);
+    let angles = angles(rng, n);
+    let scale = radius_scale(rng);
+    let den = denominator(rng);
+    let mut points = vec![exact_centre(c, den)];
+    for a in angles {
+        let r = rng.uniform(0.5, 1.5) * scale;
+        let (s, co) = sin_cos(a);
+        points.push([to_number(c[0] + r * co, den), to_number(c[1] + r * s, den)]);
+    }
+    let triangles = (1..=n).map(|k| [0, k, k % n + 1]).collect();
+    Shape::Triangles(points, triangles)
+}
+
+fn convex_polygon(rng: &mut Rng, canvas: Canvas) -> Shape {
+    let n = rng.range(3, 14) as usize;
+    let c = mesh_centre(rng, canvas);
+    let angles = angles(rng, n);
+    let scale = radius_scale(rng);
+    let den = denominator(rng);
+    let points = angles
+        .iter()
+        .map(|&a| {
+            let (s, co) = sin_cos(a);
+            [
+                to_number(c[0] + scale * co, den),
+                to_number(c[1] + scale * s, den),
+            ]
+        })
+        .collect();
+    let triangles = (1..n - 1).map(|k| [0, k, k + 1]).collect();
+    Shape::Triangles(points, triangles)
+}
+
+fn star_polygon(rng: &mut Rng, canvas: Canvas) -> Shape {
+    let n = rng.range(4, 14) as usize;
+    let centre = mesh_centre(rng, canvas);
+    let angles = angles(rng, n);
+    let scale = radius_scale(rng);
+    let den = denominator(rng);
+    let points = angles
+        .iter()
+        .map(|&a| {
+            let r = rng.uniform(0.3, 1.5) * scale;
+            let (s, co) = sin_cos(a);
+            [
+                to_number(centre[0] + r * co, den),
+                to_number(centre[1] + r * s, den),
+            ]
+        })
+        .collect();
+    Shape::Star { centre, points }
+}
+
+/// A jittered lattice (jitter below a quarter of the spacing keeps every
+/// triangle's orientation), each quad split along a random diagonal.
+fn jittered_grid(rng: &mut Rng) -> Shape {
+    let (n, m) = (rng.range(1, 9) as usize, rng.range(1, 9) as usize);
+    let (ox, oy) = (
+        rng.range(-16, 2) as f64 / 2.0,
+        rng.range(-16, 2) as f64 / 2.0,
+    );
+    let s = *rng.pick(&[0.5, 1.0, 1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 4000.0]);
+    let jitter = *rng.pick(&[0.0, 0.0, 0.24]);
+    let den = denominator(rng);
+    let at = |i: usize, j: usize| j * (n + 1) + i;
+    let mut points = Vec::new();
+    for j in 0..=m {
+        for i in 0..=n {
+            let (jx, jy) = (
+                rng.uniform(-jitter, jitter + f64::MIN_POSITIVE),
+                rng.uniform(-jitter, jitter + f64::MIN_POSITIVE),
+            );
+            let (x, y) = (ox + s * (i as f64 + jx), oy + s * (j as f64 + jy));
+            points.push([to_number(x, den), to_number(y, den)]);
+        }
+    }
+    let mut triangles = Vec::new();
+    for j in 0..m {
+        for i in 0..n {
+            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+            if rng.chance(1, 2) {
+                triangles.extend([[a, b, c], [a, c, d]]);
+            } else {
+                triangles.extend([[a, b, d], [b, c, d]]);
+            }
+        }
+    }
+    Shape::Triangles(points, triangles)
+}
+
+/// Ear clipping of a simple polygon given in `sign` winding. Vertices where
+/// the boundary runs straight on are dropped (they become T-junctions on a
+/// later triangle's edge, which keeps the tiling exact).
+fn ear_clip(points: &[Exact2], sign: Ordering) -> Option<Vec<[usize; 3]>> {
+    let mut left: Vec<usize> = (0..points.len()).collect();
+    let mut triangles = Vec::new();
+    let corner = |left: &[usize], k: usize| {
+        let m = left.len();
+        (left[(k + m - 1) % m], left[k], left[(k + 1) % m])
+    };
+    while left.len() > 3 {
+        let m = left.len();
+        if let Some(k) = (0..m).find(|&k| {
+            let (a, b, c) = corner(&left, k);
+            orient(&points[a], &points[b], &points[c]) == Ordering::Equal
+        }) {
+            left.remove(k);
+            continue;
+        }
+        let ear = (0..m).find(|&k| {
+            let (a, b, c) = corner(&left, k);
+            let (pa, pb, pc) = (&points[a], &points[b], &points[c]);
+            orient(pa, pb, pc) == sign
+                && left.iter().all(|&q| {
+                    q == a
+                        || q == b
+                        || q == c
+                        || [
+                            orient(pa, pb, &points[q]),
+                            orient(pb, pc, &points[q]),
+                            orient(pc, pa, &points[q]),
+                        ]
+                        .contains(&sign.reverse())
+                })
+        })?;
+        let (a, b, c) = corner(&left, ear);
+        triangles.push([a, b, c]);
+        left.remove(ear);
+    }
+    if orient(&points[left[0]], &points[left[1]], &points[left[2]]) == sign {
+        triangles.push([left[0], left[1], left[2]]);
+    }
+    Some(triangles)
+}
+
+/// A mesh scene, or `None` when snapping folded a triangle over (the shape
+/// is then no longer a mesh).
+fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
+    let canvas = canvas(rng);
+    let shape = match rng.below(4) {
+        0 => fan(rng, canvas),
+        1 => jittered_grid(rng),
+        2 => convex_polygon(rng, canvas),
+        _ => star_polygon(rng, canvas),
+    };
+    let bits = any_bits(rng);
+    let at = |p: &[Number; 2]| p.each_ref().map(|c| placed(c, bits));
+    let (points, triangles) = match shape {
+        Shape::Triangles(points, triangles) => (points, triangles),
+        Shape::Star { centre, points } => {
+            let placed_points: Vec<Exact2> = points.iter().map(at).collect();
+            let c = centre.map(|v| {
+                Number::ratio((v * 65536.0).round() as i64, 65536)
+                    .as_rbig()
+                    .clone()
+            });
+            let n = placed_points.len();
+            let signs: Vec<_> = (0..n)
+                .map(|k| orient(&c, &placed_points[k], &placed_points[(k + 1) % n]))
+                .collect();
+            if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+                return None;
+            }
+            let triangles = ear_clip(&placed_points, signs[0])?;
+            (points, triangles)
+        }
+    };
+    let placed_points: Vec<Exact2> = points.iter().map(at).collect();
+    let signs: Vec<_> = triangles
+        .iter()
+        .map(|t| {
+            orient(
+                &placed_points[t[0]],
+                &placed_points[t[1]],
+                &placed_points[t[2]],
+            )
+        })
+        .collect();
+    if signs.is_empty() || signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+        return None;
+    }
+    // Values belong to points, so that shared vertices agree.
+    let values = Values {
+        attributes: usize::from(rng.chance(1, 4)),
+        depth: rng.chance(1, 6),
+        w: false,
+    };
+    let vertices: Vec<Vertex> = points
+        .iter()
+        .map(|p| values.vertex(rng, p[0].clone(), p[1].clone()))
+        .collect();
+    let primitives = triangles
+        .iter()
+        .map(|t| {
+            let mut vertices = t.map(|i| vertices[i].clone());
+            if rng.chance(1, 2) {
+                vertices.swap(1, 2);
+            }
+            vertices.rotate_left(rng.below(3) as usize);
+            Primitive::Triangle(Triangle {
+                vertices,
+                interpolation: Interpolation::Perspective,
+            })
+        })
+        .collect();
+    let rules = Rules {
+        subpixel_bits: bits,
+        fill_rule: *rng.pick(&FillRule::CONSISTENT),
+        cull: Cull::None,
+    };
+    let mut scene = scene_of(canvas, rules, primitives, &values);
+    scene.expect.watertight = true;
+    Some(scene)
+}
+
+/// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
+fn valid(scene: &Scene) -> Result<(), String> {
+    let side = 1..=crate::scene::rules::limits::MAX_CANVAS_SIDE;
+    if !side.contains(&scene.canvas.width) || !side.contains(&scene.canvas.height) {
+        return Err("canvas side out of range".to_owned());
+    }
+    if scene.primitives.is_empty() {
+        return Err("no primitives".to_owned());
+    }
+    let limit = Number::from_int(COORD_LIMIT);
+    let (w_lo, w_hi) = (Number::ratio(1, W_LIMIT), Number::from_int(W_LIMIT));
+    for v in scene.vertices() {
+        if v.x.abs() > limit || v.y.abs() > limit {
+            return Err("coordinate out of range".to_owned());
+        }
+        if v.w < w_lo || v.w > w_hi {
+            return Err("w out of range".to_owned());
+        }
+        if v.attributes.len() != scene.attribute_count {
+            return Err("attribute count".to_owned());
+        }
+    }
+    Ok(())
+}
+
+// --- Judging ---------------------------------------------------------------
+
+/// Which check a candidate fails, in the order a scene failing several is
+/// shrunk for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Kind {
+    /// The rasterizer broke: an error or a panic.
+    Error,
+    /// Interior samples of a mesh left uncovered (SPEC.md §6.2).
+    Holes,
+    /// Samples of a mesh covered twice (SPEC.md §6.2).
+    Overdraw,
+    /// A midpoint line with two pixels in one major-axis step (§6.4).
+    Lines,
+    /// Coverage differs from the reference's (§6.1).
+    Coverage,
+    /// Depth or an attribute beyond its bound (§6.3).
+    Interpolation,
+}
+
+impl Kind {
+    pub const ALL: [Kind; 6] = [
+        Kind::Error,
+        Kind::Holes,
+        Kind::Overdraw,
+        Kind::Lines,
+        Kind::Coverage,
+        Kind::Interpolation,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Error => "error",
+            Kind::Holes => "holes",
+            Kind::Overdraw => "overdraw",
+            Kind::Lines => "lines",
+            Kind::Coverage => "coverage",
+            Kind::Interpolation => "interpolation",
+        }
+    }
+
+    /// What every correct rasterizer does on a case that fails this way.
+    fn promise(self) -> &'static str {
+        match self {
+            Kind::Error => "draws the scene without breaking",
+            Kind::Holes | Kind::Overdraw => {
+                "covers every interior sample of the mesh exactly once and no sample twice"
+            }
+            Kind::Lines => "lights one pixel of a midpoint line per major-axis step",
+            Kind::Coverage => "covers exactly the reference's samples, with the same owners",
+            Kind::Interpolation => "interpolates depth and attributes within the bound",
+        }
+    }
+}
+
+/// The kinds a `--check` names: a kind, or `watertight` (holes or overdraw).
+pub fn kinds_named(name: &str) -> Option<Vec<Kind>> {
+    if name == "watertight" {
+        return Some(vec![Kind::Holes, Kind::Overdraw]);
+    }
+    Kind::ALL
+        .into_iter()
+        .find(|k| k.name() == name)
+        .map(|k| vec![k])
+}
+
+/// How a candidate fails a scene.
+#[derive(Clone, Debug)]
+pub struct Failure {
+    /// Every check it fails, in [`Kind`] order.
+    pub kinds: Vec<Kind>,
+    /// The reasons `run` prints ([`crate::metrics::failures`]), or the error.
+    pub reasons: Vec<String>,
+    /// Per kind, the samples (row-major indices) that show it.
+    focus: Vec<(Kind, Vec<usize>)>,
+}
+
+impl Failure {
+    /// The reasons that belong to `kind`.
+    pub fn reasons_for(&self, kind: Kind) -> Vec<String> {
+        let prefix: &[&str] = match kind {
+            Kind::Error => &[],
+            Kind::Holes | Kind::Overdraw => &["watertight:"],
+            Kind::Lines => &["lines:"],
+            Kind::Coverage => &["coverage:"],
+            Kind::Interpolation => &["depth:", "attribute "],
+        };
+        let found: Vec<String> = self
+            .reasons
+            .iter()
+            .filter(|r| prefix.is_empty() || prefix.iter().any(|p| r.starts_with(p)))
+            .cloned()
+            .collect();
+        if found.is_empty() {
+            self.reasons.clone()
+        } else {
+            found
+        }
+    }
+
+    fn focus(&self, kind: Kind) -> &[usize] {
+        self.focus
+            .iter()
+            .find(|(k, _)| *k == kind)
+            .map_or(&[], |(_, f)| f.as_slice())
+    }
+}
+
+/// A candidate's result on one scene.
+#[derive(Clone, Debug)]
+pub enum Outcome {
+    Pass,
+    Unsupported(String),
+    /// The scene is not a case worth keeping: outside the limits, or a
+    /// "mesh" whose triangles overlap or have no area.
+    Invalid(String),
+    Fail(Failure),
+}
+
+/// Runs the reference and `candidate` on `scene` and judges the candidate
+/// as `run` does.
+pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
+    if let Err(why) = valid(scene) {
+        return Outcome::Invalid(why);
+    }
+    let reference = std::panic::catch_unwind(|| reference_run(scene));
+    let reference = match reference {
+        Ok(Ok(r)) => r,
+        Ok(Err(why)) => return Outcome::Invalid(why),
+        Err(panic) => {
+            return Outcome::Invalid(format!(
+                "the reference panicked: {}",
+                suite::panic_message(&*panic)
+            ))
+        }
+    };
+    let run = suite::run_candidate(scene, &reference, candidate);
+    match (run.verdict, run.metrics, run.frame) {
+        (Verdict::Pass, ..) => Outcome::Pass,
+        (Verdict::Unsupported(why), ..) => Outcome::Unsupported(why),
+        (Verdict::Error(why), ..) => Outcome::Fail(Failure {
+            kinds: vec![Kind::Error],
+            reasons: vec![why],
+            focus: Vec::new(),
+        }),
+        (Verdict::Fail(reasons), Some(m), Some(frame)) => {
+            Outcome::Fail(classify(scene, &reference, &frame, &m, reasons))
+        }
+        (Verdict::Fail(reasons), ..) => Outcome::Fail(Failure {
+            kinds: vec![Kind::Error],
+            reasons,
+            focus: Vec::new(),
+        }),
+    }
+}
+
+/// The reference's frame, and the mesh interior for a mesh case (refused
+/// when the scene is no longer a mesh).
+fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
+    let started = Instant::now();
+    let plan = Plan::for_scene(scene);
+    let frame = reference::render(scene, &plan);
+    let interior = if scene.expect.watertight {
+        mesh_geometry(scene)?;
+        let mut interior = vec![true; scene.canvas.pixel_count()];
+        for rule in FillRule::CONSISTENT {
+            let counts = reference::coverage_under(scene, rule);
+            if counts.iter().any(|&c| c > 1) {
+                return Err(format!("mesh triangles overlap under {rule}"));
+            }
+            for (inside, count) in interior.iter_mut().zip(counts) {
+                *inside &= count > 0;
+            }
+        }
+        Some(interior)
+    } else {
+        None
+    };
+    Ok(ReferenceRun {
+        plan,
+        frame,
+        interior,
+        elapsed: started.elapsed(),
+    })
+}
+
+/// Refuses a "mesh" with a zero-area triangle or two triangles whose
+/// interiors overlap (after snapping, exactly): such a scene no longer says
+/// what a watertight rasterizer must do.
+fn mesh_geometry(scene: &Scene) -> Result<(), String> {
+    let bits = scene.rules.subpixel_bits;
+    let triangles: Vec<[Exact2; 3]> = scene
+        .triangles()
+        .map(|(_, t)| {
+            t.vertices
+                .each_ref()
+                .map(|v| [placed(&v.x, bits), placed(&v.y, bits)])
+        })
+        .collect();
+    if triangles
+        .iter()
+        .any(|p| orient(&p[0], &p[1], &p[2]).is_eq())
+    {
+        return Err("a mesh triangle has no area".to_owned());
+    }
+    // Bounding boxes in f64, widened so that rounding can only make two
+    // boxes meet that do not: a sweep over x finds the pairs to test.
+    let boxes: Vec<[f64; 4]> = triangles
+        .iter()
+        .map(|t| {
+            let xs = t.each_ref().map(|p| p[0].to_f64().value());
+            let ys = t.each_ref().map(|p| p[1].to_f64().value());
+            let lo = |v: [f64; 3]| v.into_iter().fold(f64::INFINITY, f64::min);
+            let hi = |v: [f64; 3]| v.into_iter().fold(f64::NEG_INFINITY, f64::max);
+            let pad = |v: f64| v.abs() * 1e-12 + 1e-12;
+            let (x0, x1, y0, y1) = (lo(xs), hi(xs), lo(ys), hi(ys));
+            [x0 - pad(x0), x1 + pad(x1), y0 - pad(y0), y1 + pad(y1)]
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..triangles.len()).collect();
+    order.sort_by(|&a, &b| boxes[a][0].total_cmp(&boxes[b][0]));
+    for (k, &a) in order.iter().enumerate() {
+        for &b in &order[k + 1..] {
+            if boxes[b][0] >= boxes[a][1] {
+                break;
+            }
+            if boxes[b][2] >= boxes[a][3] || boxes[a][2] >= boxes[b][3] {
+                continue;
+            }
+            if !separated(&triangles[a], &triangles[b]) {
+                return Err("mesh triangles overlap".to_owned());
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether two triangles' interiors are disjoint: some edge line of one
+/// has the other on its far side, touching allowed (the separating axis
+/// theorem; for convex polygons an edge normal always serves).
+fn separated(t: &[Exact2; 3], u: &[Exact2; 3]) -> bool {
+    let axes = (0..3)
+        .map(|k| (&t[k], &t[(k + 1) % 3]))
+        .chain((0..3).map(|k| (&u[k], &u[(k + 1) % 3])));
+    for (a, b) in axes {
+        let n = [&a[1] - &b[1], &b[0] - &a[0]];
+        let project = |p: &Exact2| &n[0] * &p[0] + &n[1] * &p[1];
+        let pt = t.each_ref().map(project);
+        let pu = u.each_ref().map(project);
+        let (t_lo, t_hi) = (pt.iter().min().unwrap(), pt.iter().max().unwrap());
+        let (u_lo, u_hi) = (pu.iter().min().unwrap(), pu.iter().max().unwrap());
+        if t_hi <= u_lo || u_hi <= t_lo {
+            return true;
+        }
+    }
+    false
+}
+
+fn classify(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    candidate: &Frame,
+    m: &Metrics,
+    reasons: Vec<String>,
+) -> Failure {
+    let r = &reference.frame;
+    let n = r.sample_count();
+    let mut focus: Vec<(Kind, Vec<usize>)> = Vec::new();
+    if let (Some(w), Some(interior)) = (&m.watertight, &reference.interior) {
+        if w.holes > 0 {
+            let holes = (0..n)
+                .filter(|&i| interior[i] && candidate.coverage[i] == 0)
+                .collect();
+            focus.push((Kind::Holes, holes));
+        }
+        if w.overdraw > 0 {
+            let over = (0..n)
+                .filter(|&i| candidate.coverage[i] > 1 && r.coverage[i] <= 1)
+                .collect();
+            focus.push((Kind::Overdraw, over));
+        }
+    }
+    if m.lines.as_ref().is_some_and(|l| l.crowded_steps > 0) {
+        focus.push((Kind::Lines, crowded_pixels(scene, candidate)));
+    }
+    let c = &m.coverage;
+    if c.mismatched() > scene.expect.max_mismatched_samples
+        || (c.reference_covered > 0 && c.candidate_covered == 0)
+    {
+        let differ = (0..n).filter(|&i| c.mask[i] != SampleDiff::Same).collect();
+        focus.push((Kind::Coverage, differ));
+    }
+    if m.channels.iter().any(|ch| !ch.within_bounds()) {
+        let mut pixels = Vec::new();
+        let exact = r.depth.iter().chain(&r.attributes);
+        let values = candidate.depth.iter().chain(&candidate.attributes);
+        for ((exact, values), ch) in exact.zip(values).zip(&m.channels) {
+            if ch.within_bounds() {
+                continue;
+            }
+            for i in 0..n {
+                let compared = r.last[i] != 0 && r.last[i] == candidate.last[i];
+                let error = (values[i] - exact[i]).abs();
+                if compared && (error.is_nan() || error > ch.allowed_abs) {
+                    pixels.push(i);
+                }
+            }
+        }
+        pixels.sort_unstable();
+        pixels.dedup();
+        focus.push((Kind::Interpolation, pixels));
+    }
+    focus.sort_by_key(|(k, _)| *k);
+    Failure {
+        kinds: focus.iter().map(|(k, _)| *k).collect(),
+        reasons,
+        focus,
+    }
+}
+
+/// Pixels of midpoint lines in steps where the line has more than one.
+fn crowded_pixels(scene: &Scene, candidate: &Frame) -> Vec<usize> {
+    let (w, h) = (candidate.width as usize, candidate.height as usize);
+    let mut out = Vec::new();
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        let Primitive::Line(line) = primitive else {
+            continue;
+        };
+        if line.rule != LineRule::Midpoint {
+            continue;
+        }
+        let bits = scene.rules.subpixel_bits;
+        let [a, b] = &line.vertices;
+        let dx = placed(&b.x, bits) - placed(&a.x, bits);
+        let dy = placed(&b.y, bits) - placed(&a.y, bits);
+        let abs = |r: RBig| if r < RBig::ZERO { -r } else { r };
+        let x_major = abs(dx) >= abs(dy);
+        let id = index as u32 + 1;
+        let (steps, across) = if x_major { (w, h) } else { (h, w) };
+        for step in 0..steps {
+            let drawn: Vec<usize> = (0..across)
+                .map(|k| if x_major { k * w + step } else { step * w + k })
+                .filter(|&i| candidate.last[i] == id)
+                .collect();
+            if drawn.len() > 1 {
+                out.extend(drawn);
+            }
+        }
+    }
+    out.sort_unstable();
+    out
+}
+
+// --- Shrinking -------------------------------------------------------------
+
+/// A shrunk counterexample.
+#[derive(Clone, Debug)]
+pub struct Shrunk {
+    pub scene: Scene,
+    pub failure: Failure,
+    /// Candidate evaluations spent.
+    pub evaluations: u64,
+    /// Rounds of passes, the last of which made no progress.
+    pub rounds: u32,
+    pub elapsed: Duration,
+}
+
+/// One proposed change to a scene; `false` when it would change nothing.
+type Edit = Box<dyn Fn(&mut Scene) -> bool>;
+
+struct Shrinker<'a> {
+    candidate: &'a dyn Rasterizer,
+    kind: Kind,
+    best: Scene,
+    failure: Failure,
+    evaluations: u64,
+}
+
+/// Shrinks `scene`, on which `candidate` fails with `failure`, to a small
+/// scene that still fails the check `kind`.
+pub fn shrink(scene: &Scene, failure: Failure, kind: Kind, candidate: &dyn Rasterizer) -> Shrunk {
+    let started = Instant::now();
+    let mut s = Shrinker {
+        candidate,
+        kind,
+        best: scene.clone(),
+        failure,
+        evaluations: 0,
+    };
+    let mut rounds = 0;
+    loop {
+        rounds += 1;
+        let mut progress = false;
+        progress |= s.remove_primitives();
+        progress |= s.crop();
+        progress |= s.trim();
+        progress |= s.simplify_state();
+        progress |= s.move_shared_vertices();
+        progress |= s.move_vertices();
+        progress |= s.simplify_values();
+        // Coarser snapping is tried once nothing else helps: by then the
+        // vertices are as simple as they get, and often on the grid already.
+        if !progress {
+            progress = s.reduce_bits();
+        }
+        if !progress || s.exhausted() {
+            break;
+        }
+    }
+    s.restore_default_bits();
+    Shrunk {
+        scene: s.best,
+        failure: s.failure,
+        evaluations: s.evaluations,
+        rounds,
+        elapsed: started.elapsed(),
+    }
+}
+
+/// A simplicity key for a number: smaller denominator first, then closer to
+/// `[lo, hi]`, then closer to `centre`. Every accepted move makes some key
+/// smaller, and keys of bounded denominator are well-ordered, so shrinking
+/// ends.
+fn key(v: &Number, lo: &Number, hi: &Number, centre: &Number) -> (UBig, Number, Number) {
+    let outside = if v < lo {
+        lo - v
+    } else if v > hi {
+        v - hi
+    } else {
+        Number::ZERO
+    };
+    (v.denominator().clone(), outside, (v - centre).abs())
+}
+
+/// Simpler values to try for `v`, in order: integers in `[lo, hi]` nearest
+/// `v` first, coarser dyadic roundings of `v`, and `v` pulled halfway in
+/// from far outside `[lo, hi]`.
+fn simpler(v: &Number, lo: i64, hi: i64, finest: u32) -> Vec<Number> {
+    let mut out: Vec<Number> = Vec::new();
+    let f = v.to_f64_lossy();
+    let mut ints: Vec<i64> = (lo..=hi).collect();
+    ints.sort_by(|a, b| {
+        ((*a as f64) - f)
+            .abs()
+            .total_cmp(&((*b as f64) - f).abs())
+            .then(a.cmp(b))
+    });
+    out.extend(ints.into_iter().take(12).map(Number::from_int));
+    for k in 0..=finest.min(MAX_SUBPIXEL_BITS) {
+        out.push(num(&snap(v, k)));
+    }
+    let (lo_n, hi_n) = (Number::from_int(lo), Number::from_int(hi));
+    let edge = if *v < lo_n {
+        Some(lo_n)
+    } else if *v > hi_n {
+        Some(hi_n)
+    } else {
+        None
+    };
+    if let Some(edge) = edge {
+        let half = num(&((v.as_rbig() + edge.as_rbig()) / RBig::from(2u8)));
+        out.push(num(&snap(&half, 0)));
+    }
+    let mut seen: Vec<Number> = Vec::new();
+    out.retain(|c| {
+        let fresh = c != v && !seen.contains(c);
+        seen.push(c.clone());
+        fresh
+    });
+    out
+}
+
+impl Shrinker<'_> {
+    fn exhausted(&self) -> bool {
+        self.evaluations >= SHRINK_BUDGET
+    }
+
+    /// Keeps `scene` when it still fails the same check.
+    fn try_scene(&mut self, scene: Scene) -> bool {
+        if self.exhausted() {
+            return false;
+        }
+        self.evaluations += 1;
+        match evaluate(&scene, self.candidate) {
+            Outcome::Fail(f) if f.kinds.contains(&self.kind) => {
+                self.best = scene;
+                self.failure = f;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Tries each of `edits` on the current best scene in turn, keeping
+    /// each that still fails.
+    fn try_each(&mut self, edits: Vec<Edit>) -> bool {
+        let mut progress = false;
+        for edit in edits {
+            let mut scene = self.best.clone();
+            if edit(&mut scene) {
+                progress |= self.try_scene(scene);
+            }
+        }
+        progress
+    }
+
+    /// Removes chunks of primitives, halves first, then one at a time.
+    fn remove_primitives(&mut self) -> bool {
+        let mut progress = false;
+        let mut chunk = self.best.primitives.len() / 2;
+        while chunk >= 1 {
+            let mut start = 0;
+            while start < self.best.primitives.len() && self.best.primitives.len() > 1 {
+                let end = (start + chunk).min(self.best.primitives.len());
+                if end - start == self.best.primitives.len() {
+                    break;
+                }
+                let mut scene = self.best.clone();
+                scene.primitives.drain(start..end);
+                if self.try_scene(scene) {
+                    progress = true;
+                } else {
+                    start += chunk;
+                }
+            }
+            chunk /= 2;
+        }
+        progress
+    }
+
+    /// The canvas `[x0, x0 + w) × [y0, y0 + h)` of the current scene, with
+    /// everything translated by (−x0, −y0).
+    fn cropped(&self, x0: u32, y0: u32, w: u32, h: u32) -> Scene {
+        let mut scene = self.best.clone();
+        let (dx, dy) = (Number::from_int(x0.into()), Number::from_int(y0.into()));
+        for p in &mut scene.primitives {
+            for v in p.vertices_mut() {
+                v.x = &v.x - &dx;
+                v.y = &v.y - &dy;
+            }
+        }
+        scene.canvas = Canvas {
+            width: w,
+            height: h,
+        };
+        scene
+    }
+
+    /// Crops to the failing samples and a margin around them.
+    fn crop(&mut self) -> bool {
+        let focus = self.failure.focus(self.kind);
+        if focus.is_empty() {
+            return false;
+        }
+        let Canvas { width, height } = self.best.canvas;
+        let w = width as usize;
+        let xs = focus.iter().map(|i| (i % w) as u32);
+        let ys = focus.iter().map(|i| (i / w) as u32);
+        let (x0, x1) = (xs.clone().min().unwrap(), xs.max().unwrap());
+        let (y0, y1) = (ys.clone().min().unwrap(), ys.max().unwrap());
+        for margin in [0, 1, 2, 4] {
+            let (ax, ay) = (x0.saturating_sub(margin), y0.saturating_sub(margin));
+            let (bx, by) = ((x1 + margin).min(width - 1), (y1 + margin).min(height - 1));
+            let (cw, ch) = (bx - ax + 1, by - ay + 1);
+            if (cw, ch) == (width, height) {
+                break;
+            }
+            let scene = self.cropped(ax, ay, cw, ch);
+            if self.try_scene(scene) {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Trims each side of the canvas: half of it, then a quarter, ... then
+    /// one row or column at a time.
+    fn trim(&mut self) -> bool {
+        let mut progress = false;
+        for side in 0..4 {
+            let extent = |c: Canvas| if side % 2 == 0 { c.width } else { c.height };
+            let mut cut = extent(self.best.canvas) / 2;
+            while cut >= 1 {
+                let Canvas { width, height } = self.best.canvas;
+                if extent(self.best.canvas) <= cut {
+                    cut /= 2;
+                    continue;
+                }
+                let scene = match side {
+                    0 => self.cropped(cut, 0, width - cut, height),
+                    1 => self.cropped(0, cut, width, height - cut),
+                    2 => self.cropped(0, 0, width - cut, height),
+                    _ => self.cropped(0, 0, width, height - cut),
+                };
+                if self.try_scene(scene) {
+                    progress = true;
+                } else {
+                    cut /= 2;
+                }
+            }
+        }
+        progress
+    }
+
+    /// Drops depth, attributes, w, and every rule, line option and
+    /// expectation that is not needed for the failure.
+    fn simplify_state(&mut self) -> bool {
+        let mut edits: Vec<Edit> = Vec::new();
+        edits.push(Box::new(|s| {
+            let changed = s.has_depth;
+            s.has_depth = false;
+            for p in &mut s.primitives {
+                for v in p.vertices_mut() {
+                    v.z = Number::ZERO;
+                }
+            }
+            changed
+        }));
+        for k in (0..self.best.attribute_count).rev() {
+            edits.push(Box::new(move |s| {
+                s.attribute_count -= 1;
+                for p in &mut s.primitives {
+                    for v in p.vertices_mut() {
+                        v.attributes.remove(k);
+                    }
+                }
+                true
+            }));
+        }
+        edits.push(Box::new(|s| {
+            let mut changed = false;
+            for p in &mut s.primitives {
+                for v in p.vertices_mut() {
+                    changed |= v.w != Number::ONE;
+                    v.w = Number::ONE;
+                }
+            }
+            changed
+        }));
+        for i in 0..self.best.primitives.len() {
+            edits.push(Box::new(move |s| {
+                let p = &mut s.primitives[i];
+                let changed = p.interpolation() != Interpolation::Perspective;
+                match p {
+                    Primitive::Triangle(t) => t.interpolation = Interpolation::Perspective,
+                    Primitive::Line(l) => l.interpolation = Interpolation::Perspective,
+                }
+                changed
+            }));
+            edits.push(Box::new(move |s| match &mut s.primitives[i] {
+                Primitive::Line(l) => {
+                    let before = (l.width.clone(), l.last_pixel, l.parameter);
+                    l.width = Number::ONE;
+                    l.last_pixel = LastPixel::Include;
+                    l.parameter = LineParameter::Major;
+                    before != (l.width.clone(), l.last_pixel, l.parameter)
+                }
+                Primitive::Triangle(_) => false,
+            }));
+            for option in 0..3 {
+                edits.push(Box::new(move |s| match &mut s.primitives[i] {
+                    Primitive::Line(l) => match option {
+                        0 => std::mem::replace(&mut l.width, Number::ONE) != Number::ONE,
+                        1 => {
+                            std::mem::replace(&mut l.last_pixel, LastPixel::Include)
+                                != LastPixel::Include
+                        }
+                        _ => {
+                            std::mem::replace(&mut l.parameter, LineParameter::Major)
+                                != LineParameter::Major
+                        }
+                    },
+                    Primitive::Triangle(_) => false,
+                }));
+            }
+        }
+        edits.push(Box::new(|s| {
+            std::mem::replace(&mut s.rules.fill_rule, FillRule::TopLeft) != FillRule::TopLeft
+        }));
+        edits.push(Box::new(|s| {
+            std::mem::replace(&mut s.rules.cull, Cull::None) != Cull::None
+        }));
+        if !matches!(self.kind, Kind::Holes | Kind::Overdraw) {
+            edits.push(Box::new(|s| std::mem::take(&mut s.expect.watertight)));
+        }
+        edits.push(Box::new(|s| {
+            std::mem::take(&mut s.expect.max_mismatched_samples) != 0
+        }));
+        self.try_each(edits)
+    }
+
+    /// How simple a vertex position is: its larger denominator, then how
+    /// far it lies outside the canvas, then its distance from the origin
+    /// (L1). Every coordinate move makes one vertex's key smaller.
+    fn position_key(&self, x: &Number, y: &Number) -> (UBig, Number, Number) {
+        let canvas = self.best.canvas;
+        let outside = |v: &Number, side: u32| {
+            let hi = Number::from_int(side.into());
+            if *v < Number::ZERO {
+                v.abs()
+            } else if *v > hi {
+                v - &hi
+            } else {
+                Number::ZERO
+            }
+        };
+        (
+            x.denominator().max(y.denominator()).clone(),
+            &outside(x, canvas.width) + &outside(y, canvas.height),
+            &x.abs() + &y.abs(),
+        )
+    }
+
+    /// The centre of the first sample that shows the failure (the canvas's
+    /// middle when none does).
+    fn focus_sample(&self) -> [Number; 2] {
+        let Canvas { width, height } = self.best.canvas;
+        let (px, py) = match self.failure.focus(self.kind).first() {
+            Some(&i) => ((i % width as usize) as i64, (i / width as usize) as i64),
+            None => (i64::from(width / 2), i64::from(height / 2)),
+        };
+        [Number::ratio(2 * px + 1, 2), Number::ratio(2 * py + 1, 2)]
+    }
+
+    /// Simpler positions for a vertex at `p`, simplest first: one axis at a
+    /// time (integers on the canvas nearest it, coarser dyadic grids,
+    /// halfway in from far away), then both axes rounded together, then
+    /// pulled halfway toward the failing sample (which keeps a vertex on a
+    /// line through that sample) and halfway along each edge to a
+    /// `partner` (which keeps the edge's line: a line keeps its slope), each
+    /// on coarser grids.
+    fn position_candidates(&self, p: &[Number; 2], partners: &[[Number; 2]]) -> Vec<[Number; 2]> {
+        let finest = self
+            .best
+            .rules
+            .subpixel_bits
+            .unwrap_or(MAX_SUBPIXEL_BITS)
+            .min(MAX_SUBPIXEL_BITS);
+        let Canvas { width, height } = self.best.canvas;
+        let [x, y] = p;
+        let mut out: Vec<[Number; 2]> = Vec::new();
+        out.extend(
+            simpler(x, 0, width.into(), finest)
+                .into_iter()
+                .map(|c| [c, y.clone()]),
+        );
+        out.extend(
+            simpler(y, 0, height.into(), finest)
+                .into_iter()
+                .map(|c| [x.clone(), c]),
+        );
+        let [fx, fy] = self.focus_sample();
+        let half = |a: &Number, b: &Number| num(&((a.as_rbig() + b.as_rbig()) / RBig::from(2u8)));
+        let mut targets = vec![p.clone(), [half(x, &fx), half(y, &fy)]];
+        targets.extend(partners.iter().map(|q| [half(x, &q[0]), half(y, &q[1])]));
+        for target in &targets {
+            for k in 0..=finest {
+                out.push(target.each_ref().map(|c| num(&snap(c, k))));
+            }
+        }
+        let current = self.position_key(x, y);
+        let mut seen: Vec<[Number; 2]> = Vec::new();
+        out.retain(|c| {
+            let keep = !seen.contains(c) && self.position_key(&c[0], &c[1]) < current;
+            seen.push(c.clone());
+            keep
+        });
+        out
+    }
+
+    /// Moves every vertex at one position together (a mesh stays a mesh).
+    fn move_shared_vertices(&mut self) -> bool {
+        let mut progress = false;
+        let mut positions: Vec<[Number; 2]> = Vec::new();
+        for v in self.best.vertices() {
+            let p = [v.x.clone(), v.y.clone()];
+            if !positions.contains(&p) {
+                positions.push(p);
+            }
+        }
+        for position in positions {
+            let at = |v: &Vertex| v.x == position[0] && v.y == position[1];
+            let mut partners: Vec<[Number; 2]> = Vec::new();
+            for p in &self.best.primitives {
+                if p.vertices().iter().any(at) {
+                    for v in p.vertices().iter().filter(|v| !at(v)) {
+                        let q = [v.x.clone(), v.y.clone()];
+                        if !partners.contains(&q) {
+                            partners.push(q);
+                        }
+                    }
+                }
+            }
+            for c in self.position_candidates(&position, &partners) {
+                let mut scene = self.best.clone();
+                for p in &mut scene.primitives {
+                    for v in p.vertices_mut() {
+                        if v.x == position[0] && v.y == position[1] {
+                            [v.x, v.y] = c.clone();
+                        }
+                    }
+                }
+                if self.try_scene(scene) {
+                    progress = true;
+                    break;
+                }
+            }
+        }
+        progress
+    }
+
+    /// Moves each vertex on its own.
+    fn move_vertices(&mut self) -> bool {
+        let mut progress = false;
+        for i in 0..self.best.primitives.len() {
+            for j in 0..self.best.primitives[i].vertices().len() {
+                let vertices = self.best.primitives[i].vertices();
+                let position = [vertices[j].x.clone(), vertices[j].y.clone()];
+                let partners: Vec<[Number; 2]> = (0..vertices.len())
+                    .filter(|&k| k != j)
+                    .map(|k| [vertices[k].x.clone(), vertices[k].y.clone()])
+                    .collect();
+                for c in self.position_candidates(&position, &partners) {
+                    let mut scene = self.best.clone();
+                    let v = &mut scene.primitives[i].vertices_mut()[j];
+                    [v.x, v.y] = c;
+                    if self.try_scene(scene) {
+                        progress = true;
+                        break;
+                    }
+                }
+            }
+        }
+        progress
+    }
+
+    /// Simpler depth, w and attribute values, vertex by vertex.
+    fn simplify_values(&mut self) -> bool {
+        let mut progress = false;
+        let (zero, one) = (Number::ZERO, Number::ONE);
+        for i in 0..self.best.primitives.len() {
+            for j in 0..self.best.primitives[i].vertices().len() {
+                // Slot 0: z, 1: w, 2..: attributes.
+                for slot in 0..2 + self.best.attribute_count {
+                    if slot == 0 && !self.best.has_depth {
+                        continue;
+                    }
+                    let get = |s: &Scene| {
+                        let v = &s.primitives[i].vertices()[j];
+                        match slot {
+                            0 => v.z.clone(),
+                            1 => v.w.clone(),
+                            k => v.attributes[k - 2].clone(),
+                        }
+                    };
+                    let current = get(&self.best);
+                    let centre = if slot == 1 { &one } else { &zero };
+                    let current_key = key(&current, centre, centre, centre);
+                    let candidates = simpler(&current, -4, 4, 0)
+                        .into_iter()
+                        .filter(|c| key(c, centre, centre, centre) < current_key)
+                        .filter(|c| slot != 1 || c.is_positive());
+                    for c in candidates.collect::<Vec<_>>() {
+                        let mut scene = self.best.clone();
+                        let v = &mut scene.primitives[i].vertices_mut()[j];
+                        match slot {
+                            0 => v.z = c,
+                            1 => v.w = c,
+                            k => v.attributes[k - 2] = c,
+                        }
+                        if self.try_scene(scene) {
+                            progress = true;
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+        progress
+    }
+
+    /// Fewer subpixel bits, when snapping still moves a vertex (otherwise
+    /// the case keeps its grid, which then does not matter).
+    fn reduce_bits(&mut self) -> bool {
+        let bits = self.best.rules.subpixel_bits;
+        let on_grid = |b: Option<u32>| {
+            self.best.vertices().all(|v| {
+                b.is_none_or(|b| &snap(&v.x, b) == v.x.as_rbig() && &snap(&v.y, b) == v.y.as_rbig())
+            })
+        };
+        if bits.is_some() && on_grid(bits) {
+            return false;
+        }
+        let top = bits.map_or(MAX_SUBPIXEL_BITS + 1, |b| b);
+        for b in 0..top {
+            let mut scene = self.best.clone();
+            scene.rules.subpixel_bits = Some(b);
+            if self.try_scene(scene) {
+                return true;
+            }
+        }
+        false
+    }
+}
+
+impl Shrinker<'_> {
+    /// Puts `subpixel_bits` back to the default 8 when every vertex lies on
+    /// both grids (so snapping moves nothing either way) and the failure
+    /// stays: a case is easier to read on the usual grid.
+    fn restore_default_bits(&mut self) {
+        let default = Rules::default().subpixel_bits;
+        let bits = self.best.rules.subpixel_bits;
+        let on = |b: Option<u32>, v: &Number| b.is_none_or(|b| &snap(v, b) == v.as_rbig());
+        if bits == default
+            || !self
+                .best
+                .vertices()
+                .all(|v| [&v.x, &v.y].iter().all(|c| on(bits, c) && on(default, c)))
+        {
+            return;
+        }
+        let mut scene = self.best.clone();
+        scene.rules.subpixel_bits = default;
+        self.try_scene(scene);
+    }
+}
+
+// --- Case files ------------------------------------------------------------
+
+fn json_number(n: &Number) -> String {
+    let s = n.to_exact_string();
+    if s.contains('/') {
+        format!("\"{s}\"")
+    } else {
+        s
+    }
+}
+
+fn json_string(s: &str) -> String {
+    serde_json::to_string(s).expect("a string serializes")
+}
+
+fn vertex_json(scene: &Scene, v: &Vertex) -> String {
+    let position = format!("[{}, {}]", json_number(&v.x), json_number(&v.y));
+    if !scene.has_depth && v.w == Number::ONE && v.attributes.is_empty() {
+        return position;
+    }
+    let mut fields = vec![format!("\"position\": {position}")];
+    if scene.has_depth {
+        fields.push(format!("\"z\": {}", json_number(&v.z)));
+    }
+    if v.w != Number::ONE {
+        fields.push(format!("\"w\": {}", json_number(&v.w)));
+    }
+    if !v.attributes.is_empty() {
+        let values: Vec<String> = v.attributes.iter().map(json_number).collect();
+        fields.push(format!("\"attributes\": [{}]", values.join(", ")));
+    }
+    format!("{{ {} }}", fields.join(", "))
+}
+
+fn primitive_json(scene: &Scene, p: &Primitive) -> String {
+    let vertices: Vec<String> = p.vertices().iter().map(|v| vertex_json(scene, v)).collect();
+    let mut fields = match p {
+        Primitive::Triangle(_) => vec![format!("\"triangle\": [{}]", vertices.join(", "))],
+        Primitive::Line(l) => {
+            let mut f = vec![
+                format!("\"line\": [{}]", vertices.join(", ")),
+                format!("\"rule\": \"{}\"", l.rule.name()),
+            ];
+            if l.rule.is_wide() && l.width != Number::ONE {
+                f.push(format!("\"width\": {}", json_number(&l.width)));
+            }
+            if l.rule == LineRule::Midpoint && l.last_pixel == LastPixel::Exclude {
+                f.push("\"last_pixel\": \"exclude\"".to_owned());
+            }
+            if l.parameter == LineParameter::Projected {
+                f.push("\"parameter\": \"projected\"".to_owned());
+            }
+            f
+        }
+    };
+    if p.interpolation() != Interpolation::Perspective {
+        fields.push(format!(
+            "\"interpolation\": \"{}\"",
+            p.interpolation().name()
+        ));
+    }
+    format!("{{ {} }}", fields.join(", "))
+}
+
+/// A scene as a case file (SPEC.md §1), every number exact.
+pub fn case_json(scene: &Scene) -> String {
+    let bits = scene
+        .rules
+        .subpixel_bits
+        .map_or("null".to_owned(), |b| b.to_string());
+    let primitives: Vec<String> = scene
+        .primitives
+        .iter()
+        .map(|p| format!("    {}", primitive_json(scene, p)))
+        .collect();
+    let e = &scene.expect;
+    let mut expect = Vec::new();
+    if e.max_mismatched_samples != 0 {
+        expect.push(format!(
+            "\"max_mismatched_samples\": {}",
+            e.max_mismatched_samples
+        ));
+    }
+    if e.watertight {
+        expect.push("\"watertight\": true".to_owned());
+    }
+    if let Some(n) = e.samples_covered {
+        expect.push(format!("\"samples_covered\": {n}"));
+    }
+    if let Some(x) = e.max_abs_error {
+        expect.push(format!("\"max_abs_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_ulp_error {
+        expect.push(format!("\"max_ulp_error\": {x:e}"));
+    }
+    format!(
+        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
+        json_string(&scene.name),
+        json_string(&scene.description),
+        scene.canvas.width,
+        scene.canvas.height,
+        scene.rules.fill_rule.name(),
+        scene.rules.cull.name(),
+        primitives.join(",\n"),
+        expect.join(", "),
+    )
+}
+
+// --- The search ------------------------------------------------------------
+
+/// What `rastercheck fuzz` was asked to do.
+#[derive(Clone, Debug)]
+pub struct Options {
+    pub seed: u64,
+    /// Scenes to try.
+    pub cases: u64,
+    /// One family, or all of them in turn.
+    pub family: Option<Family>,
+    /// Only failures of these kinds count (all when empty).
+    pub check: Vec<Kind>,
+    /// Stop after this many failures.
+    pub max_failures: usize,
+    /// Folder for the case files.
+    pub out: PathBuf,
+    /// The command line that reproduces the search, for descriptions.
+    pub command: String,
+}
+
+/// One failure found, shrunk and written.
+#[derive(Clone, Debug)]
+pub struct Found {
+    pub index: u64,
+    pub family: Family,
+    pub kind: Kind,
+    pub path: PathBuf,
+    pub original: Scene,
+    pub shrunk: Shrunk,
+}
+
+/// What a search did.
+#[derive(Clone, Debug, Default)]
+pub struct Summary {
+    pub cases: u64,
+    pub passed: u64,
+    pub unsupported: u64,
+    /// Failures of kinds `--check` did not ask for.
+    pub ignored: u64,
+    pub found: Vec<Found>,
+}
+
+fn sanitize(text: &str) -> String {
+    let s: String = text
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let s = s.trim_matches('_').to_owned();
+    s.chars().take(40).collect()
+}
+
+fn describe_size(scene: &Scene) -> String {
+    let triangles = scene.triangles().count();
+    let lines = scene.primitives.len() - triangles;
+    let mut parts = Vec::new();
+    if triangles > 0 {
+        parts.push(format!(
+            "{triangles} triangle{}",
+            if triangles == 1 { "" } else { "s" }
+        ));
+    }
+    if lines > 0 {
+        parts.push(format!("{lines} line{}", if lines == 1 { "" } else { "s" }));
+    }
+    format!(
+        "{} on a {}×{} canvas",
+        parts.join(" and "),
+        scene.canvas.width,
+        scene.canvas.height
+    )
+}
+
+/// The shrunk scene as the case to write: named, described, with the
+/// reference's sample count pinned.
+fn finished_case(
+    candidate: &dyn Rasterizer,
+    options: &Options,
+    index: u64,
+    family: Family,
+    original: &Scene,
+    kind: Kind,
+    shrunk: &Shrunk,
+) -> Scene {
+    let mut scene = shrunk.scene.clone();
+    scene.name = format!(
+        "fuzz_{}_{}_{}_{index}",
+        sanitize(candidate.name()),
+        kind.name(),
+        options.seed
+    );
+    let reasons = shrunk.failure.reasons_for(kind).join("; ");
+    scene.description = format!(
+        "Found by `{}`: case {index} ({} family, seed {}), originally {}, shrunk to {} in {} evaluations. {} fails it: {reasons}. A correct rasterizer {}.",
+        options.command,
+        family.name(),
+        options.seed,
+        describe_size(original),
+        describe_size(&shrunk.scene),
+        shrunk.evaluations,
+        candidate.name(),
+        kind.promise(),
+    );
+    let plan = Plan::for_scene(&scene);
+    scene.expect.samples_covered = Some(reference::render(&scene, &plan).covered_samples());
+    scene
+}
+
+/// Searches `options.cases` scenes for failures of `candidate`, shrinks and
+/// writes each (up to `max_failures`), and reports progress through `log`.
+/// `Err` when a case file cannot be written.
+pub fn search(
+    candidate: &dyn Rasterizer,
+    options: &Options,
+    log: &mut dyn FnMut(&str),
+) -> Result<Summary, String> {
+    let mut summary = Summary::default();
+    if candidate.is_foil() {
+        log(&format!(
+            "note: {} is a foil: `run` reports its departures as FOIL, never as failures",
+            candidate.name()
+        ));
+    }
+    for index in 0..options.cases {
+        let (family, scene) = generate(options.seed, index, options.family);
+        summary.cases += 1;
+        let failure = match evaluate(&scene, candidate) {
+            Outcome::Pass => {
+                summary.passed += 1;
+                continue;
+            }
+            Outcome::Unsupported(_) => {
+                summary.unsupported += 1;
+                continue;
+            }
+            Outcome::Invalid(why) => {
+                log(&format!(
+                    "note: case {index} ({}) skipped: {why}",
+                    family.name()
+                ));
+                continue;
+            }
+            Outcome::Fail(f) => f,
+        };
+        let Some(kind) = failure
+            .kinds
+            .iter()
+            .copied()
+            .find(|k| options.check.is_empty() || options.check.contains(k))
+        else {
+            summary.ignored += 1;
+            continue;
+        };
+        log(&format!(
+            "FAIL  case {index} ({}, {}): {}",
+            family.name(),
+            describe_size(&scene),
+            failure.reasons_for(kind).join("; ")
+        ));
+        let shrunk = shrink(&scene, failure, kind, candidate);
+        let case = finished_case(candidate, options, index, family, &scene, kind, &shrunk);
+        let text = case_json(&case);
+        // The file must say what the shrinker saw: read it back and judge
+        // it again.
+        let reread = crate::scene::parse_case(&text, "the shrunk case", &Default::default())
+            .map_err(|e| format!("internal error: the shrunk case does not read back: {e}"))?;
+        match evaluate(&reread, candidate) {
+            Outcome::Fail(f) if f.kinds.contains(&kind) => {}
+            other => {
+                return Err(format!(
+                    "internal error: the shrunk case read back no longer fails {}: {other:?}",
+                    kind.name()
+                ))
+            }
+        }
+        std::fs::create_dir_all(&options.out)
+            .map_err(|e| format!("{}: {e}", options.out.display()))?;
+        let path = options.out.join(format!("{}.json", case.name));
+        std::fs::write(&path, &text).map_err(|e| format!("{}: {e}", path.display()))?;
+        log(&format!(
+            "      shrunk in {} evaluations, {} rounds, {:.0} ms: {}",
+            shrunk.evaluations,
+            shrunk.rounds,
+            shrunk.elapsed.as_secs_f64() * 1000.0,
+            describe_size(&shrunk.scene)
+        ));
+        log(&format!("      wrote {}", path.display()));
+        for reason in shrunk.failure.reasons_for(kind) {
+            log(&format!("        {reason}"));
+        }
+        summary.found.push(Found {
+            index,
+            family,
+            kind,
+            path,
+            original: scene,
+            shrunk,
+        });
+        if summary.found.len() >= options.max_failures {
+            break;
+        }
+    }
+    Ok(summary)
+}
+
+/// Where `rastercheck fuzz` writes by default.
+pub fn default_out() -> &'static Path {
+    Path::new("fuzz-cases")
+}
+
+/// A seed from the clock, for runs that name none (it is printed).
+pub fn clock_seed() -> u64 {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64);
+    Rng::new(nanos ^ u64::from(std::process::id())).next_u64() % 1_000_000_000
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn generation_is_deterministic() {
+        for i in 0..30 {
+            let (_, a) = generate(7, i, None);
+            let (_, b) = generate(7, i, None);
+            assert_eq!(case_json(&a), case_json(&b));
+        }
+    }
+
+    #[test]
+    fn generated_scenes_read_back_as_written() {
+        for i in 0..60 {
+            let (_, scene) = generate(11, i, None);
+            let text = case_json(&scene);
+            let back = crate::scene::parse_case(&text, "t", &Default::default())
+                .unwrap_or_else(|e| panic!("{e}\n{text}"));
+            assert_eq!(case_json(&back), text);
+        }
+    }
+
+    #[test]
+    fn sines_are_close_to_libm() {
+        for k in -50..50 {
+            let a = f64::from(k) * 0.37;
+            let (s, c) = sin_cos(a);
+            assert!((s - a.sin()).abs() < 1e-12 && (c - a.cos()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn simpler_values_are_simpler() {
+        let v = Number::ratio(12345, 4096);
+        let c = simpler(&v, 0, 4, 8);
+        assert_eq!(c[0], Number::from_int(3));
+        assert!(c.contains(&Number::ratio(772, 256)));
+        let far = simpler(&Number::from_int(20000), 0, 4, 8);
+        assert!(far.contains(&Number::from_int(10002)));
+    }
+}

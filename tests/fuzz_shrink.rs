@@ -1,0 +1,209 @@
+//! `rastercheck fuzz`: counterexample search and shrinking, through the real
+//! binary. A closed-edge rasterizer (the mutant, and euc) is found to
+//! overdraw a mesh, the failure is shrunk to a case of at most three
+//! triangles that `rastercheck run` reproduces (and production passes); the
+//! production rasterizer survives the search; and a seed always writes the
+//! same file.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use rastercheck::scene::{parse_case, Limits, Primitive};
+
+fn rastercheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn text(out: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rastercheck-fuzz-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// The one case file a run wrote into `dir`.
+fn written(dir: &Path) -> PathBuf {
+    let files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("the output folder exists")
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(files.len(), 1, "{files:?}");
+    files.into_iter().next().unwrap()
+}
+
+/// Fuzzes meshes on `rasterizer`, and checks the shrunk case: a watertight
+/// mesh of at most three triangles that `run` fails for `rasterizer` on
+/// watertightness and passes for production.
+fn finds_and_shrinks_overdraw(rasterizer: &str, name: &str) {
+    let dir = scratch(name);
+    let out = rastercheck(&[
+        "fuzz",
+        "-r",
+        rasterizer,
+        "--family",
+        "meshes",
+        "--seed",
+        "1",
+        "--cases",
+        "200",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{log}");
+    assert!(log.contains("seed 1"), "{log}");
+    let path = written(&dir);
+    assert!(log.contains(&path.display().to_string()), "{log}");
+
+    let case = std::fs::read_to_string(&path).unwrap();
+    let scene = parse_case(&case, "shrunk", &Limits::default()).expect("a valid case");
+    assert!(scene.expect.watertight, "{case}");
+    assert!(
+        (1..=3).contains(&scene.primitives.len()),
+        "not shrunk to 3 triangles or fewer:\n{case}"
+    );
+    assert!(scene
+        .primitives
+        .iter()
+        .all(|p| matches!(p, Primitive::Triangle(_))));
+    assert!(scene.description.contains("seed 1"), "{case}");
+    assert!(scene.description.contains("originally"), "{case}");
+
+    let again = rastercheck(&["run", path.to_str().unwrap(), "-r", rasterizer]);
+    let again_log = text(&again);
+    assert_eq!(again.status.code(), Some(1), "{again_log}\n{case}");
+    assert!(again_log.contains("watertight: "), "{again_log}");
+    assert!(
+        again_log.contains("overdrawn samples") || again_log.contains(" holes and "),
+        "{again_log}"
+    );
+    let production = rastercheck(&["run", path.to_str().unwrap(), "-r", "production"]);
+    assert_eq!(
+        production.status.code(),
+        Some(0),
+        "{}\n{case}",
+        text(&production)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn closed_edges_mutant_overdraw_shrinks_to_three_triangles_or_fewer() {
+    finds_and_shrinks_overdraw("mutant:closed-edges", "closed-edges");
+}
+
+#[test]
+fn euc_overdraw_shrinks_to_three_triangles_or_fewer() {
+    finds_and_shrinks_overdraw("euc", "euc");
+}
+
+#[test]
+fn production_survives_the_search() {
+    let dir = scratch("production");
+    let out = rastercheck(&[
+        "fuzz",
+        "-r",
+        "production",
+        "--cases",
+        "200",
+        "--seed",
+        "7",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    assert!(text(&out).contains("200 cases, "), "{}", text(&out));
+    assert!(
+        text(&out).contains(" 0 failed and shrunk"),
+        "{}",
+        text(&out)
+    );
+    assert!(!dir.exists(), "nothing is written when nothing fails");
+}
+
+#[test]
+fn the_same_seed_writes_the_same_file() {
+    let runs: Vec<(String, Vec<u8>)> = ["a", "b"]
+        .iter()
+        .map(|run| {
+            let dir = scratch(&format!("determinism-{run}"));
+            let out = rastercheck(&[
+                "fuzz",
+                "-r",
+                "mutant:flipped-ties",
+                "--seed",
+                "12345",
+                "--cases",
+                "100",
+                "--out",
+                dir.to_str().unwrap(),
+            ]);
+            assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+            let path = written(&dir);
+            let name = path.file_name().unwrap().to_string_lossy().into_owned();
+            let bytes = std::fs::read(&path).unwrap();
+            let _ = std::fs::remove_dir_all(&dir);
+            (name, bytes)
+        })
+        .collect();
+    assert_eq!(runs[0], runs[1]);
+}
+
+#[test]
+fn bad_input_exits_2() {
+    for args in [
+        &["fuzz", "-r", "no-such-rasterizer"][..],
+        &["fuzz", "-r", "production", "--family", "quads"],
+        &["fuzz", "-r", "production", "--check", "speed"],
+        &["fuzz", "-r", "production", "--cases", "0"],
+    ] {
+        let out = rastercheck(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", text(&out));
+    }
+}
+
+#[test]
+fn check_selects_the_kind_to_shrink() {
+    // euc fails single triangles on coverage first; asking for
+    // watertightness skips those until a mesh overdraws.
+    let dir = scratch("check");
+    let out = rastercheck(&[
+        "fuzz",
+        "-r",
+        "euc",
+        "--check",
+        "watertight",
+        "--seed",
+        "2",
+        "--cases",
+        "300",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{log}");
+    let path = written(&dir);
+    assert!(
+        path.file_name()
+            .unwrap()
+            .to_string_lossy()
+            .contains("overdraw")
+            || path
+                .file_name()
+                .unwrap()
+                .to_string_lossy()
+                .contains("holes"),
+        "{path:?}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

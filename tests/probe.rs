@@ -1,0 +1,221 @@
+//! `probe` recovers each rasterizer's conventions from its frames alone, and
+//! `run --profile` judges a rasterizer under the fill rule it declares.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use rastercheck::probe::{self, Profile};
+use rastercheck::suite;
+
+fn probe_of(name: &str) -> Profile {
+    let r = suite::rasterizer(name).unwrap_or_else(|| panic!("no rasterizer {name}"));
+    let p = probe::probe(r.as_ref()).unwrap_or_else(|e| panic!("{name}: {e}"));
+    eprintln!("{}", p.describe());
+    p
+}
+
+#[test]
+fn production_is_top_left_exact_and_centred() {
+    let p = probe_of("production");
+    assert_eq!(p.fill_rule.as_deref(), Some("top-left"));
+    assert!(p.fill_rule_consistent);
+    assert_eq!(p.y_down, Some(true));
+    assert_eq!(p.subpixel_bits, None);
+    assert_eq!(p.subpixel, "exact");
+    assert_eq!(p.sample_offset, Some([0.5, 0.5]));
+    assert!(p
+        .interpolation
+        .iter()
+        .all(|i| i.status == "measured" && i.channels.iter().all(|c| c.within_bound)));
+    // The only departure is keeping more than D3D11's 8 bits.
+    assert_eq!(p.departures.len(), 1, "{:?}", p.departures);
+}
+
+#[test]
+fn mutants_show_their_tie_rules() {
+    let flipped = probe_of("mutant:flipped-ties");
+    assert_eq!(flipped.fill_rule.as_deref(), Some("bottom-right"));
+    assert!(flipped.fill_rule_consistent);
+    let closed = probe_of("mutant:closed-edges");
+    assert_eq!(closed.fill_rule.as_deref(), Some("all-edges"));
+    assert!(closed.fill_rule_consistent);
+    assert!(closed.departures[0].contains("drawn twice"));
+}
+
+#[cfg(feature = "tiny-skia")]
+#[test]
+fn tiny_skia_is_bottom_right_on_a_64th_grid() {
+    let p = probe_of("tiny-skia");
+    assert_eq!(p.fill_rule.as_deref(), Some("bottom-right"));
+    assert!(p.fill_rule_consistent);
+    assert_eq!(p.subpixel_bits, Some(6), "{}", p.subpixel);
+    assert_eq!(p.y_down, Some(true));
+    assert_eq!(p.sample_position, "centre");
+    assert!(p.interpolation.iter().all(|i| i.status == "unsupported"));
+    assert!(p.departures.iter().any(|d| d.contains("6 subpixel bits")));
+}
+
+#[cfg(feature = "euc")]
+#[test]
+fn euc_is_all_edges_but_not_consistently() {
+    let p = probe_of("euc");
+    assert_eq!(p.fill_rule.as_deref(), Some("all-edges"));
+    // Its f32 barycentrics miss some samples of its own closed rule.
+    assert!(!p.fill_rule_consistent);
+    assert!(p.departures.iter().any(|d| d.contains("not consistent")));
+    assert_eq!(p.sample_position, "centre");
+}
+
+#[cfg(feature = "lavapipe")]
+#[test]
+fn lavapipe_is_top_left_with_8_bits() {
+    if let Err(why) = rastercheck::adapters::lavapipe::adapter_description() {
+        eprintln!("skipped: no Vulkan adapter (install mesa-vulkan-drivers libvulkan1): {why}");
+        return;
+    }
+    let p = probe_of("lavapipe");
+    assert_eq!(p.fill_rule.as_deref(), Some("top-left"));
+    assert!(p.fill_rule_consistent);
+    assert_eq!(p.subpixel_bits, Some(8), "{}", p.subpixel);
+    assert_eq!(p.sample_position, "centre");
+    assert_eq!(p.y_down, Some(true));
+}
+
+#[cfg(not(feature = "lavapipe"))]
+#[test]
+fn lavapipe_is_top_left_with_8_bits() {
+    eprintln!("skipped: built without the lavapipe feature");
+}
+
+fn rastercheck(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+fn text(out: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rastercheck-probe-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[cfg(feature = "tiny-skia")]
+#[test]
+fn run_with_a_profile_judges_tiny_skia_by_its_own_rule() {
+    let dir = temp("tiny-skia");
+    let case =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles/shared_edge_vertical.json");
+    let case = case.to_str().unwrap();
+    let profile = dir.join("tiny-skia.json");
+    let out = rastercheck(
+        &dir,
+        &[
+            "probe",
+            "-r",
+            "tiny-skia",
+            "--out",
+            profile.to_str().unwrap(),
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    assert!(text(&out).contains("bottom-right"), "{}", text(&out));
+    let written: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&profile).unwrap()).unwrap();
+    assert_eq!(written["schema"], "rastercheck-profile/1");
+    assert_eq!(written["rasterizer"], "tiny-skia");
+    assert_eq!(written["fill_rule"], "bottom-right");
+    assert_eq!(written["subpixel_bits"], 6);
+
+    // A top-left tie case: tiny-skia fails it as written...
+    let plain = rastercheck(&dir, &["run", case, "-r", "tiny-skia"]);
+    assert_eq!(plain.status.code(), Some(1), "{}", text(&plain));
+    assert!(text(&plain).contains("FAIL"), "{}", text(&plain));
+    // ...and passes it under its declared rule.
+    let judged = rastercheck(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "tiny-skia",
+            "--profile",
+            profile.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(judged.status.code(), Some(0), "{}", text(&judged));
+    assert!(text(&judged).contains("declared fill rule bottom-right"));
+    assert!(text(&judged).contains("PASS"), "{}", text(&judged));
+    // Without -r, the profile's rasterizer is run; production is untouched
+    // when it runs beside it.
+    let both = rastercheck(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "production",
+            "-r",
+            "tiny-skia",
+            "--profile",
+            profile.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(both.status.code(), Some(0), "{}", text(&both));
+    let alone = rastercheck(&dir, &["run", case, "--profile", profile.to_str().unwrap()]);
+    assert!(
+        text(&alone).contains("tiny-skia: 1 passed"),
+        "{}",
+        text(&alone)
+    );
+}
+
+#[test]
+fn bad_profiles_are_bad_input() {
+    let dir = temp("bad");
+    let case =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles/shared_edge_vertical.json");
+    let case = case.to_str().unwrap();
+    let file = dir.join("p.json");
+    for (content, phrase) in [
+        ("not json", "not JSON"),
+        (r#"{"schema": "other"}"#, "$.schema"),
+        (
+            r#"{"schema": "rastercheck-profile/1", "rasterizer": "production", "fill_rule": "none"}"#,
+            "$.fill_rule",
+        ),
+    ] {
+        std::fs::write(&file, content).unwrap();
+        let out = rastercheck(&dir, &["run", case, "--profile", file.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+        assert!(text(&out).contains(phrase), "{phrase}: {}", text(&out));
+    }
+    std::fs::write(
+        &file,
+        r#"{"schema": "rastercheck-profile/1", "rasterizer": "mutant:flipped-ties", "fill_rule": "top-left"}"#,
+    )
+    .unwrap();
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "production",
+            "--profile",
+            file.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("does not check"), "{}", text(&out));
+}
