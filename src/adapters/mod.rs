@@ -16,6 +16,8 @@ pub mod euc;
 pub mod external;
 #[cfg(any(feature = "tiny-skia", feature = "euc", feature = "vello"))]
 mod float_input;
+#[cfg(feature = "gl")]
+pub mod gl;
 #[cfg(feature = "lavapipe")]
 pub mod lavapipe;
 #[cfg(feature = "tiny-skia")]
@@ -32,6 +34,8 @@ pub fn names() -> Vec<&'static str> {
     let mut names = Vec::new();
     #[cfg(feature = "lavapipe")]
     names.push(lavapipe::NAME);
+    #[cfg(feature = "gl")]
+    names.extend([gl::NAME, gl::SOFTPIPE]);
     #[cfg(feature = "tiny-skia")]
     names.push("tiny-skia");
     #[cfg(feature = "euc")]
@@ -48,6 +52,14 @@ pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
     #[cfg(feature = "lavapipe")]
     if name == lavapipe::NAME {
         return Some(Box::new(lavapipe::Lavapipe));
+    }
+    #[cfg(feature = "gl")]
+    if name == gl::NAME {
+        return Some(Box::new(gl::Gl));
+    }
+    #[cfg(feature = "gl")]
+    if name == gl::SOFTPIPE {
+        return Some(Box::new(gl::Softpipe));
     }
     match name {
         #[cfg(feature = "tiny-skia")]
