@@ -87,8 +87,7 @@ use khronos_egl as egl;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::reference::exact;
-use crate::scene::{Cull, Interpolation, Number, Primitive, Scene};
+use crate::scene::{Cull, Interpolation, Primitive, Scene};
 
 /// The name of the adapter that draws with whatever Mesa's GL is.
 pub const NAME: &str = "gl";
@@ -102,14 +101,7 @@ const INSTALL_HINT: &str =
 /// `EGL_PLATFORM_SURFACELESS_MESA`.
 const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
 
-/// Channels written per sample: primitive + 1, depth, and up to 16 attributes.
-const MAX_ATTRIBUTES: usize = 16;
-const CHANNELS: usize = 2 + MAX_ATTRIBUTES;
-const GROUPS: usize = CHANNELS.div_ceil(4);
-
-/// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
-/// attributes (16).
-const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
+use super::gpu::{self, GROUPS, MAX_ATTRIBUTES, VERTEX_FLOATS};
 
 /// Mesa's OpenGL through EGL: llvmpipe, or whatever `GALLIUM_DRIVER` names.
 pub struct Gl;
@@ -344,45 +336,9 @@ impl GlContext {
     }
 
     fn render(&mut self, scene: &Scene, plan: &Plan, bits: u32) -> Result<Frame, RasterError> {
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let (tw, th) = (w.next_power_of_two(), h.next_power_of_two());
-        if tw.max(th) > self.max_side {
-            return Err(RasterError::Unsupported(format!(
-                "canvas {w}×{h} needs a {tw}×{th} target; {} draws at most {}",
-                self.renderer, self.max_side
-            )));
-        }
-        let groups = if plan.interpolates() {
-            (2 + plan.attributes).div_ceil(4)
-        } else {
-            1
-        };
-        debug_assert!(groups <= GROUPS);
-
-        // Vertex data, and runs of consecutive triangles sharing a mode.
-        let mut vertices: Vec<f32> = Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS);
-        let mut runs: Vec<(Interpolation, i32, i32)> = Vec::new();
-        let (sx, sy) = (2.0 / tw as f32, 2.0 / th as f32);
-        for (i, t) in scene.triangles() {
-            for v in &t.vertices {
-                let x = exact::to_f32(&exact::snap(&v.x, bits));
-                let y = exact::to_f32(&exact::snap(&v.y, bits));
-                let wv = to_f32(&v.w);
-                let (xn, yn) = (x * sx - 1.0, 1.0 - y * sy);
-                vertices.extend([xn * wv, yn * wv, 0.5 * wv, wv]);
-                vertices.extend([(i + 1) as f32, to_f32(&v.z), 0.0, 0.0]);
-                let mut attrs = [0f32; MAX_ATTRIBUTES];
-                for (slot, a) in attrs.iter_mut().zip(&v.attributes) {
-                    *slot = to_f32(a);
-                }
-                vertices.extend(attrs);
-            }
-            let first = (vertices.len() / VERTEX_FLOATS) as i32 - 3;
-            match runs.last_mut() {
-                Some((mode, _, end)) if *mode == t.interpolation => *end = first + 3,
-                _ => runs.push((t.interpolation, first, first + 3)),
-            }
-        }
+        let (tw, th) = gpu::target_size(scene, self.max_side, &self.renderer)?;
+        let groups = gpu::groups(plan);
+        let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
 
         self.bind()?;
         // SAFETY: GL calls on the context current on this thread, with
@@ -397,7 +353,7 @@ impl GlContext {
         scene: &Scene,
         plan: &Plan,
         vertices: &[f32],
-        runs: &[(Interpolation, i32, i32)],
+        runs: &[(Interpolation, u32, u32)],
         groups: usize,
     ) -> Result<Frame, RasterError> {
         let gl = &self.gl;
@@ -470,7 +426,8 @@ impl GlContext {
                 Interpolation::Flat => self.programs[2],
             };
             gl.use_program(Some(program));
-            gl.draw_arrays(glow::TRIANGLES, a, b - a);
+            // Vertex counts are bounded by the primitive limit (SPEC §8).
+            gl.draw_arrays(glow::TRIANGLES, a as i32, (b - a) as i32);
         }
 
         // Read the canvas (the top W × H of the target) back, flipping rows.
@@ -700,11 +657,6 @@ void main() {{
 "
     );
     (vs, fs)
-}
-
-/// The f32 nearest an exact number.
-fn to_f32(n: &Number) -> f32 {
-    exact::to_f32(n.as_rbig())
 }
 
 fn f32_bytes(values: &[f32]) -> Vec<u8> {

@@ -84,8 +84,7 @@ use std::sync::{Mutex, OnceLock};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::reference::exact;
-use crate::scene::{Cull, Interpolation, Number, Primitive, Scene};
+use crate::scene::{Cull, Interpolation, Primitive, Scene};
 
 /// The name on the command line and in reports.
 pub const NAME: &str = "lavapipe";
@@ -94,14 +93,7 @@ pub const NAME: &str = "lavapipe";
 const INSTALL_HINT: &str =
     "install mesa-vulkan-drivers libvulkan1 (Debian/Ubuntu) so that wgpu finds the lavapipe CPU adapter";
 
-/// Channels written per sample: primitive + 1, depth, and up to 16 attributes.
-const MAX_ATTRIBUTES: usize = 16;
-const CHANNELS: usize = 2 + MAX_ATTRIBUTES;
-const GROUPS: usize = CHANNELS.div_ceil(4);
-
-/// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
-/// attributes (16).
-const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
+use super::gpu::{self, GROUPS, MAX_ATTRIBUTES, VERTEX_FLOATS};
 
 /// Mesa's lavapipe, through wgpu's Vulkan backend.
 pub struct Lavapipe;
@@ -317,44 +309,9 @@ impl Gpu {
 
     fn render(&mut self, scene: &Scene, plan: &Plan, bits: u32) -> Result<Frame, RasterError> {
         let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let (tw, th) = (w.next_power_of_two(), h.next_power_of_two());
-        if tw.max(th) > self.max_side {
-            return Err(RasterError::Unsupported(format!(
-                "canvas {w}×{h} needs a {tw}×{th} target; the adapter's largest is {}",
-                self.max_side
-            )));
-        }
-        let groups = if plan.interpolates() {
-            (2 + plan.attributes).div_ceil(4)
-        } else {
-            1
-        };
-        debug_assert!(groups <= GROUPS);
-
-        // Vertex data, and runs of consecutive triangles sharing a mode.
-        let mut vertices: Vec<f32> = Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS);
-        let mut runs: Vec<(Interpolation, u32, u32)> = Vec::new();
-        let (sx, sy) = (2.0 / tw as f32, 2.0 / th as f32);
-        for (i, t) in scene.triangles() {
-            for v in &t.vertices {
-                let x = exact::to_f32(&exact::snap(&v.x, bits));
-                let y = exact::to_f32(&exact::snap(&v.y, bits));
-                let wv = to_f32(&v.w);
-                let (xn, yn) = (x * sx - 1.0, 1.0 - y * sy);
-                vertices.extend([xn * wv, yn * wv, 0.5 * wv, wv]);
-                vertices.extend([(i + 1) as f32, to_f32(&v.z), 0.0, 0.0]);
-                let mut attrs = [0f32; MAX_ATTRIBUTES];
-                for (slot, a) in attrs.iter_mut().zip(&v.attributes) {
-                    *slot = to_f32(a);
-                }
-                vertices.extend(attrs);
-            }
-            let first = (vertices.len() / VERTEX_FLOATS) as u32 - 3;
-            match runs.last_mut() {
-                Some((mode, _, end)) if *mode == t.interpolation => *end = first + 3,
-                _ => runs.push((t.interpolation, first, first + 3)),
-            }
-        }
+        let (tw, th) = gpu::target_size(scene, self.max_side, "the lavapipe adapter")?;
+        let groups = gpu::groups(plan);
+        let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
 
         let device = self.device.clone();
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -539,11 +496,6 @@ impl Gpu {
         }
         Ok(frame)
     }
-}
-
-/// The f32 nearest an exact number.
-fn to_f32(n: &Number) -> f32 {
-    exact::to_f32(n.as_rbig())
 }
 
 fn f32_bytes(values: &[f32]) -> Vec<u8> {

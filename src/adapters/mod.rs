@@ -14,10 +14,18 @@
 #[cfg(feature = "euc")]
 pub mod euc;
 pub mod external;
-#[cfg(any(feature = "tiny-skia", feature = "euc", feature = "vello"))]
+#[cfg(any(
+    feature = "tiny-skia",
+    feature = "euc",
+    feature = "vello",
+    feature = "lavapipe",
+    feature = "gl"
+))]
 mod float_input;
 #[cfg(feature = "gl")]
 pub mod gl;
+#[cfg(any(feature = "lavapipe", feature = "gl"))]
+mod gpu;
 #[cfg(feature = "lavapipe")]
 pub mod lavapipe;
 #[cfg(feature = "tiny-skia")]
