@@ -6,12 +6,12 @@
 //! passes by drawing nothing.
 #![cfg(feature = "gl")]
 
-use std::path::Path;
 use std::process::Command;
 
+use std::path::Path;
+
 use rastercheck::adapters::gl::{self, Gl};
-use rastercheck::frame::Frame;
-use rastercheck::scene::{parse_case, FillRule, Limits, Scene};
+use rastercheck::scene::{FillRule, Scene};
 use rastercheck::suite::{self, CandidateRun, Verdict};
 
 /// Whether llvmpipe is here; prints why not once per test.
@@ -34,56 +34,11 @@ fn available() -> bool {
     }
 }
 
-fn case(id: &str) -> Scene {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("cases/{id}.json"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{id}: {e}"));
-    parse_case(&text, &path.display().to_string(), &Limits::default())
-        .unwrap_or_else(|e| panic!("{id}: {e}"))
-}
-
-fn inline(json: &str) -> Scene {
-    parse_case(json, "inline.json", &Limits::default()).expect("valid inline case")
-}
+mod common;
+use common::{case, inline, report};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
-    let reference = suite::run_reference(scene);
-    let run = suite::run_candidate(scene, &reference, &Gl);
-    (reference, run)
-}
-
-/// The samples whose count or owner differ, at most 12.
-fn differences(reference: &Frame, candidate: &Frame) -> Vec<String> {
-    (0..reference.sample_count())
-        .filter(|&i| {
-            reference.coverage[i] != candidate.coverage[i] || reference.last[i] != candidate.last[i]
-        })
-        .take(12)
-        .map(|i| {
-            let (x, y) = (i as u32 % reference.width, i as u32 / reference.width);
-            format!(
-                "({x},{y}) reference {}/{} gl {}/{}",
-                reference.coverage[i], reference.last[i], candidate.coverage[i], candidate.last[i]
-            )
-        })
-        .collect()
-}
-
-fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> String {
-    let diffs = run
-        .frame
-        .as_ref()
-        .map(|f| differences(&reference.frame, f))
-        .unwrap_or_default();
-    format!(
-        "{:<5} {id}: {}{}",
-        run.verdict.label(),
-        suite::describe(run),
-        if diffs.is_empty() {
-            String::new()
-        } else {
-            format!("\n        {}", diffs.join("; "))
-        }
-    )
+    common::run(scene, &Gl)
 }
 
 /// Tie cases (samples exactly on edges, shared edges, fan centres) written

@@ -1,0 +1,67 @@
+//! Helpers the adapter tests share: bundled and inline cases, and a readable
+//! account of where a candidate's frame differs from the reference's.
+
+#![allow(dead_code)] // each test crate uses its own subset
+
+use std::path::Path;
+
+use rastercheck::frame::Frame;
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::scene::{parse_case, Limits, Scene};
+use rastercheck::suite::{self, CandidateRun};
+
+/// A bundled case by id (`triangles/fan_16_center`).
+pub fn case(id: &str) -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("cases/{id}.json"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{id}: {e}"));
+    parse_case(&text, &path.display().to_string(), &Limits::default())
+        .unwrap_or_else(|e| panic!("{id}: {e}"))
+}
+
+pub fn inline(json: &str) -> Scene {
+    parse_case(json, "inline.json", &Limits::default()).expect("valid inline case")
+}
+
+/// The reference's run and the candidate's, on one scene.
+pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> (suite::ReferenceRun, CandidateRun) {
+    let reference = suite::run_reference(scene);
+    let run = suite::run_candidate(scene, &reference, candidate);
+    (reference, run)
+}
+
+/// The samples whose count or owner differ, as "(x,y) reference
+/// count/owner NAME count/owner", at most 12.
+pub fn differences(reference: &Frame, candidate: &Frame, name: &str) -> Vec<String> {
+    (0..reference.sample_count())
+        .filter(|&i| {
+            reference.coverage[i] != candidate.coverage[i] || reference.last[i] != candidate.last[i]
+        })
+        .take(12)
+        .map(|i| {
+            let (x, y) = (i as u32 % reference.width, i as u32 / reference.width);
+            format!(
+                "({x},{y}) reference {}/{} {name} {}/{}",
+                reference.coverage[i], reference.last[i], candidate.coverage[i], candidate.last[i]
+            )
+        })
+        .collect()
+}
+
+/// One line per case: verdict, metrics, and the first differing samples.
+pub fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> String {
+    let diffs = run
+        .frame
+        .as_ref()
+        .map(|f| differences(&reference.frame, f, &run.rasterizer))
+        .unwrap_or_default();
+    format!(
+        "{:<5} {id}: {}{}",
+        run.verdict.label(),
+        suite::describe(run),
+        if diffs.is_empty() {
+            String::new()
+        } else {
+            format!("\n        {}", diffs.join("; "))
+        }
+    )
+}
