@@ -6,9 +6,8 @@
 //! passes by drawing nothing.
 #![cfg(feature = "gl")]
 
-use std::process::Command;
-
 use std::path::Path;
+use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
 use rastercheck::scene::{FillRule, Scene};
