@@ -19,6 +19,7 @@
 
 pub mod adapters;
 pub mod baseline;
+pub mod bench;
 pub mod frame;
 pub mod fuzz;
 pub mod golden;

@@ -69,6 +69,16 @@ enum Command {
     /// Run the cases through several rasterizers and print a conformance
     /// matrix (rows: rasterizers, columns: case families) with findings.
     Matrix(MatrixArgs),
+    /// Time and error of each method on the same seeded workloads
+    /// (triangles, lines); writes BENCH.md and bench.svg beside it.
+    Bench {
+        /// Small workloads that run in a few seconds.
+        #[arg(long)]
+        quick: bool,
+        /// The report to write; the chart goes beside it as bench.svg.
+        #[arg(long, value_name = "FILE", default_value = "BENCH.md")]
+        out: PathBuf,
+    },
     /// Find a rasterizer's conventions from its rendered frames: fill
     /// rule, y direction, subpixel precision, sample position,
     /// interpolation error; write them as a profile for `run --profile`.
@@ -259,6 +269,7 @@ fn main() -> ExitCode {
         Command::Fuzz(args) => fuzz(args),
         Command::Matrix(args) => matrix(args),
         Command::Probe { rasterizer, out } => probe(&rasterizer, out),
+        Command::Bench { quick, out } => bench(quick, out),
         Command::Rasterizers => {
             for name in suite::rasterizer_names() {
                 println!("{name}");
@@ -1033,5 +1044,41 @@ fn probe(name: &str, out: Option<PathBuf>) -> u8 {
         }
         println!("wrote {}", file.display());
     }
+    PASS
+}
+
+fn bench(quick: bool, out: PathBuf) -> u8 {
+    use rastercheck::bench;
+    let report = bench::run(bench::Options { quick }, &mut |line| {
+        println!("bench: {line}")
+    });
+    let svg = out.with_file_name("bench.svg");
+    let written = std::fs::write(&out, report.to_markdown("bench.svg"))
+        .and_then(|()| std::fs::write(&svg, report.to_svg()));
+    if let Err(e) = written {
+        eprintln!("error: {}: {e}", out.display());
+        return BAD_INPUT;
+    }
+    for w in &report.workloads {
+        println!("{}", w.name);
+        for m in &w.methods {
+            let time = m.per_item.map_or("—".to_owned(), |d| {
+                format!("{:.3} µs", d.as_secs_f64() * 1e6)
+            });
+            let error = m
+                .errors
+                .map_or("—".to_owned(), |(e, of)| format!("{e}/{of}"));
+            println!("  {:<12} {time:>14} per item, error {error}", m.method);
+        }
+    }
+    for t in &report.targets {
+        let status = match t.met {
+            Some(true) => "met",
+            Some(false) => "NOT met",
+            None => "not measured",
+        };
+        println!("target: {}: {} ({status})", t.target, t.measured);
+    }
+    println!("wrote {} and {}", out.display(), svg.display());
     PASS
 }

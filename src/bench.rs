@@ -1,0 +1,953 @@
+//! `rastercheck bench`: time and error of each method, measured in one run on
+//! the same seeded workloads, written as BENCH.md and a hand-drawn SVG chart.
+//!
+//! Timings are medians over interleaved repetitions (every method runs once
+//! per round, so drift in the machine's speed hits all methods alike), and
+//! the conclusions drawn from them are ratios between methods measured side
+//! by side. Errors are counted against the exact reference.
+
+use std::fmt::Write as _;
+use std::time::{Duration, Instant};
+
+use crate::frame::Frame;
+use crate::fuzz::Rng;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{
+    Canvas, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter, LineRule,
+    Number, Primitive, Rules, Scene, Triangle, Vertex,
+};
+
+/// The seed of every workload: the same scenes on every run.
+pub const SEED: u64 = 0x6265_6e63_6821;
+
+/// How big a run is.
+#[derive(Clone, Copy, Debug)]
+pub struct Options {
+    pub quick: bool,
+}
+
+/// Sizes of the workloads for one run.
+#[derive(Clone, Copy, Debug)]
+struct Sizes {
+    canvas: u32,
+    /// (leg length, triangles)
+    triangles: [(u32, usize); 3],
+    /// Triangles of each workload the reference is timed on.
+    reference_triangles: [usize; 3],
+    line_canvas: u32,
+    line_lengths: (f64, f64),
+    lines: usize,
+    /// Lines whose pixel sets are compared one by one.
+    lines_compared: usize,
+    /// Lines on which production is checked against the reference.
+    lines_verified: usize,
+    repetitions: usize,
+}
+
+impl Sizes {
+    fn for_options(o: Options) -> Sizes {
+        if o.quick {
+            Sizes {
+                canvas: 256,
+                triangles: [(10, 1000), (50, 100), (250, 0)],
+                reference_triangles: [250, 25, 0],
+                line_canvas: 512,
+                line_lengths: (250.0, 350.0),
+                lines: 500,
+                lines_compared: 100,
+                lines_verified: 20,
+                repetitions: 5,
+            }
+        } else {
+            Sizes {
+                canvas: 1024,
+                triangles: [(10, 20_000), (50, 2_000), (250, 200)],
+                reference_triangles: [2_000, 200, 20],
+                line_canvas: 2048,
+                line_lengths: (1000.0, 1400.0),
+                lines: 10_000,
+                lines_compared: 1_000,
+                lines_verified: 100,
+                repetitions: 5,
+            }
+        }
+    }
+}
+
+/// One method on one workload.
+#[derive(Clone, Debug)]
+pub struct Measured {
+    pub method: String,
+    /// Median time per item (triangle or line); `None` when the method could
+    /// not run, with the reason in `note`.
+    pub per_item: Option<Duration>,
+    /// Items the timing was taken on.
+    pub timed_items: usize,
+    /// Mismatched samples (triangles) or lines whose pixel set differs
+    /// (lines), and out of how many.
+    pub errors: Option<(u64, u64)>,
+    pub exact: bool,
+    pub note: String,
+}
+
+impl Measured {
+    /// The error as a fraction, for the chart.
+    pub fn error_fraction(&self) -> Option<f64> {
+        self.errors
+            .map(|(e, of)| if of == 0 { 0.0 } else { e as f64 / of as f64 })
+    }
+}
+
+/// One workload and every method measured on it.
+#[derive(Clone, Debug)]
+pub struct Workload {
+    pub name: String,
+    pub short: String,
+    pub items: usize,
+    /// Nominal pixels per item (the triangle's area, the line's length).
+    pub pixels_per_item: f64,
+    pub error_unit: String,
+    pub methods: Vec<Measured>,
+}
+
+impl Workload {
+    pub fn method(&self, name: &str) -> Option<&Measured> {
+        self.methods.iter().find(|m| m.method == name)
+    }
+
+    /// How many times faster `a` is than `b`.
+    pub fn ratio(&self, a: &str, b: &str) -> Option<f64> {
+        let ta = self.method(a)?.per_item?.as_secs_f64();
+        let tb = self.method(b)?.per_item?.as_secs_f64();
+        (ta > 0.0).then(|| tb / ta)
+    }
+}
+
+/// A performance target and what was measured for it.
+#[derive(Clone, Debug)]
+pub struct Target {
+    pub target: String,
+    pub measured: String,
+    pub met: Option<bool>,
+    pub note: String,
+}
+
+/// Everything one run measured.
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub quick: bool,
+    pub machine: String,
+    pub cores: usize,
+    pub date: String,
+    pub version: String,
+    pub repetitions: usize,
+    pub workloads: Vec<Workload>,
+    pub targets: Vec<Target>,
+    pub notes: Vec<String>,
+    pub elapsed: Duration,
+}
+
+// --- The naive floor --------------------------------------------------------
+
+/// The floor every real rasterizer should beat: for each triangle, every
+/// pixel of its bounding box is tested against the three edge functions,
+/// each evaluated in full (no incremental stepping), in i64 on 16.8 fixed
+/// point, with the top-left rule. Triangles only, coverage only.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NaiveBbox;
+
+impl Rasterizer for NaiveBbox {
+    fn name(&self) -> &str {
+        "naive"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            triangles: true,
+            ideal_geometry: false,
+            attributes: false,
+            depth: false,
+        }
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if scene.rules.subpixel_bits != Some(8) || scene.rules.fill_rule != FillRule::TopLeft {
+            return Err(RasterError::Unsupported(
+                "only 16.8 fixed point under the top-left rule".to_owned(),
+            ));
+        }
+        if plan.interpolates() {
+            return Err(RasterError::Unsupported("coverage only".to_owned()));
+        }
+        let (w, h) = (scene.canvas.width as i64, scene.canvas.height as i64);
+        let mut frame = Frame::new(scene.canvas.width, scene.canvas.height, false, 0);
+        let fixed = |n: &Number| (n.to_f64_lossy() * 256.0).round_ties_even() as i64;
+        for (index, primitive) in scene.primitives.iter().enumerate() {
+            let Primitive::Triangle(t) = primitive else {
+                return Err(RasterError::Unsupported("triangles only".to_owned()));
+            };
+            let v = t.vertices.each_ref().map(|p| [fixed(&p.x), fixed(&p.y)]);
+            let area = orient(v[0], v[1], v[2]);
+            if area == 0 {
+                continue;
+            }
+            let sign = area.signum();
+            let owns = [0, 1, 2].map(|i| top_left_owns(v[i], v[(i + 1) % 3], v[(i + 2) % 3]));
+            let lo = |a: usize| v.iter().map(|p| p[a]).min().unwrap();
+            let hi = |a: usize| v.iter().map(|p| p[a]).max().unwrap();
+            // Pixel centres (k + 0.5) within [lo, hi], clamped to the canvas.
+            let first = |l: i64| ((l - 128 + 255) >> 8).max(0);
+            let last = |h: i64, size: i64| ((h - 128) >> 8).min(size - 1);
+            for y in first(lo(1))..=last(hi(1), h) {
+                for x in first(lo(0))..=last(hi(0), w) {
+                    let p = [x * 256 + 128, y * 256 + 128];
+                    let inside = (0..3).all(|i| {
+                        let e = orient(v[i], v[(i + 1) % 3], p).signum() * sign;
+                        e > 0 || (e == 0 && owns[i])
+                    });
+                    if inside {
+                        let i = frame.index(x as u32, y as u32);
+                        frame.hit(i, index);
+                    }
+                }
+            }
+        }
+        Ok(frame)
+    }
+}
+
+fn orient(a: [i64; 2], b: [i64; 2], p: [i64; 2]) -> i64 {
+    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+}
+
+/// Top-left ownership of edge a→b of a triangle whose third vertex is c
+/// (y down): a top edge is horizontal with the triangle below; a left edge
+/// is not horizontal and has the triangle to its right.
+fn top_left_owns(a: [i64; 2], b: [i64; 2], c: [i64; 2]) -> bool {
+    if a[1] == b[1] {
+        return c[1] > a[1];
+    }
+    let s = (c[0] - a[0]) * (b[1] - a[1]) - (c[1] - a[1]) * (b[0] - a[0]);
+    s.signum() == (b[1] - a[1]).signum()
+}
+
+// --- Workloads ----------------------------------------------------------------
+
+fn on_grid(v: f64) -> Number {
+    Number::ratio((v * 256.0).round() as i64, 256)
+}
+
+fn scene(name: &str, canvas: u32, primitives: Vec<Primitive>) -> Scene {
+    Scene {
+        name: name.to_owned(),
+        description: String::new(),
+        canvas: Canvas {
+            width: canvas,
+            height: canvas,
+        },
+        rules: Rules::default(),
+        primitives,
+        effects: Effects::default(),
+        expect: Expect::default(),
+        attribute_count: 0,
+        has_depth: false,
+    }
+}
+
+/// Right triangles with legs `leg`, randomly rotated, wholly inside the
+/// canvas (one pixel of margin).
+pub fn triangle_scene(canvas: u32, leg: u32, count: usize, seed: u64) -> Scene {
+    let mut rng = Rng::new(seed ^ u64::from(leg));
+    let l = f64::from(leg);
+    let size = f64::from(canvas);
+    let primitives = (0..count)
+        .map(|_| {
+            let theta = rng.uniform(0.0, std::f64::consts::TAU);
+            let (s, c) = theta.sin_cos();
+            let offsets = [(0.0, 0.0), (l * c, l * s), (-l * s, l * c)];
+            let min_x = offsets.iter().map(|o| o.0).fold(f64::MAX, f64::min);
+            let max_x = offsets.iter().map(|o| o.0).fold(f64::MIN, f64::max);
+            let min_y = offsets.iter().map(|o| o.1).fold(f64::MAX, f64::min);
+            let max_y = offsets.iter().map(|o| o.1).fold(f64::MIN, f64::max);
+            let ox = rng.uniform(1.0 - min_x, size - 1.0 - max_x);
+            let oy = rng.uniform(1.0 - min_y, size - 1.0 - max_y);
+            Primitive::Triangle(Triangle {
+                vertices: offsets.map(|(dx, dy)| Vertex::at(on_grid(ox + dx), on_grid(oy + dy))),
+                interpolation: Interpolation::Linear,
+            })
+        })
+        .collect();
+    scene(&format!("triangles L={leg}"), canvas, primitives)
+}
+
+/// Midpoint lines of random direction and length in `lengths`, wholly
+/// inside the canvas.
+pub fn line_scene(canvas: u32, lengths: (f64, f64), count: usize, seed: u64) -> Scene {
+    let mut rng = Rng::new(seed ^ 0x4c49_4e45);
+    let size = f64::from(canvas);
+    let primitives = (0..count)
+        .map(|_| {
+            let len = rng.uniform(lengths.0, lengths.1);
+            let theta = rng.uniform(0.0, std::f64::consts::TAU);
+            let (dx, dy) = (len * theta.cos(), len * theta.sin());
+            let x0 = rng.uniform(1.0 - dx.min(0.0), size - 1.0 - dx.max(0.0));
+            let y0 = rng.uniform(1.0 - dy.min(0.0), size - 1.0 - dy.max(0.0));
+            Primitive::Line(Line {
+                vertices: [
+                    Vertex::at(on_grid(x0), on_grid(y0)),
+                    Vertex::at(on_grid(x0 + dx), on_grid(y0 + dy)),
+                ],
+                rule: LineRule::Midpoint,
+                width: Number::ONE,
+                last_pixel: LastPixel::Include,
+                parameter: LineParameter::Major,
+                interpolation: Interpolation::Linear,
+            })
+        })
+        .collect();
+    scene("lines", canvas, primitives)
+}
+
+// --- Measuring ----------------------------------------------------------------
+
+fn median(mut times: Vec<Duration>) -> Duration {
+    times.sort();
+    times[times.len() / 2]
+}
+
+fn subset(s: &Scene, n: usize) -> Scene {
+    let mut out = s.clone();
+    out.primitives.truncate(n);
+    out
+}
+
+fn mismatched(reference: &Frame, frame: &Frame) -> u64 {
+    reference
+        .coverage
+        .iter()
+        .zip(&frame.coverage)
+        .zip(reference.last.iter().zip(&frame.last))
+        .filter(|((r, c), (rl, cl))| r != c || rl != cl)
+        .count() as u64
+}
+
+/// The triangle methods, in table order: (name, rasterizer).
+pub fn triangle_methods() -> Vec<(String, Box<dyn Rasterizer>)> {
+    let mut out: Vec<(String, Box<dyn Rasterizer>)> = vec![
+        (
+            "production".to_owned(),
+            Box::new(crate::production::Production),
+        ),
+        ("naive".to_owned(), Box::new(NaiveBbox)),
+    ];
+    let mut names = vec!["float-f32", "float-f64"];
+    if cfg!(feature = "tiny-skia") {
+        names.push("tiny-skia");
+    }
+    if cfg!(feature = "euc") {
+        names.push("euc");
+    }
+    for name in names {
+        if let Some(r) = crate::suite::rasterizer(name) {
+            out.push((name.to_owned(), r));
+        }
+    }
+    out
+}
+
+/// Methods whose coverage is exact by construction.
+fn is_exact(name: &str) -> bool {
+    matches!(name, "production" | "naive" | "reference")
+}
+
+fn measure_triangles(
+    leg: u32,
+    count: usize,
+    reference_count: usize,
+    sizes: &Sizes,
+    notes: &mut Vec<String>,
+) -> Workload {
+    let s = triangle_scene(sizes.canvas, leg, count, SEED);
+    let plan = Plan::for_scene(&s);
+    let exact = crate::reference::render(&s, &plan);
+    let covered: u64 = exact.coverage.iter().map(|&c| u64::from(c)).sum();
+    let methods = triangle_methods();
+    let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
+    let mut frames: Vec<Result<Frame, String>> = vec![Err(String::new()); methods.len()];
+    let reference_scene = subset(&s, reference_count);
+    let mut reference_times = Vec::new();
+    for rep in 0..sizes.repetitions {
+        for (k, (_, r)) in methods.iter().enumerate() {
+            if rep > 0 && frames[k].is_err() {
+                continue;
+            }
+            let started = Instant::now();
+            let result = r.rasterize(&s, &plan);
+            times[k].push(started.elapsed());
+            if rep == 0 {
+                frames[k] = result.map_err(|e| e.to_string());
+            }
+        }
+        let started = Instant::now();
+        let frame = crate::reference::render(&reference_scene, &plan);
+        reference_times.push(started.elapsed());
+        std::hint::black_box(frame);
+    }
+    let mut measured: Vec<Measured> = methods
+        .iter()
+        .zip(times)
+        .zip(frames)
+        .map(|(((name, _), times), frame)| match frame {
+            Ok(frame) => Measured {
+                method: name.clone(),
+                per_item: Some(median(times) / count as u32),
+                timed_items: count,
+                errors: Some((mismatched(&exact, &frame), covered)),
+                exact: is_exact(name),
+                note: String::new(),
+            },
+            Err(why) => Measured {
+                method: name.clone(),
+                per_item: None,
+                timed_items: 0,
+                errors: None,
+                exact: is_exact(name),
+                note: why,
+            },
+        })
+        .collect();
+    measured.push(Measured {
+        method: "reference".to_owned(),
+        per_item: Some(median(reference_times) / reference_count as u32),
+        timed_items: reference_count,
+        errors: Some((0, covered)),
+        exact: true,
+        note: if reference_count < count {
+            format!("timed on the first {reference_count} of the {count} triangles")
+        } else {
+            String::new()
+        },
+    });
+    if reference_count < count {
+        notes.push(format!(
+            "L={leg}: the reference is timed on the first {reference_count} triangles; \
+             its frame for all {count} is the exact answer every error is counted against"
+        ));
+    }
+    Workload {
+        name: format!(
+            "triangles, L={leg} ({} px each), {}² canvas",
+            leg * leg / 2,
+            sizes.canvas
+        ),
+        short: format!("L={leg}"),
+        items: count,
+        pixels_per_item: f64::from(leg * leg) / 2.0,
+        error_unit: "samples".to_owned(),
+        methods: measured,
+    }
+}
+
+/// The pixels one line lights, in a frame holding it alone.
+fn lit(frame: &Frame) -> Vec<usize> {
+    frame
+        .coverage
+        .iter()
+        .enumerate()
+        .filter(|(_, &c)| c > 0)
+        .map(|(i, _)| i)
+        .collect()
+}
+
+fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
+    let s = line_scene(sizes.line_canvas, sizes.line_lengths, sizes.lines, SEED);
+    let plan = Plan::for_scene(&s);
+    let names = ["production", "dda-f32", "dda-f64"];
+    let methods: Vec<Box<dyn Rasterizer>> = names
+        .iter()
+        .map(|n| crate::suite::rasterizer(n).expect("a built-in rasterizer"))
+        .collect();
+    let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
+    for _ in 0..sizes.repetitions {
+        for (k, r) in methods.iter().enumerate() {
+            let started = Instant::now();
+            let frame = r.rasterize(&s, &plan);
+            times[k].push(started.elapsed());
+            std::hint::black_box(frame.expect("lines draw"));
+        }
+    }
+    // Pixel sets, line by line: each line alone in the full canvas, so that
+    // the float methods round exactly as in the timed run.
+    let alone = |i: usize| {
+        let mut one = s.clone();
+        one.primitives = vec![s.primitives[i].clone()];
+        one
+    };
+    let compared = sizes.lines_compared.min(sizes.lines);
+    let mut differ = [0u64; 3];
+    let mut disagree_with_reference = 0;
+    for i in 0..compared {
+        let one = alone(i);
+        let sets: Vec<Vec<usize>> = methods
+            .iter()
+            .map(|r| lit(&r.rasterize(&one, &plan).expect("lines draw")))
+            .collect();
+        for k in 1..3 {
+            differ[k] += u64::from(sets[k] != sets[0]);
+        }
+        if i < sizes.lines_verified {
+            let exact = lit(&crate::reference::render(&one, &plan));
+            disagree_with_reference += u64::from(exact != sets[0]);
+        }
+    }
+    differ[0] = disagree_with_reference;
+    notes.push(format!(
+        "Lines: the exact rule is production's midpoint; it drew the reference's pixel set \
+         on {} of the {} lines checked against the reference. Pixel sets are compared \
+         on the first {compared} of the {} lines, each drawn alone.",
+        sizes.lines_verified.min(compared) as u64 - disagree_with_reference,
+        sizes.lines_verified.min(compared),
+        sizes.lines
+    ));
+    let measured = names
+        .iter()
+        .zip(times)
+        .enumerate()
+        .map(|(k, (name, times))| Measured {
+            method: (*name).to_owned(),
+            per_item: Some(median(times) / sizes.lines as u32),
+            timed_items: sizes.lines,
+            errors: Some(if k == 0 {
+                (differ[0], sizes.lines_verified.min(compared) as u64)
+            } else {
+                (differ[k], compared as u64)
+            }),
+            exact: k == 0,
+            note: if k == 0 {
+                "error against the reference".to_owned()
+            } else {
+                "error against the exact midpoint rule".to_owned()
+            },
+        })
+        .collect();
+    Workload {
+        name: format!(
+            "lines, {}–{} px, {}² canvas",
+            sizes.line_lengths.0, sizes.line_lengths.1, sizes.line_canvas
+        ),
+        short: "lines".to_owned(),
+        items: sizes.lines,
+        pixels_per_item: (sizes.line_lengths.0 + sizes.line_lengths.1) / 2.0,
+        error_unit: "lines".to_owned(),
+        methods: measured,
+    }
+}
+
+fn targets(workloads: &[Workload], quick: bool) -> Vec<Target> {
+    let mut out = Vec::new();
+    let find = |short: &str| workloads.iter().find(|w| w.short == short);
+    let shown = |r: Option<f64>| r.map_or("not measured".to_owned(), |r| format!("{r:.2}×"));
+    let scale = if quick {
+        " (quick run: small workloads; run the full bench for the record)"
+    } else {
+        ""
+    };
+    for (short, need, px) in [("L=50", 2.5, 1250), ("L=10", 1.5, 50)] {
+        let r = find(short).and_then(|w| w.ratio("production", "naive"));
+        out.push(Target {
+            target: format!("production ≥ {need}× naive on {px}-px triangles ({short})"),
+            measured: shown(r),
+            met: r.map(|r| r >= need),
+            note: format!(
+                "{}{scale}",
+                if short == "L=10" {
+                    "small triangles: per-triangle setup (exact snapping of rational vertices, edge setup) dominates both"
+                } else {
+                    "mid-size triangles: traversal dominates; naive tests every bounding-box pixel in full"
+                }
+            ),
+        });
+    }
+    for w in workloads.iter().filter(|w| w.short.starts_with("L=")) {
+        let r = w.ratio("production", "euc");
+        if w.method("euc").is_none() {
+            continue;
+        }
+        out.push(Target {
+            target: format!("production ≥ 3× euc ({})", w.short),
+            measured: shown(r),
+            met: r.map(|r| r >= 3.0),
+            note: format!(
+                "euc is timed through its adapter (scene conversion and read-back included){scale}"
+            ),
+        });
+    }
+    if let Some(w) = find("lines") {
+        let r = w.ratio("production", "dda-f32");
+        out.push(Target {
+            target: "lines: production midpoint ≥ 2× dda-f32".to_owned(),
+            measured: shown(r),
+            met: r.map(|r| r >= 2.0),
+            note: format!("both write the same frame (coverage and last primitive per pixel); memory traffic bounds both{scale}"),
+        });
+    }
+    for w in workloads.iter().filter(|w| w.short.starts_with("L=")) {
+        // Within 10×: production is at most 10× faster.
+        let r = w.ratio("production", "reference");
+        out.push(Target {
+            target: format!("reference within 10× of production ({})", w.short),
+            measured: r.map_or("not measured".to_owned(), |r| {
+                format!("production {r:.2}× faster")
+            }),
+            met: r.map(|r| r <= 10.0),
+            note: format!("the reference tests every bounding-box sample with exact integer arithmetic{scale}"),
+        });
+    }
+    out
+}
+
+fn machine() -> (String, usize) {
+    let info = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+    let model = info
+        .lines()
+        .find(|l| l.starts_with("model name"))
+        .and_then(|l| l.split_once(':'))
+        .map_or("unknown CPU".to_owned(), |(_, m)| m.trim().to_owned());
+    let cores = info.lines().filter(|l| l.starts_with("processor")).count();
+    let cores = if cores > 0 {
+        cores
+    } else {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    };
+    (model, cores)
+}
+
+/// Runs every workload.
+pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
+    let started = Instant::now();
+    let sizes = Sizes::for_options(options);
+    let mut notes = Vec::new();
+    let mut workloads = Vec::new();
+    for (k, &(leg, count)) in sizes.triangles.iter().enumerate() {
+        if count == 0 {
+            notes.push(format!(
+                "L={leg} is left out of the quick run (it does not fit a small canvas)."
+            ));
+            continue;
+        }
+        progress(&format!("triangles L={leg}: {count} triangles"));
+        workloads.push(measure_triangles(
+            leg,
+            count,
+            sizes.reference_triangles[k],
+            &sizes,
+            &mut notes,
+        ));
+    }
+    progress(&format!("lines: {} lines", sizes.lines));
+    workloads.push(measure_lines(&sizes, &mut notes));
+    let (machine, cores) = machine();
+    let targets = targets(&workloads, options.quick);
+    Report {
+        quick: options.quick,
+        machine,
+        cores,
+        date: crate::matrix::today(),
+        version: env!("CARGO_PKG_VERSION").to_owned(),
+        repetitions: sizes.repetitions,
+        workloads,
+        targets,
+        notes,
+        elapsed: started.elapsed(),
+    }
+}
+
+// --- Writing ------------------------------------------------------------------
+
+fn time_text(d: Duration) -> String {
+    let s = d.as_secs_f64();
+    if s >= 1e-3 {
+        format!("{:.3} ms", s * 1e3)
+    } else if s >= 1e-6 {
+        format!("{:.3} µs", s * 1e6)
+    } else {
+        format!("{:.1} ns", s * 1e9)
+    }
+}
+
+/// Three significant digits.
+fn significant(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let digits = (2 - v.abs().log10().floor() as i32).max(0) as usize;
+    format!("{v:.digits$}")
+}
+
+impl Report {
+    pub fn to_markdown(&self, svg_name: &str) -> String {
+        let mut md = String::new();
+        let _ = writeln!(md, "# rastercheck bench\n");
+        let _ = writeln!(
+            md,
+            "Written by `rastercheck bench{}`. Every number below was measured in this one run, \
+             on the same seeded workloads (seed {SEED:#x}), one thread.\n",
+            if self.quick { " --quick" } else { "" }
+        );
+        let _ = writeln!(md, "- machine: {} ({} cores)", self.machine, self.cores);
+        let _ = writeln!(md, "- date: {}", self.date);
+        let _ = writeln!(md, "- rastercheck version: {}", self.version);
+        let _ = writeln!(
+            md,
+            "- timing: median of {} interleaved repetitions per method; run took {:.1} s",
+            self.repetitions,
+            self.elapsed.as_secs_f64()
+        );
+        if self.quick {
+            let _ = writeln!(
+                md,
+                "- **quick run**: small canvas, few items; timings are indicative only"
+            );
+        }
+        let _ = writeln!(md);
+        let _ = writeln!(md, "![accuracy against time]({svg_name})\n");
+        let _ = writeln!(md, "## Workloads\n");
+        for w in &self.workloads {
+            let _ = writeln!(md, "### {} ({} items)\n", w.name, w.items);
+            let per_second = if w.short == "lines" {
+                "Mlines/s"
+            } else {
+                "Mtri/s"
+            };
+            let _ = writeln!(
+                md,
+                "| method | time per item | {per_second} | Mpix/s | × production | error ({}) | note |",
+                w.error_unit
+            );
+            let _ = writeln!(md, "|---|---|---|---|---|---|---|");
+            for m in &w.methods {
+                let (time, rate, mpix) = match m.per_item {
+                    Some(d) if d.as_nanos() > 0 => {
+                        let s = d.as_secs_f64();
+                        (
+                            time_text(d),
+                            significant(1e-6 / s),
+                            significant(w.pixels_per_item * 1e-6 / s),
+                        )
+                    }
+                    _ => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
+                };
+                let ratio = w
+                    .ratio(&m.method, "production")
+                    .map_or("—".to_owned(), |r| format!("{r:.2}"));
+                let error = match m.errors {
+                    Some((0, of)) => format!("0 of {of} (exact)"),
+                    Some((e, of)) => {
+                        format!("{e} of {of} ({:.3}%)", 100.0 * e as f64 / of.max(1) as f64)
+                    }
+                    None => "—".to_owned(),
+                };
+                let _ = writeln!(
+                    md,
+                    "| `{}` | {time} | {rate} | {mpix} | {ratio} | {error} | {} |",
+                    m.method, m.note
+                );
+            }
+            let _ = writeln!(md);
+        }
+        let _ = writeln!(
+            md,
+            "“× production” is the method's speed relative to production measured side by side \
+             (above 1: faster). Mpix/s counts nominal pixels (a triangle's area L²/2, a line's \
+             mean length). Triangle errors are samples whose coverage count or last primitive \
+             differs from the exact reference's frame for the whole workload, out of the \
+             reference's covered samples (counted with multiplicity).\n"
+        );
+        let _ = writeln!(md, "## Performance targets\n");
+        let _ = writeln!(md, "| target | measured | status | note |");
+        let _ = writeln!(md, "|---|---|---|---|");
+        for t in &self.targets {
+            let status = match t.met {
+                Some(true) => "met",
+                Some(false) => "not met",
+                None => "not measured",
+            };
+            let _ = writeln!(
+                md,
+                "| {} | {} | {status} | {} |",
+                t.target, t.measured, t.note
+            );
+        }
+        let _ = writeln!(md, "\n## Notes\n");
+        for n in &self.notes {
+            let _ = writeln!(md, "- {n}");
+        }
+        let _ = writeln!(
+            md,
+            "- Adapters (tiny-skia, euc) are timed through rastercheck's adapters: converting \
+             the scene and reading their pixels back into a frame is included."
+        );
+        let _ = writeln!(
+            md,
+            "- Only ratios measured side by side in this run are claims; absolute times \
+             depend on the machine."
+        );
+        md
+    }
+
+    /// A log–log chart of error against time per item, one point per method
+    /// per workload, the Pareto front of each workload marked.
+    pub fn to_svg(&self) -> String {
+        const W: f64 = 820.0;
+        const H: f64 = 520.0;
+        const LEFT: f64 = 80.0;
+        const RIGHT: f64 = 160.0;
+        const TOP: f64 = 40.0;
+        const BOTTOM: f64 = 60.0;
+        const COLOURS: [&str; 5] = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
+        let points: Vec<(usize, &Measured, f64, f64)> = self
+            .workloads
+            .iter()
+            .enumerate()
+            .flat_map(|(k, w)| {
+                w.methods.iter().filter_map(move |m| {
+                    Some((k, m, m.per_item?.as_secs_f64(), m.error_fraction()?))
+                })
+            })
+            .filter(|p| p.2 > 0.0)
+            .collect();
+        let lt = |v: f64| v.log10();
+        let (mut t0, mut t1) = points.iter().fold((f64::MAX, f64::MIN), |(a, b), p| {
+            (a.min(lt(p.2)), b.max(lt(p.2)))
+        });
+        if points.is_empty() {
+            (t0, t1) = (-9.0, -3.0);
+        }
+        t0 = t0.floor();
+        t1 = t1.ceil().max(t0 + 1.0);
+        let nonzero: Vec<f64> = points.iter().map(|p| p.3).filter(|&e| e > 0.0).collect();
+        let mut e0 = nonzero.iter().fold(f64::MAX, |a, &e| a.min(lt(e)));
+        let mut e1 = nonzero.iter().fold(f64::MIN, |a, &e| a.max(lt(e)));
+        if nonzero.is_empty() {
+            (e0, e1) = (-4.0, 0.0);
+        }
+        e0 = e0.floor();
+        e1 = e1.ceil().max(e0 + 1.0);
+        let plot_h = H - TOP - BOTTOM;
+        let floor_y = TOP + plot_h; // zero errors
+        let x_of = |t: f64| LEFT + (lt(t) - t0) / (t1 - t0) * (W - LEFT - RIGHT);
+        let y_of = |e: f64| {
+            if e <= 0.0 {
+                floor_y
+            } else {
+                TOP + (e1 - lt(e)) / (e1 - e0) * (plot_h - 40.0)
+            }
+        };
+        let mut svg = String::new();
+        let _ = writeln!(
+            svg,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" viewBox="0 0 {W} {H}" font-family="sans-serif" font-size="11">"#
+        );
+        let _ = writeln!(svg, r#"<rect width="{W}" height="{H}" fill="white"/>"#);
+        let _ = writeln!(
+            svg,
+            r#"<text x="{}" y="20" text-anchor="middle" font-size="14">Error against time per item (log–log); filled: Pareto front of its workload</text>"#,
+            W / 2.0
+        );
+        // Axes and grid.
+        let right = W - RIGHT;
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{LEFT}" y1="{TOP}" x2="{LEFT}" y2="{floor_y}" stroke="#000"/><line x1="{LEFT}" y1="{floor_y}" x2="{right}" y2="{floor_y}" stroke="#000"/>"##
+        );
+        for d in (t0 as i32)..=(t1 as i32) {
+            let x = x_of(10f64.powi(d));
+            let _ = writeln!(
+                svg,
+                r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{floor_y}" stroke="#ddd"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"##,
+                floor_y + 16.0,
+                time_text(Duration::from_secs_f64(10f64.powi(d)))
+            );
+        }
+        for d in (e0 as i32)..=(e1 as i32) {
+            let y = y_of(10f64.powi(d));
+            let _ = writeln!(
+                svg,
+                r##"<line x1="{LEFT}" y1="{y:.1}" x2="{right}" y2="{y:.1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{d}</text>"##,
+                LEFT - 6.0,
+                y + 4.0
+            );
+        }
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{LEFT}" y1="{floor_y}" x2="{right}" y2="{floor_y}" stroke="#000" stroke-width="2"/><text x="{:.1}" y="{:.1}" text-anchor="end" font-weight="bold">exact</text>"##,
+            LEFT - 6.0,
+            floor_y + 4.0
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">time per item (triangle or line), log scale</text>"#,
+            (LEFT + right) / 2.0,
+            H - 16.0
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text transform="translate(18 {:.1}) rotate(-90)" text-anchor="middle">error (mismatched sample or line fraction), log scale</text>"#,
+            (TOP + floor_y) / 2.0
+        );
+        // Points, Pareto fronts, legend.
+        for (k, w) in self.workloads.iter().enumerate() {
+            let colour = COLOURS[k % COLOURS.len()];
+            let mine: Vec<&(usize, &Measured, f64, f64)> =
+                points.iter().filter(|p| p.0 == k).collect();
+            let mut front: Vec<(f64, f64)> = mine
+                .iter()
+                .filter(|p| {
+                    !mine
+                        .iter()
+                        .any(|q| q.2 <= p.2 && q.3 <= p.3 && (q.2 < p.2 || q.3 < p.3))
+                })
+                .map(|p| (p.2, p.3))
+                .collect();
+            front.sort_by(|a, b| a.0.total_cmp(&b.0));
+            if front.len() > 1 {
+                let path: Vec<String> = front
+                    .iter()
+                    .map(|&(t, e)| format!("{:.1},{:.1}", x_of(t), y_of(e)))
+                    .collect();
+                let _ = writeln!(
+                    svg,
+                    r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-dasharray="4 3"/>"#,
+                    path.join(" ")
+                );
+            }
+            for p in &mine {
+                let on_front = front.contains(&(p.2, p.3));
+                let (x, y) = (x_of(p.2), y_of(p.3));
+                let fill = if on_front { colour } else { "white" };
+                let _ = writeln!(
+                    svg,
+                    r#"<circle cx="{x:.1}" cy="{y:.1}" r="4" fill="{fill}" stroke="{colour}" stroke-width="1.5"/><text x="{:.1}" y="{:.1}" fill="{colour}" transform="rotate(-30 {:.1} {:.1})">{} {}</text>"#,
+                    x + 6.0,
+                    y - 4.0,
+                    x + 6.0,
+                    y - 4.0,
+                    p.1.method,
+                    w.short
+                );
+            }
+            let ly = TOP + 20.0 + 18.0 * k as f64;
+            let _ = writeln!(
+                svg,
+                r#"<circle cx="{:.1}" cy="{ly:.1}" r="4" fill="{colour}"/><text x="{:.1}" y="{:.1}">{}</text>"#,
+                right + 20.0,
+                right + 30.0,
+                ly + 4.0,
+                w.short
+            );
+        }
+        let _ = writeln!(svg, "</svg>");
+        svg
+    }
+}

@@ -1,0 +1,104 @@
+//! `rastercheck bench --quick`: writes BENCH.md and bench.svg with every
+//! section and method. Never asserts on timing, only that numbers are there
+//! and that exact methods have no errors.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn row<'a>(md: &'a str, section: &str, method: &str) -> &'a str {
+    let start = md
+        .find(section)
+        .unwrap_or_else(|| panic!("no section {section:?}:\n{md}"));
+    let rest = &md[start..];
+    let end = rest[4..].find("\n### ").map_or(rest.len(), |e| e + 4);
+    rest[..end]
+        .lines()
+        .find(|l| l.starts_with(&format!("| `{method}` |")))
+        .unwrap_or_else(|| panic!("no row for {method} in {section:?}:\n{md}"))
+}
+
+#[test]
+fn quick_bench_writes_the_report_and_the_chart() {
+    let dir = std::env::temp_dir().join(format!("rastercheck-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out_file: PathBuf = dir.join("BENCH.md");
+    let out = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(["bench", "--quick", "--out"])
+        .arg(&out_file)
+        .output()
+        .expect("the binary runs");
+    let shown = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(out.status.code(), Some(0), "{shown}");
+    let md = std::fs::read_to_string(&out_file).expect("BENCH.md written");
+    let svg = std::fs::read_to_string(dir.join("bench.svg")).expect("bench.svg written");
+
+    for heading in [
+        "# rastercheck bench",
+        "- machine: ",
+        "- date: ",
+        "- rastercheck version: ",
+        "![accuracy against time](bench.svg)",
+        "## Workloads",
+        "### triangles, L=10",
+        "### triangles, L=50",
+        "### lines",
+        "## Performance targets",
+        "## Notes",
+    ] {
+        assert!(md.contains(heading), "no {heading:?} in:\n{md}");
+    }
+    let mut triangle_methods: Vec<String> = rastercheck::bench::triangle_methods()
+        .into_iter()
+        .map(|(name, _)| name)
+        .collect();
+    triangle_methods.push("reference".to_owned());
+    for section in ["### triangles, L=10", "### triangles, L=50"] {
+        for method in &triangle_methods {
+            let line = row(&md, section, method);
+            assert!(
+                line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"),
+                "no time in {line}"
+            );
+            assert!(line.contains(" of "), "no error count in {line}");
+            if ["production", "naive", "reference"].contains(&method.as_str()) {
+                assert!(
+                    line.contains("| 0 of "),
+                    "an exact method has errors: {line}"
+                );
+            }
+            assert!(
+                svg.contains(&format!(">{method} L=")),
+                "{method} not in the chart"
+            );
+        }
+    }
+    for method in ["production", "dda-f32", "dda-f64"] {
+        let line = row(&md, "### lines", method);
+        assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        assert!(
+            svg.contains(&format!(">{method} lines<")),
+            "{method} not in the chart"
+        );
+    }
+    assert!(row(&md, "### lines", "production").contains("| 0 of "));
+    for target in [
+        "naive on 1250-px",
+        "naive on 50-px",
+        "dda-f32",
+        "within 10×",
+    ] {
+        let targets = &md[md.find("## Performance targets").unwrap()..];
+        let line = targets
+            .lines()
+            .find(|l| l.starts_with("| ") && l.contains(target))
+            .unwrap_or_else(|| panic!("no target {target:?}:\n{md}"));
+        assert!(line.contains('×') && (line.contains("| met |") || line.contains("| not met |")));
+    }
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    assert!(svg.contains(">exact<") && svg.contains("time per item") && svg.contains("error ("));
+    std::fs::remove_dir_all(&dir).ok();
+}
