@@ -168,6 +168,8 @@ impl Rasterizer for NaiveBbox {
             ideal_geometry: false,
             attributes: false,
             depth: false,
+            polygons: false,
+            antialias: false,
         }
     }
 

@@ -1,17 +1,27 @@
 //! What every rasterizer returns: per-sample coverage counts, the primitive
-//! that wrote each sample last, and the interpolated depth and attributes.
+//! that wrote each sample last, and the interpolated depth and attributes;
+//! for antialiased scenes, also a resolved coverage per pixel.
 //!
-//! One sample per pixel, at its centre, until antialiasing arrives. Values
-//! are stored as f64 so that one type holds both a candidate's f32 output
-//! (widened exactly) and the reference's exact values (rounded to odd, see
+//! Without antialiasing there is one sample per pixel, at its centre. With
+//! it, each pixel holds a run of `samples` slots, sample s of pixel p at
+//! `p · samples + s`, in the order of the plan's offsets. Values are stored
+//! as f64 so that one type holds both a candidate's f32 output (widened
+//! exactly) and the reference's exact values (rounded to odd, see
 //! `reference::exact`).
+
+use crate::plan::Plan;
 
 /// A rasterizer's output for one scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Frame {
     pub width: u32,
     pub height: u32,
-    /// How many primitives cover each sample, row-major from the top-left.
+    /// Samples per pixel: the length of each pixel's run of slots. 0 for a
+    /// frame that holds only resolved coverage (an area method has no
+    /// samples).
+    pub samples: u32,
+    /// How many primitives cover each sample, pixels row-major from the
+    /// top-left, each pixel's samples together.
     pub coverage: Vec<u16>,
     /// Index + 1 of the last primitive (in scene order) that covered each
     /// sample; 0 where none did.
@@ -22,28 +32,73 @@ pub struct Frame {
     /// One channel per attribute, each holding the last primitive's value at
     /// every sample; 0 where uncovered.
     pub attributes: Vec<Vec<f64>>,
+    /// Antialiased scenes: each pixel's coverage, the sum over primitives of
+    /// the fraction of the pixel each covers (box resolve). The reference
+    /// gives the exact area.
+    pub resolved: Option<Vec<f64>>,
 }
 
 impl Frame {
-    /// An empty frame with room for what the plan asks for.
+    /// An empty single-sample frame with room for depth and attributes.
     pub fn new(width: u32, height: u32, depth: bool, attributes: usize) -> Frame {
-        let n = width as usize * height as usize;
+        Frame::with_samples(width, height, 1, depth, attributes)
+    }
+
+    /// An empty frame with room for what the plan asks for.
+    pub fn for_plan(width: u32, height: u32, plan: &Plan) -> Frame {
+        let mut frame = Frame::with_samples(
+            width,
+            height,
+            plan.samples_per_pixel,
+            plan.depth,
+            plan.attributes,
+        );
+        if plan.antialias.is_some() {
+            frame.resolved = Some(vec![0.0; frame.pixel_count()]);
+        }
+        frame
+    }
+
+    fn with_samples(
+        width: u32,
+        height: u32,
+        samples: u32,
+        depth: bool,
+        attributes: usize,
+    ) -> Frame {
+        let n = width as usize * height as usize * samples as usize;
         Frame {
             width,
             height,
+            samples,
             coverage: vec![0; n],
             last: vec![0; n],
             depth: depth.then(|| vec![0.0; n]),
             attributes: vec![vec![0.0; n]; attributes],
+            resolved: None,
         }
+    }
+
+    /// A frame of resolved coverage only, from a method without samples.
+    pub fn resolved_only(width: u32, height: u32, resolved: Vec<f64>) -> Frame {
+        assert_eq!(resolved.len(), width as usize * height as usize);
+        Frame {
+            resolved: Some(resolved),
+            ..Frame::with_samples(width, height, 0, false, 0)
+        }
+    }
+
+    pub fn pixel_count(&self) -> usize {
+        self.width as usize * self.height as usize
     }
 
     pub fn sample_count(&self) -> usize {
         self.coverage.len()
     }
 
+    /// The slot of pixel (x, y)'s first sample.
     pub fn index(&self, x: u32, y: u32) -> usize {
-        y as usize * self.width as usize + x as usize
+        (y as usize * self.width as usize + x as usize) * self.samples as usize
     }
 
     /// Samples covered at least once.
@@ -52,10 +107,25 @@ impl Frame {
     }
 
     /// Records that primitive `primitive` (0-based) covers sample `i`.
-    /// Returns the slot's index so the caller can write values.
     #[inline]
     pub fn hit(&mut self, i: usize, primitive: usize) {
         self.coverage[i] = self.coverage[i].saturating_add(1);
         self.last[i] = primitive as u32 + 1;
+    }
+
+    /// The box resolve of the samples: each pixel's coverage counts summed
+    /// and divided by the sample count: a quotient of two small integers,
+    /// rounded once.
+    pub fn box_resolve(&self) -> Vec<f64> {
+        let n = self.samples.max(1) as usize;
+        self.coverage
+            .chunks(n)
+            .map(|run| run.iter().map(|&c| u32::from(c)).sum::<u32>() as f64 / n as f64)
+            .collect()
+    }
+
+    /// Fills `resolved` with the box resolve of the samples.
+    pub fn resolve(&mut self) {
+        self.resolved = Some(self.box_resolve());
     }
 }

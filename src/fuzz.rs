@@ -1350,6 +1350,7 @@ impl Shrinker<'_> {
                 match p {
                     Primitive::Triangle(t) => t.interpolation = Interpolation::Perspective,
                     Primitive::Line(l) => l.interpolation = Interpolation::Perspective,
+                    Primitive::Polygon(_) => {}
                 }
                 changed
             }));
@@ -1361,7 +1362,7 @@ impl Shrinker<'_> {
                     l.parameter = LineParameter::Major;
                     before != (l.width.clone(), l.last_pixel, l.parameter)
                 }
-                Primitive::Triangle(_) => false,
+                Primitive::Triangle(_) | Primitive::Polygon(_) => false,
             }));
             for option in 0..3 {
                 edits.push(Box::new(move |s| match &mut s.primitives[i] {
@@ -1376,7 +1377,7 @@ impl Shrinker<'_> {
                                 != LineParameter::Major
                         }
                     },
-                    Primitive::Triangle(_) => false,
+                    Primitive::Triangle(_) | Primitive::Polygon(_) => false,
                 }));
             }
         }
@@ -1669,6 +1670,19 @@ fn primitive_json(scene: &Scene, p: &Primitive) -> String {
     let vertices: Vec<String> = p.vertices().iter().map(|v| vertex_json(scene, v)).collect();
     let mut fields = match p {
         Primitive::Triangle(_) => vec![format!("\"triangle\": [{}]", vertices.join(", "))],
+        Primitive::Polygon(polygon) => {
+            let contours: Vec<String> = polygon
+                .contours()
+                .map(|c| {
+                    let vs: Vec<String> = c.iter().map(|v| vertex_json(scene, v)).collect();
+                    format!("[{}]", vs.join(", "))
+                })
+                .collect();
+            vec![
+                format!("\"contours\": [{}]", contours.join(", ")),
+                format!("\"fill\": \"{}\"", polygon.fill.name()),
+            ]
+        }
         Primitive::Line(l) => {
             let mut f = vec![
                 format!("\"line\": [{}]", vertices.join(", ")),
@@ -1686,7 +1700,7 @@ fn primitive_json(scene: &Scene, p: &Primitive) -> String {
             f
         }
     };
-    if p.interpolation() != Interpolation::Perspective {
+    if !matches!(p, Primitive::Polygon(_)) && p.interpolation() != Interpolation::Perspective {
         fields.push(format!(
             "\"interpolation\": \"{}\"",
             p.interpolation().name()

@@ -75,7 +75,7 @@ impl Mutation {
             Mutation::Shrunk => {
                 for t in scene.primitives.iter_mut().filter_map(|p| match p {
                     Primitive::Triangle(t) => Some(t),
-                    Primitive::Line(_) => None,
+                    _ => None,
                 }) {
                     let sum = |f: fn(&crate::scene::Vertex) -> &Number| {
                         t.vertices.iter().fold(Number::ZERO, |acc, v| &acc + f(v))
@@ -101,6 +101,7 @@ impl Mutation {
                     let interpolation = match primitive {
                         Primitive::Triangle(t) => &mut t.interpolation,
                         Primitive::Line(l) => &mut l.interpolation,
+                        Primitive::Polygon(_) => continue,
                     };
                     if *interpolation == Interpolation::Perspective {
                         *interpolation = Interpolation::Linear;

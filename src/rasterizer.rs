@@ -16,6 +16,11 @@ pub struct Capabilities {
     pub ideal_geometry: bool,
     pub attributes: bool,
     pub depth: bool,
+    /// `polygon` primitives (SPEC.md §14.1).
+    pub polygons: bool,
+    /// Scenes with `effects.antialias`: several samples per pixel and a
+    /// resolved coverage per pixel (SPEC.md §14).
+    pub antialias: bool,
 }
 
 impl Capabilities {
@@ -25,7 +30,21 @@ impl Capabilities {
             ideal_geometry: true,
             attributes: true,
             depth: true,
+            polygons: true,
+            antialias: true,
         }
+    }
+
+    /// Why a scene asks for more than these capabilities, if it does.
+    /// The harness checks this before it calls a rasterizer.
+    pub fn refuses(&self, scene: &Scene) -> Option<String> {
+        if !self.polygons && scene.has_polygons() {
+            return Some("this rasterizer does not draw polygons".to_owned());
+        }
+        if !self.antialias && scene.effects.antialias.is_some() {
+            return Some("this rasterizer does not antialias".to_owned());
+        }
+        None
     }
 }
 

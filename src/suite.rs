@@ -116,6 +116,7 @@ pub fn rasterizer_names() -> Vec<&'static str> {
         "float-f32",
         "float-f64",
     ];
+    names.extend(crate::production::methods().iter().map(|m| m.name));
     names.extend(Mutation::ALL.iter().map(|m| m.name()));
     names.extend(crate::adapters::names());
     names
@@ -130,10 +131,16 @@ pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
         "dda-f64" => Some(Box::new(DdaF64)),
         "float-f32" => Some(Box::new(FloatF32)),
         "float-f64" => Some(Box::new(FloatF64)),
-        _ => Mutation::ALL
+        _ => crate::production::methods()
             .into_iter()
-            .find(|m| m.name() == name)
-            .map(|m| Box::new(Mutant(m)) as Box<dyn Rasterizer>)
+            .find(|m| m.name == name)
+            .map(|m| (m.make)())
+            .or_else(|| {
+                Mutation::ALL
+                    .into_iter()
+                    .find(|m| m.name() == name)
+                    .map(|m| Box::new(Mutant(m)) as Box<dyn Rasterizer>)
+            })
             .or_else(|| crate::adapters::by_name(name)),
     }
 }
@@ -224,6 +231,13 @@ pub fn run_candidate(
     candidate: &dyn Rasterizer,
 ) -> CandidateRun {
     let started = Instant::now();
+    if let Some(why) = candidate.capabilities().refuses(scene) {
+        return CandidateRun::without_frame(
+            candidate.name().to_owned(),
+            Verdict::Unsupported(why),
+            started.elapsed(),
+        );
+    }
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         candidate.rasterize(scene, &reference.plan)
     }));
@@ -246,9 +260,17 @@ pub fn run_candidate(
             );
         }
     };
+    let samples_only_resolved = frame.samples == 0 && reference.frame.resolved.is_some();
     if (frame.width, frame.height) != (reference.frame.width, reference.frame.height)
-        || frame.attributes.len() != reference.frame.attributes.len()
-        || frame.depth.is_some() != reference.frame.depth.is_some()
+        || !(frame.samples == reference.frame.samples || samples_only_resolved)
+        || frame.resolved.is_some() != reference.frame.resolved.is_some()
+        || frame
+            .resolved
+            .as_ref()
+            .is_some_and(|r| r.len() != frame.pixel_count())
+        || frame.sample_count() != frame.pixel_count() * frame.samples as usize
+        || frame.attributes.len() != reference.frame.attributes.len() && !samples_only_resolved
+        || frame.depth.is_some() != reference.frame.depth.is_some() && !samples_only_resolved
     {
         let why = "returned a frame of the wrong size or with the wrong channels".to_owned();
         return CandidateRun {

@@ -145,7 +145,11 @@ impl Rasterizer for Euc {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities::everything()
+        Capabilities {
+            polygons: false,
+            antialias: false,
+            ..Capabilities::everything()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -206,7 +206,11 @@ impl Rasterizer for External {
 
     /// Everything: the program says what it does not do, case by case.
     fn capabilities(&self) -> Capabilities {
-        Capabilities::everything()
+        Capabilities {
+            polygons: false,
+            antialias: false,
+            ..Capabilities::everything()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -357,6 +361,13 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
                 },
                 "interpolation": l.interpolation.name(),
                 "exact": { "width": exact(&l.width) },
+            }),
+            Primitive::Polygon(polygon) => json!({
+                "contours": polygon
+                    .contours()
+                    .map(|c| c.iter().map(vertex).collect::<Vec<_>>())
+                    .collect::<Vec<_>>(),
+                "fill": polygon.fill.name(),
             }),
         })
         .collect();

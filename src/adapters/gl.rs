@@ -144,6 +144,8 @@ fn capabilities() -> Capabilities {
         ideal_geometry: false,
         attributes: true,
         depth: true,
+        polygons: false,
+        antialias: false,
     }
 }
 

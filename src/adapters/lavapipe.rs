@@ -109,6 +109,8 @@ impl Rasterizer for Lavapipe {
             ideal_geometry: false,
             attributes: true,
             depth: true,
+            polygons: false,
+            antialias: false,
         }
     }
 

@@ -53,6 +53,8 @@ impl Rasterizer for TinySkia {
             ideal_geometry: true,
             attributes: false,
             depth: false,
+            polygons: false,
+            antialias: false,
         }
     }
 

@@ -688,6 +688,7 @@ fn parallelogram_in<E: EdgeInt>(
     );
     let coverage_only = Plan {
         samples_per_pixel: 1,
+        antialias: None,
         depth: false,
         attributes: 0,
     };
@@ -1151,6 +1152,7 @@ mod tests {
         let mut frame = frame_for(canvas);
         let plan = Plan {
             samples_per_pixel: 1,
+            antialias: None,
             depth: false,
             attributes: 0,
         };
@@ -1363,6 +1365,7 @@ mod tests {
         let mut line = test_line(LineRule::Midpoint, Number::ONE);
         let plan = Plan {
             samples_per_pixel: 1,
+            antialias: None,
             depth: true,
             attributes: 0,
         };

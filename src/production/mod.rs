@@ -2,9 +2,11 @@
 //! f32 interpolation. It imports the scene model and the output types, and
 //! never the reference.
 
+pub mod antialias;
 pub mod fixed;
 pub mod foils;
 pub mod line;
+pub mod polygon;
 pub mod setup;
 pub mod traverse;
 
@@ -18,6 +20,21 @@ use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Interpolation, Number, Primitive, Scene, Triangle};
 
+/// A production method that is a rasterizer of its own (a polygon fill, an
+/// antialiasing method), by its command-line name.
+pub struct Method {
+    pub name: &'static str,
+    pub make: fn() -> Box<dyn Rasterizer>,
+}
+
+/// Production's other methods, each measured against the reference on its
+/// own.
+pub fn methods() -> Vec<Method> {
+    let mut all = polygon::methods();
+    all.extend(antialias::methods());
+    all
+}
+
 /// The production rasterizer.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Production;
@@ -29,7 +46,11 @@ impl Rasterizer for Production {
 
     fn capabilities(&self) -> Capabilities {
         // Ideal geometry only when its coordinates are dyadic: checked per scene.
-        Capabilities::everything()
+        Capabilities {
+            polygons: false,
+            antialias: false,
+            ..Capabilities::everything()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -92,6 +113,9 @@ fn draw<E: EdgeInt>(
                     index,
                     frame,
                 )?;
+            }
+            Primitive::Polygon(polygon) => {
+                polygon::draw::<E>(scene, plan, format, index, polygon, frame)?;
             }
         }
     }

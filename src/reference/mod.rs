@@ -95,6 +95,8 @@ fn visit_scene<F>(
                     visit(index, p, exact)
                 })
             }
+            // Polygons arrive with their own module.
+            Primitive::Polygon(_) => {}
             Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, |p, t| {
                 visit(
                     index,

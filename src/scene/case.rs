@@ -13,9 +13,10 @@ use serde_json::{Map, Value};
 
 use super::number::Number;
 use super::rules::{
-    limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, Rules,
+    limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
 };
-use super::{Canvas, Effects, Expect, Line, Primitive, Scene, Triangle, Vertex};
+use super::samples::{Antialias, Pattern};
+use super::{Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, Triangle, Vertex};
 
 /// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -325,7 +326,62 @@ impl Reader<'_> {
             has_depth,
         };
         self.check_attribute_counts(&scene, &primitives_path)?;
+        self.check_combinations(&scene, &fields)?;
         Ok(scene)
+    }
+
+    /// Rules, primitives, effects and expectations that are each valid
+    /// alone but not together.
+    fn check_combinations(&self, scene: &Scene, fields: &Fields) -> Result<()> {
+        let primitives_path = Path::root().key("primitives");
+        if scene.rules.fill_rule == FillRule::AllEdges {
+            if let Some(i) = scene
+                .primitives
+                .iter()
+                .position(|p| matches!(p, Primitive::Polygon(_)))
+            {
+                return fail(
+                    &primitives_path.index(i),
+                    "a polygon needs one of the four consistent tie rules (top-left, top-right, bottom-left, bottom-right), not all-edges",
+                );
+            }
+        }
+        let antialias = scene.effects.antialias.is_some();
+        if antialias {
+            for (i, primitive) in scene.primitives.iter().enumerate() {
+                let Primitive::Line(line) = primitive else {
+                    continue;
+                };
+                let why = match line.rule {
+                    LineRule::Midpoint | LineRule::DiamondExit => format!(
+                        "a {} line chooses whole pixels and has no samples; antialiasing samples triangles, polygons and parallelogram lines",
+                        line.rule.name()
+                    ),
+                    LineRule::Rectangle => "a rectangle line has irrational corners, so its exact area coverage is not a rational number; antialias parallelogram lines".to_owned(),
+                    LineRule::Parallelogram => continue,
+                };
+                return fail(&primitives_path.index(i), why);
+            }
+        }
+        if !antialias {
+            let e = &scene.expect;
+            let given = [
+                ("max_coverage_error", e.max_coverage_error.is_some()),
+                ("max_coverage_rms", e.max_coverage_rms.is_some()),
+                ("area", e.area.is_some()),
+            ];
+            if let (Some((key, _)), Some((_, expect_path))) =
+                (given.iter().find(|(_, g)| *g), fields.get("expect"))
+            {
+                return fail(
+                    &expect_path.key(key),
+                    format!(
+                        "{key} measures antialiased coverage; the case needs effects.antialias"
+                    ),
+                );
+            }
+        }
+        Ok(())
     }
 
     fn canvas(&self, value: &Value, path: &Path) -> Result<Canvas> {
@@ -420,6 +476,9 @@ impl Reader<'_> {
     fn primitive(&self, value: &Value, path: &Path) -> Result<Primitive> {
         if value.get("line").is_some() {
             return self.line(value, path);
+        }
+        if value.get("polygon").is_some() || value.get("contours").is_some() {
+            return self.polygon(value, path);
         }
         let fields = Fields::new(value, path, &["triangle", "interpolation"])?;
         let (vertices, vertices_path) = fields.require("triangle")?;
@@ -533,6 +592,78 @@ impl Reader<'_> {
         }))
     }
 
+    /// `{"polygon": [[x, y], ...]}` for one contour, or
+    /// `{"contours": [[[x, y], ...], ...]}` for several; `"fill"` is
+    /// `nonzero` (the default) or `even-odd`.
+    fn polygon(&self, value: &Value, path: &Path) -> Result<Primitive> {
+        let fields = Fields::new(value, path, &["polygon", "contours", "fill"])?;
+        let contours: Vec<(Vec<Value>, Path)> =
+            match (fields.get("polygon"), fields.get("contours")) {
+                (Some(_), Some((_, p))) => {
+                    return fail(
+                        &p,
+                        "give either polygon (one contour) or contours (several), not both",
+                    )
+                }
+                (Some((v, p)), None) => vec![(array(v, &p)?.clone(), p)],
+                (None, Some((v, p))) => {
+                    let list = array(v, &p)?;
+                    if list.is_empty() {
+                        return fail(&p, "a polygon has at least one contour");
+                    }
+                    list.iter()
+                        .enumerate()
+                        .map(|(i, c)| Ok((array(c, &p.index(i))?.clone(), p.index(i))))
+                        .collect::<Result<_>>()?
+                }
+                (None, None) => unreachable!("called for polygon or contours"),
+            };
+        let mut vertices = Vec::new();
+        let mut contour_ends = Vec::new();
+        for (list, contour_path) in &contours {
+            if list.len() < 3 {
+                return fail(
+                    contour_path,
+                    format!("a contour has at least 3 vertices, found {}", list.len()),
+                );
+            }
+            for (j, item) in list.iter().enumerate() {
+                let (x, y) = match item {
+                    Value::Array(_) => self.position(item, &contour_path.index(j))?,
+                    _ => {
+                        return fail(
+                            &contour_path.index(j),
+                            format!(
+                                "a polygon vertex is a position [x, y] (polygons carry no depth or attributes), found {}",
+                                kind(item)
+                            ),
+                        )
+                    }
+                };
+                vertices.push(Vertex::at(x, y));
+            }
+            if vertices.len() > limits::MAX_POLYGON_VERTICES {
+                return fail(
+                    contour_path,
+                    format!(
+                        "the polygon has more than {} vertices",
+                        limits::MAX_POLYGON_VERTICES
+                    ),
+                );
+            }
+            contour_ends.push(vertices.len());
+        }
+        let fill = match fields.get("fill") {
+            Some((v, p)) => named(v, &p, PolygonFill::from_name, &["nonzero", "even-odd"])?,
+            None => PolygonFill::NonZero,
+        };
+        Ok(Primitive::Polygon(Polygon {
+            vertices,
+            contour_ends,
+            fill,
+        }))
+    }
+
     fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
         match value {
             Value::Array(_) => {
@@ -617,15 +748,89 @@ impl Reader<'_> {
 
     fn effects(&self, value: &Value, path: &Path) -> Result<Effects> {
         let fields = Fields::new(value, path, &["antialias", "motion_blur"])?;
-        for key in ["antialias", "motion_blur"] {
-            if let Some((_, p)) = fields.get(key) {
-                return fail(
-                    &p,
-                    format!("the {key} effect is not supported by this version of rastercheck yet"),
-                );
-            }
+        if let Some((_, p)) = fields.get("motion_blur") {
+            return fail(
+                &p,
+                "the motion_blur effect is not supported by this version of rastercheck yet",
+            );
         }
-        Ok(Effects::default())
+        let antialias = match fields.get("antialias") {
+            Some((v, p)) => Some(self.antialias(v, &p)?),
+            None => None,
+        };
+        Ok(Effects { antialias })
+    }
+
+    fn antialias(&self, value: &Value, path: &Path) -> Result<Antialias> {
+        use super::samples::limits as aa;
+        let fields = Fields::new(
+            value,
+            path,
+            &[
+                "samples",
+                "pattern",
+                "seed",
+                "adaptive",
+                "resolve",
+                "position_bits",
+            ],
+        )?;
+        let (v, samples_path) = fields.require("samples")?;
+        let samples = count(v, &samples_path, u64::MAX >> 1)?;
+        if samples == 0 || samples > u64::from(aa::MAX_SAMPLES) {
+            return fail(
+                &samples_path,
+                format!("samples {samples} is outside [1, {}]", aa::MAX_SAMPLES),
+            );
+        }
+        let samples = samples as u32;
+        let pattern = match fields.get("pattern") {
+            Some((v, p)) => {
+                let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
+                named(v, &p, Pattern::from_name, &names)?
+            }
+            None => Pattern::Standard,
+        };
+        if let Err(why) = pattern.check_count(samples) {
+            return fail(&samples_path, why);
+        }
+        let seed = match fields.get("seed") {
+            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
+            None => 0,
+        };
+        let adaptive = match fields.get("adaptive") {
+            Some((v, p)) => boolean(v, &p)?,
+            None => false,
+        };
+        if let Some((v, p)) = fields.get("resolve") {
+            named(v, &p, |n| (n == "box").then_some(()), &["box"])?;
+        }
+        let position_bits = match fields.get("position_bits") {
+            Some((v, p)) => {
+                let bits = count(v, &p, u64::MAX >> 1)?;
+                if bits < u64::from(aa::MIN_POSITION_BITS)
+                    || bits > u64::from(aa::MAX_POSITION_BITS)
+                {
+                    return fail(
+                        &p,
+                        format!(
+                            "position_bits {bits} is outside [{}, {}]",
+                            aa::MIN_POSITION_BITS,
+                            aa::MAX_POSITION_BITS
+                        ),
+                    );
+                }
+                bits as u32
+            }
+            None => aa::DEFAULT_POSITION_BITS,
+        };
+        Ok(Antialias {
+            samples,
+            pattern,
+            seed,
+            adaptive,
+            position_bits,
+        })
     }
 
     fn expect(&self, value: &Value, path: &Path) -> Result<Expect> {
@@ -638,6 +843,9 @@ impl Reader<'_> {
                 "samples_covered",
                 "max_abs_error",
                 "max_ulp_error",
+                "max_coverage_error",
+                "max_coverage_rms",
+                "area",
             ],
         )?;
         let mut expect = Expect::default();
@@ -669,6 +877,15 @@ impl Reader<'_> {
         };
         expect.max_abs_error = tolerance("max_abs_error")?;
         expect.max_ulp_error = tolerance("max_ulp_error")?;
+        expect.max_coverage_error = tolerance("max_coverage_error")?;
+        expect.max_coverage_rms = tolerance("max_coverage_rms")?;
+        if let Some((v, p)) = fields.get("area") {
+            let area = number(v, &p)?;
+            if area < Number::ZERO {
+                return fail(&p, format!("an area is ≥ 0, found {area}"));
+            }
+            expect.area = Some(area);
+        }
         Ok(expect)
     }
 
@@ -676,10 +893,7 @@ impl Reader<'_> {
     /// every pixel of the frame has the same channels.
     fn check_attribute_counts(&self, scene: &Scene, path: &Path) -> Result<()> {
         for (i, primitive) in scene.primitives.iter().enumerate() {
-            let kind = match primitive {
-                Primitive::Triangle(_) => "triangle",
-                Primitive::Line(_) => "line",
-            };
+            let kind = primitive.kind();
             for (j, v) in primitive.vertices().iter().enumerate() {
                 if v.attributes.len() != scene.attribute_count {
                     return fail(

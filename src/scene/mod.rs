@@ -7,10 +7,14 @@
 pub mod case;
 pub mod number;
 pub mod rules;
+pub mod samples;
 
 pub use case::{parse_case, CaseError, Limits};
 pub use number::Number;
-pub use rules::{Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, Rules};
+pub use rules::{
+    Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
+};
+pub use samples::{Antialias, Pattern};
 
 /// One case: a canvas, rules, primitives, effects and expectations.
 #[derive(Clone, Debug)]
@@ -45,6 +49,7 @@ impl Canvas {
 pub enum Primitive {
     Triangle(Triangle),
     Line(Line),
+    Polygon(Polygon),
 }
 
 impl Primitive {
@@ -52,6 +57,7 @@ impl Primitive {
         match self {
             Primitive::Triangle(t) => &t.vertices,
             Primitive::Line(l) => &l.vertices,
+            Primitive::Polygon(p) => &p.vertices,
         }
     }
 
@@ -59,6 +65,7 @@ impl Primitive {
         match self {
             Primitive::Triangle(t) => &mut t.vertices,
             Primitive::Line(l) => &mut l.vertices,
+            Primitive::Polygon(p) => &mut p.vertices,
         }
     }
 
@@ -66,6 +73,16 @@ impl Primitive {
         match self {
             Primitive::Triangle(t) => t.interpolation,
             Primitive::Line(l) => l.interpolation,
+            Primitive::Polygon(_) => Interpolation::Linear,
+        }
+    }
+
+    /// The word a case file uses for this kind of primitive.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Primitive::Triangle(_) => "triangle",
+            Primitive::Line(_) => "line",
+            Primitive::Polygon(_) => "polygon",
         }
     }
 }
@@ -83,6 +100,34 @@ pub struct Line {
     /// How the interpolation parameter of a sample is found.
     pub parameter: LineParameter,
     pub interpolation: Interpolation,
+}
+
+/// A polygon of one or more closed contours (holes are contours too),
+/// filled under the even-odd or nonzero winding rule (SPEC.md §14.1).
+/// Its vertices carry positions only.
+#[derive(Clone, Debug)]
+pub struct Polygon {
+    /// Every contour's vertices, one contour after another.
+    pub vertices: Vec<Vertex>,
+    /// Where each contour ends in `vertices` (exclusive), in order.
+    pub contour_ends: Vec<usize>,
+    pub fill: PolygonFill,
+}
+
+impl Polygon {
+    /// Each contour's vertices; the last vertex joins the first.
+    pub fn contours(&self) -> impl Iterator<Item = &[Vertex]> {
+        let starts = std::iter::once(0).chain(self.contour_ends.iter().copied());
+        starts
+            .zip(&self.contour_ends)
+            .map(|(start, &end)| &self.vertices[start..end])
+    }
+
+    /// Every directed edge, contour by contour: (from, to).
+    pub fn edges(&self) -> impl Iterator<Item = (&Vertex, &Vertex)> {
+        self.contours()
+            .flat_map(|c| c.iter().zip(c.iter().cycle().skip(1)).take(c.len()))
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -115,10 +160,13 @@ impl Vertex {
     }
 }
 
-/// Effects a case turns on. Antialiasing and motion blur arrive with their
-/// own issues; until then the object must be empty.
+/// Effects a case turns on; a scene pays only for those it names.
+/// Motion blur arrives with its own issue; until then it is refused.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Effects {}
+pub struct Effects {
+    /// Several samples per pixel and a resolved coverage per pixel.
+    pub antialias: Option<Antialias>,
+}
 
 /// What a case expects of a rasterizer under test.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -134,6 +182,15 @@ pub struct Expect {
     pub max_abs_error: Option<f64>,
     /// Largest error in units in the last place of the exact value's f32.
     pub max_ulp_error: Option<f64>,
+    /// Antialiased cases: the largest |resolved coverage − exact area| of
+    /// any pixel.
+    pub max_coverage_error: Option<f64>,
+    /// Antialiased cases: the largest RMS coverage error over edge pixels
+    /// (default: piglit's 0.333 · 0.62^log2(N) for sample patterns).
+    pub max_coverage_rms: Option<f64>,
+    /// Antialiased cases: the exact total area of the primitives, which the
+    /// reference's per-pixel areas must sum to.
+    pub area: Option<Number>,
 }
 
 impl Scene {
@@ -144,8 +201,15 @@ impl Scene {
             .enumerate()
             .filter_map(|(i, p)| match p {
                 Primitive::Triangle(t) => Some((i, t)),
-                Primitive::Line(_) => None,
+                _ => None,
             })
+    }
+
+    /// Whether any primitive is a polygon.
+    pub fn has_polygons(&self) -> bool {
+        self.primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Polygon(_)))
     }
 
     /// Every vertex of every primitive.

@@ -134,6 +134,39 @@ impl Cull {
     }
 }
 
+/// Which points a polygon fills, from their winding number: the number of
+/// times the contours wind around the point, counting direction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PolygonFill {
+    /// Odd winding numbers are inside (SVG `evenodd`).
+    EvenOdd,
+    /// Non-zero winding numbers are inside (SVG `nonzero`, the default).
+    NonZero,
+}
+
+impl PolygonFill {
+    pub fn name(self) -> &'static str {
+        match self {
+            PolygonFill::EvenOdd => "even-odd",
+            PolygonFill::NonZero => "nonzero",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<PolygonFill> {
+        [PolygonFill::EvenOdd, PolygonFill::NonZero]
+            .into_iter()
+            .find(|f| f.name() == name)
+    }
+
+    /// Whether a point of winding number `winding` is filled.
+    pub fn fills(self, winding: i64) -> bool {
+        match self {
+            PolygonFill::EvenOdd => winding % 2 != 0,
+            PolygonFill::NonZero => winding != 0,
+        }
+    }
+}
+
 /// How a primitive's attributes vary across it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Interpolation {
@@ -290,6 +323,8 @@ pub mod limits {
     pub const W_LIMIT: i64 = 1_000_000;
     /// Largest width of a wide line, in pixels.
     pub const MAX_LINE_WIDTH: i64 = 1024;
+    /// Largest number of vertices of one polygon, all contours together.
+    pub const MAX_POLYGON_VERTICES: usize = 4096;
 
     const _: () = assert!(MAX_CANVAS_SIDE as i64 <= COORD_LIMIT);
 }

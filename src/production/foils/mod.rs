@@ -22,7 +22,11 @@ macro_rules! foil {
             }
 
             fn capabilities(&self) -> Capabilities {
-                Production.capabilities()
+                Capabilities {
+                    polygons: false,
+                    antialias: false,
+                    ..Production.capabilities()
+                }
             }
 
             fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
