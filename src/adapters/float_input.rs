@@ -18,7 +18,7 @@ use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 
 use crate::rasterizer::RasterError;
-use crate::scene::{Cull, Number, Primitive, Scene, Triangle};
+use crate::scene::{Cull, Number, PolygonFill, Primitive, Scene, Triangle};
 
 /// `n` on the case's subpixel grid: the nearest multiple of 2^-bits, ties to
 /// even; `n` itself when the case keeps exact coordinates.
@@ -124,6 +124,52 @@ pub(crate) fn single_sample(plan: &crate::plan::Plan, library: &str) -> Result<(
         )));
     }
     Ok(())
+}
+
+/// A primitive as a path fill: its contours, snapped exactly, and the fill
+/// rule that decides its inside.
+#[allow(dead_code)] // used by the tiny-skia and vello adapters
+pub(crate) struct FillPath {
+    pub contours: Vec<Vec<[RBig; 2]>>,
+    pub even_odd: bool,
+}
+
+/// Every primitive of the scene as a path fill, in scene order; `None` for a
+/// triangle the case's cull state discards. Triangles fill with the
+/// non-zero rule (either winding then fills), polygons with their own.
+/// Lines are refused: see [`triangles_only`].
+#[allow(dead_code)] // used by the tiny-skia and vello adapters
+pub(crate) fn fill_paths(
+    scene: &Scene,
+    library: &str,
+) -> Result<Vec<Option<FillPath>>, RasterError> {
+    triangles_only(scene, library)?;
+    let bits = scene.rules.subpixel_bits;
+    Ok(scene
+        .primitives
+        .iter()
+        .map(|p| match p {
+            Primitive::Triangle(t) => {
+                let exact = snapped_triangle(t, bits);
+                (!culled(&exact, scene.rules.cull)).then(|| FillPath {
+                    contours: vec![exact.to_vec()],
+                    even_odd: false,
+                })
+            }
+            Primitive::Polygon(polygon) => Some(FillPath {
+                contours: polygon
+                    .contours()
+                    .map(|c| {
+                        c.iter()
+                            .map(|v| [snapped(&v.x, bits), snapped(&v.y, bits)])
+                            .collect()
+                    })
+                    .collect(),
+                even_odd: polygon.fill == PolygonFill::EvenOdd,
+            }),
+            Primitive::Line(_) => unreachable!("refused by triangles_only"),
+        })
+        .collect())
 }
 
 #[cfg(test)]

@@ -23,23 +23,28 @@
 //! - **Zero-area paths**: tiny-skia refuses paths whose bounds are nearly zero
 //!   wide or high, and draws nothing for them.
 //!
+//! Polygons are paths with their own fill rule (`EvenOdd` or `Winding`).
+//! Antialiased cases use the library's antialiased fill (4× vertical
+//! supersampling with horizontal area, per its `scan/path_aa.rs`): each
+//! primitive's 8-bit coverage, divided by 255, is added to the pixel's
+//! resolved value, and the frame holds no sample mask (the library's samples
+//! are not the case's pattern), so it is judged on its coverage error alone.
+//!
 //! Unsupported: lines (tiny-skia strokes hairlines with its own antialiased
 //! or Bresenham-like walk, none of SPEC.md §4's rules), depth and attributes
-//! (a path fill interpolates nothing), and more than one sample per pixel.
-//! The antialiased fill (4× vertical supersampling) waits for antialiasing
-//! cases.
+//! (a path fill interpolates nothing), and aliased fills with more than one
+//! sample per pixel.
 
-use tiny_skia::{FillRule, Mask, PathBuilder, Transform};
+use tiny_skia::{FillRule, Mask, Path, PathBuilder, Transform};
 
-use super::float_input::{
-    coverage_only, culled, single_sample, snapped_triangle, to_f32, triangles_only,
-};
+use super::float_input::{coverage_only, fill_paths, single_sample, to_f32, FillPath};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
 
-/// tiny-skia's aliased (non-antialiased) path fill.
+/// tiny-skia's path fill: aliased for single-sample cases, antialiased for
+/// antialiased ones.
 pub struct TinySkia;
 
 impl Rasterizer for TinySkia {
@@ -53,36 +58,37 @@ impl Rasterizer for TinySkia {
             ideal_geometry: true,
             attributes: false,
             depth: false,
-            polygons: false,
-            antialias: false,
+            polygons: true,
+            antialias: true,
         }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        triangles_only(scene, "tiny-skia")?;
         coverage_only(plan, "tiny-skia")?;
-        single_sample(plan, "tiny-skia")?;
+        let antialias = plan.antialias.is_some();
+        if !antialias {
+            single_sample(plan, "tiny-skia")?;
+        }
+        let paths = fill_paths(scene, "tiny-skia")?;
         let (width, height) = (scene.canvas.width, scene.canvas.height);
         let mut mask = Mask::new(width, height).ok_or_else(|| {
             RasterError::Failed(format!("tiny-skia refused a {width}×{height} mask"))
         })?;
-        let mut frame = Frame::new(width, height, false, 0);
-        for (index, triangle) in scene.triangles() {
-            let exact = snapped_triangle(triangle, scene.rules.subpixel_bits);
-            if culled(&exact, scene.rules.cull) {
-                continue;
-            }
-            let p = exact.each_ref().map(|v| [to_f32(&v[0]), to_f32(&v[1])]);
-            let mut builder = PathBuilder::new();
-            builder.move_to(p[0][0], p[0][1]);
-            builder.line_to(p[1][0], p[1][1]);
-            builder.line_to(p[2][0], p[2][1]);
-            builder.close();
+        let mut frame = if antialias {
+            Frame::resolved_only(width, height, vec![0.0; scene.canvas.pixel_count()])
+        } else {
+            Frame::new(width, height, false, 0)
+        };
+        for (index, fill) in paths.iter().enumerate() {
+            let Some(fill) = fill else { continue };
             // `None`: no area the library can describe (e.g. non-finite bounds).
-            let Some(path) = builder.finish() else {
-                continue;
+            let Some(path) = path(fill) else { continue };
+            let rule = if fill.even_odd {
+                FillRule::EvenOdd
+            } else {
+                FillRule::Winding
             };
-            mask.fill_path(&path, FillRule::Winding, false, Transform::identity());
+            mask.fill_path(&path, rule, antialias, Transform::identity());
             // The fill writes only inside the path's bounds; read and clear
             // them, one pixel wider for safety.
             let b = path.bounds();
@@ -99,19 +105,41 @@ impl Rasterizer for TinySkia {
             for y in y0..y1 {
                 let row = y * width as usize;
                 for (i, value) in data[row + x0..row + x1].iter_mut().enumerate() {
-                    if *value != 0 {
-                        frame.hit(row + x0 + i, index);
-                        *value = 0;
+                    if *value == 0 {
+                        continue;
                     }
+                    let pixel = row + x0 + i;
+                    match &mut frame.resolved {
+                        Some(resolved) if antialias => resolved[pixel] += f64::from(*value) / 255.0,
+                        _ => frame.hit(pixel, index),
+                    }
+                    *value = 0;
                 }
             }
         }
         if mask.data().iter().any(|&v| v != 0) {
             return Err(RasterError::Failed(
-                "tiny-skia wrote outside a triangle's bounds; coverage would be misattributed"
+                "tiny-skia wrote outside a primitive's bounds; coverage would be misattributed"
                     .to_owned(),
             ));
         }
         Ok(frame)
     }
+}
+
+/// The library's path for a fill, every contour closed.
+fn path(fill: &FillPath) -> Option<Path> {
+    let mut builder = PathBuilder::new();
+    for contour in &fill.contours {
+        let p: Vec<[f32; 2]> = contour
+            .iter()
+            .map(|v| [to_f32(&v[0]), to_f32(&v[1])])
+            .collect();
+        builder.move_to(p[0][0], p[0][1]);
+        for q in &p[1..] {
+            builder.line_to(q[0], q[1]);
+        }
+        builder.close();
+    }
+    builder.finish()
 }
