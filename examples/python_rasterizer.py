@@ -14,10 +14,14 @@ to be caught:
   (overdraw), whatever fill rule the case asks for;
 - lines: the textbook float DDA (`y += slope`, row = floor(y)), which picks
   the wrong row at exact ties and can drift on long lines;
-- interpolation: barycentric weights in floats, linear or perspective.
+- interpolation: barycentric weights in floats, linear or perspective;
+- polygons: the classic PNPOLY crossing test, which is even-odd whatever
+  fill the case asks for (so nonzero stars lose their centre);
+- antialiasing: supersampling at the sample offsets the request gives, with
+  the same inside tests, one fragment per covered sample.
 
-Anything else (other line rules, more than one sample per pixel) is
-answered with {"unsupported": "..."}, which rastercheck reports as such.
+Anything else (other line rules, lines in antialiased scenes) is answered
+with {"unsupported": "..."}, which rastercheck reports as such.
 Standard library only.
 """
 
@@ -51,6 +55,19 @@ def interpolate(weights, vertices, mode, plan):
     return values
 
 
+def sample_points(plan):
+    """(slot, dx, dy): where the samples lie in a pixel, and the slot index a
+    fragment names when the scene is antialiased."""
+    aa = plan.get("antialias")
+    if aa is None:
+        return [(None, 0.5, 0.5)]
+    return [(s, dx, dy) for s, (dx, dy) in enumerate(aa["offsets"])]
+
+
+def fragment(x, y, slot, values):
+    return [x, y] + ([] if slot is None else [slot]) + values
+
+
 def triangle(prim, request):
     rules, plan = request["rules"], request["plan"]
     width, height = request["canvas"]["width"], request["canvas"]["height"]
@@ -72,13 +89,38 @@ def triangle(prim, request):
     top, bottom = max(0, math.floor(min(y0, y1, y2))), min(height, math.ceil(max(y0, y1, y2)))
     for y in range(top, bottom):
         for x in range(left, right):
-            px, py = x + 0.5, y + 0.5
-            # Each weight is the edge function opposite a vertex, over the area.
-            w0 = edge(x1, y1, x2, y2, px, py) / area
-            w1 = edge(x2, y2, x0, y0, px, py) / area
-            w2 = edge(x0, y0, x1, y1, px, py) / area
-            if w0 >= 0 and w1 >= 0 and w2 >= 0:  # on an edge counts as inside
-                fragments.append([x, y] + interpolate((w0, w1, w2), vs, prim["interpolation"], plan))
+            for slot, dx, dy in sample_points(plan):
+                px, py = x + dx, y + dy
+                # Each weight is the edge function opposite a vertex, over the area.
+                w0 = edge(x1, y1, x2, y2, px, py) / area
+                w1 = edge(x2, y2, x0, y0, px, py) / area
+                w2 = edge(x0, y0, x1, y1, px, py) / area
+                if w0 >= 0 and w1 >= 0 and w2 >= 0:  # on an edge counts as inside
+                    values = interpolate((w0, w1, w2), vs, prim["interpolation"], plan)
+                    fragments.append(fragment(x, y, slot, values))
+    return fragments
+
+
+def polygon(prim, request):
+    """PNPOLY: a point is inside when a ray to +x crosses an odd number of edges."""
+    bits = request["rules"]["subpixel_bits"]
+    width, height = request["canvas"]["width"], request["canvas"]["height"]
+    contours = [[(snap(v["x"], bits), snap(v["y"], bits)) for v in c] for c in prim["contours"]]
+    points = [p for c in contours for p in c]
+    left, right = max(0, math.floor(min(p[0] for p in points))), min(width, math.ceil(max(p[0] for p in points)))
+    top, bottom = max(0, math.floor(min(p[1] for p in points))), min(height, math.ceil(max(p[1] for p in points)))
+    fragments = []
+    for y in range(top, bottom):
+        for x in range(left, right):
+            for slot, dx, dy in sample_points(request["plan"]):
+                px, py = x + dx, y + dy
+                inside = False
+                for c in contours:
+                    for (xi, yi), (xj, yj) in zip(c, c[1:] + c[:1]):
+                        if (yi > py) != (yj > py) and px < (xj - xi) * (py - yi) / (yj - yi) + xi:
+                            inside = not inside
+                if inside:
+                    fragments.append(fragment(x, y, slot, []))
     return fragments
 
 
@@ -121,12 +163,15 @@ def line(prim, request):
 
 def rasterize(request):
     """One request in, one response out (both as Python dicts)."""
-    if request["plan"]["samples_per_pixel"] != 1:
-        return {"unsupported": "only one sample per pixel"}
+    antialiased = "antialias" in request["plan"]
     out = []
     for prim in request["primitives"]:
         if "triangle" in prim:
             out.append({"fragments": triangle(prim, request)})
+        elif "contours" in prim:
+            out.append({"fragments": polygon(prim, request)})
+        elif antialiased:
+            return {"unsupported": "lines are not antialiased here"}
         elif prim["rule"] == "midpoint":
             out.append({"fragments": line(prim, request)})
         else:

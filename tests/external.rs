@@ -591,6 +591,75 @@ fn fragments_compose_in_primitive_order() {
 }
 
 #[test]
+fn antialiased_fragments_name_their_sample_and_area_methods_answer_coverage() {
+    let scene = scene(
+        r#"{"name": "aa", "canvas": {"width": 2, "height": 1},
+        "effects": {"antialias": {"samples": 2}},
+        "primitives": [{"polygon": [[0, 0], [2, 0], [0, 1]], "fill": "even-odd"},
+                       {"triangle": [[0, 0], [2, 0], [0, 1]]}]}"#,
+    );
+    let plan = Plan::for_scene(&scene);
+    let request = external::request(&scene, &plan);
+    assert_eq!(request["plan"]["antialias"]["samples"], 2);
+    assert_eq!(
+        request["plan"]["antialias"]["offsets"][0],
+        json!([0.75, 0.75])
+    );
+    assert_eq!(
+        request["plan"]["antialias"]["exact"]["offsets"][1],
+        json!(["0.25", "0.25"])
+    );
+    assert_eq!(request["primitives"][0]["fill"], "even-odd");
+    assert_eq!(
+        request["primitives"][0]["contours"][0][2]["exact"]["y"],
+        "1"
+    );
+
+    let response = json!({"primitives": [
+        {"fragments": [[0, 0, 1], [1, 0, 1]]},
+        {"fragments": [[0, 0, 0], [0, 0, 1]]}
+    ]});
+    let frame = external::frame_from_response(&response, &scene, &plan).unwrap();
+    assert_eq!(frame.samples, 2);
+    assert_eq!(frame.coverage, vec![1, 2, 0, 1]);
+    assert_eq!(frame.last, vec![2, 2, 0, 1]);
+    assert_eq!(frame.resolved, Some(vec![1.5, 0.5]));
+
+    let area = json!({"primitives": [
+        {"coverage": [[0, 0, 0.75], [1, 0, 0.25]]},
+        {"coverage": [[0, 0, 0.75]]}
+    ]});
+    let frame = external::frame_from_response(&area, &scene, &plan).unwrap();
+    assert_eq!(frame.samples, 0, "an area method has no samples");
+    assert_eq!(frame.resolved, Some(vec![1.5, 0.25]));
+
+    for (bad, says) in [
+        (
+            json!({"primitives": [{"fragments": [[0, 0, 2]]}, {"fragments": []}]}),
+            "$.primitives[0].fragments[0][2]: 2 is not a sample index in [0, 2)",
+        ),
+        (
+            json!({"primitives": [{"fragments": [[0, 0]]}, {"fragments": []}]}),
+            "array of 3 numbers: x, y, sample",
+        ),
+        (
+            json!({"primitives": [{"coverage": []}, {"fragments": []}]}),
+            "coverage for every primitive or fragments for every one",
+        ),
+        (
+            json!({"primitives": [{"coverage": [[0, 0, 1.5]]}, {"coverage": []}]}),
+            "$.primitives[0].coverage[0][2]: 1.5 is not a fraction in [0, 1]",
+        ),
+        (json!({"exr": "frame.exr"}), "one sample per pixel"),
+    ] {
+        match external::frame_from_response(&bad, &scene, &plan) {
+            Err(RasterError::Failed(why)) => assert!(why.contains(says), "{why}"),
+            other => panic!("{bad}: {other:?}"),
+        }
+    }
+}
+
+#[test]
 fn a_response_may_name_an_exr_file_with_golden_channels() {
     let scene =
         scene(&std::fs::read_to_string(root().join("cases/triangles/interp_linear.json")).unwrap());

@@ -206,11 +206,8 @@ impl Rasterizer for External {
 
     /// Everything: the program says what it does not do, case by case.
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            polygons: false,
-            antialias: false,
-            ..Capabilities::everything()
-        }
+        // The program says itself what it cannot do (`unsupported`).
+        Capabilities::everything()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -380,13 +377,32 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
             "fill_rule": scene.rules.fill_rule.name(),
             "cull": scene.rules.cull.name(),
         },
-        "plan": {
-            "samples_per_pixel": plan.samples_per_pixel,
-            "depth": plan.depth,
-            "attributes": plan.attributes,
-        },
+        "plan": plan_json(plan),
         "primitives": primitives,
     })
+}
+
+/// The plan, with the sample offsets of an antialiased scene as floats and,
+/// in `exact`, as fractions.
+fn plan_json(plan: &Plan) -> Value {
+    let mut out = json!({
+        "samples_per_pixel": plan.samples_per_pixel,
+        "depth": plan.depth,
+        "attributes": plan.attributes,
+    });
+    if let Some(aa) = &plan.antialias {
+        let one = 1i64 << aa.position_bits;
+        let offset = |c: u32| Number::ratio(i64::from(c), one);
+        out["antialias"] = json!({
+            "samples": aa.offsets.len(),
+            "position_bits": aa.position_bits,
+            "offsets": aa.offsets.iter().map(|p| p.map(|c| float(&offset(c)))).collect::<Vec<_>>(),
+            "exact": {
+                "offsets": aa.offsets.iter().map(|p| p.map(|c| exact(&offset(c)))).collect::<Vec<_>>(),
+            },
+        });
+    }
+    out
 }
 
 // ---------------------------------------------------------------------------
@@ -439,6 +455,12 @@ pub fn frame_from_response(
             let path = path
                 .as_str()
                 .ok_or_else(|| bad("$.exr must be a string (a file path)".to_owned()))?;
+            if plan.antialias.is_some() {
+                return Err(bad(
+                    "an exr response holds one sample per pixel; answer antialiased scenes with fragments or coverage"
+                        .to_owned(),
+                ));
+            }
             frame_from_exr(Path::new(path), scene, plan).map_err(bad)
         }
         (Some(_), Some(_)) => Err(bad("give either $.primitives or $.exr, not both".to_owned())),
@@ -455,7 +477,8 @@ fn text_of(value: &Value) -> String {
     }
 }
 
-/// Draws the fragments of each primitive, in primitive order.
+/// Draws the fragments of each primitive, in primitive order; or, for an
+/// antialiased scene answered with per-pixel coverage, sums it.
 fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let list = primitives
@@ -468,8 +491,21 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
             scene.primitives.len()
         ));
     }
+    let with_coverage = list.iter().filter(|e| e.get("coverage").is_some()).count();
+    if with_coverage > 0 {
+        if plan.antialias.is_none() {
+            return Err("coverage entries answer antialiased scenes only; give fragments".into());
+        }
+        if with_coverage != list.len() {
+            return Err("give coverage for every primitive or fragments for every one".into());
+        }
+        return sum_coverage(list, width, height);
+    }
+    let samples = plan.antialias.as_ref().map(|aa| aa.offsets.len() as u32);
+    let slot_field = usize::from(samples.is_some());
     let values = usize::from(plan.depth) + plan.attributes;
-    let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
+    let arity = 2 + slot_field + values;
+    let mut frame = Frame::for_plan(width, height, plan);
     for (p, entry) in list.iter().enumerate() {
         let fragments = entry
             .as_object()
@@ -480,12 +516,12 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
             let at = || format!("$.primitives[{p}].fragments[{f}]");
             let numbers = fragment
                 .as_array()
-                .filter(|a| a.len() == 2 + values)
+                .filter(|a| a.len() == arity)
                 .ok_or_else(|| {
                     format!(
-                        "{} must be an array of {} numbers: x, y{}{}",
+                        "{} must be an array of {arity} numbers: x, y{}{}{}",
                         at(),
-                        2 + values,
+                        if samples.is_some() { ", sample" } else { "" },
                         if plan.depth { ", depth" } else { "" },
                         if plan.attributes > 0 {
                             format!(", {} attributes", plan.attributes)
@@ -494,14 +530,9 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
                         }
                     )
                 })?;
-            let coordinate = |v: &Value, limit: u32| {
-                v.as_f64()
-                    .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
-                    .map(|c| c as u32)
-            };
             let (Some(x), Some(y)) = (
-                coordinate(&numbers[0], width),
-                coordinate(&numbers[1], height),
+                whole_below(&numbers[0], width),
+                whole_below(&numbers[1], height),
             ) else {
                 return Err(format!(
                     "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
@@ -510,13 +541,22 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
                     numbers[1]
                 ));
             };
-            let i = frame.index(x, y);
+            let slot = match samples {
+                Some(n) => whole_below(&numbers[2], n).ok_or_else(|| {
+                    format!(
+                        "{}[2]: {} is not a sample index in [0, {n})",
+                        at(),
+                        numbers[2]
+                    )
+                })?,
+                None => 0,
+            };
+            let i = frame.index(x, y) + slot as usize;
             frame.hit(i, p);
-            for (k, v) in numbers[2..].iter().enumerate() {
-                let v = v
-                    .as_f64()
-                    .filter(|v| v.is_finite())
-                    .ok_or_else(|| format!("{}[{}] must be a finite number", at(), k + 2))?;
+            for (k, v) in numbers[2 + slot_field..].iter().enumerate() {
+                let v = v.as_f64().filter(|v| v.is_finite()).ok_or_else(|| {
+                    format!("{}[{}] must be a finite number", at(), k + 2 + slot_field)
+                })?;
                 match (&mut frame.depth, k) {
                     (Some(depth), 0) => depth[i] = v,
                     (Some(_), k) => frame.attributes[k - 1][i] = v,
@@ -525,7 +565,53 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
             }
         }
     }
+    if samples.is_some() {
+        frame.resolve();
+    }
     Ok(frame)
+}
+
+/// A whole number in [0, limit), as JSON gives it.
+fn whole_below(v: &Value, limit: u32) -> Option<u32> {
+    v.as_f64()
+        .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
+        .map(|c| c as u32)
+}
+
+/// An area method's answer (SPEC.md §12.2): each primitive's covered
+/// fraction of the pixels it touches, summed into a frame without samples.
+fn sum_coverage(list: &[Value], width: u32, height: u32) -> Result<Frame, String> {
+    let mut resolved = vec![0.0; width as usize * height as usize];
+    for (p, entry) in list.iter().enumerate() {
+        let items = entry
+            .get("coverage")
+            .and_then(Value::as_array)
+            .ok_or_else(|| format!("$.primitives[{p}].coverage must be an array"))?;
+        for (k, item) in items.iter().enumerate() {
+            let at = || format!("$.primitives[{p}].coverage[{k}]");
+            let triple = item
+                .as_array()
+                .filter(|a| a.len() == 3)
+                .ok_or_else(|| format!("{} must be [x, y, fraction]", at()))?;
+            let (Some(x), Some(y)) = (
+                whole_below(&triple[0], width),
+                whole_below(&triple[1], height),
+            ) else {
+                return Err(format!(
+                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+                    at(),
+                    triple[0],
+                    triple[1]
+                ));
+            };
+            let c = triple[2]
+                .as_f64()
+                .filter(|c| (0.0..=1.0).contains(c))
+                .ok_or_else(|| format!("{}[2]: {} is not a fraction in [0, 1]", at(), triple[2]))?;
+            resolved[y as usize * width as usize + x as usize] += c;
+        }
+    }
+    Ok(Frame::resolved_only(width, height, resolved))
 }
 
 /// Reads a frame from an EXR file with the channels of a golden file.
