@@ -1,6 +1,13 @@
 //! The common integer grid of a scene: every snapped vertex and every sample
 //! point is an integer multiple of 1/`scale` pixel, so every geometric test
 //! is a sign of an integer expression.
+//!
+//! Antialiased scenes put their samples on the grid too: the scale is then
+//! also a multiple of 2^position_bits, and sample s of every pixel is tested
+//! as the pixel centre of the scene moved by (½ − offset_s)
+//! ([`OnGrid::translated`]). A translation changes no orientation, no edge
+//! ownership and no edge value, so one pixel-centre traversal serves every
+//! sample.
 
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
@@ -10,6 +17,7 @@ use crate::scene::{Number, Scene};
 
 pub type Point<T> = [T; 2];
 
+#[derive(Clone, Debug)]
 pub struct Grid {
     pub scale: IBig,
 }
@@ -17,14 +25,22 @@ pub struct Grid {
 impl Grid {
     /// `2^(bits+1)` for snapped scenes (pixel centres lie on odd multiples of
     /// 2^-(bits+1)); otherwise the least common multiple of 2 and every
-    /// coordinate's denominator.
-    fn for_scene(scene: &Scene, positions: &[Vec<Point<RBig>>]) -> Grid {
+    /// coordinate's denominator. With samples at multiples of
+    /// 2^-position_bits, 2^position_bits divides the scale as well:
+    /// `2^max(bits+1, position_bits)`, or the lcm with it.
+    fn for_scene(
+        scene: &Scene,
+        positions: &[Vec<Point<RBig>>],
+        position_bits: Option<u32>,
+    ) -> Grid {
+        let sample_bits = position_bits.unwrap_or(0).max(1) as usize;
         if let Some(bits) = scene.rules.subpixel_bits {
             return Grid {
-                scale: IBig::ONE << (bits as usize + 1),
+                scale: IBig::ONE << (bits as usize + 1).max(sample_bits),
             };
         }
-        let mut scale = UBig::from(2u8);
+        // 2^sample_bits (at least 2) divides the scale.
+        let mut scale = UBig::ONE << sample_bits;
         for p in positions.iter().flatten().flatten() {
             let d = p.denominator();
             let g = gcd(&scale, d);
@@ -87,7 +103,14 @@ pub struct OnGrid {
     pub fits_i128: bool,
 }
 
+/// The scene on the grid of its pixel centres.
 pub fn on_grid(scene: &Scene) -> OnGrid {
+    on_grid_sampled(scene, None)
+}
+
+/// The scene on a grid that also holds every multiple of
+/// 2^-`position_bits` pixel, when given.
+pub fn on_grid_sampled(scene: &Scene, position_bits: Option<u32>) -> OnGrid {
     let place = |n: &Number| match scene.rules.subpixel_bits {
         Some(bits) => snap(n, bits),
         None => n.as_rbig().clone(),
@@ -102,7 +125,7 @@ pub fn on_grid(scene: &Scene) -> OnGrid {
                 .collect()
         })
         .collect();
-    let grid = Grid::for_scene(scene, &positions);
+    let grid = Grid::for_scene(scene, &positions, position_bits);
     let points: Vec<Vec<Point<IBig>>> = positions
         .iter()
         .map(|ps| {
@@ -111,13 +134,48 @@ pub fn on_grid(scene: &Scene) -> OnGrid {
                 .collect()
         })
         .collect();
-    let far_corner = grid.centre(i64::from(scene.canvas.width.max(scene.canvas.height)));
-    let fits_i128 =
-        fits_fast_path(&far_corner) && points.iter().flatten().flatten().all(fits_fast_path);
+    let fits_i128 = fits(&grid, scene, &points);
     OnGrid {
         grid,
         points,
         fits_i128,
+    }
+}
+
+/// Whether every vertex and every pixel centre of the canvas lies within
+/// `exact::I128_COORD_BOUND`.
+fn fits(grid: &Grid, scene: &Scene, points: &[Vec<Point<IBig>>]) -> bool {
+    let far_corner = grid.centre(i64::from(scene.canvas.width.max(scene.canvas.height)));
+    fits_fast_path(&far_corner) && points.iter().flatten().flatten().all(fits_fast_path)
+}
+
+impl OnGrid {
+    /// Every vertex moved by `t` grid units. Testing the pixel centre c
+    /// against the moved primitives is testing c − t against the originals:
+    /// orient(a + t, b + t, c) = orient(a, b, c − t), and which edge owns a
+    /// sample depends only on differences of vertices. The i128 proof is
+    /// redone for the moved vertices (they may grow by |t|).
+    pub fn translated(&self, scene: &Scene, t: &Point<IBig>) -> OnGrid {
+        let points: Vec<Vec<Point<IBig>>> = self
+            .points
+            .iter()
+            .map(|ps| ps.iter().map(|p| [&p[0] + &t[0], &p[1] + &t[1]]).collect())
+            .collect();
+        OnGrid {
+            grid: self.grid.clone(),
+            fits_i128: fits(&self.grid, scene, &points),
+            points,
+        }
+    }
+
+    /// The translation that brings sample `offset` (in units of
+    /// 2^-position_bits pixel from the pixel's top-left corner) onto the
+    /// pixel centre: (½ − offset) pixel, in grid units. The grid must come
+    /// from [`on_grid_sampled`] with the same `position_bits`.
+    pub fn sample_shift(&self, offset: [u32; 2], position_bits: u32) -> Point<IBig> {
+        let unit = &self.grid.scale >> position_bits as usize;
+        let half = &self.grid.scale >> 1;
+        offset.map(|o| &half - IBig::from(o) * &unit)
     }
 }
 

@@ -6,19 +6,23 @@
 //! integer; every interpolated value is an exact rational, rounded only when
 //! it is written out.
 
+pub mod area;
 pub mod exact;
 pub mod grid;
 pub mod line;
+pub mod polygon;
 pub mod triangle;
 
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
 use crate::frame::Frame;
-use crate::plan::Plan;
+use crate::plan::{Plan, SamplePlan};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Primitive, Scene};
-use grid::to_i128;
+use crate::scene::{FillRule, LineRule, Primitive, Scene};
+use grid::{to_i128, OnGrid};
+
+pub use area::{exact_areas, primitive_area};
 
 /// The reference rasterizer.
 #[derive(Clone, Copy, Debug, Default)]
@@ -60,9 +64,13 @@ enum Exact {
 }
 
 /// Visits every covered sample of every primitive under `rule`, in scene
-/// order: `visit(primitive, pixel, exact values)`.
-fn visit_scene<F>(
+/// order: `visit(primitive, slot, exact values)`. Without antialiasing a
+/// pixel's one slot is its centre; with it, slot `pixel · N + s` is sample
+/// s, decided as the pixel centre of the scene moved by (½ − offset_s)
+/// (`OnGrid::translated`), sample by sample.
+fn visit_samples<F>(
     scene: &Scene,
+    antialias: Option<&SamplePlan>,
     rule: FillRule,
     arithmetic: Arithmetic,
     with_values: bool,
@@ -70,7 +78,42 @@ fn visit_scene<F>(
 ) where
     F: FnMut(usize, usize, Exact),
 {
-    let on = grid::on_grid(scene);
+    let Some(samples) = antialias else {
+        let on = grid::on_grid(scene);
+        return visit_scene(scene, &on, rule, arithmetic, with_values, false, visit);
+    };
+    let on = grid::on_grid_sampled(scene, Some(samples.position_bits));
+    let n = samples.offsets.len();
+    for (s, &offset) in samples.offsets.iter().enumerate() {
+        let moved = on.translated(scene, &on.sample_shift(offset, samples.position_bits));
+        visit_scene(
+            scene,
+            &moved,
+            rule,
+            arithmetic,
+            with_values,
+            true,
+            |index, pixel, exact| visit(index, pixel * n + s, exact),
+        );
+    }
+}
+
+/// Visits every covered pixel centre of every primitive of `on` under
+/// `rule`, in scene order: `visit(primitive, pixel, exact values)`.
+/// `antialiased` leaves out the lines that choose whole pixels
+/// (`midpoint`, `diamond-exit`) and `rectangle` lines, which the reader
+/// refuses in antialiased scenes (SPEC.md §14.2).
+fn visit_scene<F>(
+    scene: &Scene,
+    on: &OnGrid,
+    rule: FillRule,
+    arithmetic: Arithmetic,
+    with_values: bool,
+    antialiased: bool,
+    mut visit: F,
+) where
+    F: FnMut(usize, usize, Exact),
+{
     let fast = on.fits_i128 && arithmetic == Arithmetic::Auto;
     let (grid, canvas, cull) = (&on.grid, scene.canvas, scene.rules.cull);
     for (index, (primitive, points)) in scene.primitives.iter().zip(&on.points).enumerate() {
@@ -95,8 +138,17 @@ fn visit_scene<F>(
                     visit(index, p, exact)
                 })
             }
-            // Polygons arrive with their own module.
-            Primitive::Polygon(_) => {}
+            Primitive::Polygon(polygon) if fast => {
+                polygon::visit(grid, canvas, polygon, points, to_i128, rule, |p| {
+                    visit(index, p, Exact::Nothing)
+                })
+            }
+            Primitive::Polygon(polygon) => {
+                polygon::visit(grid, canvas, polygon, points, IBig::clone, rule, |p| {
+                    visit(index, p, Exact::Nothing)
+                })
+            }
+            Primitive::Line(line) if antialiased && line.rule != LineRule::Parallelogram => {}
             Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, |p, t| {
                 visit(
                     index,
@@ -112,29 +164,36 @@ fn visit_scene<F>(
     }
 }
 
-/// How many primitives cover each sample under `rule` (coverage only).
+/// How many primitives cover each sample under `rule` (coverage only): one
+/// slot per pixel, or N per pixel when the scene antialiases (sample s of
+/// pixel p at p · N + s, as in a frame).
 pub fn coverage_under(scene: &Scene, rule: FillRule) -> Vec<u16> {
-    let mut counts = vec![0u16; scene.canvas.pixel_count()];
-    visit_scene(scene, rule, Arithmetic::Auto, false, |_, pixel, _| {
-        counts[pixel] = counts[pixel].saturating_add(1)
-    });
+    let plan = Plan::for_scene(scene);
+    let slots = scene.canvas.pixel_count() * plan.samples_per_pixel as usize;
+    let mut counts = vec![0u16; slots];
+    visit_samples(
+        scene,
+        plan.antialias.as_ref(),
+        rule,
+        Arithmetic::Auto,
+        false,
+        |_, slot, _| counts[slot] = counts[slot].saturating_add(1),
+    );
     counts
 }
 
 /// The exact frame: coverage under the scene's rule, and exact depth and
-/// attributes rounded to odd (see `exact::to_f64_round_odd`).
+/// attributes rounded to odd (see `exact::to_f64_round_odd`). When the plan
+/// antialiases, N slots per pixel at the plan's offsets, and `resolved`
+/// holds each pixel's exact area coverage ([`exact_areas`]) rounded to the
+/// nearest f64; without antialiasing no area is computed.
 pub fn render(scene: &Scene, plan: &Plan) -> Frame {
     render_with(scene, plan, Arithmetic::Auto)
 }
 
 /// [`render`] with a choice of integer arithmetic.
 pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
-    let mut frame = Frame::new(
-        scene.canvas.width,
-        scene.canvas.height,
-        plan.depth,
-        plan.attributes,
-    );
+    let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     let values: Vec<Option<triangle::VertexValues>> = scene
         .primitives
         .iter()
@@ -143,32 +202,48 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
             _ => None,
         })
         .collect();
-    visit_scene(
+    visit_samples(
         scene,
+        plan.antialias.as_ref(),
         scene.rules.fill_rule,
         arithmetic,
         plan.interpolates(),
-        |index, pixel, exact| {
-            frame.hit(pixel, index);
+        |index, slot, exact| {
+            frame.hit(slot, index);
             match (exact, &scene.primitives[index]) {
                 (Exact::Triangle(e, area), _) => values[index]
                     .as_ref()
                     .expect("prepared for triangles")
-                    .write(&mut frame, pixel, plan, &e, &area),
+                    .write(&mut frame, slot, plan, &e, &area),
                 (Exact::Line(t), Primitive::Line(line)) => {
-                    line::write(line, &mut frame, pixel, plan, &t)
+                    line::write(line, &mut frame, slot, plan, &t)
+                }
+                // A polygon's vertices carry z = 0 and no attributes.
+                (_, Primitive::Polygon(_)) => {
+                    if let Some(depth) = frame.depth.as_mut() {
+                        depth[slot] = 0.0;
+                    }
+                    for channel in &mut frame.attributes {
+                        channel[slot] = 0.0;
+                    }
                 }
                 _ => {}
             }
         },
     );
+    if plan.antialias.is_some() {
+        let areas = exact_areas(scene);
+        frame.resolved = Some(areas.iter().map(area::to_f64_nearest).collect());
+    }
     frame
 }
 
 /// Samples in the interior of the union of the scene's primitives: those
-/// that each of the four consistent fill rules covers (SPEC.md §6.2).
+/// that each of the four consistent fill rules covers (SPEC.md §6.2). One
+/// slot per sample, as [`coverage_under`].
 pub fn mesh_interior(scene: &Scene) -> Vec<bool> {
-    let mut interior = vec![true; scene.canvas.pixel_count()];
+    let slots = scene.canvas.pixel_count() * Plan::for_scene(scene).samples_per_pixel as usize;
+    let mut interior = vec![true; slots];
     for rule in FillRule::CONSISTENT {
         let counts = coverage_under(scene, rule);
         for (inside, count) in interior.iter_mut().zip(counts) {
