@@ -47,6 +47,8 @@ pub const I64_MAX_FRAC_BITS: u32 = 14;
 const _: () = assert!(edge_bits(I64_MAX_FRAC_BITS) <= 64);
 const _: () = assert!(edge_bits(I64_MAX_FRAC_BITS + 1) > 64);
 const _: () = assert!(edge_bits(MAX_FRAC_BITS) <= 128);
+// Sample offsets never need a format finer than the finest.
+const _: () = assert!(crate::scene::samples::limits::MAX_POSITION_BITS <= MAX_FRAC_BITS);
 // Coordinates themselves always fit in i64.
 const _: () = assert!(INT_BITS + MAX_FRAC_BITS < 63);
 
@@ -97,6 +99,17 @@ impl Format {
             frac_bits = frac_bits.max(d.bit_len() as u32); // 2^k has k+1 bits
         }
         (frac_bits <= MAX_FRAC_BITS).then_some(Format { frac_bits })
+    }
+
+    /// This format, made fine enough to hold sample offsets that are
+    /// multiples of 2^-position_bits pixel as integers. Snapping is
+    /// unchanged ([`Format::snap`] shifts by `frac_bits − subpixel_bits`),
+    /// and with position_bits ≤ MAX_SUBPIXEL_BITS the result is never finer
+    /// than [`MAX_FRAC_BITS`], so the edge-function bounds above hold.
+    pub fn with_samples(self, position_bits: u32) -> Format {
+        Format {
+            frac_bits: self.frac_bits.max(position_bits),
+        }
     }
 
     /// Units per pixel.

@@ -10,8 +10,9 @@
 //! Values along a line are interpolated in f32 from the line parameter of
 //! SPEC.md §5, never from triangle barycentrics.
 
+use super::antialias::{self, Samples};
 use super::fixed::{EdgeInt, Fixed, Format, I64_MAX_FRAC_BITS, MAX_FRAC_BITS};
-use super::setup;
+use super::setup::{self, Footprint};
 use super::traverse::{self, Sink};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -557,9 +558,17 @@ pub fn draw<E: EdgeInt>(
     rule: FillRule,
     canvas: Canvas,
     plan: &Plan,
+    samples: Option<&Samples>,
     index: usize,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
+    if samples.is_some() && line.rule != LineRule::Parallelogram {
+        // SPEC.md §14.2: the case reader refuses these.
+        return Err(RasterError::Unsupported(format!(
+            "a {} line has no samples to antialias",
+            line.rule.name()
+        )));
+    }
     let g = Geometry::new(ends);
     if g.is_point() {
         return Ok(());
@@ -572,6 +581,8 @@ pub fn draw<E: EdgeInt>(
         index,
         shading: shading.as_ref(),
         format,
+        offsets: samples.map(|s| s.offsets_in(format)).unwrap_or_default(),
+        samples,
     };
     match line.rule {
         LineRule::Midpoint => {
@@ -593,9 +604,26 @@ struct LineSink<'a> {
     index: usize,
     shading: Option<&'a LineShading>,
     format: Format,
+    /// Antialiased scenes: the samples, and their offsets in `format`.
+    samples: Option<&'a Samples<'a>>,
+    offsets: Vec<[i64; 2]>,
 }
 
 impl LineSink<'_> {
+    /// Sample `s` of pixel (x, y) of an antialiased frame is covered.
+    #[inline]
+    fn sample(&mut self, x: i64, y: i64, s: usize) {
+        let n = self.offsets.len();
+        let i = (y as usize * self.frame.width as usize + x as usize) * n + s;
+        self.frame.hit(i, self.index);
+        if let Some(shading) = self.shading {
+            let one = self.format.one();
+            let [ox, oy] = self.offsets[s];
+            let p = [x * one + ox, y * one + oy];
+            shading.write(self.frame, i, shading.weights(p));
+        }
+    }
+
     #[inline]
     fn pixel(&mut self, x: i64, y: i64) {
         let i = y as usize * self.frame.width as usize + x as usize;
@@ -697,7 +725,11 @@ fn parallelogram_in<E: EdgeInt>(
         interpolation: Interpolation::Linear,
     };
     let is_diagonal = |p: [Fixed; 2], q: [Fixed; 2]| (p == a && q == c) || (p == c && q == a);
-    let first = setup::setup::<E>(
+    let footprint = match sink.samples {
+        Some(_) => Footprint::Squares,
+        None => Footprint::Centres,
+    };
+    let first = setup::setup_in::<E>(
         [a, b, c],
         &placeholder,
         format,
@@ -705,10 +737,12 @@ fn parallelogram_in<E: EdgeInt>(
         Cull::None,
         canvas,
         &coverage_only,
+        |_, _| None,
+        footprint,
     );
     // ACD walks the diagonal the other way round from ABC (both clockwise
     // once set up), so ABC's ownership is that of the reversed edge.
-    let second = setup::setup_with_ownership::<E>(
+    let second = setup::setup_in::<E>(
         [a, c, d],
         &placeholder,
         format,
@@ -717,9 +751,28 @@ fn parallelogram_in<E: EdgeInt>(
         canvas,
         &coverage_only,
         |p, q| is_diagonal(p, q).then(|| !setup::edge_owned(q, p, rule)),
+        footprint,
     );
-    for triangle in [first, second].iter().flatten() {
-        traverse::traverse(triangle, sink);
+    match sink.samples {
+        None => {
+            for triangle in [first, second].iter().flatten() {
+                traverse::traverse(triangle, sink);
+            }
+        }
+        Some(samples) => {
+            // The corners' format may be finer than the case's: offsets in
+            // it for the decisions, the sink's own for the values.
+            let offsets = samples.offsets_in(format);
+            for triangle in [first, second].iter().flatten() {
+                antialias::cover(
+                    triangle,
+                    format,
+                    &offsets,
+                    samples.sampling,
+                    |x, y, s, _| sink.sample(x, y, s),
+                );
+            }
+        }
     }
 }
 
@@ -1160,7 +1213,7 @@ mod tests {
             [Fixed(g.v0[0]), Fixed(g.v0[1])],
             [Fixed(g.v1[0]), Fixed(g.v1[1])],
         ];
-        draw::<E>(line, ends, format, rule, canvas, &plan, 0, &mut frame)?;
+        draw::<E>(line, ends, format, rule, canvas, &plan, None, 0, &mut frame)?;
         Ok(frame)
     }
 

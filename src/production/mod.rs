@@ -10,15 +10,15 @@ pub mod polygon;
 pub mod setup;
 pub mod traverse;
 
+use antialias::{Samples, Sampling};
 use fixed::{EdgeInt, Fixed, Format};
-use glam::Vec3;
-use setup::{Shading, TriangleSetup};
+use setup::{Footprint, Shading, TriangleSetup};
 use traverse::Sink;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Interpolation, Number, Primitive, Scene, Triangle};
+use crate::scene::{Number, Primitive, Scene, Triangle};
 
 /// A production method that is a rasterizer of its own (a polygon fill, an
 /// antialiasing method), by its command-line name.
@@ -48,42 +48,60 @@ impl Rasterizer for Production {
         // Ideal geometry only when its coordinates are dyadic: checked per scene.
         Capabilities {
             polygons: false,
-            antialias: false,
+            antialias: true,
             ..Capabilities::everything()
         }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let format = match scene.rules.subpixel_bits {
-            Some(bits) => Format::snapped(bits),
-            None => {
-                Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
-                    RasterError::Unsupported(format!(
+        rasterize_with(scene, plan, Sampling::for_plan(plan))
+    }
+}
+
+/// Production's rasterizer with the antialiased scenes' samples decided by
+/// `sampling` (ignored without antialiasing).
+pub(crate) fn rasterize_with(
+    scene: &Scene,
+    plan: &Plan,
+    sampling: Sampling,
+) -> Result<Frame, RasterError> {
+    let format = match scene.rules.subpixel_bits {
+        Some(bits) => Format::snapped(bits),
+        None => {
+            Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
+                RasterError::Unsupported(format!(
                     "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
                     fixed::MAX_FRAC_BITS - 1
                 ))
-                })?
-            }
-        };
-        let mut frame = Frame::new(
-            scene.canvas.width,
-            scene.canvas.height,
-            plan.depth,
-            plan.attributes,
-        );
-        if format.fits_i64() {
-            draw::<i64>(scene, plan, format, &mut frame)?;
-        } else {
-            draw::<i128>(scene, plan, format, &mut frame)?;
+            })?
         }
-        Ok(frame)
+    };
+    let samples = plan
+        .antialias
+        .as_ref()
+        .map(|plan| Samples { plan, sampling });
+    // Sample offsets are integers in a format at least position_bits fine.
+    let format = match &samples {
+        Some(samples) => format.with_samples(samples.plan.position_bits),
+        None => format,
+    };
+    let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+    if format.fits_i64() {
+        draw::<i64>(scene, plan, format, samples.as_ref(), &mut frame)?;
+    } else {
+        draw::<i128>(scene, plan, format, samples.as_ref(), &mut frame)?;
     }
+    if samples.is_some() {
+        frame.resolve();
+    }
+    Ok(frame)
 }
 
 fn draw<E: EdgeInt>(
     scene: &Scene,
     plan: &Plan,
     format: Format,
+    samples: Option<&Samples>,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
     let place = |n: &Number| match scene.rules.subpixel_bits {
@@ -92,6 +110,7 @@ fn draw<E: EdgeInt>(
             .exact(n)
             .expect("Format::for_exact checked every coordinate"),
     };
+    let offsets = samples.map(|s| s.offsets_in(format));
     for (index, primitive) in scene.primitives.iter().enumerate() {
         match primitive {
             Primitive::Triangle(triangle) => {
@@ -99,7 +118,11 @@ fn draw<E: EdgeInt>(
                     .vertices
                     .each_ref()
                     .map(|v| [place(&v.x), place(&v.y)]);
-                draw_triangle::<E>(scene, plan, format, index, triangle, positions, frame);
+                let offsets = offsets.as_deref();
+                let sampled = samples.zip(offsets);
+                draw_triangle::<E>(
+                    scene, plan, format, sampled, index, triangle, positions, frame,
+                );
             }
             Primitive::Line(line) => {
                 let ends = line.vertices.each_ref().map(|v| [place(&v.x), place(&v.y)]);
@@ -110,6 +133,7 @@ fn draw<E: EdgeInt>(
                     scene.rules.fill_rule,
                     scene.canvas,
                     plan,
+                    samples,
                     index,
                     frame,
                 )?;
@@ -122,16 +146,25 @@ fn draw<E: EdgeInt>(
     Ok(())
 }
 
+/// Draws one triangle whose vertices are already in `format` as primitive
+/// `index`: its pixel centres, or, `sampled`, its samples at the offsets
+/// given in `format`.
+#[allow(clippy::too_many_arguments)]
 fn draw_triangle<E: EdgeInt>(
     scene: &Scene,
     plan: &Plan,
     format: Format,
+    sampled: Option<(&Samples, &[[i64; 2]])>,
     index: usize,
     triangle: &Triangle,
     positions: [[Fixed; 2]; 3],
     frame: &mut Frame,
 ) {
-    let Some(setup) = setup::setup::<E>(
+    let footprint = match sampled {
+        Some(_) => Footprint::Squares,
+        None => Footprint::Centres,
+    };
+    let Some(setup) = setup::setup_in::<E>(
         positions,
         triangle,
         format,
@@ -139,15 +172,24 @@ fn draw_triangle<E: EdgeInt>(
         scene.rules.cull,
         scene.canvas,
         plan,
+        |_, _| None,
+        footprint,
     ) else {
         return;
     };
-    let mut sink = FrameSink {
-        frame,
-        index,
-        setup: &setup,
-    };
-    traverse::traverse(&setup, &mut sink);
+    match sampled {
+        Some((samples, offsets)) => {
+            antialias::write_triangle(&setup, format, offsets, samples.sampling, index, frame)
+        }
+        None => {
+            let mut sink = FrameSink {
+                frame,
+                index,
+                setup: &setup,
+            };
+            traverse::traverse(&setup, &mut sink);
+        }
+    }
 }
 
 /// Writes covered pixels, and their interpolated values, into a frame.
@@ -164,43 +206,16 @@ impl<E: EdgeInt> Sink for FrameSink<'_, E> {
         for x in x0..x1 {
             self.frame.hit(row + x as usize, self.index);
         }
-        let Shading::Values {
-            interpolation,
-            inv_area,
-            opposite,
-            depth,
-            attributes,
-            inv_w,
-        } = &self.setup.shading
-        else {
+        if matches!(self.setup.shading, Shading::None) {
             return;
-        };
+        }
         // The exact edge values at the span's first pixel, bias removed,
         // then stepped pixel by pixel.
         let mut e = self.setup.edges.map(|edge| edge.at(x0, y) - edge.bias);
         for x in x0..x1 {
-            let i = row + x as usize;
-            // λ for each vertex in the case's order.
-            let mut weight = Vec3::ZERO;
-            for k in 0..3 {
-                weight[opposite[k]] = (e[k].to_f64() * inv_area) as f32;
-                e[k] = e[k] + self.setup.edges[k].step_x;
-            }
-            let blend = |v: &Vec3| weight.dot(*v);
-            if let (Some(z), Some(out)) = (depth, self.frame.depth.as_mut()) {
-                out[i] = f64::from(blend(z));
-            }
-            let perspective_w = match interpolation {
-                Interpolation::Perspective => blend(inv_w),
-                _ => 1.0,
-            };
-            for (channel, values) in self.frame.attributes.iter_mut().zip(attributes) {
-                let value = match interpolation {
-                    Interpolation::Flat => values.x,
-                    Interpolation::Linear => blend(values),
-                    Interpolation::Perspective => blend(values) / perspective_w,
-                };
-                channel[i] = f64::from(value);
+            self.setup.shading.write(self.frame, row + x as usize, e);
+            for (value, edge) in e.iter_mut().zip(&self.setup.edges) {
+                *value = *value + edge.step_x;
             }
         }
     }

@@ -5,6 +5,7 @@
 use glam::Vec3;
 
 use super::fixed::{EdgeInt, Fixed, Format};
+use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::{Canvas, Cull, FillRule, Interpolation, Triangle};
 
@@ -19,6 +20,10 @@ pub struct EdgeEquation<E> {
     pub step_y: E,
     /// What the tie rule added to the edge function (0 or -1).
     pub bias: E,
+    /// The change of the value per fixed-point unit along x and along y
+    /// (`step_x` and `step_y` are these times units per pixel): what a
+    /// sample's offset inside its pixel adds.
+    pub per_unit: [E; 2],
 }
 
 impl<E: EdgeInt> EdgeEquation<E> {
@@ -28,7 +33,17 @@ impl<E: EdgeInt> EdgeEquation<E> {
     }
 }
 
-/// Pixels whose centres may be covered, clipped to the canvas; half-open.
+/// Which pixels a triangle's bounding box takes in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Footprint {
+    /// Pixels whose centres lie in it: one sample per pixel.
+    Centres,
+    /// Pixels whose squares [x, x+1] × [y, y+1] meet it: samples anywhere
+    /// in the pixel (antialiasing).
+    Squares,
+}
+
+/// Pixels whose samples may be covered, clipped to the canvas; half-open.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PixelBox {
     pub x0: i64,
@@ -119,6 +134,32 @@ pub fn setup_with_ownership<E: EdgeInt>(
     plan: &Plan,
     ownership: impl Fn([Fixed; 2], [Fixed; 2]) -> Option<bool>,
 ) -> Option<TriangleSetup<E>> {
+    setup_in(
+        positions,
+        triangle,
+        format,
+        rule,
+        cull,
+        canvas,
+        plan,
+        ownership,
+        Footprint::Centres,
+    )
+}
+
+/// [`setup_with_ownership`] over the pixels of `footprint`.
+#[allow(clippy::too_many_arguments)]
+pub fn setup_in<E: EdgeInt>(
+    positions: [[Fixed; 2]; 3],
+    triangle: &Triangle,
+    format: Format,
+    rule: FillRule,
+    cull: Cull,
+    canvas: Canvas,
+    plan: &Plan,
+    ownership: impl Fn([Fixed; 2], [Fixed; 2]) -> Option<bool>,
+    footprint: Footprint,
+) -> Option<TriangleSetup<E>> {
     let [p0, p1, p2] = positions;
     let area = cross::<E>(p0, p1, p2);
     if area == E::default() {
@@ -138,7 +179,7 @@ pub fn setup_with_ownership<E: EdgeInt>(
         [p0, p2, p1]
     };
 
-    let bounds = pixel_box(&order, format, canvas);
+    let bounds = pixel_box(&order, format, canvas, footprint);
     if bounds.is_empty() {
         return None;
     }
@@ -210,25 +251,78 @@ fn edge_equation<E: EdgeInt>(
         bias,
         step_x: E::from(-dy) * E::from(one),
         step_y: E::from(dx) * E::from(one),
+        per_unit: [E::from(-dy), E::from(dx)],
     }
 }
 
-/// Pixels whose centres lie inside the triangle's bounding box, clipped to
-/// the canvas.
-fn pixel_box(v: &[[Fixed; 2]; 3], format: Format, canvas: Canvas) -> PixelBox {
+/// Pixels whose centres (or squares) meet the triangle's bounding box,
+/// clipped to the canvas.
+fn pixel_box(
+    v: &[[Fixed; 2]; 3],
+    format: Format,
+    canvas: Canvas,
+    footprint: Footprint,
+) -> PixelBox {
     let half = format.one() / 2;
     let one = format.one();
     let axis = |k: usize, size: u32| {
         let lo = v.iter().map(|p| p[k].0).min().unwrap();
         let hi = v.iter().map(|p| p[k].0).max().unwrap();
-        // First centre ≥ lo: i·one + half ≥ lo. Last centre ≤ hi.
-        let first = (lo - half + one - 1).div_euclid(one);
-        let last = (hi - half).div_euclid(one);
+        let (first, last) = match footprint {
+            // First centre ≥ lo: i·one + half ≥ lo. Last centre ≤ hi.
+            Footprint::Centres => (
+                (lo - half + one - 1).div_euclid(one),
+                (hi - half).div_euclid(one),
+            ),
+            // Pixels with a sample point i·one + o, o ∈ [0, one), in
+            // [lo, hi]: i·one + one > lo and i·one ≤ hi.
+            Footprint::Squares => (lo.div_euclid(one), hi.div_euclid(one)),
+        };
         (first.max(0), (last + 1).min(i64::from(size)))
     };
     let (x0, x1) = axis(0, canvas.width);
     let (y0, y1) = axis(1, canvas.height);
     PixelBox { x0, y0, x1, y1 }
+}
+
+impl Shading {
+    /// Writes depth and attributes into slot `i` of the frame from the three
+    /// exact edge values at the sample, bias removed.
+    #[inline]
+    pub fn write<E: EdgeInt>(&self, frame: &mut Frame, i: usize, edge_values: [E; 3]) {
+        let Shading::Values {
+            interpolation,
+            inv_area,
+            opposite,
+            depth,
+            attributes,
+            inv_w,
+        } = self
+        else {
+            return;
+        };
+        // λ for each vertex in the case's order.
+        let mut weight = Vec3::ZERO;
+        for k in 0..3 {
+            weight[opposite[k]] = (edge_values[k].to_f64() * inv_area) as f32;
+        }
+        let blend = |v: &Vec3| weight.dot(*v);
+        if let (Some(z), Some(out)) = (depth, frame.depth.as_mut()) {
+            out[i] = f64::from(blend(z));
+        }
+        let perspective_w = match interpolation {
+            Interpolation::Perspective => blend(inv_w),
+            _ => 1.0,
+        };
+        for (channel, values) in frame.attributes.iter_mut().zip(attributes) {
+            let value = match interpolation {
+                Interpolation::Flat => values.x,
+                Interpolation::Linear => blend(values),
+                Interpolation::Perspective => blend(values) / perspective_w,
+            };
+            channel[i] = f64::from(value);
+        }
+    }
 }
 
 /// Per-vertex values for interpolation, in f32.
