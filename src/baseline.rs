@@ -37,14 +37,18 @@
 //! - Metric names: `coverage.mismatched`, `coverage.missing`,
 //!   `coverage.extra`, `coverage.wrong_owner`, `watertight.holes`,
 //!   `watertight.overdraw` (mesh cases), `lines.crowded_steps` (cases with
-//!   midpoint lines), and `<channel>.max_abs`, `<channel>.rms` per
-//!   interpolation channel (`depth`, `attribute 0`, ...). Lower is better
-//!   for every one. Counts are integers; errors are numbers, or `"inf"` for
-//!   an error that was not a number (NaN).
+//!   midpoint lines), `<channel>.max_abs`, `<channel>.rms` per
+//!   interpolation channel (`depth`, `attribute 0`, ...), and for
+//!   antialiased cases `antialias.max_error`, `antialias.rms_edge`,
+//!   `antialias.rms_all` (resolved coverage against the exact area) and
+//!   `antialias.piglit_violations`, `antialias.resolve_mismatches`. Lower is
+//!   better for every one. Counts are integers; errors are numbers, or
+//!   `"inf"` for an error that was not a number (NaN).
 //! - `tolerance`: a metric **regresses** when
 //!   `new > old · (1 + relative) + absolute`, and **improves** when
 //!   `old > new · (1 + relative) + absolute`. `counts` applies to the count
-//!   metrics, `errors` to `max_abs` and `rms`; `overrides` maps a metric
+//!   metrics, `errors` to `max_abs`, `rms` and the antialiasing errors
+//!   (`max_error`, `rms_edge`, `rms_all`); `overrides` maps a metric
 //!   name (`"depth.max_abs"`) or a metric kind after the last dot
 //!   (`"rms"`, `"mismatched"`) to its own tolerance. Edit them by hand.
 //! - A verdict regresses when it gets worse on the scale pass = foil <
@@ -186,9 +190,12 @@ impl Tolerances {
     }
 }
 
-/// `max_abs` and `rms` are float errors; everything else is a count.
+/// `max_abs`, `rms` and the antialiasing errors are float errors;
+/// everything else is a count.
 pub fn is_error_metric(metric: &str) -> bool {
-    metric.ends_with(".max_abs") || metric.ends_with(".rms")
+    [".max_abs", ".rms", ".max_error", ".rms_edge", ".rms_all"]
+        .iter()
+        .any(|kind| metric.ends_with(kind))
 }
 
 /// One case on one rasterizer.
@@ -288,6 +295,19 @@ pub fn metrics_of(m: &Metrics) -> BTreeMap<String, Value> {
     for ch in &m.channels {
         put(format!("{}.max_abs", ch.channel), ch.max_abs);
         put(format!("{}.rms", ch.channel), ch.rms);
+    }
+    if let Some(a) = &m.antialias {
+        put("antialias.max_error".into(), a.max_error);
+        put("antialias.rms_edge".into(), a.rms_edge);
+        put("antialias.rms_all".into(), a.rms_all);
+        put(
+            "antialias.piglit_violations".into(),
+            a.piglit_violations as f64,
+        );
+        put(
+            "antialias.resolve_mismatches".into(),
+            a.resolve_mismatches as f64,
+        );
     }
     out
 }

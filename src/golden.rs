@@ -7,12 +7,22 @@
 //! correctly rounded f32 of the exact value (the reference's round-to-odd
 //! f64, narrowed). A change to the oracle that moves any of them shows up
 //! as a failing test and, once blessed, as a binary diff in review.
+//!
+//! An antialiased case (SPEC.md §14) has N samples per pixel and a resolved
+//! coverage per pixel. Its sample channels are stored in the same layer,
+//! `reference`, made N times wider: sample s of pixel (x, y) is at column
+//! x·N + s, which is exactly the frame's slot order. A second layer,
+//! `resolved`, of the canvas's size, holds the resolved coverage (the exact
+//! area rounded to f64) as `resolved` (its nearest f32, for people) and as
+//! the two 32-bit halves of the f64's bits, `resolved.f64.high` and
+//! `resolved.f64.low` (u32), so that it is checked to the bit. A
+//! single-sample case without antialiasing keeps its one layer as before.
 
 use std::path::{Path, PathBuf};
 
 use exr::prelude::{
-    read_all_flat_layers_from_file, AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer,
-    LayerAttributes, WritableImage,
+    read_all_flat_layers_from_file, AnyChannel, AnyChannels, Encoding, FlatSamples, Image,
+    ImageAttributes, IntegerBounds, Layer, LayerAttributes, WritableImage,
 };
 
 use crate::frame::Frame;
@@ -22,7 +32,94 @@ pub fn path_for(root: &Path, case_id: &str) -> PathBuf {
     root.join("reference").join(format!("{case_id}.exr"))
 }
 
-/// The channels of a frame, named as stored, in f32.
+/// The layer of the sample channels.
+const SAMPLES_LAYER: &str = "reference";
+/// The layer of the resolved coverage (antialiased cases only).
+const RESOLVED_LAYER: &str = "resolved";
+
+/// Stored values of one channel: f32 for values, u32 for exact bits.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Values {
+    F32(Vec<f32>),
+    U32(Vec<u32>),
+}
+
+impl Values {
+    fn len(&self) -> usize {
+        match self {
+            Values::F32(v) => v.len(),
+            Values::U32(v) => v.len(),
+        }
+    }
+
+    /// The stored bits of value `i`.
+    fn bits(&self, i: usize) -> u32 {
+        match self {
+            Values::F32(v) => v[i].to_bits(),
+            Values::U32(v) => v[i],
+        }
+    }
+
+    fn show(&self, i: usize) -> String {
+        match self {
+            Values::F32(v) => v[i].to_string(),
+            Values::U32(v) => format!("{:#010x}", v[i]),
+        }
+    }
+
+    fn samples(self) -> FlatSamples {
+        match self {
+            Values::F32(v) => FlatSamples::F32(v),
+            Values::U32(v) => FlatSamples::U32(v),
+        }
+    }
+}
+
+/// One stored layer: its name, size and channels.
+struct LayerData {
+    name: String,
+    size: (usize, usize),
+    channels: Vec<(String, Values)>,
+}
+
+/// The layers a frame is stored as, named as stored.
+fn layers(frame: &Frame) -> Vec<LayerData> {
+    let mut out = Vec::new();
+    let n = frame.samples as usize;
+    if n > 0 {
+        out.push(LayerData {
+            name: SAMPLES_LAYER.to_owned(),
+            size: (frame.width as usize * n, frame.height as usize),
+            channels: channels(frame)
+                .into_iter()
+                .map(|(name, v)| (name, Values::F32(v)))
+                .collect(),
+        });
+    }
+    if let Some(resolved) = &frame.resolved {
+        let word = |shift: u32| {
+            resolved
+                .iter()
+                .map(|v| (v.to_bits() >> shift) as u32)
+                .collect()
+        };
+        out.push(LayerData {
+            name: RESOLVED_LAYER.to_owned(),
+            size: (frame.width as usize, frame.height as usize),
+            channels: vec![
+                (
+                    "resolved".to_owned(),
+                    Values::F32(resolved.iter().map(|&v| v as f32).collect()),
+                ),
+                ("resolved.f64.high".to_owned(), Values::U32(word(32))),
+                ("resolved.f64.low".to_owned(), Values::U32(word(0))),
+            ],
+        });
+    }
+    out
+}
+
+/// The sample channels of a frame, named as stored, in f32.
 fn channels(frame: &Frame) -> Vec<(String, Vec<f32>)> {
     let mut out = vec![
         (
@@ -54,21 +151,33 @@ pub fn write(frame: &Frame, path: &Path) -> Result<(), String> {
     if let Some(parent) = path.parent() {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
-    let size = (frame.width as usize, frame.height as usize);
-    let list = channels(frame)
+    let layers: Vec<_> = layers(frame)
         .into_iter()
-        .map(|(name, values)| AnyChannel::new(name.as_str(), FlatSamples::F32(values)))
+        .map(|layer| {
+            let list = layer
+                .channels
+                .into_iter()
+                .map(|(name, values)| AnyChannel::new(name.as_str(), values.samples()))
+                .collect();
+            Layer::new(
+                layer.size,
+                LayerAttributes::named(layer.name.as_str()),
+                Encoding::SMALL_LOSSLESS,
+                AnyChannels::sort(list),
+            )
+        })
         .collect();
-    let layer = Layer::new(
-        size,
-        LayerAttributes::named("reference"),
-        Encoding::SMALL_LOSSLESS,
-        AnyChannels::sort(list),
-    );
-    Image::from_layer(layer)
-        .write()
-        .to_file(path)
-        .map_err(|e| format!("{}: {e}", path.display()))
+    let written = if layers.len() == 1 {
+        // One layer, written exactly as before antialiasing existed.
+        let layer = layers.into_iter().next().expect("one layer");
+        Image::from_layer(layer).write().to_file(path)
+    } else {
+        let canvas = IntegerBounds::new((0, 0), (frame.width as usize, frame.height as usize));
+        Image::from_layers(ImageAttributes::new(canvas), layers)
+            .write()
+            .to_file(path)
+    };
+    written.map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// A golden file's size and its named f32 channels.
@@ -92,38 +201,132 @@ pub fn read(path: &Path) -> Result<Channels, String> {
     Ok((size, channels))
 }
 
+/// Every layer of a golden file with its size and channels (f32 values;
+/// u32 words as stored).
+fn read_layers(path: &Path) -> Result<Vec<LayerData>, String> {
+    let image =
+        read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(image
+        .layer_data
+        .iter()
+        .map(|layer| LayerData {
+            name: layer
+                .attributes
+                .layer_name
+                .as_ref()
+                .map_or_else(|| SAMPLES_LAYER.to_owned(), |n| n.to_string()),
+            size: (layer.size.width(), layer.size.height()),
+            channels: layer
+                .channel_data
+                .list
+                .iter()
+                .map(|c| {
+                    let values = match &c.sample_data {
+                        FlatSamples::U32(words) => Values::U32(words.clone()),
+                        other => Values::F32(other.values_as_f32().collect()),
+                    };
+                    (c.name.to_string(), values)
+                })
+                .collect(),
+        })
+        .collect())
+}
+
 /// Compares a freshly computed reference frame with its golden file.
-/// `Ok` when every channel matches to the bit; otherwise what differs.
+/// `Ok` when every channel of every layer matches to the bit; otherwise
+/// what differs.
 pub fn check(frame: &Frame, path: &Path) -> Result<(), String> {
-    let (size, mut stored) = read(path)?;
-    if size != (frame.width as usize, frame.height as usize) {
-        return Err(format!(
-            "golden file is {}×{}, the case's canvas is {}×{}",
-            size.0, size.1, frame.width, frame.height
+    let mut stored = read_layers(path)?;
+    let mut problems = Vec::new();
+    let samples = frame.samples.max(1) as usize;
+    for layer in layers(frame) {
+        let Some(at) = stored.iter().position(|l| l.name == layer.name) else {
+            problems.push(format!(
+                "layer {} is missing from the golden file",
+                layer.name
+            ));
+            continue;
+        };
+        let golden = stored.swap_remove(at);
+        if golden.size != layer.size {
+            let what = if layer.name == SAMPLES_LAYER && samples > 1 {
+                format!(
+                    "{}×{} ({} samples per pixel)",
+                    frame.width, frame.height, samples
+                )
+            } else {
+                format!("{}×{}", frame.width, frame.height)
+            };
+            problems.push(format!(
+                "golden file's layer {} is {}×{}, the case's canvas is {what}",
+                layer.name, golden.size.0, golden.size.1
+            ));
+            continue;
+        }
+        let per_pixel = if layer.name == SAMPLES_LAYER {
+            samples
+        } else {
+            1
+        };
+        compare_channels(
+            layer,
+            golden,
+            per_pixel,
+            frame.width as usize,
+            &mut problems,
+        );
+    }
+    for layer in stored {
+        problems.push(format!(
+            "golden file has layer {}, which the reference no longer produces",
+            layer.name
         ));
     }
-    let mut problems = Vec::new();
-    for (name, values) in channels(frame) {
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(problems.join("; "))
+    }
+}
+
+/// Compares the channels of one layer to the bit; `per_pixel` values make
+/// one pixel of a canvas `width` pixels wide.
+fn compare_channels(
+    now: LayerData,
+    golden: LayerData,
+    per_pixel: usize,
+    width: usize,
+    problems: &mut Vec<String>,
+) {
+    let mut stored = golden.channels;
+    for (name, values) in now.channels {
         let Some(at) = stored.iter().position(|(n, _)| *n == name) else {
             problems.push(format!("channel {name} is missing from the golden file"));
             continue;
         };
         let (_, golden) = stored.swap_remove(at);
-        let differing = values
-            .iter()
-            .zip(&golden)
-            .filter(|(a, b)| a.to_bits() != b.to_bits())
-            .count();
-        if differing > 0 {
-            let first = values
-                .iter()
-                .zip(&golden)
-                .position(|(a, b)| a.to_bits() != b.to_bits())
-                .unwrap();
-            let (x, y) = (first % size.0, first / size.0);
+        if std::mem::discriminant(&golden) != std::mem::discriminant(&values)
+            || golden.len() != values.len()
+        {
             problems.push(format!(
-                "channel {name}: {differing} samples differ; first at pixel ({x}, {y}): now {}, golden {}",
-                values[first], golden[first]
+                "channel {name} has another type or size in the golden file"
+            ));
+            continue;
+        }
+        let differs = |i: &usize| values.bits(*i) != golden.bits(*i);
+        let differing = (0..values.len()).filter(differs).count();
+        if let Some(first) = (0..values.len()).find(differs) {
+            let pixel = first / per_pixel;
+            let (x, y) = (pixel % width.max(1), pixel / width.max(1));
+            let sample = if per_pixel > 1 {
+                format!(" sample {}", first % per_pixel)
+            } else {
+                String::new()
+            };
+            problems.push(format!(
+                "channel {name}: {differing} samples differ; first at pixel ({x}, {y}){sample}: now {}, golden {}",
+                values.show(first),
+                golden.show(first)
             ));
         }
     }
@@ -132,9 +335,64 @@ pub fn check(frame: &Frame, path: &Path) -> Result<(), String> {
             "golden file has channel {name}, which the reference no longer produces"
         ));
     }
-    if problems.is_empty() {
-        Ok(())
-    } else {
-        Err(problems.join("; "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn antialiased() -> Frame {
+        let mut frame = Frame::new(3, 2, false, 1);
+        frame.samples = 4;
+        let n = 3 * 2 * 4;
+        frame.coverage = (0..n).map(|i| (i % 3 == 0) as u16).collect();
+        frame.last = frame.coverage.iter().map(|&c| u32::from(c)).collect();
+        frame.attributes = vec![(0..n).map(|i| i as f64 / 7.0).collect()];
+        frame.resolved = Some((0..6).map(|p| p as f64 / 3.0).collect());
+        frame
+    }
+
+    #[test]
+    fn antialiased_frames_round_trip_to_the_bit() {
+        let dir = std::env::temp_dir().join(format!("rastercheck-golden-{}", std::process::id()));
+        let path = dir.join("aa.exr");
+        let frame = antialiased();
+        write(&frame, &path).unwrap();
+        assert_eq!(check(&frame, &path), Ok(()));
+
+        // One ulp of one resolved f64: invisible in f32, caught in the bits.
+        let mut changed = frame.clone();
+        let r = changed.resolved.as_mut().unwrap();
+        r[4] = f64::from_bits(r[4].to_bits() + 1);
+        let err = check(&changed, &path).unwrap_err();
+        assert!(
+            err.contains("resolved.f64.low") && err.contains("(1, 1)"),
+            "{err}"
+        );
+        assert!(!err.contains("channel resolved:"), "{err}");
+
+        // One sample of pixel (2, 0).
+        let mut changed = frame.clone();
+        changed.coverage[2 * 4 + 3] += 1;
+        let err = check(&changed, &path).unwrap_err();
+        assert!(err.contains("pixel (2, 0) sample 3"), "{err}");
+
+        // The same canvas with another sample count.
+        let mut changed = frame.clone();
+        changed.samples = 2;
+        changed.coverage.truncate(12);
+        changed.last.truncate(12);
+        changed.attributes[0].truncate(12);
+        let err = check(&changed, &path).unwrap_err();
+        assert!(err.contains("2 samples per pixel"), "{err}");
+
+        // A single-sample frame is one layer, as before.
+        let plain = Frame::new(3, 2, false, 0);
+        write(&plain, &path).unwrap();
+        assert_eq!(check(&plain, &path), Ok(()));
+        assert_eq!(read(&path).unwrap().0, (3, 2));
+        let err = check(&frame, &path).unwrap_err();
+        assert!(err.contains("layer resolved is missing"), "{err}");
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -1,6 +1,10 @@
 //! Deliberately wrong rasterizers: the production rasterizer with one
 //! realistic bug each. They exist to prove that every check can fail: each
 //! is caught by a different metric (see tests/mutants.rs).
+//!
+//! A bug is applied by rewriting what production sees (the scene, or the
+//! plan's sample offsets) or what it returns (the resolved coverage of an
+//! antialiased frame); production itself is never changed.
 
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -35,10 +39,22 @@ pub enum Mutation {
     /// that serves D3D-style lines with Bresenham would. Caught by coverage
     /// where the two rules part: corners, borders and ends.
     MidpointForDiamond,
+    /// Every sample offset moved one lattice unit right (left from the last
+    /// column), as a driver with an off-by-one sample table would. Caught
+    /// by coverage at sample granularity where an edge passes between the
+    /// two positions.
+    ShiftedSamples,
+    /// Resolved coverage rounded down to quarters, as a 2-bit coverage
+    /// buffer would. Caught by the coverage error bounds and by the
+    /// resolve check (the value is not the mask's box resolve).
+    CoarseResolve,
+    /// Fully covered pixels resolve to 1 − 2^-20, as an accumulation with a
+    /// bias would. Caught by piglit's rule (full pixels are exactly 1).
+    LeakyFull,
 }
 
 impl Mutation {
-    pub const ALL: [Mutation; 7] = [
+    pub const ALL: [Mutation; 10] = [
         Mutation::FlippedTies,
         Mutation::ClosedEdges,
         Mutation::VertexNudge,
@@ -46,6 +62,9 @@ impl Mutation {
         Mutation::NoPerspective,
         Mutation::ThickLines,
         Mutation::MidpointForDiamond,
+        Mutation::ShiftedSamples,
+        Mutation::CoarseResolve,
+        Mutation::LeakyFull,
     ];
 
     pub fn name(self) -> &'static str {
@@ -57,7 +76,43 @@ impl Mutation {
             Mutation::NoPerspective => "mutant:no-perspective",
             Mutation::ThickLines => "mutant:thick-lines",
             Mutation::MidpointForDiamond => "mutant:midpoint-for-diamond",
+            Mutation::ShiftedSamples => "mutant:shifted-samples",
+            Mutation::CoarseResolve => "mutant:coarse-resolve",
+            Mutation::LeakyFull => "mutant:leaky-full",
         }
+    }
+
+    /// The plan production is given: with its sample offsets moved, for
+    /// [`Mutation::ShiftedSamples`].
+    fn plan(self, plan: &Plan) -> Plan {
+        let mut plan = plan.clone();
+        if let (Mutation::ShiftedSamples, Some(samples)) = (self, plan.antialias.as_mut()) {
+            let last = (1u32 << samples.position_bits) - 1;
+            for [x, _] in &mut samples.offsets {
+                *x = if *x < last { *x + 1 } else { *x - 1 };
+            }
+        }
+        plan
+    }
+
+    /// What production's frame is turned into.
+    fn frame(self, mut frame: Frame) -> Frame {
+        if let Some(resolved) = frame.resolved.as_mut() {
+            match self {
+                Mutation::CoarseResolve => {
+                    for v in resolved.iter_mut() {
+                        *v = (*v * 4.0).floor() / 4.0;
+                    }
+                }
+                Mutation::LeakyFull => {
+                    for v in resolved.iter_mut().filter(|v| **v == 1.0) {
+                        *v = 1.0 - 1.0 / 1048576.0;
+                    }
+                }
+                _ => {}
+            }
+        }
+        frame
     }
 
     fn apply(self, scene: &Scene) -> Scene {
@@ -120,6 +175,7 @@ impl Mutation {
                 LineRule::Midpoint,
                 LastPixel::Exclude,
             ),
+            Mutation::ShiftedSamples | Mutation::CoarseResolve | Mutation::LeakyFull => {}
         }
         scene
     }
@@ -150,6 +206,7 @@ impl Rasterizer for Mutant {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        Production.rasterize(&self.0.apply(scene), plan)
+        let frame = Production.rasterize(&self.0.apply(scene), &self.0.plan(plan))?;
+        Ok(self.0.frame(frame))
     }
 }

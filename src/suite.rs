@@ -4,9 +4,11 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use dashu_ratio::RBig;
+
 use crate::frame::Frame;
 use crate::golden;
-use crate::metrics::{self, Metrics};
+use crate::metrics::{self, AreaClass, Metrics};
 use crate::mutants::{Mutant, Mutation};
 use crate::plan::Plan;
 use crate::production::foils::{DdaF32, DdaF64, FloatF32, FloatF64};
@@ -171,6 +173,54 @@ pub fn run_reference(scene: &Scene) -> ReferenceRun {
     }
 }
 
+/// What the exact areas of an antialiased case say: whether each pixel's
+/// area is exactly 0, 1 or neither (for piglit's rule, SPEC.md §14.3), and
+/// the promises of the case the reference breaks (`expect.area`), which
+/// fail every candidate, as `expect.samples_covered` does.
+pub struct AreaCheck {
+    pub classes: Vec<AreaClass>,
+    pub broken_promises: Vec<String>,
+}
+
+/// The [`AreaCheck`] of a scene; `None` when it does not antialias.
+pub fn area_check(scene: &Scene) -> Option<AreaCheck> {
+    scene.effects.antialias.as_ref()?;
+    Some(check_areas(scene, &reference::exact_areas(scene)))
+}
+
+/// The exact area class of every pixel, and `expect.area` against the
+/// exact sum of the reference's per-pixel areas `areas` (a rational
+/// equality): the reasons the promise is broken, if it is.
+pub fn check_areas(scene: &Scene, areas: &[RBig]) -> AreaCheck {
+    let (zero, one) = (RBig::ZERO, RBig::ONE);
+    let classes = areas
+        .iter()
+        .map(|a| {
+            if *a == zero {
+                AreaClass::Empty
+            } else if *a == one {
+                AreaClass::Full
+            } else {
+                AreaClass::Partial
+            }
+        })
+        .collect();
+    let mut broken = Vec::new();
+    if let Some(expected) = &scene.expect.area {
+        let total = areas.iter().fold(RBig::ZERO, |sum, a| sum + a);
+        if &total != expected.as_rbig() {
+            broken.push(format!(
+                "reference: its pixel areas sum to {total} (≈ {:.6}) but the case expects an area of {expected}",
+                total.to_f64().value()
+            ));
+        }
+    }
+    AreaCheck {
+        classes,
+        broken_promises: broken,
+    }
+}
+
 /// How a candidate did on a case.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Verdict {
@@ -281,13 +331,20 @@ pub fn run_candidate(
             elapsed,
         };
     }
-    let m = metrics::measure(
+    // Computed per candidate: `ReferenceRun` is built by hand elsewhere
+    // (the fuzzer), so it carries no new fields.
+    let areas = area_check(scene);
+    let m = metrics::measure_with_areas(
         scene,
         &reference.frame,
         &frame,
         reference.interior.as_deref(),
+        areas.as_ref().map(|a| a.classes.as_slice()),
     );
-    let failures = metrics::failures(scene, &reference.frame, &m);
+    let mut failures = metrics::failures(scene, &reference.frame, &m);
+    if let Some(check) = &areas {
+        failures.extend(check.broken_promises.iter().cloned());
+    }
     let verdict = if failures.is_empty() {
         Verdict::Pass
     } else {
@@ -339,7 +396,9 @@ pub fn describe(run: &CandidateRun) -> String {
         };
     };
     let c = &m.coverage;
-    let mut parts = vec![if c.mismatched() == 0 {
+    let mut parts = vec![if !c.has_mask() {
+        "no samples (resolved coverage only)".to_owned()
+    } else if c.mismatched() == 0 {
         format!(
             "coverage {}/{} samples exact",
             c.candidate_covered, c.samples
@@ -360,6 +419,12 @@ pub fn describe(run: &CandidateRun) -> String {
         parts.push(format!(
             "{} midpoint lines, {} crowded steps",
             l.lines, l.crowded_steps
+        ));
+    }
+    if let Some(aa) = &m.antialias {
+        parts.push(format!(
+            "aa max err {:.2e} edge rms {:.2e} (bias {:+.1e}) over {} edge pixels, {} piglit violations",
+            aa.max_error, aa.rms_edge, aa.bias_edge, aa.edge_pixels, aa.piglit_violations
         ));
     }
     if let Some(worst) = m

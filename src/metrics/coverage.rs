@@ -1,4 +1,8 @@
-//! Coverage against the reference, sample by sample.
+//! Coverage against the reference, sample by sample. With antialiasing a
+//! pixel holds N sample slots, and the comparison is the same at sample
+//! granularity (SPEC.md §14.3). A candidate without a mask (an area method,
+//! `samples` = 0), or one whose slots do not line up with the reference's,
+//! has no samples to compare: `samples` is then 0 and the mask empty.
 
 use crate::frame::Frame;
 
@@ -17,6 +21,8 @@ pub enum SampleDiff {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct CoverageMetrics {
+    /// Samples compared: every sample of the frame, or 0 when the candidate
+    /// has no mask.
     pub samples: u64,
     pub reference_covered: u64,
     pub candidate_covered: u64,
@@ -33,6 +39,19 @@ impl CoverageMetrics {
     pub fn mismatched(&self) -> u64 {
         self.missing + self.extra + self.wrong_owner
     }
+
+    /// Whether the candidate's samples were compared at all.
+    pub fn has_mask(&self) -> bool {
+        self.samples > 0
+    }
+}
+
+/// Whether the candidate's sample slots line up with the reference's.
+pub fn comparable(reference: &Frame, candidate: &Frame) -> bool {
+    candidate.samples > 0
+        && candidate.samples == reference.samples
+        && candidate.sample_count() == reference.sample_count()
+        && candidate.last.len() == reference.last.len()
 }
 
 pub fn compare(reference: &Frame, candidate: &Frame) -> CoverageMetrics {
@@ -45,6 +64,10 @@ pub fn compare(reference: &Frame, candidate: &Frame) -> CoverageMetrics {
         wrong_owner: 0,
         mask: Vec::with_capacity(reference.sample_count()),
     };
+    if !comparable(reference, candidate) {
+        m.samples = 0;
+        return m;
+    }
     for i in 0..reference.sample_count() {
         let (r, c) = (reference.coverage[i], candidate.coverage[i]);
         let diff = if c < r {

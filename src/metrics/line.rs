@@ -19,8 +19,15 @@ pub struct LineMetrics {
 /// `None` when the scene has no midpoint line. A line's pixels are those
 /// whose last primitive it is, so a later primitive drawn over it can only
 /// hide pixels, never add any. The major axis is that of the snapped
-/// endpoints (SPEC.md §4), found with the oracle's own snapping.
+/// endpoints (SPEC.md §4), found with the oracle's own snapping. A pixel
+/// is the line's when any of its samples is; a frame without samples
+/// (an area method) has no pixels to count, so `None`.
 pub fn measure(scene: &Scene, candidate: &Frame) -> Option<LineMetrics> {
+    if candidate.samples == 0
+        || candidate.sample_count() != candidate.pixel_count() * candidate.samples as usize
+    {
+        return None;
+    }
     let mut m = LineMetrics {
         lines: 0,
         crowded_steps: 0,
@@ -47,7 +54,8 @@ pub fn measure(scene: &Scene, candidate: &Frame) -> Option<LineMetrics> {
             let drawn = (0..across)
                 .filter(|&k| {
                     let (x, y) = if x_major { (step, k) } else { (k, step) };
-                    candidate.last[y * w + x] == id
+                    let first = candidate.index(x as u32, y as u32);
+                    candidate.last[first..first + candidate.samples as usize].contains(&id)
                 })
                 .count();
             m.crowded_steps += u64::from(drawn > 1);

@@ -1,6 +1,7 @@
 //! Metrics: how a candidate's frame differs from the reference's, and the
 //! verdict against a case's expectations.
 
+pub mod antialias;
 pub mod coverage;
 pub mod interpolation;
 pub mod line;
@@ -9,6 +10,7 @@ pub mod watertight;
 use crate::frame::Frame;
 use crate::scene::{Number, Scene};
 
+pub use antialias::{AntialiasMetrics, AreaClass};
 pub use coverage::{CoverageMetrics, SampleDiff};
 pub use interpolation::ChannelError;
 pub use line::LineMetrics;
@@ -27,6 +29,8 @@ pub struct Metrics {
     pub watertight: Option<WatertightMetrics>,
     pub lines: Option<LineMetrics>,
     pub channels: Vec<ChannelError>,
+    /// Antialiased cases: resolved coverage against the exact area.
+    pub antialias: Option<AntialiasMetrics>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -37,9 +41,41 @@ pub fn measure(
     candidate: &Frame,
     interior: Option<&[bool]>,
 ) -> Metrics {
+    measure_with_areas(scene, reference, candidate, interior, None)
+}
+
+/// [`measure`], with each pixel's exact area class for antialiased cases
+/// (from `reference::exact_areas`; without it, the class is read from the
+/// reference's rounded area).
+pub fn measure_with_areas(
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+    interior: Option<&[bool]>,
+    classes: Option<&[AreaClass]>,
+) -> Metrics {
     let coverage = coverage::compare(reference, candidate);
-    let watertight = interior.map(|inside| watertight::measure(inside, reference, candidate));
+    let watertight = interior.and_then(|inside| watertight::measure(inside, reference, candidate));
+    let antialias = antialias::measure(
+        reference,
+        candidate,
+        classes,
+        antialias::bounds(
+            scene.expect.max_coverage_error,
+            scene.expect.max_coverage_rms,
+            candidate.samples,
+        ),
+    );
     let mut channels = Vec::new();
+    if !coverage.has_mask() {
+        return Metrics {
+            coverage,
+            watertight,
+            lines: None,
+            channels,
+            antialias,
+        };
+    }
     let expect = &scene.expect;
     let bounds = |magnitude: f64| interpolation::Bounds {
         allowed_abs: expect
@@ -80,6 +116,7 @@ pub fn measure(
         watertight,
         lines: line::measure(scene, candidate),
         channels,
+        antialias,
     }
 }
 
@@ -102,7 +139,7 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
             expect.max_mismatched_samples
         ));
     }
-    if c.reference_covered > 0 && c.candidate_covered == 0 {
+    if c.has_mask() && c.reference_covered > 0 && c.candidate_covered == 0 {
         out.push(
             "coverage: the candidate drew nothing where the reference draws something".to_owned(),
         );
@@ -134,6 +171,9 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
                 ch.channel, ch.max_abs, ch.max_ulp, ch.allowed_abs
             ));
         }
+    }
+    if let Some(aa) = &m.antialias {
+        out.extend(antialias::failures(aa));
     }
     if let Some(expected) = expect.samples_covered {
         let covered = reference.covered_samples();

@@ -19,7 +19,19 @@ impl WatertightMetrics {
     }
 }
 
-pub fn measure(interior: &[bool], reference: &Frame, candidate: &Frame) -> WatertightMetrics {
+/// `None` when the candidate has no mask, or the interior does not have
+/// one entry per sample of both frames.
+pub fn measure(
+    interior: &[bool],
+    reference: &Frame,
+    candidate: &Frame,
+) -> Option<WatertightMetrics> {
+    if candidate.samples == 0
+        || interior.len() != candidate.sample_count()
+        || interior.len() != reference.sample_count()
+    {
+        return None;
+    }
     let mut m = WatertightMetrics {
         interior: 0,
         holes: 0,
@@ -31,5 +43,5 @@ pub fn measure(interior: &[bool], reference: &Frame, candidate: &Frame) -> Water
         m.holes += u64::from(inside && c == 0);
         m.overdraw += u64::from(c > 1 && reference.coverage[i] <= 1);
     }
-    m
+    Some(m)
 }

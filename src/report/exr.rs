@@ -8,15 +8,23 @@
 //! - `depth.error`, `attribute.K.error`: interpolated value minus the exact
 //!   value, where both drew the same primitive last; 0 where nothing is
 //!   covered or the last primitives differ (not compared).
+//!
+//! With antialiasing (SPEC.md §14) the `error` layer holds one value per
+//! sample: it is N times wider than the canvas, sample s of pixel (x, y) at
+//! column x·N + s (the frame's slot order). A second layer, `resolved`, of
+//! the canvas's size, holds `resolved.error`: the candidate's resolved
+//! coverage minus the exact area, signed. A candidate without samples (an
+//! area method) has only the `resolved` layer.
 
 use std::path::{Path, PathBuf};
 
 use ::exr::prelude::{
-    AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer, LayerAttributes, WritableImage,
+    AnyChannel, AnyChannels, Encoding, FlatSamples, Image, ImageAttributes, IntegerBounds, Layer,
+    LayerAttributes, WritableImage,
 };
 
 use crate::frame::Frame;
-use crate::metrics::Metrics;
+use crate::metrics::{antialias, coverage, Metrics};
 
 /// Whether sample `i` has comparable interpolated values: the reference
 /// covers it and both frames drew the same primitive last (the metrics'
@@ -32,6 +40,9 @@ pub fn interpolation_errors(
     reference: &Frame,
     candidate: &Frame,
 ) -> Vec<(String, Vec<Option<f64>>)> {
+    if !coverage::comparable(reference, candidate) {
+        return Vec::new();
+    }
     let errors = |exact: &[f64], values: &[f64]| -> Vec<Option<f64>> {
         (0..reference.sample_count())
             .map(|i| compared(reference, candidate, i).then(|| values[i] - exact[i]))
@@ -61,10 +72,18 @@ pub fn has_error(passed: bool, metrics: &Metrics) -> bool {
             .channels
             .iter()
             .any(|ch| ch.max_abs != 0.0 || ch.max_abs.is_nan())
+        || metrics
+            .antialias
+            .as_ref()
+            .is_some_and(|a| a.max_error != 0.0 || a.max_error.is_nan())
 }
 
-/// Every channel of the error map, named as stored.
+/// Every per-sample channel of the error map, named as stored; empty when
+/// the candidate's samples do not line up with the reference's.
 pub fn error_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<f32>)> {
+    if !coverage::comparable(reference, candidate) {
+        return Vec::new();
+    }
     let n = reference.sample_count();
     let mut out = vec![
         (
@@ -100,20 +119,46 @@ pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBu
     if let Some(parent) = path.parent() {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
-    let size = (reference.width as usize, reference.height as usize);
-    let list = error_channels(reference, candidate)
-        .into_iter()
-        .map(|(name, values)| AnyChannel::new(name.as_str(), FlatSamples::F32(values)))
-        .collect();
-    let layer = Layer::new(
-        size,
-        LayerAttributes::named("error"),
-        Encoding::SMALL_LOSSLESS,
-        AnyChannels::sort(list),
-    );
-    Image::from_layer(layer)
+    let canvas = (reference.width as usize, reference.height as usize);
+    let layer = |name: &str, size: (usize, usize), channels: Vec<(String, Vec<f32>)>| {
+        let list = channels
+            .into_iter()
+            .map(|(name, values)| AnyChannel::new(name.as_str(), FlatSamples::F32(values)))
+            .collect();
+        Layer::new(
+            size,
+            LayerAttributes::named(name),
+            Encoding::SMALL_LOSSLESS,
+            AnyChannels::sort(list),
+        )
+    };
+    let mut layers = Vec::new();
+    let samples = error_channels(reference, candidate);
+    if !samples.is_empty() {
+        let wide = (canvas.0 * reference.samples as usize, canvas.1);
+        layers.push(layer("error", wide, samples));
+    }
+    let resolved = antialias::signed_errors(reference, candidate);
+    if !resolved.is_empty() {
+        let values = resolved.iter().map(|&e| e as f32).collect();
+        layers.push(layer(
+            "resolved",
+            canvas,
+            vec![("resolved.error".to_owned(), values)],
+        ));
+    }
+    let written = match layers.len() {
+        0 => return Err(format!("{}: nothing to compare", path.display())),
+        1 => Image::from_layer(layers.pop().expect("one layer"))
+            .write()
+            .to_file(path),
+        _ => Image::from_layers(
+            ImageAttributes::new(IntegerBounds::new((0, 0), canvas)),
+            layers,
+        )
         .write()
-        .to_file(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+        .to_file(path),
+    };
+    written.map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(path.to_owned())
 }

@@ -19,6 +19,15 @@
 //! per pixel on a viridis scale from 0 to the channel's largest error), its
 //! files, and the case file (linked relative to the report folder, and
 //! embedded).
+//!
+//! An antialiased case's card shows its resolved coverage instead (drawn
+//! from the frames, for passes too): the exact area and the candidate's
+//! resolved value in grey, the signed error (red too much, blue too
+//! little), and for a candidate with samples every sample as a dot coloured
+//! by how it differs (colour keys in `png.rs`). Passing antialiased results
+//! with any coverage error get a card like passes with interpolation error.
+//! With several samples per pixel a heat map shows each pixel's largest
+//! error over its samples.
 
 use std::fmt::Write as _;
 use std::path::{Component, Path, PathBuf};
@@ -27,10 +36,12 @@ use image::{Rgb, RgbImage};
 
 use super::exr::interpolation_errors;
 use super::json::{CaseEntry, ChannelEntry, MetricsEntry, Report, ResultEntry};
-use super::png::{EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
+use super::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
 use super::{escape, MAX_PICTURED};
 use crate::frame::Frame;
+use crate::metrics::{coverage::comparable, SampleDiff};
 use crate::runner::CaseOutcome;
+use crate::scene::Scene;
 
 /// Case files longer than this are linked but not embedded.
 const MAX_EMBEDDED_CASE: usize = 64 * 1024;
@@ -156,12 +167,18 @@ fn display_scale(frame: &Frame, target: u32) -> u32 {
     (target / frame.width.max(frame.height).max(1)).clamp(1, 16)
 }
 
-/// A heat map of |error| at one pixel per sample, 0 → `scale_max` on
-/// viridis; red above `bound`, dark grey where not compared.
+/// A heat map of |error| at one pixel per pixel (the largest over its
+/// samples), 0 → `scale_max` on viridis; red above `bound`, dark grey where
+/// no sample is compared.
 fn heat_map(frame: &Frame, errors: &[Option<f64>], scale_max: f64, bound: f64) -> RgbImage {
     let mut img = RgbImage::new(frame.width, frame.height);
-    for (i, error) in errors.iter().enumerate() {
-        let colour = match error.map(f64::abs) {
+    let n = frame.samples.max(1) as usize;
+    for (i, run) in errors.chunks(n).enumerate() {
+        let error = run.iter().flatten().fold(None, |worst: Option<f64>, e| {
+            let e = if e.is_nan() { f64::INFINITY } else { e.abs() };
+            Some(worst.map_or(e, |w| w.max(e)))
+        });
+        let colour = match error {
             None => NOT_COMPARED,
             Some(e) if e > bound || e.is_nan() => ABOVE_BOUND,
             Some(e) if scale_max > 0.0 => viridis(e / scale_max),
@@ -180,7 +197,8 @@ enum Kind {
     Problem,
     /// A foil departing from the reference.
     Departure,
-    /// A pass with some interpolation error: the heat maps are worth seeing.
+    /// A pass with some interpolation or coverage error: the heat maps and
+    /// the antialiasing pictures are worth seeing.
     Interpolation,
 }
 
@@ -214,6 +232,9 @@ fn interpolation_error(m: &MetricsEntry) -> bool {
     m.channels
         .iter()
         .any(|ch| ch.max_abs != 0.0 || ch.max_abs.is_nan())
+        || m.antialias
+            .as_ref()
+            .is_some_and(|a| a.max_error != 0.0 || a.max_error.is_nan())
 }
 
 /// Every card the run deserves, the most important first (case order within
@@ -343,6 +364,15 @@ fn cell(result: &ResultEntry, link: Option<&str>) -> String {
                 parts.push(format!("{} crowded steps", l.crowded_steps));
             }
         }
+        if let Some(a) = &m.antialias {
+            parts.push(format!(
+                "aa max {:.2e} · edge rms {:.2e}",
+                a.max_error, a.rms_edge
+            ));
+            if a.piglit_violations > 0 {
+                parts.push(format!("{} piglit violations", a.piglit_violations));
+            }
+        }
         if let Some(ch) = worst_channel(m) {
             let ratio = ch.max_abs / ch.allowed_abs;
             let share = if ratio < 0.01 {
@@ -424,6 +454,50 @@ fn metrics_tables(m: &MetricsEntry) -> String {
         );
     }
     html.push_str("</table>");
+    if let Some(a) = &m.antialias {
+        let bound = |b: Option<f64>| b.map_or("—".to_owned(), |b| format!("{b:.3e}"));
+        let rows = [
+            (
+                "samples per pixel",
+                if a.samples == 0 {
+                    "none (area)".to_owned()
+                } else {
+                    a.samples.to_string()
+                },
+            ),
+            ("edge pixels", format!("{} of {}", a.edge_pixels, a.pixels)),
+            (
+                "max |error|",
+                format!(
+                    "{:.3e} at ({}, {})",
+                    a.max_error, a.worst_pixel[0], a.worst_pixel[1]
+                ),
+            ),
+            ("bound", bound(a.allowed_error)),
+            ("edge RMS", format!("{:.3e}", a.rms_edge)),
+            ("RMS bound", bound(a.allowed_rms)),
+            ("RMS, all pixels", format!("{:.3e}", a.rms_all)),
+            ("edge bias", format!("{:+.3e}", a.bias_edge)),
+            (
+                "full / empty pixels",
+                format!("{} / {}", a.full_pixels, a.empty_pixels),
+            ),
+            ("piglit violations", a.piglit_violations.to_string()),
+            (
+                "not their own box resolve",
+                a.resolve_mismatches.to_string(),
+            ),
+        ];
+        html.push_str("<table><tr><th colspan=\"2\">resolved coverage − exact area</th></tr>");
+        for (name, value) in rows {
+            let _ = write!(
+                html,
+                "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
+                escape(&value)
+            );
+        }
+        html.push_str("</table>");
+    }
     if !m.channels.is_empty() {
         html.push_str("<table><tr><th>channel</th><th class=\"n\">samples</th><th class=\"n\">max |error|</th><th class=\"n\">max ulp</th><th class=\"n\">rms</th><th class=\"n\">bound</th><th class=\"n\">ulp bound</th></tr>");
         for ch in &m.channels {
@@ -507,6 +581,14 @@ fn card_header(case: &CaseEntry, result: Option<&ResultEntry>, kind_class: &str)
             rules.cull,
             rules.primitives
         );
+        if let Some(aa) = &rules.antialias {
+            let _ = write!(
+                html,
+                "<span class=\"muted\">antialiased: {} samples, {} pattern</span>",
+                aa.samples,
+                escape(aa.pattern)
+            );
+        }
     }
     html.push_str("</header>");
     if let Some(d) = case.description.as_deref().filter(|d| !d.is_empty()) {
@@ -547,6 +629,7 @@ fn case_card(dir: &Path, case: &CaseEntry) -> String {
 struct ResultView<'a> {
     case: &'a CaseEntry,
     result: &'a ResultEntry,
+    scene: Option<&'a Scene>,
     reference: Option<&'a Frame>,
     candidate: Option<&'a Frame>,
 }
@@ -570,28 +653,24 @@ fn result_card(dir: &Path, v: &ResultView) -> String {
         html.push_str("</ul>");
     }
 
+    // An antialiased case: its resolved coverage, drawn from the frames.
+    let resolved = v.reference.filter(|r| png::pictured_resolved(r));
+    if let (Some(scene), Some(r), Some(c)) = (v.scene, resolved, v.candidate) {
+        html.push_str(&antialias_pictures(case, scene, r, c, &result.rasterizer));
+    }
+
     // The three pictures, as written under images/.
     let pngs: Vec<&String> = result
         .files
         .iter()
         .filter(|f| f.starts_with("images/") && f.ends_with(".png"))
         .collect();
-    if !pngs.is_empty() {
+    if !pngs.is_empty() && resolved.is_none() {
         let find = |pred: &dyn Fn(&str) -> bool| pngs.iter().find(|f| pred(f)).copied();
         let reference = find(&|f| f.ends_with("/reference.png"));
         let diff = find(&|f| f.ends_with(".diff.png"));
         let candidate = find(&|f| !f.ends_with("/reference.png") && !f.ends_with(".diff.png"));
-        // Wide canvases stack their pictures, so each keeps its scale.
-        // Tall ones scroll inside a box of bounded height.
-        let shape = case.rules.as_ref().map_or("", |r| {
-            if r.canvas[0] >= 2 * r.canvas[1] {
-                " stack"
-            } else if r.canvas[1] >= 2 * r.canvas[0] {
-                " tall"
-            } else {
-                ""
-            }
-        });
+        let shape = picture_shape(case);
         let _ = write!(html, "<h4>coverage</h4><div class=\"pictures{shape}\">");
         let mut show = |file: Option<&String>, role: &str, caption: &str| {
             if let Some(bytes) = file.and_then(|f| std::fs::read(dir.join(f)).ok()) {
@@ -646,12 +725,113 @@ fn result_card(dir: &Path, v: &ResultView) -> String {
     html
 }
 
+/// The shape class of a case's pictures: wide canvases stack their
+/// pictures, so each keeps its scale; tall ones scroll inside a box of
+/// bounded height.
+fn picture_shape(case: &CaseEntry) -> &'static str {
+    case.rules.as_ref().map_or("", |r| {
+        if r.canvas[0] >= 2 * r.canvas[1] {
+            " stack"
+        } else if r.canvas[1] >= 2 * r.canvas[0] {
+            " tall"
+        } else {
+            ""
+        }
+    })
+}
+
+/// The resolved coverage of an antialiased case: the exact area and the
+/// candidate's resolved value in grey, the signed error, and for a
+/// candidate with samples, the samples picture.
+fn antialias_pictures(
+    case: &CaseEntry,
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+    name: &str,
+) -> String {
+    let scale = png::auto_scale(reference);
+    let (exact, resolved) = (png::resolved_of(reference), png::resolved_of(candidate));
+    let errors: Vec<f64> = resolved.iter().zip(&exact).map(|(r, e)| r - e).collect();
+    let full = png::error_scale(&errors);
+    let shape = picture_shape(case);
+    let mut html = format!("<h4>resolved coverage</h4><div class=\"pictures{shape}\">");
+    let mut show = |img: &RgbImage, role: &str, caption: &str| {
+        html.push_str(&figure(&data_uri(&png_bytes(img)), role, caption, None));
+    };
+    show(
+        &png::resolved_picture(scene, &exact, scale),
+        "reference",
+        "exact area (reference)",
+    );
+    let caption = if candidate.samples == 0 {
+        format!("{name}: resolved (area method)")
+    } else {
+        format!("{name}: resolved ({} samples)", candidate.samples)
+    };
+    show(
+        &png::resolved_picture(scene, &resolved, scale),
+        "candidate",
+        &caption,
+    );
+    show(
+        &png::error_picture(scene, &errors, full, scale),
+        "diff",
+        &format!("signed error, full colour at ±{full:.2e}"),
+    );
+    let mask = if comparable(reference, candidate) {
+        diff_mask(reference, candidate)
+    } else {
+        Vec::new()
+    };
+    let samples = png::samples_picture(
+        scene,
+        reference,
+        &mask,
+        png::samples_scale(reference, scale),
+    );
+    if let Some(img) = &samples {
+        show(img, "samples", "samples (positions as drawn)");
+    }
+    html.push_str("</div>");
+    if comparable(reference, candidate) {
+        html.push_str(&first_differences(reference, candidate));
+    }
+    html.push_str(&colour_key(&[
+        ([0, 0, 0], "0"),
+        ([255, 255, 255], "1 (fully covered)"),
+        (png::OVER_ONE, "above 1 (overlap)"),
+        (png::TOO_MUCH, "error > 0: too much coverage"),
+        (png::TOO_LITTLE, "error < 0: too little"),
+        ([0, 200, 255], "snapped edges"),
+    ]));
+    if samples.is_some() {
+        html.push_str(&colour_key(&[
+            (png::SAMPLE_SAME, "sample covered alike"),
+            (png::SAMPLE_EMPTY, "empty in both"),
+            (MISSING, "missing"),
+            (EXTRA, "extra"),
+            (WRONG_OWNER, "wrong owner"),
+        ]));
+    }
+    html
+}
+
+/// The difference of every sample, as `metrics::coverage` finds it.
+fn diff_mask(reference: &Frame, candidate: &Frame) -> Vec<SampleDiff> {
+    crate::metrics::coverage::compare(reference, candidate).mask
+}
+
 /// The first few differing pixels, so that one can be found on a large
 /// canvas.
 fn first_differences(reference: &Frame, candidate: &Frame) -> String {
     const SHOWN: usize = 12;
     let mut listed = Vec::new();
     let mut total = 0usize;
+    if !comparable(reference, candidate) {
+        return String::new();
+    }
+    let n = reference.samples.max(1) as usize;
     for i in 0..reference.sample_count() {
         let (r, c) = (reference.coverage[i], candidate.coverage[i]);
         let kind = if c < r {
@@ -665,8 +845,13 @@ fn first_differences(reference: &Frame, candidate: &Frame) -> String {
         };
         total += 1;
         if listed.len() < SHOWN {
-            let (x, y) = (i as u32 % reference.width, i as u32 / reference.width);
-            listed.push(format!("({x}, {y}) {kind}"));
+            let pixel = (i / n) as u32;
+            let (x, y) = (pixel % reference.width, pixel / reference.width);
+            if n > 1 {
+                listed.push(format!("({x}, {y}) sample {} {kind}", i % n));
+            } else {
+                listed.push(format!("({x}, {y}) {kind}"));
+            }
         }
     }
     if total == 0 {
@@ -902,6 +1087,7 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
                     let view = ResultView {
                         case,
                         result,
+                        scene: outcome.and_then(|o| o.scene.as_ref()),
                         reference: outcome.and_then(|o| o.reference.as_ref()).map(|r| &r.frame),
                         candidate: outcome
                             .and_then(|o| o.candidates.get(r))
@@ -909,7 +1095,7 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
                             .filter(|f| {
                                 outcome
                                     .and_then(|o| o.reference.as_ref())
-                                    .is_some_and(|r| r.frame.sample_count() == f.sample_count())
+                                    .is_some_and(|r| same_shape(&r.frame, f))
                             }),
                     };
                     html.push_str(&result_card(dir, &view));
@@ -921,6 +1107,16 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
     }
     html.push_str("</main></body></html>\n");
     html
+}
+
+/// Whether a candidate's frame can be pictured beside the reference's: the
+/// same samples, or resolved coverage of the same canvas.
+fn same_shape(reference: &Frame, candidate: &Frame) -> bool {
+    let resolved = |f: &Frame| f.resolved.as_ref().map(Vec::len);
+    reference.sample_count() == candidate.sample_count() && candidate.samples == reference.samples
+        || candidate.samples == 0
+            && resolved(candidate).is_some()
+            && resolved(candidate) == resolved(reference)
 }
 
 fn slug(text: &str) -> String {

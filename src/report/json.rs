@@ -105,6 +105,18 @@ pub struct RulesInfo {
     pub fill_rule: &'static str,
     pub cull: &'static str,
     pub primitives: usize,
+    /// Antialiased cases only: `effects.antialias` as the case gives it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub antialias: Option<AntialiasRules>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct AntialiasRules {
+    pub samples: u32,
+    pub pattern: &'static str,
+    pub seed: u64,
+    pub adaptive: bool,
+    pub position_bits: u32,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -129,6 +141,32 @@ pub struct MetricsEntry {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines: Option<LinesEntry>,
     pub channels: Vec<ChannelEntry>,
+    /// Antialiased cases only (SPEC.md §14.3).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub antialias: Option<AntialiasEntry>,
+}
+
+/// Resolved coverage against the exact area, per pixel (SPEC.md §14.3).
+#[derive(Clone, Debug, Serialize)]
+pub struct AntialiasEntry {
+    /// The candidate's samples per pixel; 0 for an area method.
+    pub samples: u32,
+    pub pixels: u64,
+    pub edge_pixels: u64,
+    /// Largest |resolved − exact area|, and the pixel [x, y] where it is.
+    pub max_error: f64,
+    pub worst_pixel: [u32; 2],
+    pub rms_edge: f64,
+    pub rms_all: f64,
+    pub bias_edge: f64,
+    pub full_pixels: u64,
+    pub empty_pixels: u64,
+    pub piglit_violations: u64,
+    pub resolve_mismatches: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub allowed_error: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub allowed_rms: Option<f64>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -202,6 +240,22 @@ impl MetricsEntry {
                     allowed_ulp: ch.allowed_ulp,
                 })
                 .collect(),
+            antialias: m.antialias.as_ref().map(|a| AntialiasEntry {
+                samples: a.samples,
+                pixels: a.pixels,
+                edge_pixels: a.edge_pixels,
+                max_error: a.max_error,
+                worst_pixel: a.worst_pixel,
+                rms_edge: a.rms_edge,
+                rms_all: a.rms_all,
+                bias_edge: a.bias_edge,
+                full_pixels: a.full_pixels,
+                empty_pixels: a.empty_pixels,
+                piglit_violations: a.piglit_violations,
+                resolve_mismatches: a.resolve_mismatches,
+                allowed_error: a.allowed_error,
+                allowed_rms: a.allowed_rms,
+            }),
         }
     }
 }
@@ -213,6 +267,13 @@ fn rules_info(scene: &Scene) -> RulesInfo {
         fill_rule: scene.rules.fill_rule.name(),
         cull: scene.rules.cull.name(),
         primitives: scene.primitives.len(),
+        antialias: scene.effects.antialias.as_ref().map(|a| AntialiasRules {
+            samples: a.samples,
+            pattern: a.pattern.name(),
+            seed: a.seed,
+            adaptive: a.adaptive,
+            position_bits: a.position_bits,
+        }),
     }
 }
 

@@ -11,13 +11,24 @@
 //!   another primitive: the sample went to the other side of a shared edge);
 //! - every image: thin dark lines at pixel borders, and the snapped
 //!   triangle outlines in cyan, drawn from f64 (display only).
+//!
+//! Antialiased cases (SPEC.md §14) are pictured by their resolved coverage:
+//! - reference and candidate: grey levels, black = 0, white = 1 (the exact
+//!   area, and the candidate's resolved value), orange above 1 (overlap);
+//! - `.diff.png`: the signed coverage error, candidate − exact: black = 0,
+//!   red = too much coverage, blue = too little, full colour at the largest
+//!   |error| of the picture (at least 2^-20, so rounding noise stays dark);
+//! - `.samples.png`, for a candidate with samples: every sample as a dot at
+//!   its position in the magnified pixel, coloured as in the difference
+//!   mask (white = covered alike, dark grey = empty in both), over the exact
+//!   area in dim grey.
 
 use std::path::{Path, PathBuf};
 
 use image::{Rgb, RgbImage};
 
 use crate::frame::Frame;
-use crate::metrics::SampleDiff;
+use crate::metrics::{antialias, SampleDiff};
 use crate::scene::Scene;
 
 pub const MISSING: [u8; 3] = [255, 0, 255];
@@ -26,6 +37,17 @@ pub const WRONG_OWNER: [u8; 3] = [255, 220, 0];
 pub const SAME_COVERED: [u8; 3] = [110, 110, 110];
 const EDGE: [u8; 3] = [0, 200, 255];
 const GRID: [u8; 3] = [40, 40, 40];
+/// Resolved coverage above 1 (primitives overlap).
+pub const OVER_ONE: [u8; 3] = [255, 150, 0];
+/// Signed coverage error: too much, too little (full strength).
+pub const TOO_MUCH: [u8; 3] = [255, 40, 40];
+pub const TOO_LITTLE: [u8; 3] = [40, 120, 255];
+/// A sample both leave empty, in the samples picture.
+pub const SAMPLE_EMPTY: [u8; 3] = [70, 70, 70];
+/// A sample both cover alike, in the samples picture.
+pub const SAMPLE_SAME: [u8; 3] = [235, 235, 235];
+/// The smallest full-strength error of a signed error map.
+pub const MIN_ERROR_SCALE: f64 = 1.0 / 1048576.0;
 
 /// A magnification that makes the picture about 512 pixels across, so that
 /// single pixels are easy to see (1 to 32).
@@ -50,6 +72,123 @@ fn diff_colour(diff: SampleDiff, covered: bool) -> [u8; 3] {
         SampleDiff::Extra => EXTRA,
         SampleDiff::WrongOwner => WRONG_OWNER,
     }
+}
+
+/// The grey level of a resolved coverage value; orange above 1.
+pub fn resolved_colour(v: f64) -> [u8; 3] {
+    if v > 1.0 {
+        OVER_ONE
+    } else {
+        let g = (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+        [g, g, g]
+    }
+}
+
+/// The colour of a signed error at full strength `scale`: black for 0,
+/// red for positive, blue for negative.
+pub fn signed_colour(error: f64, scale: f64) -> [u8; 3] {
+    let t = if error.is_nan() {
+        1.0
+    } else {
+        (error.abs() / scale).clamp(0.0, 1.0)
+    };
+    let end = if error < 0.0 { TOO_LITTLE } else { TOO_MUCH };
+    end.map(|c| (f64::from(c) * t).round() as u8)
+}
+
+/// The full-strength error of a signed map: its largest |error|, at least
+/// [`MIN_ERROR_SCALE`].
+pub fn error_scale(errors: &[f64]) -> f64 {
+    errors
+        .iter()
+        .map(|e| if e.is_finite() { e.abs() } else { 0.0 })
+        .fold(MIN_ERROR_SCALE, f64::max)
+}
+
+/// A frame's coverage per pixel: its resolved value, or the box resolve of
+/// its samples when it has none.
+pub fn resolved_of(frame: &Frame) -> Vec<f64> {
+    match &frame.resolved {
+        Some(r) if r.len() == frame.pixel_count() => r.clone(),
+        _ if frame.samples > 0 => frame.box_resolve(),
+        _ => vec![0.0; frame.pixel_count()],
+    }
+}
+
+/// Whether a frame is pictured by its resolved coverage: it antialiases, or
+/// holds other than one sample per pixel.
+pub fn pictured_resolved(frame: &Frame) -> bool {
+    frame.resolved.is_some() || frame.samples != 1
+}
+
+/// The resolved coverage as grey levels, magnified.
+pub fn resolved_picture(scene: &Scene, values: &[f64], scale: u32) -> RgbImage {
+    picture(scene, scale, |i| {
+        resolved_colour(values.get(i).copied().unwrap_or(0.0))
+    })
+}
+
+/// The signed coverage error, magnified, full strength at `full`.
+pub fn error_picture(scene: &Scene, errors: &[f64], full: f64, scale: u32) -> RgbImage {
+    picture(scene, scale, |i| {
+        signed_colour(errors.get(i).copied().unwrap_or(0.0), full)
+    })
+}
+
+/// The samples picture's magnification: at least 8 so that the dots of one
+/// pixel are apart, at most about 2048 pixels across.
+pub fn samples_scale(frame: &Frame, scale: u32) -> u32 {
+    let cap = (2048 / frame.width.max(frame.height).max(1)).max(1);
+    scale.max(8.min(cap))
+}
+
+/// Every sample as a dot at its offset in the magnified pixel, coloured by
+/// how it differs from the reference, over the reference's resolved
+/// coverage (dimmed). `None` when the scene has no sample pattern or the
+/// mask does not hold one entry per sample.
+pub fn samples_picture(
+    scene: &Scene,
+    reference: &Frame,
+    mask: &[SampleDiff],
+    scale: u32,
+) -> Option<RgbImage> {
+    let aa = scene.effects.antialias.as_ref()?;
+    let offsets = aa.offsets();
+    let n = offsets.len();
+    if n == 0 || reference.samples as usize != n || mask.len() != reference.sample_count() {
+        return None;
+    }
+    let exact = resolved_of(reference);
+    let mut img = picture(scene, scale, |i| {
+        resolved_colour(exact[i]).map(|c| (u16::from(c) * 2 / 5) as u8)
+    });
+    let lattice = f64::from(1u32 << aa.position_bits);
+    let radius = (scale / 10).max(1) as i64 - 1;
+    let (w, h) = (i64::from(img.width()), i64::from(img.height()));
+    for (slot, diff) in mask.iter().enumerate() {
+        let (pixel, s) = (slot / n, slot % n);
+        let (x, y) = (
+            pixel as u32 % scene.canvas.width,
+            pixel as u32 / scene.canvas.width,
+        );
+        let [ox, oy] = offsets[s];
+        let cx = ((f64::from(x) + f64::from(ox) / lattice) * f64::from(scale)) as i64;
+        let cy = ((f64::from(y) + f64::from(oy) / lattice) * f64::from(scale)) as i64;
+        let colour = match diff {
+            SampleDiff::Same if reference.coverage[slot] > 0 => SAMPLE_SAME,
+            SampleDiff::Same => SAMPLE_EMPTY,
+            other => diff_colour(*other, true),
+        };
+        for dy in -radius..=radius.max(0) {
+            for dx in -radius..=radius.max(0) {
+                let (px, py) = (cx + dx, cy + dy);
+                if (0..w).contains(&px) && (0..h).contains(&py) {
+                    img.put_pixel(px as u32, py as u32, Rgb(colour));
+                }
+            }
+        }
+    }
+    Some(img)
 }
 
 /// Paints one colour per pixel, magnified, with grid lines and outlines.
@@ -110,22 +249,77 @@ pub fn write_comparison(
 ) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let file_name = candidate_name.replace([':', '/'], "-");
+    if pictured_resolved(reference) {
+        return write_resolved_comparison(
+            scene, reference, &file_name, candidate, mask, dir, scale,
+        );
+    }
+    let has_mask = mask.len() == reference.sample_count()
+        && candidate.sample_count() == reference.sample_count();
+    let covered = |frame: &Frame, i: usize| frame.coverage.get(i).copied().unwrap_or(0);
     let images = [
         (
             "reference.png".to_owned(),
-            picture(scene, scale, |i| coverage_colour(reference.coverage[i])),
+            picture(scene, scale, |i| coverage_colour(covered(reference, i))),
         ),
         (
             format!("{file_name}.png"),
-            picture(scene, scale, |i| coverage_colour(candidate.coverage[i])),
+            picture(scene, scale, |i| coverage_colour(covered(candidate, i))),
         ),
         (
             format!("{file_name}.diff.png"),
             picture(scene, scale, |i| {
-                diff_colour(mask[i], reference.coverage[i] > 0)
+                let diff = if has_mask { mask[i] } else { SampleDiff::Same };
+                diff_colour(diff, reference.coverage[i] > 0)
             }),
         ),
     ];
+    save_all(dir, images)
+}
+
+/// The pictures of an antialiased case: resolved coverage of the reference
+/// and the candidate, the signed error, and (for a candidate with samples)
+/// the samples picture.
+fn write_resolved_comparison(
+    scene: &Scene,
+    reference: &Frame,
+    file_name: &str,
+    candidate: &Frame,
+    mask: &[SampleDiff],
+    dir: &Path,
+    scale: u32,
+) -> Result<Vec<PathBuf>, String> {
+    let (exact, resolved) = (resolved_of(reference), resolved_of(candidate));
+    let errors: Vec<f64> = resolved.iter().zip(&exact).map(|(r, e)| r - e).collect();
+    let errors = if errors.len() == reference.pixel_count() {
+        errors
+    } else {
+        antialias::signed_errors(reference, candidate)
+    };
+    let mut images = vec![
+        (
+            "reference.png".to_owned(),
+            resolved_picture(scene, &exact, scale),
+        ),
+        (
+            format!("{file_name}.png"),
+            resolved_picture(scene, &resolved, scale),
+        ),
+        (
+            format!("{file_name}.diff.png"),
+            error_picture(scene, &errors, error_scale(&errors), scale),
+        ),
+    ];
+    if let Some(img) = samples_picture(scene, reference, mask, samples_scale(reference, scale)) {
+        images.push((format!("{file_name}.samples.png"), img));
+    }
+    save_all(dir, images)
+}
+
+fn save_all(
+    dir: &Path,
+    images: impl IntoIterator<Item = (String, RgbImage)>,
+) -> Result<Vec<PathBuf>, String> {
     let mut written = Vec::new();
     for (name, img) in images {
         let path = dir.join(name);

@@ -86,6 +86,37 @@ pub fn render(report: &Report) -> String {
             md.push('\n');
         }
     }
+    let mut coverage: Vec<(f64, String)> = report
+        .cases
+        .iter()
+        .flat_map(|c| c.results.iter().map(move |r| (c, r)))
+        .filter_map(|(c, r)| {
+            let a = r.metrics.as_ref()?.antialias.as_ref()?;
+            let bound = a.allowed_rms.map_or("—".to_owned(), |b| format!("{b:.3e}"));
+            Some((
+                a.rms_edge,
+                format!(
+                    "| `{}` | {} | {} | {:.3e} | {:.3e} | {:+.2e} | {} | {} |",
+                    c.id,
+                    r.rasterizer,
+                    a.samples,
+                    a.max_error,
+                    a.rms_edge,
+                    a.bias_edge,
+                    bound,
+                    a.piglit_violations
+                ),
+            ))
+        })
+        .collect();
+    coverage.sort_by(|a, b| b.0.total_cmp(&a.0));
+    if !coverage.is_empty() {
+        md.push_str("\n## Worst antialiasing errors\n\n| case | rasterizer | samples | max error | edge RMS | bias | RMS bound | piglit violations |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+        for (_, row) in coverage.iter().take(10) {
+            md.push_str(row);
+            md.push('\n');
+        }
+    }
     md
 }
 

@@ -1,0 +1,332 @@
+//! Antialiasing metrics (SPEC.md §14.3): each pixel's resolved coverage
+//! against the exact area the reference computes.
+//!
+//! The mask of a sample method is judged by the coverage comparison
+//! (`coverage.rs`), sample by sample; this module judges what a picture
+//! shows, the resolved value per pixel:
+//!
+//! - the **coverage error** of a pixel, resolved − exact area: its largest
+//!   magnitude, its RMS over edge pixels and over all pixels, and its bias
+//!   (mean signed error) over edge pixels;
+//! - **piglit's rule**: a pixel whose exact area is 1 and whose every sample
+//!   the reference covers exactly once must resolve to exactly 1, and one
+//!   whose exact area is 0 and no sample covered to exactly 0, whatever the
+//!   method (piglit's `ext_framebuffer_multisample` accuracy test);
+//! - for a candidate with a mask, that its resolved value is its own mask's
+//!   box resolve.
+//!
+//! The errors are computed in f64 from the reference's resolved value (the
+//! exact area rounded once): they are measurements, not decisions. Which
+//! pixels are full or empty is decided exactly when the exact areas are
+//! known ([`AreaClass`], from `reference::exact_areas`); otherwise from the
+//! rounded area, which is 0 or 1 exactly when the area is, except for an
+//! area within 2^-54 of 1.
+
+use crate::frame::Frame;
+
+/// What the exact area of a pixel is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AreaClass {
+    /// Exactly 0.
+    Empty,
+    /// Exactly 1.
+    Full,
+    /// Anything else: strictly between 0 and 1, or above 1 where primitives
+    /// overlap.
+    Partial,
+}
+
+impl AreaClass {
+    /// The class of a rounded area (see the module notes).
+    pub fn of_rounded(area: f64) -> AreaClass {
+        if area == 0.0 {
+            AreaClass::Empty
+        } else if area == 1.0 {
+            AreaClass::Full
+        } else {
+            AreaClass::Partial
+        }
+    }
+}
+
+/// piglit's bound on the RMS coverage error of N-sample MSAA over edge
+/// pixels: 0.333 · 0.62^log2(N) (piglit's MSAA accuracy test,
+/// `tests/spec/ext_framebuffer_multisample/common.cpp`): 0.333 for 1
+/// sample, 0.206 for 2, 0.128 for 4, 0.079 for 8, 0.049 for 16.
+pub fn default_rms_bound(samples: u32) -> f64 {
+    0.333 * 0.62f64.powf(f64::from(samples.max(1)).log2())
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct AntialiasMetrics {
+    /// The candidate's samples per pixel; 0 for an area method.
+    pub samples: u32,
+    pub pixels: u64,
+    /// Pixels with an exact area strictly between 0 and 1, or a resolved
+    /// value (candidate's or reference's) other than 0 and 1.
+    pub edge_pixels: u64,
+    /// Largest |resolved − exact area|.
+    pub max_error: f64,
+    /// The pixel (x, y) where it occurs (the first such pixel).
+    pub worst_pixel: [u32; 2],
+    /// RMS of resolved − exact area over edge pixels; 0 without any.
+    pub rms_edge: f64,
+    /// RMS over all pixels.
+    pub rms_all: f64,
+    /// Mean signed error over edge pixels: negative when the candidate
+    /// under-covers edges.
+    pub bias_edge: f64,
+    /// Pixels piglit's rule holds to exactly 1 and to exactly 0.
+    pub full_pixels: u64,
+    pub empty_pixels: u64,
+    /// Of those, the pixels the candidate does not resolve exactly.
+    pub piglit_violations: u64,
+    /// The first violation (x, y), when there is one.
+    pub first_violation: Option<[u32; 2]>,
+    /// Pixels whose resolved value is not the box resolve of the
+    /// candidate's own samples (always 0 without a mask).
+    pub resolve_mismatches: u64,
+    /// Pixels of nonzero resolved value in the reference and the candidate.
+    pub reference_pixels: u64,
+    pub candidate_pixels: u64,
+    /// The bounds this case holds the candidate to.
+    pub allowed_error: Option<f64>,
+    pub allowed_rms: Option<f64>,
+}
+
+impl AntialiasMetrics {
+    pub fn max_error_within_bound(&self) -> bool {
+        self.allowed_error.is_none_or(|b| self.max_error <= b)
+    }
+
+    pub fn rms_within_bound(&self) -> bool {
+        self.allowed_rms.is_none_or(|b| self.rms_edge <= b)
+    }
+}
+
+/// The bounds of a case: `expect.max_coverage_error` and
+/// `expect.max_coverage_rms`, the latter by default piglit's for sample
+/// methods (none for area methods, `samples` = 0).
+pub fn bounds(
+    max_coverage_error: Option<f64>,
+    max_coverage_rms: Option<f64>,
+    samples: u32,
+) -> (Option<f64>, Option<f64>) {
+    let rms = max_coverage_rms.or((samples > 0).then(|| default_rms_bound(samples)));
+    (max_coverage_error, rms)
+}
+
+/// The signed coverage error per pixel, candidate − reference resolved;
+/// empty when either frame has no resolved coverage.
+pub fn signed_errors(reference: &Frame, candidate: &Frame) -> Vec<f64> {
+    match (&reference.resolved, &candidate.resolved) {
+        (Some(exact), Some(resolved)) if exact.len() == resolved.len() => exact
+            .iter()
+            .zip(resolved)
+            .map(|(e, r)| {
+                let error = r - e;
+                if error.is_nan() {
+                    f64::INFINITY
+                } else {
+                    error
+                }
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// Measures an antialiased candidate; `None` when either frame has no
+/// resolved coverage, or they differ in size. `classes` gives each pixel's
+/// exact area class when known.
+pub fn measure(
+    reference: &Frame,
+    candidate: &Frame,
+    classes: Option<&[AreaClass]>,
+    bounds: (Option<f64>, Option<f64>),
+) -> Option<AntialiasMetrics> {
+    let (exact, resolved) = (reference.resolved.as_ref()?, candidate.resolved.as_ref()?);
+    let n = reference.pixel_count();
+    if exact.len() != n || resolved.len() != n || classes.is_some_and(|c| c.len() != n) {
+        return None;
+    }
+    let width = reference.width.max(1) as usize;
+    let at = |p: usize| [(p % width) as u32, (p / width) as u32];
+    let mask = candidate.samples > 0 && candidate.sample_count() == n * candidate.samples as usize;
+    let own_resolve = mask.then(|| candidate.box_resolve());
+    let ref_slots = reference.samples as usize;
+    let mut m = AntialiasMetrics {
+        samples: candidate.samples,
+        pixels: n as u64,
+        edge_pixels: 0,
+        max_error: 0.0,
+        worst_pixel: [0, 0],
+        rms_edge: 0.0,
+        rms_all: 0.0,
+        bias_edge: 0.0,
+        full_pixels: 0,
+        empty_pixels: 0,
+        piglit_violations: 0,
+        first_violation: None,
+        resolve_mismatches: 0,
+        reference_pixels: 0,
+        candidate_pixels: 0,
+        allowed_error: bounds.0,
+        allowed_rms: bounds.1,
+    };
+    let (mut sum_sq_edge, mut sum_sq_all, mut sum_edge) = (0f64, 0f64, 0f64);
+    let errors = signed_errors(reference, candidate);
+    for p in 0..n {
+        let (e, r, error) = (exact[p], resolved[p], errors[p]);
+        let class = classes.map_or_else(|| AreaClass::of_rounded(e), |c| c[p]);
+        let unit = |v: f64| v == 0.0 || v == 1.0;
+        let edge = class == AreaClass::Partial || !unit(e) || !unit(r);
+        if error.abs() > m.max_error {
+            m.max_error = error.abs();
+            m.worst_pixel = at(p);
+        }
+        sum_sq_all += error * error;
+        if edge {
+            m.edge_pixels += 1;
+            sum_sq_edge += error * error;
+            sum_edge += error;
+        }
+        m.reference_pixels += u64::from(e != 0.0);
+        m.candidate_pixels += u64::from(r != 0.0);
+        let slots = &reference.coverage[p * ref_slots..(p + 1) * ref_slots];
+        let rule = match class {
+            AreaClass::Full if slots.iter().all(|&c| c == 1) => Some(1.0),
+            AreaClass::Empty if slots.iter().all(|&c| c == 0) => Some(0.0),
+            _ => None,
+        };
+        if let Some(want) = rule {
+            if want == 1.0 {
+                m.full_pixels += 1;
+            } else {
+                m.empty_pixels += 1;
+            }
+            if r != want {
+                m.piglit_violations += 1;
+                m.first_violation.get_or_insert(at(p));
+            }
+        }
+        if let Some(own) = &own_resolve {
+            m.resolve_mismatches += u64::from(own[p] != r);
+        }
+    }
+    if m.edge_pixels > 0 {
+        m.rms_edge = (sum_sq_edge / m.edge_pixels as f64).sqrt();
+        m.bias_edge = sum_edge / m.edge_pixels as f64;
+    }
+    if n > 0 {
+        m.rms_all = (sum_sq_all / n as f64).sqrt();
+    }
+    Some(m)
+}
+
+/// Why the antialiasing metrics fail a case; empty when they pass.
+pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
+    let mut out = Vec::new();
+    if !m.max_error_within_bound() {
+        out.push(format!(
+            "antialias: max coverage error {:.3e} at pixel ({}, {}) exceeds {:.3e}",
+            m.max_error,
+            m.worst_pixel[0],
+            m.worst_pixel[1],
+            m.allowed_error.unwrap_or(0.0)
+        ));
+    }
+    if !m.rms_within_bound() {
+        out.push(format!(
+            "antialias: coverage RMS {:.3e} over {} edge pixels exceeds {:.3e} (bias {:+.3e})",
+            m.rms_edge,
+            m.edge_pixels,
+            m.allowed_rms.unwrap_or(0.0),
+            m.bias_edge
+        ));
+    }
+    if m.piglit_violations > 0 {
+        let [x, y] = m.first_violation.unwrap_or([0, 0]);
+        out.push(format!(
+            "antialias: {} full or empty pixels do not resolve to exactly 1 or 0 (piglit's rule), first at ({x}, {y})",
+            m.piglit_violations
+        ));
+    }
+    if m.resolve_mismatches > 0 {
+        out.push(format!(
+            "antialias: {} pixels resolve to other than the box resolve of their own samples",
+            m.resolve_mismatches
+        ));
+    }
+    if m.reference_pixels > 0 && m.candidate_pixels == 0 {
+        out.push(
+            "antialias: the candidate's coverage is 0 everywhere, where the reference covers area"
+                .to_owned(),
+        );
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frame(samples: u32, coverage: &[u16], resolved: &[f64]) -> Frame {
+        let mut f = Frame::resolved_only(2, 1, resolved.to_vec());
+        f.samples = samples;
+        f.coverage = coverage.to_vec();
+        f.last = coverage.iter().map(|&c| u32::from(c > 0)).collect();
+        f
+    }
+
+    #[test]
+    fn piglit_bound_halves_about_every_two_doublings() {
+        assert_eq!(default_rms_bound(1), 0.333);
+        assert!((default_rms_bound(4) - 0.333 * 0.62 * 0.62).abs() < 1e-15);
+        assert!((default_rms_bound(16) - 0.04919).abs() < 1e-4);
+    }
+
+    #[test]
+    fn errors_edges_and_piglit() {
+        // Pixel 0 fully covered (2 of 2 samples), pixel 1 a quarter.
+        let reference = frame(2, &[1, 1, 1, 0], &[1.0, 0.25]);
+        let good = frame(2, &[1, 1, 1, 0], &[1.0, 0.5]);
+        let m = measure(&reference, &good, None, (None, Some(0.3))).unwrap();
+        assert_eq!((m.edge_pixels, m.full_pixels, m.empty_pixels), (1, 1, 0));
+        assert_eq!((m.max_error, m.worst_pixel), (0.25, [1, 0]));
+        assert_eq!(
+            (m.rms_edge, m.bias_edge, m.piglit_violations),
+            (0.25, 0.25, 0)
+        );
+        assert!(failures(&m).is_empty());
+
+        let leaky = frame(2, &[1, 1, 1, 0], &[1.0 - 1.0 / 1048576.0, 0.5]);
+        let m = measure(&reference, &leaky, None, (None, Some(0.3))).unwrap();
+        assert_eq!((m.piglit_violations, m.resolve_mismatches), (1, 1));
+        assert_eq!(failures(&m).len(), 2);
+
+        let area_only = Frame::resolved_only(2, 1, vec![1.0, 0.0]);
+        let m = measure(&reference, &area_only, None, (Some(0.2), None)).unwrap();
+        assert_eq!((m.samples, m.resolve_mismatches), (0, 0));
+        assert_eq!(failures(&m).len(), 1, "{:?}", failures(&m));
+
+        let nothing = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
+        let m = measure(&reference, &nothing, None, (None, None)).unwrap();
+        assert!(failures(&m).iter().any(|f| f.contains("0 everywhere")));
+    }
+
+    #[test]
+    fn exact_classes_decide_full_pixels() {
+        // An area just below 1 that rounds to 1.0: not held to piglit's rule.
+        let reference = frame(2, &[1, 1, 0, 0], &[1.0, 0.0]);
+        let candidate = frame(2, &[1, 1, 0, 0], &[0.5, 0.0]);
+        let classes = [AreaClass::Partial, AreaClass::Empty];
+        let m = measure(&reference, &candidate, Some(&classes), (None, None)).unwrap();
+        assert_eq!(
+            (m.piglit_violations, m.full_pixels, m.edge_pixels),
+            (0, 0, 1)
+        );
+        let m = measure(&reference, &candidate, None, (None, None)).unwrap();
+        assert_eq!(m.piglit_violations, 1);
+    }
+}
