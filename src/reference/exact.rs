@@ -115,13 +115,18 @@ pub fn fits_fast_path(v: &IBig) -> bool {
 /// G. Melquiond, "Emulation of FMA and correctly rounded sums: proved
 /// algorithms using rounding to odd", IEEE TC 2008).
 pub fn to_f64_round_odd(q: &RBig) -> f64 {
-    let num = q.numerator();
-    if *num == IBig::ZERO {
+    quotient_to_f64_round_odd(q.numerator(), &IBig::from(q.denominator().clone()))
+}
+
+/// [`to_f64_round_odd`] of num / den, for any den ≠ 0 (0 for den = 0):
+/// the fraction need not be in lowest terms, so callers skip the gcd.
+pub fn quotient_to_f64_round_odd(num: &IBig, den: &IBig) -> f64 {
+    if *num == IBig::ZERO || *den == IBig::ZERO {
         return 0.0;
     }
-    let negative = *num < IBig::ZERO;
+    let negative = (*num < IBig::ZERO) != (*den < IBig::ZERO);
     let n: UBig = num.unsigned_abs();
-    let d = q.denominator();
+    let d: &UBig = &den.unsigned_abs();
     // Choose e with 2^52 <= n / (d 2^e) < 2^53, or the subnormal exponent.
     let mut e = n.bit_len() as i64 - d.bit_len() as i64 - 53;
     e = e.max(-1074);

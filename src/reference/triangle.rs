@@ -13,7 +13,7 @@
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-use super::exact::{to_f64_round_odd, ExactInt};
+use super::exact::{quotient_to_f64_round_odd, to_f64_round_odd, ExactInt};
 use super::grid::{orient, Grid, Point};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -135,26 +135,88 @@ pub fn visit<T, F>(
 }
 
 /// A triangle's exact per-vertex values, prepared for interpolation.
+///
+/// Each channel's three values are put over one common denominator, so a
+/// sample's value is one quotient of integer sums of the edge values,
+/// rounded once without any gcd (antialiased scenes evaluate it at every
+/// sample of every pixel).
 pub struct VertexValues {
-    interpolation: Interpolation,
-    z: [RBig; 3],
-    /// attributes[k][i]: attribute k at vertex i.
-    attributes: Vec<[RBig; 3]>,
-    /// 1/w at each vertex.
-    inv_w: [RBig; 3],
+    z: Combination,
+    attributes: Vec<Channel>,
+    /// Σ e'_i (1/w_i) as a combination, for perspective channels.
+    inv_w: Combination,
+}
+
+/// Σ b_i v_i as integers: (Σ e'_i num_i) / (area · den), where e'_i is the
+/// edge value opposite vertex i (area · b_i).
+struct Combination {
+    num: [IBig; 3],
+    den: IBig,
+}
+
+impl Combination {
+    fn new(values: &[RBig; 3]) -> Combination {
+        let den = values.iter().fold(IBig::ONE, |l, v| {
+            let d = IBig::from(v.denominator().clone());
+            let g = gcd(&l, &d);
+            &l / g * d
+        });
+        let num = values
+            .clone()
+            .map(|v| v.numerator() * (&den / IBig::from(v.denominator().clone())));
+        Combination { num, den }
+    }
+
+    /// Σ e'_i num_i.
+    fn sum(&self, weights: &[&IBig; 3]) -> IBig {
+        weights[0] * &self.num[0] + weights[1] * &self.num[1] + weights[2] * &self.num[2]
+    }
+}
+
+fn gcd(a: &IBig, b: &IBig) -> IBig {
+    let (mut a, mut b) = (a.clone(), b.clone());
+    while b != IBig::ZERO {
+        let r = &a % &b;
+        a = b;
+        b = r;
+    }
+    if a < IBig::ZERO {
+        -a
+    } else {
+        a
+    }
+}
+
+enum Channel {
+    /// The first vertex's value, rounded once.
+    Flat(f64),
+    Linear(Combination),
+    /// Σ e'_i a_i/w_i over the combination of 1/w_i.
+    Perspective(Combination),
 }
 
 impl VertexValues {
     pub fn new(t: &Triangle) -> VertexValues {
         let v = &t.vertices;
         let count = v[0].attributes.len();
+        let inv_w: [RBig; 3] = [0, 1, 2].map(|i| RBig::ONE / v[i].w.as_rbig());
+        let attributes = (0..count)
+            .map(|k| {
+                let values = [0, 1, 2].map(|i| v[i].attributes[k].as_rbig().clone());
+                match t.interpolation {
+                    Interpolation::Flat => Channel::Flat(to_f64_round_odd(&values[0])),
+                    Interpolation::Linear => Channel::Linear(Combination::new(&values)),
+                    Interpolation::Perspective => {
+                        let over_w = [0, 1, 2].map(|i| &values[i] * &inv_w[i]);
+                        Channel::Perspective(Combination::new(&over_w))
+                    }
+                }
+            })
+            .collect();
         VertexValues {
-            interpolation: t.interpolation,
-            z: [0, 1, 2].map(|i| v[i].z.as_rbig().clone()),
-            attributes: (0..count)
-                .map(|k| [0, 1, 2].map(|i| v[i].attributes[k].as_rbig().clone()))
-                .collect(),
-            inv_w: [0, 1, 2].map(|i| RBig::ONE / v[i].w.as_rbig()),
+            z: Combination::new(&[0, 1, 2].map(|i| v[i].z.as_rbig().clone())),
+            attributes,
+            inv_w: Combination::new(&inv_w),
         }
     }
 
@@ -162,30 +224,110 @@ impl VertexValues {
     /// edge value of edge v[i]→v[i+1], which is the area-weighted barycentric
     /// weight of the opposite vertex v[i+2].
     pub fn write(&self, frame: &mut Frame, pixel: usize, plan: &Plan, e: &[IBig; 3], area: &IBig) {
-        // Barycentric weight of vertex i: b[i] = e[(i+1)%3] / area.
-        let b: [RBig; 3] =
-            [0, 1, 2].map(|i| RBig::from_parts_signed(e[(i + 1) % 3].clone(), area.clone()));
-        let linear = |values: &[RBig; 3]| -> RBig {
-            &b[0] * &values[0] + &b[1] * &values[1] + &b[2] * &values[2]
-        };
+        // Area times the barycentric weight of vertex i: e[(i+1)%3].
+        let weights = [&e[1], &e[2], &e[0]];
+        let linear =
+            |c: &Combination| quotient_to_f64_round_odd(&c.sum(&weights), &(area * &c.den));
         if let Some(depth) = frame.depth.as_mut() {
-            depth[pixel] = to_f64_round_odd(&linear(&self.z));
+            depth[pixel] = linear(&self.z);
         }
         if plan.attributes == 0 {
             return;
         }
-        // Perspective: (Σ b_i a_i / w_i) / (Σ b_i / w_i).
-        let inv_w_sum = linear(&self.inv_w);
-        for (k, values) in self.attributes.iter().enumerate() {
-            let exact = match self.interpolation {
-                Interpolation::Flat => values[0].clone(),
-                Interpolation::Linear => linear(values),
-                Interpolation::Perspective => {
-                    let over_w = [0, 1, 2].map(|i| &values[i] * &self.inv_w[i]);
-                    linear(&over_w) / &inv_w_sum
+        // Perspective: (Σ b_i a_i / w_i) / (Σ b_i / w_i); the area cancels:
+        // (Σ e'_i P_i / D_p) / (Σ e'_i Q_i / D_q).
+        let mut inv_w_sum = None;
+        for (k, channel) in self.attributes.iter().enumerate() {
+            frame.attributes[k][pixel] = match channel {
+                Channel::Flat(value) => *value,
+                Channel::Linear(c) => linear(c),
+                Channel::Perspective(c) => {
+                    let q = inv_w_sum.get_or_insert_with(|| self.inv_w.sum(&weights));
+                    quotient_to_f64_round_odd(&(c.sum(&weights) * &self.inv_w.den), &(&*q * &c.den))
                 }
             };
-            frame.attributes[k][pixel] = to_f64_round_odd(&exact);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{Number, Vertex};
+
+    /// The interpolation formulas of SPEC.md §5 in `RBig`, term by term.
+    fn by_formula(t: &Triangle, e: &[IBig; 3], area: &IBig) -> (RBig, Vec<RBig>) {
+        let b: [RBig; 3] =
+            [0, 1, 2].map(|i| RBig::from_parts_signed(e[(i + 1) % 3].clone(), area.clone()));
+        let v = &t.vertices;
+        let linear = |f: &dyn Fn(usize) -> RBig| &b[0] * f(0) + &b[1] * f(1) + &b[2] * f(2);
+        let z = linear(&|i| v[i].z.as_rbig().clone());
+        let attributes = (0..v[0].attributes.len())
+            .map(|k| match t.interpolation {
+                Interpolation::Flat => v[0].attributes[k].as_rbig().clone(),
+                Interpolation::Linear => linear(&|i| v[i].attributes[k].as_rbig().clone()),
+                Interpolation::Perspective => {
+                    linear(&|i| v[i].attributes[k].as_rbig() / v[i].w.as_rbig())
+                        / linear(&|i| RBig::ONE / v[i].w.as_rbig())
+                }
+            })
+            .collect();
+        (z, attributes)
+    }
+
+    #[test]
+    fn integer_combinations_round_like_the_rational_formulas() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |m: i64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % (2 * m as u64)) as i64 - m
+        };
+        for round in 0..3000 {
+            let mut vertex = || {
+                let mut v = Vertex::at(Number::ZERO, Number::ZERO);
+                v.z = Number::ratio(next(1 << 40), next(1000).abs() + 1);
+                v.w = Number::ratio(next(1000).abs() + 1, next(1000).abs() + 1);
+                v.attributes = vec![
+                    Number::ratio(next(1 << 50), next(1 << 20).abs() + 1),
+                    Number::ratio(next(7), 3),
+                ];
+                v
+            };
+            let t = Triangle {
+                vertices: [vertex(), vertex(), vertex()],
+                interpolation: [
+                    Interpolation::Perspective,
+                    Interpolation::Linear,
+                    Interpolation::Flat,
+                ][round % 3],
+            };
+            let area = IBig::from(next(1 << 40));
+            if area == IBig::ZERO {
+                continue;
+            }
+            // Edge values carry the area's sign and sum to it.
+            let (e0, e1) = (next(1 << 20).abs(), next(1 << 20).abs());
+            let scale = if area > IBig::ZERO { 1 } else { -1 };
+            let e = [
+                IBig::from(e0 * scale),
+                IBig::from(e1 * scale),
+                &area - IBig::from((e0 + e1) * scale),
+            ];
+            let plan = Plan {
+                samples_per_pixel: 1,
+                antialias: None,
+                depth: true,
+                attributes: 2,
+            };
+            let mut frame = Frame::new(1, 1, true, 2);
+            VertexValues::new(&t).write(&mut frame, 0, &plan, &e, &area);
+            let (z, attributes) = by_formula(&t, &e, &area);
+            assert_eq!(frame.depth.as_ref().unwrap()[0], to_f64_round_odd(&z));
+            for k in 0..2 {
+                assert_eq!(frame.attributes[k][0], to_f64_round_odd(&attributes[k]));
+            }
         }
     }
 }
