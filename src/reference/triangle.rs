@@ -325,8 +325,8 @@ mod tests {
             VertexValues::new(&t).write(&mut frame, 0, &plan, &e, &area);
             let (z, attributes) = by_formula(&t, &e, &area);
             assert_eq!(frame.depth.as_ref().unwrap()[0], to_f64_round_odd(&z));
-            for k in 0..2 {
-                assert_eq!(frame.attributes[k][0], to_f64_round_odd(&attributes[k]));
+            for (channel, exact) in frame.attributes.iter().zip(&attributes) {
+                assert_eq!(channel[0], to_f64_round_odd(exact));
             }
         }
     }
