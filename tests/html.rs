@@ -114,11 +114,46 @@ fn check_exr(dir: &Path, report: &Value) -> usize {
                 }
                 let image = exr::prelude::read_all_flat_layers_from_file(dir.join(file))
                     .unwrap_or_else(|e| panic!("{file}: {e}"));
-                let layer = &image.layer_data[0];
                 let canvas = &case["rules"]["canvas"];
+                let (w, h) = (canvas[0].as_u64().unwrap(), canvas[1].as_u64().unwrap());
+                let samples = case["rules"]["antialias"]["samples"].as_u64().unwrap_or(1);
+                let layer_named = |name: &str| {
+                    image.layer_data.iter().find(|l| {
+                        l.attributes.layer_name.as_ref().map(|n| n.to_string())
+                            == Some(name.to_owned())
+                    })
+                };
+                let m = &result["metrics"];
+                // Antialiased: the signed resolved error, one value per pixel.
+                if let Some(resolved) = layer_named("resolved") {
+                    assert_eq!(
+                        (resolved.size.width() as u64, resolved.size.height() as u64),
+                        (w, h),
+                        "{file}"
+                    );
+                    let largest = resolved.channel_data.list[0]
+                        .sample_data
+                        .values_as_f32()
+                        .map(|v| f64::from(v.abs()))
+                        .fold(0.0, f64::max);
+                    let expected = m["antialias"]["max_error"].as_f64().unwrap();
+                    assert!(
+                        (largest - expected).abs() <= expected * 1e-6 + 1e-30,
+                        "{file} resolved.error: largest {largest:e}, metrics say {expected:e}"
+                    );
+                }
+                // Per sample: N times wider than the canvas.
+                let Some(layer) = layer_named("error") else {
+                    assert!(
+                        m["coverage"]["samples"] == 0,
+                        "{file} has no error layer but a mask"
+                    );
+                    checked += 1;
+                    continue;
+                };
                 assert_eq!(
                     (layer.size.width() as u64, layer.size.height() as u64),
-                    (canvas[0].as_u64().unwrap(), canvas[1].as_u64().unwrap()),
+                    (w * samples, h),
                     "{file}"
                 );
                 let channel = |name: &str| -> Vec<f32> {
@@ -132,7 +167,6 @@ fn check_exr(dir: &Path, report: &Value) -> usize {
                         .values_as_f32()
                         .collect()
                 };
-                let m = &result["metrics"];
                 let coverage = channel("coverage.error");
                 let moved = coverage.iter().filter(|&&v| v != 0.0).count() as u64;
                 let c = &m["coverage"];
@@ -283,6 +317,146 @@ fn the_html_report_opens_in_a_browser_with_every_picture() {
     eprintln!(
         "chromium: screenshot and DOM in {:.1} s; {decoded} pictures decoded",
         browser.elapsed().as_secs_f64()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A 16-sample triangle and an 8-sample quadrilateral of two triangles,
+/// each judged for production and the coarse-resolve mutant (8 and 16
+/// samples resolve to other than quarters, so rounding down shows).
+const AA_CASES: [(&str, &str); 2] = [
+    (
+        "triangle16",
+        r#"{"name": "triangle16", "canvas": {"width": 12, "height": 9},
+  "primitives": [{"triangle": [[0.5, 0.25], [11.75, 1.5], [2.25, 8.5]]}],
+  "effects": {"antialias": {"samples": 16, "position_bits": 4}},
+  "expect": {"max_coverage_error": 0.25, "max_coverage_rms": 0.1}}"#,
+    ),
+    (
+        "quad8",
+        r#"{"name": "quad8", "canvas": {"width": 8, "height": 8},
+  "primitives": [{"triangle": [[0.5, 0.25], [7.75, 1], [7, 7.5]]},
+                 {"triangle": [[0.5, 0.25], [7, 7.5], [1, 7]]}],
+  "effects": {"antialias": {"samples": 8}},
+  "expect": {"max_coverage_error": 0.5, "watertight": true, "area": "1407/32"}}"#,
+    ),
+];
+
+#[test]
+fn antialiased_cases_show_resolved_coverage_and_error_maps() {
+    let dir = report_dir().with_extension("aa");
+    let cases = dir.join("cases/aa");
+    std::fs::create_dir_all(&cases).unwrap();
+    for (name, json) in AA_CASES {
+        std::fs::write(cases.join(format!("{name}.json")), json).unwrap();
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args([
+            "run",
+            "cases",
+            "-r",
+            "production",
+            "-r",
+            "mutant:coarse-resolve",
+            "--quiet",
+            "--report",
+            "report",
+        ])
+        .current_dir(&dir)
+        .output()
+        .expect("the binary runs");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let report_dir = dir.join("report");
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(report_dir.join("report.json")).unwrap())
+            .unwrap();
+    for case in report["cases"].as_array().unwrap() {
+        assert_eq!(case["status"], "ran", "{case}");
+        let rules = &case["rules"]["antialias"];
+        assert!(rules["samples"].as_u64().unwrap() >= 4, "{case}");
+        let [production, mutant] = [&case["results"][0], &case["results"][1]];
+        assert_eq!(production["verdict"], "pass", "{production}");
+        assert_eq!(mutant["verdict"], "fail", "{mutant}");
+        let aa = &production["metrics"]["antialias"];
+        assert_eq!(aa["piglit_violations"], 0);
+        assert!(aa["edge_pixels"].as_u64().unwrap() > 0, "{aa}");
+        assert!(
+            mutant["reasons"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|r| r.as_str().unwrap().contains("box resolve")),
+            "{mutant}"
+        );
+        // Pictures and maps for the failure: greyscale, signed error, samples.
+        let files: Vec<&str> = mutant["files"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f.as_str().unwrap())
+            .collect();
+        for suffix in [
+            "/reference.png",
+            "/mutant-coarse-resolve.png",
+            ".diff.png",
+            ".samples.png",
+            ".exr",
+        ] {
+            assert!(
+                files.iter().any(|f| f.ends_with(suffix)),
+                "{suffix} in {files:?}"
+            );
+        }
+        let diff = files.iter().find(|f| f.ends_with(".diff.png")).unwrap();
+        let diff = image::open(report_dir.join(diff)).unwrap().to_rgb8();
+        // Rounding down: too little coverage, blue; never red.
+        assert!(diff.pixels().any(|p| p.0[2] > 200 && p.0[0] < 100));
+        assert!(!diff.pixels().any(|p| p.0[0] > 200 && p.0[1] < 100));
+        let reference = files
+            .iter()
+            .find(|f| f.ends_with("/reference.png"))
+            .unwrap();
+        let reference = image::open(report_dir.join(reference)).unwrap().to_rgb8();
+        let greys = reference
+            .pixels()
+            .filter(|p| p.0[0] == p.0[1] && p.0[1] == p.0[2] && (60..200).contains(&p.0[0]))
+            .count();
+        assert!(greys > 0, "the exact area shows partial pixels in grey");
+    }
+    assert!(check_exr(&report_dir, &report) >= 2);
+
+    // Passing antialiased results get a card too, drawn from the frames.
+    let html = std::fs::read_to_string(report_dir.join("index.html")).unwrap();
+    let aa_cards: Vec<&str> = cards(&html)
+        .into_iter()
+        .filter(|c| c.contains("<h4>resolved coverage</h4>"))
+        .collect();
+    assert_eq!(aa_cards.len(), 4, "{} cards", cards(&html).len());
+    for card in aa_cards {
+        for role in ["reference", "candidate", "diff", "samples"] {
+            assert!(
+                card.contains(&format!(
+                    "data-role=\"{role}\" src=\"data:image/png;base64,"
+                )),
+                "{role}"
+            );
+        }
+        assert!(card.contains("edge RMS"));
+    }
+    let summary = std::fs::read_to_string(report_dir.join("summary.md")).unwrap();
+    assert!(
+        summary.contains("## Worst antialiasing errors"),
+        "{summary}"
+    );
+    let junit = std::fs::read_to_string(report_dir.join("junit.xml")).unwrap();
+    assert!(
+        junit.contains("box resolve of their own samples"),
+        "{junit}"
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
