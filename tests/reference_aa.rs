@@ -591,3 +591,54 @@ fn timing_ten_triangles_on_64_by_64_with_256_samples() {
         );
     }
 }
+
+/// Timing (release) of polygons: a star-shaped 1000-gon (no crossings) and
+/// a random 60-gon (many crossings), 64 × 64, 256 samples.
+#[test]
+#[ignore]
+fn timing_polygons_on_64_by_64_with_256_samples() {
+    let mut rng = SplitMix64::new(2);
+    // Radii alternate on rays at rational angles' lattice points.
+    let star: Vec<At> = (0..1000)
+        .map(|i| {
+            let t = i as f64 / 1000.0 * std::f64::consts::TAU;
+            let r = if i % 2 == 0 {
+                30.0
+            } else {
+                12.0 + (i % 7) as f64
+            };
+            let at = |c: f64| format!("{}/256", (c * 256.0).round() as i64);
+            (at(32.0 + r * t.cos()), at(32.0 + r * t.sin()))
+        })
+        .collect();
+    let random: Vec<At> = (0..60)
+        .map(|_| {
+            (
+                coordinate(&mut rng, 0, 64, 256),
+                coordinate(&mut rng, 0, 64, 256),
+            )
+        })
+        .collect();
+    for (name, outline) in [("star 1000-gon", &star), ("random 60-gon", &random)] {
+        for fill in ["nonzero", "even-odd"] {
+            let s = scene(
+                64,
+                &rule("top-left", "8"),
+                &[polygon(&[outline], fill)],
+                &antialias(256, "random"),
+            );
+            let start = std::time::Instant::now();
+            let frame = reference::render(&s, &Plan::for_scene(&s));
+            let render = start.elapsed();
+            let start = std::time::Instant::now();
+            let areas = reference::exact_areas(&s);
+            let area = start.elapsed();
+            assert_self_check(&s);
+            eprintln!(
+                "{name} {fill}: render {render:?}, areas alone {area:?}, {} samples, area {}",
+                frame.covered_samples(),
+                total(&areas).to_f64().value()
+            );
+        }
+    }
+}

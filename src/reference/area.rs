@@ -256,6 +256,7 @@ fn crossing_heights(edges: &[(Point, Point)]) -> Vec<RBig> {
         })
         .collect();
     order.sort();
+    let xs: Vec<(RBig, RBig)> = edges.iter().map(|e| bounds(e, 0)).collect();
     let mut heights = Vec::new();
     for (k, (_, hi, i)) in order.iter().enumerate() {
         for (lo2, _, j) in &order[k + 1..] {
@@ -263,7 +264,7 @@ fn crossing_heights(edges: &[(Point, Point)]) -> Vec<RBig> {
                 break;
             }
             let (e, f) = (&edges[*i], &edges[*j]);
-            let (ex, fx) = (bounds(e, 0), bounds(f, 0));
+            let (ex, fx) = (&xs[*i], &xs[*j]);
             if ex.1 < fx.0 || fx.1 < ex.0 {
                 continue;
             }
