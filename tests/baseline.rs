@@ -335,3 +335,75 @@ fn bad_baseline_files_exit_2_naming_the_file() {
     assert_eq!(code(&out), 2, "{}", text(&out));
     assert!(!dir.join("x.json").exists());
 }
+
+/// An antialiased triangle whose resolved coverage has error at 16
+/// samples; rounding it down to quarters makes the error larger.
+const ANTIALIASED: &str = r#"{"name": "aa", "canvas": {"width": 12, "height": 9},
+  "primitives": [{"triangle": [[0.5, 0.25], [11.75, 1.5], [2.25, 8.5]]}],
+  "effects": {"antialias": {"samples": 16}},
+  "expect": {"max_coverage_error": 0.5, "max_coverage_rms": 0.2}}"#;
+
+#[test]
+fn a_worse_antialiasing_error_regresses() {
+    let dir = scratch("antialias");
+    std::fs::create_dir_all(dir.join("cases/aa")).unwrap();
+    std::fs::write(dir.join("cases/aa/triangle.json"), ANTIALIASED).unwrap();
+    let out = rastercheck_in(&dir, &["baseline", "save", "base.json", "cases"]);
+    assert_eq!(code(&out), 0, "{}", text(&out));
+    let b = read(&dir.join("base.json"));
+    let m = &b["results"][0]["metrics"];
+    assert_eq!(b["results"][0]["verdict"], "pass", "{b}");
+    let (max_error, rms_edge) = (
+        m["antialias.max_error"].as_f64().unwrap(),
+        m["antialias.rms_edge"].as_f64().unwrap(),
+    );
+    assert!(max_error > 0.0 && rms_edge > 0.0, "{m}");
+    assert_eq!(m["antialias.piglit_violations"], 0);
+
+    // The same method, its resolve rounded down to quarters.
+    let out = rastercheck_in(
+        &dir,
+        &[
+            "baseline",
+            "check",
+            "base.json",
+            "-r",
+            "mutant:coarse-resolve=production",
+        ],
+    );
+    let t = text(&out);
+    assert_eq!(code(&out), 1, "{t}");
+    for metric in [
+        "antialias.max_error",
+        "antialias.rms_edge",
+        "antialias.rms_all",
+    ] {
+        assert!(
+            t.lines().any(|l| l.starts_with("REGRESSION")
+                && l.contains("mutant:coarse-resolve (as production)")
+                && l.contains(&format!("{metric}  "))),
+            "{metric} in\n{t}"
+        );
+    }
+    assert!(
+        t.contains(&format!("antialias.max_error  {max_error:e} → ")),
+        "{t}"
+    );
+
+    // An edge RMS recorded better than it is regresses too; within the
+    // error tolerance (1%) it does not.
+    let mut edited = b.clone();
+    edited["results"][0]["metrics"]["antialias.rms_edge"] = (rms_edge / 1.02).into();
+    write(&dir.join("base.json"), &edited);
+    let out = rastercheck_in(&dir, &["baseline", "check", "base.json"]);
+    let t = text(&out);
+    assert_eq!(code(&out), 1, "{t}");
+    assert!(
+        t.contains("REGRESSION  aa/triangle  production  antialias.rms_edge"),
+        "{t}"
+    );
+    edited["results"][0]["metrics"]["antialias.rms_edge"] = (rms_edge / 1.005).into();
+    write(&dir.join("base.json"), &edited);
+    let out = rastercheck_in(&dir, &["baseline", "check", "base.json"]);
+    assert_eq!(code(&out), 0, "{}", text(&out));
+}

@@ -524,3 +524,93 @@ fn resource_limits_are_errors_not_crashes() {
     );
     assert_no_panic(&out);
 }
+
+/// Two triangles sharing a diagonal, 4 standard samples, in an 8×8 canvas
+/// with edges off the pixel grid.
+const AA_PAIR: &str = r#"{"name": "aa_pair", "canvas": {"width": 8, "height": 8},
+  "primitives": [{"triangle": [[0.5, 0.25], [7.75, 1], [7, 7.5]]},
+                 {"triangle": [[0.5, 0.25], [7, 7.5], [1, 7]]}],
+  "effects": {"antialias": {"samples": 4}},
+  "expect": {"max_coverage_error": 0.75, "watertight": true, "area": "1407/32"}}"#;
+
+#[test]
+fn antialiased_golden_files_bless_run_and_catch_a_changed_area() {
+    let dir = workspace("bless-aa", &[("cases/aa_pair.json", AA_PAIR)]);
+    let out = rastercheck(&dir, &["bless", "cases"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    assert!(t.contains("golden files: 1 match, 0 differ"), "{t}");
+    assert!(t.contains("aa max err"), "{t}");
+
+    // A golden file of the same case moved by a quarter pixel: the samples
+    // and the resolved areas differ, and the run says where.
+    let other = workspace(
+        "bless-aa-other",
+        &[(
+            "cases/aa_pair.json",
+            &AA_PAIR.replace("[1, 7]", "[1.25, 7]"),
+        )],
+    );
+    assert_eq!(rastercheck(&other, &["bless"]).status.code(), Some(0));
+    std::fs::copy(
+        other.join("reference/aa_pair.exr"),
+        dir.join("reference/aa_pair.exr"),
+    )
+    .unwrap();
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(t.contains("GOLDEN aa_pair"), "{t}");
+    assert!(t.contains("resolved.f64"), "{t}");
+
+    // The case's stated area pins the oracle's exact areas.
+    std::fs::write(
+        dir.join("cases/aa_pair.json"),
+        AA_PAIR.replace("1407/32", "44"),
+    )
+    .unwrap();
+    let out = rastercheck(&dir, &["run", "cases"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(
+        t.contains("reference: its pixel areas sum to 1407/32"),
+        "{t}"
+    );
+}
+
+#[test]
+fn show_pictures_an_antialiased_case_by_its_resolved_coverage() {
+    let dir = workspace("show-aa", &[("cases/aa_pair.json", AA_PAIR)]);
+    let out = rastercheck(
+        &dir,
+        &[
+            "show",
+            "cases/aa_pair.json",
+            "--out",
+            "shown",
+            "-r",
+            "mutant:shifted-samples",
+        ],
+    );
+    let t = text(&out);
+    assert_no_panic(&out);
+    for name in [
+        "reference.png",
+        "mutant-shifted-samples.png",
+        "mutant-shifted-samples.diff.png",
+        "mutant-shifted-samples.samples.png",
+    ] {
+        let img = image::open(dir.join("shown").join(name))
+            .unwrap_or_else(|e| panic!("{name}: {e}\n{t}"));
+        assert!(img.width() >= 256, "{name}");
+    }
+    // Pixel (0, 0) holds a sliver of the quadrilateral: a dark grey, not
+    // black and not white, in the exact area's picture.
+    let reference = image::open(dir.join("shown/reference.png"))
+        .unwrap()
+        .to_rgb8();
+    let [r, g, b] = reference.get_pixel(20, 20).0;
+    assert!(r == g && g == b && r > 0 && r < 128, "{:?}", [r, g, b]);
+}

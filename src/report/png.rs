@@ -163,7 +163,10 @@ pub fn samples_picture(
         resolved_colour(exact[i]).map(|c| (u16::from(c) * 2 / 5) as u8)
     });
     let lattice = f64::from(1u32 << aa.position_bits);
-    let radius = (scale / 10).max(1) as i64 - 1;
+    // Dots about a third of the samples' mean spacing across; samples that
+    // differ one pixel larger all round, so that they stand out.
+    let spacing = f64::from(scale) / (n as f64).sqrt();
+    let radius = ((spacing / 3.0 - 1.0) / 2.0).round().max(0.0) as i64;
     let (w, h) = (i64::from(img.width()), i64::from(img.height()));
     for (slot, diff) in mask.iter().enumerate() {
         let (pixel, s) = (slot / n, slot % n);
@@ -174,13 +177,13 @@ pub fn samples_picture(
         let [ox, oy] = offsets[s];
         let cx = ((f64::from(x) + f64::from(ox) / lattice) * f64::from(scale)) as i64;
         let cy = ((f64::from(y) + f64::from(oy) / lattice) * f64::from(scale)) as i64;
-        let colour = match diff {
-            SampleDiff::Same if reference.coverage[slot] > 0 => SAMPLE_SAME,
-            SampleDiff::Same => SAMPLE_EMPTY,
-            other => diff_colour(*other, true),
+        let (colour, r) = match diff {
+            SampleDiff::Same if reference.coverage[slot] > 0 => (SAMPLE_SAME, radius),
+            SampleDiff::Same => (SAMPLE_EMPTY, radius),
+            other => (diff_colour(*other, true), radius + 1),
         };
-        for dy in -radius..=radius.max(0) {
-            for dx in -radius..=radius.max(0) {
+        for dy in -r..=r {
+            for dx in -r..=r {
                 let (px, py) = (cx + dx, cy + dy);
                 if (0..w).contains(&px) && (0..h).contains(&py) {
                     img.put_pixel(px as u32, py as u32, Rgb(colour));
