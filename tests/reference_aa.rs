@@ -142,6 +142,136 @@ fn areas_are_clipped_to_the_canvas_and_culling_removes_area() {
     assert_eq!(reference::primitive_area(&culled, 0), RBig::ZERO);
 }
 
+/// Sutherland–Hodgman: a convex polygon clipped to the half-plane where
+/// `inside` holds, `cut(a, b)` giving where an edge crosses its border.
+fn clip(
+    poly: &[[RBig; 2]],
+    inside: impl Fn(&[RBig; 2]) -> bool,
+    cut: impl Fn(&[RBig; 2], &[RBig; 2]) -> [RBig; 2],
+) -> Vec<[RBig; 2]> {
+    let mut out = Vec::new();
+    for (i, a) in poly.iter().enumerate() {
+        let b = &poly[(i + 1) % poly.len()];
+        match (inside(a), inside(b)) {
+            (true, true) => out.push(b.clone()),
+            (true, false) => out.push(cut(a, b)),
+            (false, true) => {
+                out.push(cut(a, b));
+                out.push(b.clone());
+            }
+            (false, false) => {}
+        }
+    }
+    out
+}
+
+/// The area of a convex polygon inside the pixel square at (x, y), by
+/// clipping it to the square's four sides and the shoelace formula.
+fn clipped_area(poly: &[[RBig; 2]], x: i64, y: i64) -> RBig {
+    let mut p = poly.to_vec();
+    for (axis, bound, keep_below) in [
+        (0, x, false),
+        (0, x + 1, true),
+        (1, y, false),
+        (1, y + 1, true),
+    ] {
+        let c = RBig::from(bound);
+        let inside = |q: &[RBig; 2]| {
+            if keep_below {
+                q[axis] <= c
+            } else {
+                q[axis] >= c
+            }
+        };
+        let cut = |a: &[RBig; 2], b: &[RBig; 2]| {
+            let t = (&c - &a[axis]) / (&b[axis] - &a[axis]);
+            [&a[0] + &t * (&b[0] - &a[0]), &a[1] + &t * (&b[1] - &a[1])]
+        };
+        p = clip(&p, inside, cut);
+        if p.is_empty() {
+            return RBig::ZERO;
+        }
+    }
+    let twice = (0..p.len()).fold(RBig::ZERO, |sum, i| {
+        let (a, b) = (&p[i], &p[(i + 1) % p.len()]);
+        sum + &a[0] * &b[1] - &a[1] * &b[0]
+    });
+    let area = twice / RBig::from(2u8);
+    if area < RBig::ZERO {
+        -area
+    } else {
+        area
+    }
+}
+
+#[test]
+fn per_pixel_areas_equal_convex_clipping() {
+    // Triangles and parallelograms are convex: clipping each to each pixel
+    // square is an independent per-pixel computation of the same areas,
+    // canvas clipping included (primitives reach past every side).
+    let mut rng = SplitMix64::new(29);
+    let size = 7;
+    for round in 0..30 {
+        let den = [3, 16, 5][round % 3];
+        let exact = |n: &str| Number::from_string(n).unwrap().as_rbig().clone();
+        let (shape, corners): (String, Vec<[RBig; 2]>) = if round % 2 == 0 {
+            let v: Vec<At> = (0..3)
+                .map(|_| {
+                    (
+                        coordinate(&mut rng, -2, 9, den),
+                        coordinate(&mut rng, -2, 9, den),
+                    )
+                })
+                .collect();
+            let corners = v.iter().map(|(x, y)| [exact(x), exact(y)]).collect();
+            (triangle(&v), corners)
+        } else {
+            let (x0, y0, x1, y1) = (
+                coordinate(&mut rng, -1, 8, den),
+                coordinate(&mut rng, -1, 8, den),
+                coordinate(&mut rng, -1, 8, den),
+                coordinate(&mut rng, -1, 8, den),
+            );
+            let width = coordinate(&mut rng, 1, 3, den);
+            let (a, b) = ([exact(&x0), exact(&y0)], [exact(&x1), exact(&y1)]);
+            let h = exact(&width) / RBig::from(2u8);
+            let abs = |q: RBig| if q < RBig::ZERO { -q } else { q };
+            // SPEC §4.4: swept along the minor axis.
+            let minor = usize::from(abs(&b[0] - &a[0]) >= abs(&b[1] - &a[1]));
+            let moved = |p: &[RBig; 2], by: &RBig| {
+                let mut q = p.clone();
+                q[minor] = &q[minor] + by;
+                q
+            };
+            let corners = vec![
+                moved(&a, &-h.clone()),
+                moved(&b, &-h.clone()),
+                moved(&b, &h),
+                moved(&a, &h),
+            ];
+            let line = format!(
+                r#"{{"line": [["{x0}", "{y0}"], ["{x1}", "{y1}"]], "rule": "parallelogram", "width": "{width}"}}"#
+            );
+            (line, corners)
+        };
+        let s = scene(
+            size,
+            &rule("top-left", "null"),
+            &[shape],
+            &antialias(4, "standard"),
+        );
+        let areas = reference::exact_areas(&s);
+        for (i, area) in areas.iter().enumerate() {
+            let (x, y) = ((i % size as usize) as i64, (i / size as usize) as i64);
+            assert_eq!(
+                *area,
+                clipped_area(&corners, x, y),
+                "round {round}, pixel ({x}, {y})"
+            );
+        }
+    }
+}
+
 /// A pentagram: the star through every second vertex of a convex pentagon
 /// with integer corners.
 fn pentagram(fill: &str) -> String {
