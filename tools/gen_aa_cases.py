@@ -709,7 +709,8 @@ for i, ((x, y), where) in enumerate(TINY):
     for n, pat in ((4, "standard"), (16, "standard"), (64, "grid")):
         case(AA_DIR, "tiny_%s_%s%d" % (("in_pixel", "on_corner")[i], pat, n),
              "A 0.5 x 0.6 px right triangle (its legs are 0.5 and 0.6 px; 0.6 snaps to 154/256), %s, "
-             "%s %dx pattern. It covers a handful of samples or none; its exact area is 0.15 px^2 "
+             "%s %dx pattern. It covers a handful of samples or none; its exact area is 77/512 px^2 "
+             "(about 0.15) "
              "whatever the pattern, so a sample method's error here is as large as the triangle "
              "itself, and a method that drops primitives smaller than a sample spacing shows it. The "
              "bound on the largest error is min(1, 2E/sqrt(N)) with E = 3 edges in one pixel, and "
