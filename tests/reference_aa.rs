@@ -272,6 +272,91 @@ fn per_pixel_areas_equal_convex_clipping() {
     }
 }
 
+fn rq(text: &str) -> RBig {
+    Number::from_string(text).unwrap().as_rbig().clone()
+}
+
+/// Asserts that every pixel's exact area is `expected(x, y)`.
+fn assert_pixels(s: &Scene, size: u32, expected: impl Fn(i64, i64) -> RBig, what: &str) {
+    for (i, area) in reference::exact_areas(s).iter().enumerate() {
+        let (x, y) = ((i % size as usize) as i64, (i / size as usize) as i64);
+        assert_eq!(*area, expected(x, y), "{what}, pixel ({x}, {y})");
+    }
+}
+
+#[test]
+fn per_pixel_areas_of_holes_and_bow_ties_equal_their_convex_pieces() {
+    let size = 7;
+    let outer = [
+        p("0.5", "0.25"),
+        p("6.75", "0.5"),
+        p("6.25", "6.5"),
+        p("0.25", "6"),
+    ];
+    let inner_cw = [
+        p("2.25", "2"),
+        p("4.5", "2.25"),
+        p("4", "4.75"),
+        p("2", "4.5"),
+    ];
+    let inner_ccw: Vec<At> = inner_cw.iter().rev().cloned().collect();
+    let corners =
+        |ps: &[At]| -> Vec<[RBig; 2]> { ps.iter().map(|(x, y)| [rq(x), rq(y)]).collect() };
+    let (o, i) = (corners(&outer), corners(&inner_cw));
+    let cases: [(&[At], &str, bool); 4] = [
+        (&inner_ccw, "nonzero", true),
+        (&inner_ccw, "even-odd", true),
+        (&inner_cw, "nonzero", false),
+        (&inner_cw, "even-odd", true),
+    ];
+    for (hole, fill, is_hole) in cases {
+        let s = scene(
+            size,
+            &rule("top-left", "null"),
+            &[polygon(&[&outer, hole], fill)],
+            &antialias(4, "standard"),
+        );
+        let expected = |x, y| {
+            let area = clipped_area(&o, x, y);
+            if is_hole {
+                area - clipped_area(&i, x, y)
+            } else {
+                area
+            }
+        };
+        assert_pixels(&s, size, expected, fill);
+    }
+    // A bow-tie A→B→C→D whose edges BC and DA cross at X: the filled
+    // region is the triangles ABX and CDX under either fill.
+    let bow = [
+        p("0.25", "0.5"),
+        p("6.5", "1"),
+        p("0.75", "6.25"),
+        p("6", "5.75"),
+    ];
+    let v = corners(&bow);
+    let (a, b, c, d) = (&v[0], &v[1], &v[2], &v[3]);
+    let cross = |u: [RBig; 2], w: [RBig; 2]| &u[0] * &w[1] - &u[1] * &w[0];
+    let sub = |u: &[RBig; 2], w: &[RBig; 2]| [&u[0] - &w[0], &u[1] - &w[1]];
+    // X = b + t (c − b) on the line through d and a.
+    let t = cross(sub(d, b), sub(a, d)) / cross(sub(c, b), sub(a, d));
+    let x = [&b[0] + &t * (&c[0] - &b[0]), &b[1] + &t * (&c[1] - &b[1])];
+    let halves = [
+        vec![a.clone(), b.clone(), x.clone()],
+        vec![c.clone(), d.clone(), x],
+    ];
+    for fill in ["nonzero", "even-odd"] {
+        let s = scene(
+            size,
+            &rule("top-left", "null"),
+            &[polygon(&[&bow], fill)],
+            &antialias(4, "standard"),
+        );
+        let expected = |x, y| clipped_area(&halves[0], x, y) + clipped_area(&halves[1], x, y);
+        assert_pixels(&s, size, expected, fill);
+    }
+}
+
 /// A pentagram: the star through every second vertex of a convex pentagon
 /// with integer corners.
 fn pentagram(fill: &str) -> String {
