@@ -190,3 +190,43 @@ pub fn orient<T: ExactInt>(a: &Point<T>, b: &Point<T>, p: &Point<T>) -> T {
     let right = b[1].sub(&a[1]).mul(&p[0].sub(&a[0]));
     left.sub(&right)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{parse_case, Limits};
+
+    #[test]
+    fn sample_grids_hold_the_offsets_and_shifts_redo_the_i128_proof() {
+        // y = 2^-45 sets the grid to 2^45 per pixel; x = 2^15 − 1/4 then
+        // lies 2^43 below the i128 bound of 2^60.
+        let json = r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+            "rules": {"subpixel_bits": null},
+            "primitives": [{"triangle": [["32767.75", "1/35184372088832"], [0, 0], [0, 1]]}],
+            "effects": {"antialias": {"samples": 4}}}"#;
+        let scene = parse_case(json, "t.json", &Limits::default()).unwrap();
+        let on = on_grid_sampled(&scene, Some(8));
+        assert_eq!(on.grid.scale, IBig::ONE << 45);
+        assert!(on.fits_i128);
+        // Offset 3/8 moves the vertex right by 1/8 pixel (2^42): still in.
+        let shift = on.sample_shift([96, 32], 8);
+        assert_eq!(shift[0], IBig::ONE << 42);
+        assert!(on.translated(&scene, &shift).fits_i128);
+        // Offset 1/8 moves it by 3/8 pixel (3·2^42): past 2^60.
+        let shift = on.sample_shift([32, 160], 8);
+        assert!(!on.translated(&scene, &shift).fits_i128);
+        // Pixel centres of unsampled scenes keep the grid of old.
+        assert_eq!(on_grid(&scene).grid.scale, IBig::ONE << 45);
+        let snapped = parse_case(
+            &json.replace(r#""subpixel_bits": null"#, r#""subpixel_bits": 4"#),
+            "t.json",
+            &Limits::default(),
+        )
+        .unwrap();
+        assert_eq!(on_grid(&snapped).grid.scale, IBig::from(32u8));
+        assert_eq!(
+            on_grid_sampled(&snapped, Some(8)).grid.scale,
+            IBig::from(256u16)
+        );
+    }
+}
