@@ -5,6 +5,12 @@
 //! would inherit its bugs. Every coverage decision is the sign of an exact
 //! integer; every interpolated value is an exact rational, rounded only when
 //! it is written out.
+//!
+//! Triangles (`triangle.rs`), lines (`line.rs`) and polygons (`polygon.rs`)
+//! are visited at pixel centres on one integer grid (`grid.rs`); an
+//! antialiased scene is visited once per sample, moved so that the sample
+//! sits on the centre. Exact area coverage (`area.rs`) is computed only
+//! when the plan antialiases.
 
 pub mod area;
 pub mod exact;
@@ -193,6 +199,18 @@ pub fn render(scene: &Scene, plan: &Plan) -> Frame {
 
 /// [`render`] with a choice of integer arithmetic.
 pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
+    // One slot per offset, whatever a hand-made plan says.
+    let consistent;
+    let plan = match &plan.antialias {
+        Some(samples) if samples.offsets.len() as u32 != plan.samples_per_pixel => {
+            consistent = Plan {
+                samples_per_pixel: samples.offsets.len() as u32,
+                ..plan.clone()
+            };
+            &consistent
+        }
+        _ => plan,
+    };
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     let values: Vec<Option<triangle::VertexValues>> = scene
         .primitives
