@@ -27,7 +27,7 @@
 pub mod area;
 
 use super::fixed::{EdgeInt, Format};
-use super::setup::TriangleSetup;
+use super::setup::{Shading, TriangleSetup};
 use super::Method;
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
@@ -121,17 +121,34 @@ fn abs<E: EdgeInt>(v: E) -> E {
     v.max(E::default() - v)
 }
 
-/// Calls `visit(x, y, s, values)` for every sample `s` of pixel (x, y) that
-/// the triangle covers, over its footprint, row by row. `values` are the
-/// three exact edge values at the sample with the tie bias removed (what
-/// interpolation weighs). `offsets` are the samples' offsets from the
-/// pixel's top-left corner in the setup's format, `format`.
+/// A covered sample as [`cover`] hands it over: its edge values are
+/// computed only when asked for.
+#[derive(Clone, Copy, Debug)]
+pub struct At<'a, E> {
+    centre: &'a [E; 3],
+    delta: &'a [E; 3],
+    bias: &'a [E; 3],
+}
+
+impl<E: EdgeInt> At<'_, E> {
+    /// The three exact edge values at the sample with the tie bias removed
+    /// (what interpolation weighs).
+    #[inline]
+    pub fn values(&self) -> [E; 3] {
+        [0, 1, 2].map(|k| self.centre[k] + self.delta[k] - self.bias[k])
+    }
+}
+
+/// Calls `visit(x, y, s, at)` for every sample `s` of pixel (x, y) that the
+/// triangle covers, over its footprint, row by row; `at` gives the edge
+/// values there. `offsets` are the samples' offsets from the pixel's
+/// top-left corner in the setup's format, `format`.
 pub fn cover<E: EdgeInt>(
     setup: &TriangleSetup<E>,
     format: Format,
     offsets: &[[i64; 2]],
     sampling: Sampling,
-    mut visit: impl FnMut(i64, i64, usize, [E; 3]),
+    mut visit: impl FnMut(i64, i64, usize, At<E>),
 ) {
     let zero = E::default();
     let half = format.one() / 2;
@@ -160,10 +177,6 @@ pub fn cover<E: EdgeInt>(
         let d = &deltas[s];
         ((centre[0] + d[0]) | (centre[1] + d[1]) | (centre[2] + d[2])) >= zero
     };
-    let raw = |centre: &[E; 3], s: usize| {
-        let d = &deltas[s];
-        [0, 1, 2].map(|k| centre[k] + d[k] - bias[k])
-    };
 
     let b = setup.bounds;
     for y in b.y0..b.y1 {
@@ -177,7 +190,20 @@ pub fn cover<E: EdgeInt>(
             };
             match class {
                 Class::Outside => {}
-                Class::Inside => (0..n).for_each(|s| visit(x, y, s, raw(&centre, s))),
+                Class::Inside => {
+                    for (s, delta) in deltas.iter().enumerate() {
+                        visit(
+                            x,
+                            y,
+                            s,
+                            At {
+                                centre: &centre,
+                                delta,
+                                bias: &bias,
+                            },
+                        );
+                    }
+                }
                 Class::Edge => {
                     let agreed = match sampling {
                         Sampling::Refine => {
@@ -189,9 +215,18 @@ pub fn cover<E: EdgeInt>(
                         }
                         _ => None,
                     };
-                    for s in 0..n {
+                    for (s, delta) in deltas.iter().enumerate() {
                         if agreed.unwrap_or_else(|| covered(&centre, s)) {
-                            visit(x, y, s, raw(&centre, s));
+                            visit(
+                                x,
+                                y,
+                                s,
+                                At {
+                                    centre: &centre,
+                                    delta,
+                                    bias: &bias,
+                                },
+                            );
                         }
                     }
                 }
@@ -238,10 +273,13 @@ pub fn write_triangle<E: EdgeInt>(
 ) {
     let n = offsets.len();
     let width = frame.width as usize;
-    cover(setup, format, offsets, sampling, |x, y, s, values| {
+    let shaded = !matches!(setup.shading, Shading::None);
+    cover(setup, format, offsets, sampling, |x, y, s, at| {
         let i = (y as usize * width + x as usize) * n + s;
         frame.hit(i, index);
-        setup.shading.write(frame, i, values);
+        if shaded {
+            setup.shading.write(frame, i, at.values());
+        }
     });
 }
 
