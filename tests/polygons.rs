@@ -744,6 +744,29 @@ fn flood_fill_departs_on_a_sliver() {
     assert_eq!(expected.covered_samples(), 18 * 18);
     let wrong = differences(&expected, &actual);
     assert!(wrong > 0 && wrong < 4 * 19, "{wrong}");
+    // Concave stars: seeds only deep inside, so the fill stays within the
+    // outline and departs along it, never over the whole canvas.
+    let mut rng = Rng::new(8);
+    for case in 0..20 {
+        let scene = scene_of(
+            vec![polygon_of(
+                &star(&mut rng, false),
+                BITS,
+                PolygonFill::NonZero,
+            )],
+            FillRule::TopLeft,
+            None,
+            Some(BITS),
+        );
+        let expected = brute_force(&scene, &plan);
+        let actual = flood.rasterize(&scene, &plan).unwrap();
+        let wrong = differences(&expected, &actual);
+        assert!(
+            wrong > 0 && wrong < (SIZE * SIZE / 3) as usize,
+            "star {case}: {wrong} of {} samples",
+            expected.covered_samples()
+        );
+    }
 }
 
 #[test]

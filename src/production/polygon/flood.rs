@@ -1,8 +1,11 @@
 //! The classic foil: draw the outline with midpoint lines, then flood-fill
 //! (4-connected) from seed pixels, filling the outline pixels too.
 //!
-//! A pixel is seeded when its centre is inside by an f64 point-in-polygon
-//! test and the fill has not reached it yet. The outline covers every pixel
+//! A pixel is seeded when the fill has not reached it yet and its centre and
+//! its eight neighbours' centres are inside by an f64 point-in-polygon test
+//! (deep inside: a pixel barely inside may lie outside the outline's loop).
+//! Parts too thin to hold a deep pixel get their outline only; a seed
+//! outside the outline's loop, or a gap in it, floods what lies beyond. The outline covers every pixel
 //! an edge runs through from the pixel of one vertex to the next, so thin
 //! parts, slivers and edges are covered whether or not a sample is inside:
 //! the fill departs from the exact rule, and that is what it is kept to
@@ -106,11 +109,26 @@ pub fn draw(
         PolygonFill::EvenOdd => w & 1 != 0,
         PolygonFill::NonZero => w != 0,
     };
+    // Centres inside by the f64 test, over the box and a margin of one.
+    let (bx, by) = (x0 - 1, y0 - 1);
+    let box_width = (x1 - x0 + 2).max(0);
+    let box_height = (y1 - y0 + 2).max(0);
+    let centre_inside: Vec<bool> = (0..box_height)
+        .flat_map(|j| (0..box_width).map(move |i| (bx + i, by + j)))
+        .map(|(x, y)| inside(winding(&pixels, x as f64 + 0.5, y as f64 + 0.5)))
+        .collect();
+    // A seed is deep inside: its centre and its eight neighbours' are
+    // inside. A pixel whose centre is barely inside may lie outside the
+    // outline's loop, and a fill from it would flood the canvas.
+    let deep = |x: i64, y: i64| {
+        (-1..=1).all(|dy| {
+            (-1..=1).all(|dx| centre_inside[((y + dy - by) * box_width + x + dx - bx) as usize])
+        })
+    };
     let mut stack = Vec::new();
     for y in y0..y1 {
         for x in x0..x1 {
-            if state[at(x, y)] != EMPTY || !inside(winding(&pixels, x as f64 + 0.5, y as f64 + 0.5))
-            {
+            if state[at(x, y)] != EMPTY || !deep(x, y) {
                 continue;
             }
             state[at(x, y)] = FILLED;
@@ -134,4 +152,26 @@ pub fn draw(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn midpoint_lines_are_eight_connected_and_end_at_both_ends() {
+        for (a, b) in [
+            ([0, 0], [7, 3]),
+            ([5, 9], [1, 0]),
+            ([2, 2], [2, -4]),
+            ([0, 0], [-6, 6]),
+        ] {
+            let mut pixels = Vec::new();
+            midpoint_line(a, b, |x, y| pixels.push([x, y]));
+            assert_eq!(pixels.first(), Some(&a));
+            assert_eq!(pixels.last(), Some(&b));
+            let steps = (b[0] - a[0]).abs().max((b[1] - a[1]).abs());
+            assert_eq!(pixels.len() as i64, steps + 1, "{a:?} to {b:?}: {pixels:?}");
+        }
+    }
 }
