@@ -1,7 +1,9 @@
 //! Finding case files, reading them, and running them through rasterizers
 //! against the reference. Both the CLI and the test harness go through here.
 
+use std::cell::RefCell;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 use std::time::{Duration, Instant};
 
 use dashu_ratio::RBig;
@@ -183,9 +185,33 @@ pub struct AreaCheck {
 }
 
 /// The [`AreaCheck`] of a scene; `None` when it does not antialias.
-pub fn area_check(scene: &Scene) -> Option<AreaCheck> {
+///
+/// The exact areas cost more than the reference's frame, and every
+/// candidate of a case needs them, while `ReferenceRun` (which the fuzzer
+/// builds by hand) carries no place for them. So the last scene's check is
+/// kept per thread (the runner judges a case's candidates one after another
+/// on one thread), keyed by everything the areas and `expect.area` depend
+/// on, written out exactly (numbers print as exact fractions).
+pub fn area_check(scene: &Scene) -> Option<Rc<AreaCheck>> {
     scene.effects.antialias.as_ref()?;
-    Some(check_areas(scene, &reference::exact_areas(scene)))
+    thread_local! {
+        static LAST: RefCell<Option<(String, Rc<AreaCheck>)>> = const { RefCell::new(None) };
+    }
+    let key = format!(
+        "{:?}|{:?}|{:?}|{:?}|{:?}",
+        scene.canvas, scene.rules, scene.effects, scene.expect.area, scene.primitives
+    );
+    LAST.with(|last| {
+        let mut last = last.borrow_mut();
+        if let Some((k, check)) = last.as_ref() {
+            if *k == key {
+                return Some(Rc::clone(check));
+            }
+        }
+        let check = Rc::new(check_areas(scene, &reference::exact_areas(scene)));
+        *last = Some((key, Rc::clone(&check)));
+        Some(check)
+    })
 }
 
 /// The exact area class of every pixel, and `expect.area` against the
@@ -331,8 +357,6 @@ pub fn run_candidate(
             elapsed,
         };
     }
-    // Computed per candidate: `ReferenceRun` is built by hand elsewhere
-    // (the fuzzer), so it carries no new fields.
     let areas = area_check(scene);
     let m = metrics::measure_with_areas(
         scene,

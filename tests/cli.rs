@@ -525,12 +525,12 @@ fn resource_limits_are_errors_not_crashes() {
     assert_no_panic(&out);
 }
 
-/// Two triangles sharing a diagonal, 4 standard samples, in an 8×8 canvas
-/// with edges off the pixel grid.
+/// Two triangles sharing a diagonal, 4 standard samples on the 1/16 grid,
+/// in an 8×8 canvas with edges off the pixel grid.
 const AA_PAIR: &str = r#"{"name": "aa_pair", "canvas": {"width": 8, "height": 8},
   "primitives": [{"triangle": [[0.5, 0.25], [7.75, 1], [7, 7.5]]},
                  {"triangle": [[0.5, 0.25], [7, 7.5], [1, 7]]}],
-  "effects": {"antialias": {"samples": 4}},
+  "effects": {"antialias": {"samples": 4, "position_bits": 4}},
   "expect": {"max_coverage_error": 0.75, "watertight": true, "area": "1407/32"}}"#;
 
 #[test]
@@ -596,6 +596,7 @@ fn show_pictures_an_antialiased_case_by_its_resolved_coverage() {
     );
     let t = text(&out);
     assert_no_panic(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
     for name in [
         "reference.png",
         "mutant-shifted-samples.png",

@@ -322,8 +322,9 @@ fn the_html_report_opens_in_a_browser_with_every_picture() {
 }
 
 /// A 16-sample triangle and an 8-sample quadrilateral of two triangles,
-/// each judged for production and the coarse-resolve mutant (8 and 16
-/// samples resolve to other than quarters, so rounding down shows).
+/// each judged for production, the coarse-resolve mutant (8 and 16 samples
+/// resolve to other than quarters, so rounding down shows) and the
+/// shifted-samples mutant (its mask differs).
 const AA_CASES: [(&str, &str); 2] = [
     (
         "triangle16",
@@ -358,6 +359,8 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
             "production",
             "-r",
             "mutant:coarse-resolve",
+            "-r",
+            "mutant:shifted-samples",
             "--quiet",
             "--report",
             "report",
@@ -379,7 +382,7 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
         assert_eq!(case["status"], "ran", "{case}");
         let rules = &case["rules"]["antialias"];
         assert!(rules["samples"].as_u64().unwrap() >= 4, "{case}");
-        let [production, mutant] = [&case["results"][0], &case["results"][1]];
+        let [production, mutant, shifted] = [0, 1, 2].map(|k| &case["results"][k]);
         assert_eq!(production["verdict"], "pass", "{production}");
         assert_eq!(mutant["verdict"], "fail", "{mutant}");
         let aa = &production["metrics"]["antialias"];
@@ -404,7 +407,6 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
             "/reference.png",
             "/mutant-coarse-resolve.png",
             ".diff.png",
-            ".samples.png",
             ".exr",
         ] {
             assert!(
@@ -412,6 +414,20 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
                 "{suffix} in {files:?}"
             );
         }
+        // Its samples are right: no samples picture.
+        assert!(!files.iter().any(|f| f.ends_with(".samples.png")));
+        assert_eq!(shifted["verdict"], "fail", "{shifted}");
+        let samples = shifted["files"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|f| f.as_str())
+            .find(|f| f.ends_with("/mutant-shifted-samples.samples.png"))
+            .expect("a samples picture for a mask that differs");
+        let samples = image::open(report_dir.join(samples)).unwrap().to_rgb8();
+        let magenta = rastercheck::report::png::MISSING;
+        let red = rastercheck::report::png::EXTRA;
+        assert!(samples.pixels().any(|p| p.0 == magenta || p.0 == red));
         let diff = files.iter().find(|f| f.ends_with(".diff.png")).unwrap();
         let diff = image::open(report_dir.join(diff)).unwrap().to_rgb8();
         // Rounding down: too little coverage, blue; never red.
@@ -428,7 +444,7 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
             .count();
         assert!(greys > 0, "the exact area shows partial pixels in grey");
     }
-    assert!(check_exr(&report_dir, &report) >= 2);
+    assert!(check_exr(&report_dir, &report) >= 4);
 
     // Passing antialiased results get a card too, drawn from the frames.
     let html = std::fs::read_to_string(report_dir.join("index.html")).unwrap();
@@ -436,9 +452,11 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
         .into_iter()
         .filter(|c| c.contains("<h4>resolved coverage</h4>"))
         .collect();
-    assert_eq!(aa_cards.len(), 4, "{} cards", cards(&html).len());
+    assert_eq!(aa_cards.len(), 6, "{} cards", cards(&html).len());
     for card in aa_cards {
-        for role in ["reference", "candidate", "diff", "samples"] {
+        let shifted = card.contains("data-rasterizer=\"mutant:shifted-samples\"");
+        assert_eq!(card.contains("data-role=\"samples\""), shifted);
+        for role in ["reference", "candidate", "diff"] {
             assert!(
                 card.contains(&format!(
                     "data-role=\"{role}\" src=\"data:image/png;base64,"

@@ -23,8 +23,8 @@
 //! An antialiased case's card shows its resolved coverage instead (drawn
 //! from the frames, for passes too): the exact area and the candidate's
 //! resolved value in grey, the signed error (red too much, blue too
-//! little), and for a candidate with samples every sample as a dot coloured
-//! by how it differs (colour keys in `png.rs`). Passing antialiased results
+//! little), and for a candidate whose samples differ every sample as a dot
+//! coloured by how it differs (colour keys in `png.rs`). Passing antialiased results
 //! with any coverage error get a card like passes with interpolation error.
 //! With several samples per pixel a heat map shows each pixel's largest
 //! error over its samples.
@@ -784,12 +784,7 @@ fn antialias_pictures(
     } else {
         Vec::new()
     };
-    let samples = png::samples_picture(
-        scene,
-        reference,
-        &mask,
-        png::samples_scale(reference, scale),
-    );
+    let samples = png::samples_picture(scene, reference, &mask, scale.max(png::SAMPLES_MIN_SCALE));
     if let Some(img) = &samples {
         show(img, "samples", "samples (positions as drawn)");
     }

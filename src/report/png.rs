@@ -18,10 +18,11 @@
 //! - `.diff.png`: the signed coverage error, candidate − exact: black = 0,
 //!   red = too much coverage, blue = too little, full colour at the largest
 //!   |error| of the picture (at least 2^-20, so rounding noise stays dark);
-//! - `.samples.png`, for a candidate with samples: every sample as a dot at
-//!   its position in the magnified pixel, coloured as in the difference
-//!   mask (white = covered alike, dark grey = empty in both), over the exact
-//!   area in dim grey.
+//! - `.samples.png`, for a candidate whose samples differ from the
+//!   reference's (on canvases up to 128 pixels a side): every sample as a
+//!   dot at its position in the magnified pixel, coloured as in the
+//!   difference mask (white = covered alike, dark grey = empty in both),
+//!   over the exact area in dim grey.
 
 use std::path::{Path, PathBuf};
 
@@ -135,17 +136,21 @@ pub fn error_picture(scene: &Scene, errors: &[f64], full: f64, scale: u32) -> Rg
     })
 }
 
-/// The samples picture's magnification: at least 8 so that the dots of one
-/// pixel are apart, at most about 2048 pixels across.
-pub fn samples_scale(frame: &Frame, scale: u32) -> u32 {
-    let cap = (2048 / frame.width.max(frame.height).max(1)).max(1);
-    scale.max(8.min(cap))
-}
+/// The largest canvas side that gets a samples picture: at 8 times
+/// magnification, 1024 pixels across. Beyond it the dots of a pixel blur
+/// together and the picture costs megabytes.
+pub const SAMPLES_MAX_SIDE: u32 = 128;
+
+/// The samples picture's least magnification, so that the dots of one
+/// pixel are apart.
+pub const SAMPLES_MIN_SCALE: u32 = 8;
 
 /// Every sample as a dot at its offset in the magnified pixel, coloured by
 /// how it differs from the reference, over the reference's resolved
-/// coverage (dimmed). `None` when the scene has no sample pattern or the
-/// mask does not hold one entry per sample.
+/// coverage (dimmed). `None` when no sample differs (the picture would show
+/// nothing the others do not), the canvas is wider or taller than
+/// [`SAMPLES_MAX_SIDE`], the scene has no sample pattern, or the mask does
+/// not hold one entry per sample.
 pub fn samples_picture(
     scene: &Scene,
     reference: &Frame,
@@ -155,7 +160,12 @@ pub fn samples_picture(
     let aa = scene.effects.antialias.as_ref()?;
     let offsets = aa.offsets();
     let n = offsets.len();
-    if n == 0 || reference.samples as usize != n || mask.len() != reference.sample_count() {
+    if n == 0
+        || reference.samples as usize != n
+        || mask.len() != reference.sample_count()
+        || reference.width.max(reference.height) > SAMPLES_MAX_SIDE
+        || mask.iter().all(|d| *d == SampleDiff::Same)
+    {
         return None;
     }
     let exact = resolved_of(reference);
@@ -313,7 +323,7 @@ fn write_resolved_comparison(
             error_picture(scene, &errors, error_scale(&errors), scale),
         ),
     ];
-    if let Some(img) = samples_picture(scene, reference, mask, samples_scale(reference, scale)) {
+    if let Some(img) = samples_picture(scene, reference, mask, scale.max(SAMPLES_MIN_SCALE)) {
         images.push((format!("{file_name}.samples.png"), img));
     }
     save_all(dir, images)
