@@ -355,7 +355,11 @@ fn cell(result: &ResultEntry, link: Option<&str>) -> String {
     let mut html = badge(result.verdict, &result.verdict.to_uppercase());
     if let Some(m) = &result.metrics {
         let c = &m.coverage;
-        let mut parts = vec![format!("{} mismatched", c.mismatched)];
+        let mut parts = vec![if c.samples == 0 {
+            "no samples".to_owned()
+        } else {
+            format!("{} mismatched", c.mismatched)
+        }];
         if let Some(w) = &m.watertight {
             parts.push(format!("{} holes, {} overdraw", w.holes, w.overdraw));
         }
