@@ -638,3 +638,52 @@ fn production_passes_the_antialiased_case_its_mutants_fail() {
     let aa = leaky.metrics.unwrap().antialias.unwrap();
     assert_eq!(aa.piglit_violations, good.full_pixels);
 }
+
+/// The diagonal pair with 16 standard samples: sample 0 of every pixel on
+/// the diagonal, at (9/16, 9/16), lies exactly on the shared edge.
+const AA_DIAGONAL_PAIR: &str = r#"{
+  "name": "aa_diagonal_pair", "canvas": {"width": 8, "height": 8},
+  "primitives": [
+    {"triangle": [[0, 0], [8, 0], [8, 8]]},
+    {"triangle": [[0, 0], [8, 8], [0, 8]]}
+  ],
+  "effects": {"antialias": {"samples": 16}},
+  "expect": {"watertight": true, "samples_covered": 1024, "area": 64}
+}"#;
+
+#[test]
+fn watertightness_and_ties_are_judged_sample_by_sample() {
+    if !production_antialiases() {
+        eprintln!("production does not antialias yet: skipped");
+        return;
+    }
+    let s = scene(AA_DIAGONAL_PAIR);
+    let r = run(&s, &Production);
+    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    let w = r.metrics.unwrap().watertight.expect("a mesh case");
+    // Samples 12 at (0, 8/16) and 15 at (1/16, 0) of the left column and
+    // top row lie on the mesh's rim; the diagonal's samples are interior.
+    assert_eq!((w.interior, w.holes, w.overdraw), (1024 - 16, 0, 0));
+
+    let closed = run(&s, &Mutant(Mutation::ClosedEdges));
+    let w = closed.metrics.as_ref().unwrap().watertight.clone().unwrap();
+    assert_eq!(
+        (w.holes, w.overdraw),
+        (0, 8),
+        "{}",
+        suite::describe(&closed)
+    );
+    // Each overdrawn sample also makes its pixel resolve above 1.
+    let why = reasons(&closed);
+    assert!(
+        why.iter()
+            .any(|m| m.starts_with("watertight: 0 holes and 8")),
+        "{why:?}"
+    );
+
+    let flipped = run(&s, &Mutant(Mutation::FlippedTies));
+    let c = flipped.metrics.as_ref().unwrap().coverage.clone();
+    // The diagonal's samples change hands (the resolve cannot show that);
+    // the rim samples on the canvas's left and top edges go missing.
+    assert_eq!((c.wrong_owner, c.missing, c.extra), (8, 16, 0));
+}
