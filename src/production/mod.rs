@@ -47,7 +47,7 @@ impl Rasterizer for Production {
     fn capabilities(&self) -> Capabilities {
         // Ideal geometry only when its coordinates are dyadic: checked per scene.
         Capabilities {
-            polygons: false,
+            polygons: true,
             antialias: true,
             ..Capabilities::everything()
         }
