@@ -41,7 +41,8 @@
 //!   interpolation channel (`depth`, `attribute 0`, ...), and for
 //!   antialiased cases `antialias.max_error`, `antialias.rms_edge`,
 //!   `antialias.rms_all` (resolved coverage against the exact area) and
-//!   `antialias.piglit_violations`, `antialias.resolve_mismatches`. Lower is
+//!   `antialias.piglit_violations`, `antialias.resolve_mismatches`,
+//!   `antialias.invalid_values`. Lower is
 //!   better for every one. Counts are integers; errors are numbers, or
 //!   `"inf"` for an error that was not a number (NaN).
 //! - `tolerance`: a metric **regresses** when
@@ -308,6 +309,7 @@ pub fn metrics_of(m: &Metrics) -> BTreeMap<String, Value> {
             "antialias.resolve_mismatches".into(),
             a.resolve_mismatches as f64,
         );
+        put("antialias.invalid_values".into(), a.invalid_values as f64);
     }
     out
 }

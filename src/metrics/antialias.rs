@@ -86,6 +86,9 @@ pub struct AntialiasMetrics {
     /// Pixels whose resolved value is not the box resolve of the
     /// candidate's own samples (always 0 without a mask).
     pub resolve_mismatches: u64,
+    /// Pixels whose resolved value is not a number, infinite or negative:
+    /// wrong whatever the bounds.
+    pub invalid_values: u64,
     /// Pixels of nonzero resolved value in the reference and the candidate
     /// (reported only: a sample method may rightly miss a sliver whole).
     pub reference_pixels: u64,
@@ -170,6 +173,7 @@ pub fn measure(
         piglit_violations: 0,
         first_violation: None,
         resolve_mismatches: 0,
+        invalid_values: 0,
         reference_pixels: 0,
         candidate_pixels: 0,
         allowed_error: bounds.0,
@@ -192,6 +196,7 @@ pub fn measure(
             sum_sq_edge += error * error;
             sum_edge += error;
         }
+        m.invalid_values += u64::from(!r.is_finite() || r < 0.0);
         m.reference_pixels += u64::from(e != 0.0);
         m.candidate_pixels += u64::from(r != 0.0);
         let slots = &reference.coverage[p * ref_slots..(p + 1) * ref_slots];
@@ -253,6 +258,12 @@ pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
             m.piglit_violations
         ));
     }
+    if m.invalid_values > 0 {
+        out.push(format!(
+            "antialias: {} pixels resolve to a value that is not a finite number ≥ 0",
+            m.invalid_values
+        ));
+    }
     if m.resolve_mismatches > 0 {
         out.push(format!(
             "antialias: {} pixels resolve to other than the box resolve of their own samples",
@@ -303,6 +314,11 @@ mod tests {
         let area_only = Frame::resolved_only(2, 1, vec![1.0, 0.0]);
         let m = measure(&reference, &area_only, None, (Some(0.2), None)).unwrap();
         assert_eq!((m.samples, m.resolve_mismatches), (0, 0));
+        assert_eq!(failures(&m).len(), 1, "{:?}", failures(&m));
+
+        let nan = Frame::resolved_only(2, 1, vec![1.0, f64::NAN]);
+        let m = measure(&reference, &nan, None, (None, None)).unwrap();
+        assert_eq!((m.invalid_values, m.max_error), (1, f64::INFINITY));
         assert_eq!(failures(&m).len(), 1, "{:?}", failures(&m));
 
         // Drawing nothing breaks piglit's rule on the full pixel. (Nothing

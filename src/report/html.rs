@@ -491,6 +491,7 @@ fn metrics_tables(m: &MetricsEntry) -> String {
                 "not their own box resolve",
                 a.resolve_mismatches.to_string(),
             ),
+            ("not a finite number ≥ 0", a.invalid_values.to_string()),
         ];
         html.push_str("<table><tr><th colspan=\"2\">resolved coverage − exact area</th></tr>");
         for (name, value) in rows {
@@ -978,7 +979,10 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
         let left: Vec<String> = [
             (Kind::Problem, "failures and problems"),
             (Kind::Departure, "foil departures"),
-            (Kind::Interpolation, "interpolation maps of passing results"),
+            (
+                Kind::Interpolation,
+                "error maps of passing results (interpolation, antialiasing)",
+            ),
         ]
         .iter()
         .filter_map(|(kind, name)| {

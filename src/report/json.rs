@@ -163,6 +163,8 @@ pub struct AntialiasEntry {
     pub empty_pixels: u64,
     pub piglit_violations: u64,
     pub resolve_mismatches: u64,
+    /// Pixels resolved to NaN, an infinity or a negative value.
+    pub invalid_values: u64,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_error: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -253,6 +255,7 @@ impl MetricsEntry {
                 empty_pixels: a.empty_pixels,
                 piglit_violations: a.piglit_violations,
                 resolve_mismatches: a.resolve_mismatches,
+                invalid_values: a.invalid_values,
                 allowed_error: a.allowed_error,
                 allowed_rms: a.allowed_rms,
             }),
