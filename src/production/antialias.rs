@@ -124,13 +124,13 @@ fn abs<E: EdgeInt>(v: E) -> E {
 /// A covered sample as [`cover`] hands it over: its edge values are
 /// computed only when asked for.
 #[derive(Clone, Copy, Debug)]
-pub struct At<'a, E> {
-    centre: &'a [E; 3],
-    delta: &'a [E; 3],
-    bias: &'a [E; 3],
+pub struct At<E> {
+    centre: [E; 3],
+    delta: [E; 3],
+    bias: [E; 3],
 }
 
-impl<E: EdgeInt> At<'_, E> {
+impl<E: EdgeInt> At<E> {
     /// The three exact edge values at the sample with the tie bias removed
     /// (what interpolation weighs).
     #[inline]
@@ -139,16 +139,32 @@ impl<E: EdgeInt> At<'_, E> {
     }
 }
 
-/// Calls `visit(x, y, s, at)` for every sample `s` of pixel (x, y) that the
-/// triangle covers, over its footprint, row by row; `at` gives the edge
-/// values there. `offsets` are the samples' offsets from the pixel's
-/// top-left corner in the setup's format, `format`.
+/// Receives the covered samples of a primitive, like [`super::traverse::Sink`]
+/// receives covered pixels.
+pub trait SampleSink<E: EdgeInt> {
+    /// Sample `s` of pixel (x, y) is covered; `at` gives the edge values
+    /// there.
+    fn sample(&mut self, x: i64, y: i64, s: usize, at: At<E>);
+
+    /// Every sample of pixel (x, y) is covered; `at(s)` gives sample s's
+    /// edge values. A sink that needs no values can fill the pixel's run of
+    /// slots at once.
+    fn whole(&mut self, x: i64, y: i64, samples: usize, at: impl Fn(usize) -> At<E>) {
+        for s in 0..samples {
+            self.sample(x, y, s, at(s));
+        }
+    }
+}
+
+/// Hands `sink` every sample `s` of pixel (x, y) that the triangle covers,
+/// over its footprint, row by row. `offsets` are the samples' offsets from
+/// the pixel's top-left corner in the setup's format, `format`.
 pub fn cover<E: EdgeInt>(
     setup: &TriangleSetup<E>,
     format: Format,
     offsets: &[[i64; 2]],
     sampling: Sampling,
-    mut visit: impl FnMut(i64, i64, usize, At<E>),
+    sink: &mut impl SampleSink<E>,
 ) {
     let zero = E::default();
     let half = format.one() / 2;
@@ -190,20 +206,11 @@ pub fn cover<E: EdgeInt>(
             };
             match class {
                 Class::Outside => {}
-                Class::Inside => {
-                    for (s, delta) in deltas.iter().enumerate() {
-                        visit(
-                            x,
-                            y,
-                            s,
-                            At {
-                                centre: &centre,
-                                delta,
-                                bias: &bias,
-                            },
-                        );
-                    }
-                }
+                Class::Inside => sink.whole(x, y, n, |s| At {
+                    centre,
+                    delta: deltas[s],
+                    bias,
+                }),
                 Class::Edge => {
                     let agreed = match sampling {
                         Sampling::Refine => {
@@ -215,18 +222,24 @@ pub fn cover<E: EdgeInt>(
                         }
                         _ => None,
                     };
-                    for (s, delta) in deltas.iter().enumerate() {
-                        if agreed.unwrap_or_else(|| covered(&centre, s)) {
-                            visit(
-                                x,
-                                y,
-                                s,
-                                At {
-                                    centre: &centre,
-                                    delta,
-                                    bias: &bias,
-                                },
-                            );
+                    match agreed {
+                        Some(false) => {}
+                        Some(true) => sink.whole(x, y, n, |s| At {
+                            centre,
+                            delta: deltas[s],
+                            bias,
+                        }),
+                        None => {
+                            for (s, delta) in deltas.iter().enumerate() {
+                                if covered(&centre, s) {
+                                    let at = At {
+                                        centre,
+                                        delta: *delta,
+                                        bias,
+                                    };
+                                    sink.sample(x, y, s, at);
+                                }
+                            }
                         }
                     }
                 }
@@ -271,16 +284,52 @@ pub fn write_triangle<E: EdgeInt>(
     index: usize,
     frame: &mut Frame,
 ) {
-    let n = offsets.len();
-    let width = frame.width as usize;
-    let shaded = !matches!(setup.shading, Shading::None);
-    cover(setup, format, offsets, sampling, |x, y, s, at| {
-        let i = (y as usize * width + x as usize) * n + s;
-        frame.hit(i, index);
-        if shaded {
-            setup.shading.write(frame, i, at.values());
+    let mut writer = TriangleWriter {
+        frame,
+        index,
+        samples: offsets.len(),
+        shading: &setup.shading,
+    };
+    cover(setup, format, offsets, sampling, &mut writer);
+}
+
+/// Writes a triangle's samples, and their values, into a frame.
+struct TriangleWriter<'a> {
+    frame: &'a mut Frame,
+    index: usize,
+    samples: usize,
+    shading: &'a Shading,
+}
+
+impl TriangleWriter<'_> {
+    #[inline]
+    fn first_slot(&self, x: i64, y: i64) -> usize {
+        (y as usize * self.frame.width as usize + x as usize) * self.samples
+    }
+}
+
+impl<E: EdgeInt> SampleSink<E> for TriangleWriter<'_> {
+    #[inline]
+    fn sample(&mut self, x: i64, y: i64, s: usize, at: At<E>) {
+        let i = self.first_slot(x, y) + s;
+        self.frame.hit(i, self.index);
+        self.shading.write(self.frame, i, at.values());
+    }
+
+    #[inline]
+    fn whole(&mut self, x: i64, y: i64, samples: usize, at: impl Fn(usize) -> At<E>) {
+        let first = self.first_slot(x, y);
+        if let Shading::Values { .. } = self.shading {
+            for s in 0..samples {
+                self.shading.write(self.frame, first + s, at(s).values());
+            }
         }
-    });
+        let run = first..first + samples;
+        for count in &mut self.frame.coverage[run.clone()] {
+            *count = count.saturating_add(1);
+        }
+        self.frame.last[run].fill(self.index as u32 + 1);
+    }
 }
 
 /// `adaptive-refine`: production's sampling, but deciding a pixel from a

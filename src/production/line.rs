@@ -10,7 +10,7 @@
 //! Values along a line are interpolated in f32 from the line parameter of
 //! SPEC.md §5, never from triangle barycentrics.
 
-use super::antialias::{self, Samples};
+use super::antialias::{self, SampleSink, Samples};
 use super::fixed::{EdgeInt, Fixed, Format, I64_MAX_FRAC_BITS, MAX_FRAC_BITS};
 use super::setup::{self, Footprint};
 use super::traverse::{self, Sink};
@@ -635,6 +635,13 @@ impl LineSink<'_> {
     }
 }
 
+impl<E: EdgeInt> SampleSink<E> for LineSink<'_> {
+    #[inline]
+    fn sample(&mut self, x: i64, y: i64, s: usize, _: antialias::At<E>) {
+        LineSink::sample(self, x, y, s);
+    }
+}
+
 impl Sink for LineSink<'_> {
     fn span(&mut self, y: i64, x0: i64, x1: i64) {
         for x in x0..x1 {
@@ -764,13 +771,7 @@ fn parallelogram_in<E: EdgeInt>(
             // it for the decisions, the sink's own for the values.
             let offsets = samples.offsets_in(format);
             for triangle in [first, second].iter().flatten() {
-                antialias::cover(
-                    triangle,
-                    format,
-                    &offsets,
-                    samples.sampling,
-                    |x, y, s, _| sink.sample(x, y, s),
-                );
+                antialias::cover(triangle, format, &offsets, samples.sampling, sink);
             }
         }
     }
