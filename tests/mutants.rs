@@ -599,17 +599,8 @@ fn expect_area_pins_the_oracles_areas() {
     );
 }
 
-/// Whether production antialiases yet (it is being built alongside).
-fn production_antialiases() -> bool {
-    Production.capabilities().antialias
-}
-
 #[test]
 fn production_passes_the_antialiased_case_its_mutants_fail() {
-    if !production_antialiases() {
-        eprintln!("production does not antialias yet: skipped");
-        return;
-    }
     let s = scene(AA_TRIANGLE);
     let r = run(&s, &Production);
     assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
@@ -653,10 +644,6 @@ const AA_DIAGONAL_PAIR: &str = r#"{
 
 #[test]
 fn watertightness_and_ties_are_judged_sample_by_sample() {
-    if !production_antialiases() {
-        eprintln!("production does not antialias yet: skipped");
-        return;
-    }
     let s = scene(AA_DIAGONAL_PAIR);
     let r = run(&s, &Production);
     assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
