@@ -357,7 +357,19 @@ pub fn run_candidate(
             elapsed,
         };
     }
-    let areas = area_check(scene);
+    // The oracle's exact areas; a panic there is the reference's failure,
+    // reported on the case, not a crash of the run.
+    let (areas, broken_oracle) =
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| area_check(scene))) {
+            Ok(areas) => (areas, None),
+            Err(panic) => (
+                None,
+                Some(format!(
+                    "reference: the exact areas failed: {}",
+                    panic_message(&*panic)
+                )),
+            ),
+        };
     let m = metrics::measure_with_areas(
         scene,
         &reference.frame,
@@ -369,6 +381,7 @@ pub fn run_candidate(
     if let Some(check) = &areas {
         failures.extend(check.broken_promises.iter().cloned());
     }
+    failures.extend(broken_oracle);
     let verdict = if failures.is_empty() {
         Verdict::Pass
     } else {
