@@ -8,9 +8,11 @@
 //! DIR/junit.xml            one testcase per case × rasterizer
 //! DIR/summary.md           totals, failures first, worst metrics
 //! DIR/images/<id>/*.png    reference, candidate and difference mask, for
-//!                          every result that is not a pass
+//!                          every result that is not a pass (antialiased
+//!                          cases: resolved coverage, signed error, samples)
 //! DIR/exr/<id>/<rast>.exr  signed float error maps, for every result that
-//!                          is not a pass or has any nonzero error
+//!                          is not a pass or has any nonzero error (per
+//!                          sample; antialiased: resolved error per pixel)
 //! DIR/index.html           one self-contained page for people
 //! ```
 
