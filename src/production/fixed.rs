@@ -104,8 +104,9 @@ impl Format {
     /// This format, made fine enough to hold sample offsets that are
     /// multiples of 2^-position_bits pixel as integers. Snapping is
     /// unchanged ([`Format::snap`] shifts by `frac_bits − subpixel_bits`),
-    /// and with position_bits ≤ MAX_SUBPIXEL_BITS the result is never finer
-    /// than [`MAX_FRAC_BITS`], so the edge-function bounds above hold.
+    /// and position_bits ≤ MAX_POSITION_BITS ≤ [`MAX_FRAC_BITS`] (asserted
+    /// above), so the result is never finer than the finest format and the
+    /// edge-function bounds above hold.
     pub fn with_samples(self, position_bits: u32) -> Format {
         Format {
             frac_bits: self.frac_bits.max(position_bits),

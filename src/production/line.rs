@@ -8,7 +8,9 @@
 //! rectangle, in choosing which candidate samples to test (with a margin
 //! far wider than their error; every candidate is then decided exactly).
 //! Values along a line are interpolated in f32 from the line parameter of
-//! SPEC.md §5, never from triangle barycentrics.
+//! SPEC.md §5, never from triangle barycentrics. Antialiased, a
+//! parallelogram line's two triangles are sampled like any triangle's
+//! (`antialias::cover`), and its values are taken at each sample.
 
 use super::antialias::{self, SampleSink, Samples};
 use super::fixed::{EdgeInt, Fixed, Format, I64_MAX_FRAC_BITS, MAX_FRAC_BITS};
