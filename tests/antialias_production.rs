@@ -324,8 +324,13 @@ fn an_edge_on_samples_follows_the_fill_rule() {
 fn adaptive_sampling_equals_full_supersampling() {
     let mut rng = Rng(2);
     let mut skipped_pixels = 0;
+    let mut seen = std::collections::HashSet::new();
     for trial in 0..400 {
         let mut scene = random_scene(&mut rng, false, trial % 4 == 0, true);
+        let aa = scene.effects.antialias.as_ref().unwrap();
+        seen.insert(format!("{:?}", scene.rules.fill_rule));
+        seen.insert(aa.pattern.name().to_owned());
+        seen.insert(format!("N > 48: {}", aa.samples > 48));
         if trial % 5 == 0 {
             // Larger triangles, where whole pixels are skipped.
             scene.canvas = Canvas {
@@ -494,4 +499,45 @@ fn area_f32_refuses_values_and_respects_culling() {
     assert_eq!(total(&scene), 0.0);
     scene.rules.cull = Cull::CounterClockwise;
     assert!((total(&scene) - 8.0).abs() < 1e-5);
+}
+
+#[test]
+fn area_f32_is_exact_to_1e4_on_polygons_of_locally_constant_winding() {
+    let area = (production::methods()
+        .into_iter()
+        .find(|m| m.name == "area-f32")
+        .unwrap()
+        .make)();
+    // A frame with a hole, its contours both clockwise (even-odd) or
+    // opposite (nonzero), corners off the pixel grid; and a concave
+    // arrow. Wherever a pixel meets the outline the winding on either side
+    // is constant, so |Σ signed areas| is the exact area.
+    let outer = "[[0.75, 0.5], [8.25, 1.25], [7.5, 6.5], [1.25, 6]]";
+    let hole_cw = "[[3, 2.5], [5.5, 2.25], [5.25, 4.5], [2.75, 4]]";
+    let hole_ccw = "[[2.75, 4], [5.25, 4.5], [5.5, 2.25], [3, 2.5]]";
+    let arrow = "[[0.5, 0.5], [8.5, 3.5], [0.5, 6.5], [3.25, 3.5]]";
+    let cases = [
+        format!(r#"{{"contours": [{outer}, {hole_cw}], "fill": "even-odd"}}"#),
+        format!(r#"{{"contours": [{outer}, {hole_ccw}], "fill": "nonzero"}}"#),
+        format!(r#"{{"polygon": {arrow}, "fill": "nonzero"}}"#),
+        format!(r#"{{"polygon": {arrow}, "fill": "even-odd"}}"#),
+    ];
+    for polygon in cases {
+        let text = format!(
+            r#"{{"name": "p", "canvas": {{"width": 9, "height": 7}},
+                "effects": {{"antialias": {{"samples": 16}}}},
+                "primitives": [{polygon}]}}"#
+        );
+        let scene = rastercheck::parse_case(&text, "p.json", &Default::default()).unwrap();
+        let plan = Plan::for_scene(&scene);
+        let got = area.rasterize(&scene, &plan).unwrap().resolved.unwrap();
+        let want = reference::render(&scene, &plan).resolved.unwrap();
+        for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+            assert!(
+                (g - w).abs() <= 1e-4,
+                "{polygon}: pixel {i}: {g} against {w}"
+            );
+        }
+        assert!(want.iter().any(|&w| w > 0.0 && w < 1.0));
+    }
 }
