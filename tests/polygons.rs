@@ -17,10 +17,12 @@ use rastercheck::production::fixed::Format;
 use rastercheck::production::polygon::{self, scanline};
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
+use rastercheck::reference;
+use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::samples::SplitMix64;
 use rastercheck::scene::{
-    Antialias, Canvas, Cull, Effects, Expect, FillRule, Number, Pattern, Polygon, PolygonFill,
-    Primitive, Rules, Scene, Vertex,
+    Antialias, Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Pattern, Polygon,
+    PolygonFill, Primitive, Rules, Scene, Triangle, Vertex,
 };
 
 const SIZE: u32 = 24;
@@ -273,6 +275,15 @@ fn brute_force(scene: &Scene, plan: &Plan) -> Frame {
     frame
 }
 
+/// The reference's frame, checked against the brute force: two exact
+/// deciders that share no code must agree before either judges production.
+fn exact(scene: &Scene, plan: &Plan) -> Frame {
+    let frame = reference::render(scene, plan);
+    let wrong = differences(&brute_force(scene, plan), &frame);
+    assert_eq!(wrong, 0, "the reference and the brute force disagree");
+    frame
+}
+
 /// Samples whose count or owner differs.
 fn differences(expected: &Frame, actual: &Frame) -> usize {
     assert_eq!(expected.coverage.len(), actual.coverage.len());
@@ -287,23 +298,28 @@ fn assert_same(expected: &Frame, actual: &Frame, what: &str) {
     let wrong = differences(expected, actual);
     assert!(
         wrong == 0,
-        "{what}: {wrong} samples differ from the exact brute force"
+        "{what}: {wrong} samples differ from the reference"
     );
 }
 
-/// Production's polygon fill into a frame of the plan's samples, in a
-/// format fine enough for the sample positions.
-fn production(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+/// Production's polygon fill called directly into a frame of the plan's
+/// samples, in a format `extra_bits` finer than the samples need.
+fn draw_direct(scene: &Scene, plan: &Plan, extra_bits: u32) -> Result<Frame, RasterError> {
     let bits = scene.rules.subpixel_bits.unwrap_or(BITS);
     let frac_bits = plan
         .antialias
         .as_ref()
-        .map_or(bits + 1, |s| s.position_bits.max(bits + 1));
+        .map_or(bits + 1, |s| s.position_bits.max(bits + 1))
+        + extra_bits;
     let format = Format { frac_bits };
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     for (index, p) in scene.primitives.iter().enumerate() {
         if let Primitive::Polygon(p) = p {
-            polygon::draw::<i64>(scene, plan, format, index, p, &mut frame)?;
+            if format.fits_i64() {
+                polygon::draw::<i64>(scene, plan, format, index, p, &mut frame)?;
+            } else {
+                polygon::draw::<i128>(scene, plan, format, index, p, &mut frame)?;
+            }
         }
     }
     Ok(frame)
@@ -338,7 +354,7 @@ fn scanline_equals_the_exact_winding_number() {
     for case in 0..300 {
         let scene = random_scene(&mut rng, None);
         let plan = Plan::for_scene(&scene);
-        let expected = brute_force(&scene, &plan);
+        let expected = exact(&scene, &plan);
         let actual = Production.rasterize(&scene, &plan).unwrap();
         assert_same(&expected, &actual, &format!("case {case}"));
     }
@@ -357,7 +373,7 @@ fn every_shape_rule_and_fill_on_ties() {
                     let p = polygon_of(&shape(&mut rng, true), BITS, fill);
                     let scene = scene_of(vec![p], rule, None, Some(BITS));
                     let plan = Plan::for_scene(&scene);
-                    let expected = brute_force(&scene, &plan);
+                    let expected = exact(&scene, &plan);
                     covered += expected.covered_samples();
                     let actual = Production.rasterize(&scene, &plan).unwrap();
                     assert_same(&expected, &actual, &format!("{name}, {rule}, {fill:?}"));
@@ -386,14 +402,26 @@ fn antialiased_samples_equal_the_exact_winding_number() {
         antialias(16, Pattern::Standard, 0, 8),
         antialias(16, Pattern::Random, 5, 8),
         antialias(16, Pattern::Random, 9, 12),
+        Antialias {
+            adaptive: true,
+            ..antialias(16, Pattern::Standard, 0, 8)
+        },
     ];
     for case in 0..60 {
         let aa = patterns[case % patterns.len()].clone();
         let scene = random_scene(&mut rng, Some(aa));
         let plan = Plan::for_scene(&scene);
-        let expected = brute_force(&scene, &plan);
-        let actual = production(&scene, &plan).unwrap();
+        let expected = exact(&scene, &plan);
+        let actual = Production.rasterize(&scene, &plan).unwrap();
         assert_same(&expected, &actual, &format!("antialiased case {case}"));
+        assert_eq!(actual.resolved, Some(actual.box_resolve()));
+        // Called directly in a format finer than the samples need.
+        let direct = draw_direct(&scene, &plan, 3).unwrap();
+        assert_same(
+            &expected,
+            &direct,
+            &format!("antialiased case {case}, finer"),
+        );
     }
 }
 
@@ -421,12 +449,12 @@ fn sixteen_samples_on_the_border_are_ties() {
                 Some(BITS),
             );
             let plan = Plan::for_scene(&scene);
-            let expected = brute_force(&scene, &plan);
+            let expected = exact(&scene, &plan);
             // 7 × 7 pixels of 16 samples: the border samples go to one side.
             assert_eq!(expected.covered_samples(), 49 * 16, "{rule}");
             assert_same(
                 &expected,
-                &production(&scene, &plan).unwrap(),
+                &Production.rasterize(&scene, &plan).unwrap(),
                 &format!("{rule}"),
             );
         }
@@ -447,7 +475,7 @@ fn unsnapped_and_finely_snapped_coordinates() {
         let rule = FillRule::CONSISTENT[case % 4];
         let scene = scene_of(vec![p], rule, None, bits);
         let plan = Plan::for_scene(&scene);
-        let expected = brute_force(&scene, &plan);
+        let expected = exact(&scene, &plan);
         let actual = Production.rasterize(&scene, &plan).unwrap();
         assert_same(&expected, &actual, &format!("case {case}"));
     }
@@ -523,7 +551,7 @@ fn convex_fill_agrees_where_it_applies() {
             Some(BITS),
         );
         let plan = Plan::for_scene(&scene);
-        let expected = brute_force(&scene, &plan);
+        let expected = exact(&scene, &plan);
         let actual = convex.rasterize(&scene, &plan).unwrap();
         assert_same(&expected, &actual, &format!("convex case {case}"));
         drawn += 1;
@@ -634,7 +662,7 @@ fn tessellation_agrees_where_it_applies() {
         match tessellate.rasterize(&scene, &plan) {
             Ok(actual) => {
                 assert!(simple(&contours[0]), "case {case} is drawn, yet not simple");
-                let expected = brute_force(&scene, &plan);
+                let expected = exact(&scene, &plan);
                 assert_same(&expected, &actual, &format!("tessellated case {case}"));
                 drawn += 1;
             }
@@ -717,7 +745,7 @@ fn flood_fill_departs_on_a_sliver() {
         Some(BITS),
     );
     let plan = Plan::for_scene(&scene);
-    let expected = brute_force(&scene, &plan);
+    let expected = exact(&scene, &plan);
     let actual = flood.rasterize(&scene, &plan).unwrap();
     assert_eq!(expected.covered_samples(), 0);
     assert!(
@@ -739,7 +767,7 @@ fn flood_fill_departs_on_a_sliver() {
         None,
         Some(BITS),
     );
-    let expected = brute_force(&scene, &plan);
+    let expected = exact(&scene, &plan);
     let actual = flood.rasterize(&scene, &plan).unwrap();
     assert_eq!(expected.covered_samples(), 18 * 18);
     let wrong = differences(&expected, &actual);
@@ -758,7 +786,7 @@ fn flood_fill_departs_on_a_sliver() {
             None,
             Some(BITS),
         );
-        let expected = brute_force(&scene, &plan);
+        let expected = exact(&scene, &plan);
         let actual = flood.rasterize(&scene, &plan).unwrap();
         let wrong = differences(&expected, &actual);
         assert!(
@@ -781,7 +809,7 @@ fn a_wrong_tie_is_caught() {
         Some(BITS),
     );
     let plan = Plan::for_scene(&scene);
-    let expected = brute_force(&scene, &plan);
+    let expected = exact(&scene, &plan);
     assert_same(
         &expected,
         &Production.rasterize(&scene, &plan).unwrap(),
@@ -814,6 +842,80 @@ fn a_wrong_tie_is_caught() {
             differences(&expected, &frame),
             20,
             "right {right}, down {down}"
+        );
+    }
+}
+
+/// A free coordinate: any rational (snapping decides), on the 1/4096 grid,
+/// or far out in the coordinate range.
+fn free(rng: &mut Rng) -> Number {
+    let span = i64::from(SIZE) + 8;
+    match rng.range(0, 8) {
+        0..=3 => Number::ratio(rng.range(-8 << 20, span << 20), rng.range(1, 1 << 20)),
+        4..=6 => Number::ratio(rng.range(-8 * 4096, span * 4096), 4096),
+        _ => Number::from_int(rng.range(-COORD_LIMIT, COORD_LIMIT + 1)),
+    }
+}
+
+#[test]
+fn free_coordinates_snap_like_the_reference() {
+    // Any rational, snapped at 0 to 16 bits, or kept exact when dyadic; and
+    // polygons drawn between triangles, so owners are checked across kinds.
+    let mut rng = Rng::new(9);
+    for case in 0..200 {
+        let subpixel_bits =
+            rng.pick(&[Some(0), Some(1), Some(4), Some(8), Some(14), Some(16), None]);
+        let mut primitives = Vec::new();
+        for _ in 0..rng.range(1, 4) {
+            let n = rng.range(3, 10);
+            let contours = rng.range(1, 3);
+            let mut vertices = Vec::new();
+            let mut contour_ends = Vec::new();
+            for _ in 0..contours {
+                for _ in 0..n {
+                    let (x, y) = if subpixel_bits.is_none() {
+                        let mut dyadic = || Number::ratio(rng.range(-8 * 64, 40 * 64), 64);
+                        (dyadic(), dyadic())
+                    } else {
+                        (free(&mut rng), free(&mut rng))
+                    };
+                    vertices.push(Vertex::at(x, y));
+                }
+                contour_ends.push(vertices.len());
+            }
+            let fill = rng.pick(&[PolygonFill::EvenOdd, PolygonFill::NonZero]);
+            primitives.push(Primitive::Polygon(Polygon {
+                vertices,
+                contour_ends,
+                fill,
+            }));
+            if rng.range(0, 2) == 0 {
+                let mut corner = || {
+                    Vertex::at(
+                        Number::ratio(rng.range(-64, 28 * 64), 64),
+                        Number::ratio(rng.range(-64, 28 * 64), 64),
+                    )
+                };
+                primitives.push(Primitive::Triangle(Triangle {
+                    vertices: [corner(), corner(), corner()],
+                    interpolation: Interpolation::Linear,
+                }));
+            }
+        }
+        let mut scene = scene_of(
+            Vec::new(),
+            rng.pick(&FillRule::CONSISTENT),
+            None,
+            subpixel_bits,
+        );
+        scene.primitives = primitives;
+        let plan = Plan::for_scene(&scene);
+        let expected = reference::render(&scene, &plan);
+        let actual = Production.rasterize(&scene, &plan).unwrap();
+        assert_same(
+            &expected,
+            &actual,
+            &format!("case {case}, bits {subpixel_bits:?}"),
         );
     }
 }

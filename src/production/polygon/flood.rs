@@ -46,21 +46,37 @@ fn midpoint_line(a: [i64; 2], b: [i64; 2], mut plot: impl FnMut(i64, i64)) {
     }
 }
 
-/// The f64 winding number of point (px, py) (crossings of the ray to +x).
-fn winding(contours: &[Vec<[f64; 2]>], px: f64, py: f64) -> i32 {
-    let mut w = 0;
+/// Which of the centres (x + ½, py), x in x0..x0 + count, are inside by
+/// an f64 winding number: the crossings of the row, sorted, counted from
+/// the left.
+fn row_inside(
+    contours: &[Vec<[f64; 2]>],
+    py: f64,
+    x0: i64,
+    count: i64,
+    inside: impl Fn(i32) -> bool,
+    out: &mut Vec<bool>,
+) {
+    let mut crossings: Vec<(f64, i32)> = Vec::new();
     for contour in contours {
         for (i, a) in contour.iter().enumerate() {
             let b = contour[(i + 1) % contour.len()];
             if (a[1] <= py) != (b[1] <= py) {
                 let x = a[0] + (py - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
-                if x > px {
-                    w += if b[1] > a[1] { 1 } else { -1 };
-                }
+                crossings.push((x, if b[1] > a[1] { 1 } else { -1 }));
             }
         }
     }
-    w
+    crossings.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let (mut next, mut winding) = (0, 0);
+    for x in x0..x0 + count {
+        let px = x as f64 + 0.5;
+        while next < crossings.len() && crossings[next].0 < px {
+            winding += crossings[next].1;
+            next += 1;
+        }
+        out.push(inside(winding));
+    }
 }
 
 /// Draws a polygon by outline and flood fill.
@@ -113,10 +129,17 @@ pub fn draw(
     let (bx, by) = (x0 - 1, y0 - 1);
     let box_width = (x1 - x0 + 2).max(0);
     let box_height = (y1 - y0 + 2).max(0);
-    let centre_inside: Vec<bool> = (0..box_height)
-        .flat_map(|j| (0..box_width).map(move |i| (bx + i, by + j)))
-        .map(|(x, y)| inside(winding(&pixels, x as f64 + 0.5, y as f64 + 0.5)))
-        .collect();
+    let mut centre_inside = Vec::with_capacity((box_width * box_height) as usize);
+    for y in by..by + box_height {
+        row_inside(
+            &pixels,
+            y as f64 + 0.5,
+            bx,
+            box_width,
+            inside,
+            &mut centre_inside,
+        );
+    }
     // A seed is deep inside: its centre and its eight neighbours' are
     // inside. A pixel whose centre is barely inside may lie outside the
     // outline's loop, and a fill from it would flood the canvas.
