@@ -1,14 +1,13 @@
 //! Polygons (SPEC.md §14.1 and §14.2): production's scanline fill against
-//! an exact brute-force winding number, sample for sample (counts and
-//! owners), on random stars, concave, self-intersecting and multi-contour
+//! the reference, sample for sample (counts and owners), on random stars, concave, self-intersecting and multi-contour
 //! polygons with vertices on pixel centres and half-integers, under all four
 //! tie rules and both fills, with and without antialiasing; the convex and
 //! tessellating methods where they apply; the flood-fill foil departing on a
 //! sliver; and a wrong tie caught.
 //!
-//! The brute force here decides each sample from scratch, as SPEC.md words
-//! it (the nudged ray to +x, one exact i128 sign per edge), sharing no code
-//! with production.
+//! The reference is itself checked against a brute force written here,
+//! which decides each sample from scratch as SPEC.md words it (the nudged
+//! ray to +x, one exact i128 sign per edge), sharing no code with either.
 
 use dashu_int::ops::BitTest;
 use rastercheck::frame::Frame;
@@ -917,5 +916,61 @@ fn free_coordinates_snap_like_the_reference() {
             &actual,
             &format!("case {case}, bits {subpixel_bits:?}"),
         );
+    }
+}
+
+#[test]
+fn extreme_polygons_never_panic() {
+    // Vertices at the ends of the coordinate range, at 16 subpixel bits (the
+    // i128 formats), 4096 of them in one polygon, crossing the canvas.
+    let mut rng = Rng::new(10);
+    let far = |rng: &mut Rng| {
+        let v = rng.pick(&[-COORD_LIMIT, COORD_LIMIT, 0, 12, i64::from(SIZE)]);
+        Number::ratio(v * 65536 + rng.range(-3, 4), 65536)
+    };
+    let mut cases: Vec<Vec<Vertex>> = (0..20)
+        .map(|_| {
+            (0..rng.range(3, 9))
+                .map(|_| Vertex::at(far(&mut rng), far(&mut rng)))
+                .collect()
+        })
+        .collect();
+    cases.push(
+        (0..4096)
+            .map(|i| {
+                let a = f64::from(i) / 4096.0 * std::f64::consts::TAU;
+                let r = if i % 2 == 0 { 30000.0 } else { 5.0 };
+                let at = |v: f64| Number::ratio((v * 256.0) as i64, 256);
+                Vertex::at(at(12.0 + r * a.cos()), at(12.0 + r * a.sin()))
+            })
+            .collect(),
+    );
+    let methods: Vec<Box<dyn Rasterizer>> =
+        polygon::methods().into_iter().map(|m| (m.make)()).collect();
+    for (case, vertices) in cases.into_iter().enumerate() {
+        let n = vertices.len();
+        let p = Polygon {
+            vertices,
+            contour_ends: vec![n],
+            fill: PolygonFill::NonZero,
+        };
+        for bits in [Some(16), Some(8)] {
+            let scene = scene_of(vec![p.clone()], FillRule::TopLeft, None, bits);
+            let plan = Plan::for_scene(&scene);
+            let expected = reference::render(&scene, &plan);
+            let actual = Production.rasterize(&scene, &plan).unwrap();
+            assert_same(&expected, &actual, &format!("extreme case {case}"));
+            for m in &methods {
+                match m.rasterize(&scene, &plan) {
+                    Ok(frame) if !m.is_foil() => assert_same(
+                        &expected,
+                        &frame,
+                        &format!("{} on extreme case {case}", m.name()),
+                    ),
+                    Ok(_) | Err(RasterError::Unsupported(_)) => {}
+                    Err(e) => panic!("{} on extreme case {case}: {e}", m.name()),
+                }
+            }
+        }
     }
 }
