@@ -15,7 +15,12 @@
 //! sample is strictly inside that edge, whatever the tie rule; strictly
 //! negative at all four means every sample is strictly outside. Only the
 //! remaining pixels, which an edge touches, are tested sample by sample,
-//! and the mask is the same as full supersampling's. A non-strict
+//! and the mask is the same as full supersampling's. The same test on an
+//! 8 × 8 block's square first ([`super::traverse::BLOCK`], as traversal
+//! does) settles whole blocks without looking at their pixels. Covered
+//! pixels still have every sample written (depth and attributes are per
+//! sample), so the cost of the tests grows with the edge pixels, that of
+//! the writes with the area. A non-strict
 //! classification would not be: a sample on an edge through a corner is
 //! decided by the tie rule, not by the corners (the test
 //! `non_strict_corners_are_caught` shows it).
@@ -28,6 +33,7 @@ pub mod area;
 
 use super::fixed::{EdgeInt, Format};
 use super::setup::{Shading, TriangleSetup};
+use super::traverse::BLOCK;
 use super::Method;
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
@@ -159,12 +165,12 @@ pub trait SampleSink<E: EdgeInt> {
 /// Hands `sink` every sample `s` of pixel (x, y) that the triangle covers,
 /// over its footprint, row by row. `offsets` are the samples' offsets from
 /// the pixel's top-left corner in the setup's format, `format`.
-pub fn cover<E: EdgeInt>(
+pub fn cover<E: EdgeInt, S: SampleSink<E>>(
     setup: &TriangleSetup<E>,
     format: Format,
     offsets: &[[i64; 2]],
     sampling: Sampling,
-    sink: &mut impl SampleSink<E>,
+    sink: &mut S,
 ) {
     let zero = E::default();
     let half = format.one() / 2;
@@ -194,74 +200,112 @@ pub fn cover<E: EdgeInt>(
         ((centre[0] + d[0]) | (centre[1] + d[1]) | (centre[2] + d[2])) >= zero
     };
 
+    // Adaptive sampling classifies, strictly (or, to be caught, not).
+    let classifying = match sampling {
+        Sampling::Full | Sampling::Refine => None,
+        Sampling::Adaptive => Some(true),
+        #[cfg(test)]
+        Sampling::NonStrictCorners => Some(false),
+    };
+    let at = |centre: [E; 3], s: usize| At {
+        centre,
+        delta: deltas[s],
+        bias,
+    };
+    // One pixel, its centre's biased edge values given.
+    let pixel = |sink: &mut S, x: i64, y: i64, centre: [E; 3]| {
+        let class = match classifying {
+            Some(strict) => classify(&centre, &bias, spread.map(|v| zero - v), spread, strict),
+            None => Class::Edge,
+        };
+        let agreed = match (class, sampling) {
+            (Class::Outside, _) => Some(false),
+            (Class::Inside, _) => Some(true),
+            (Class::Edge, Sampling::Refine) => {
+                let answer = covered(&centre, first[0]);
+                first
+                    .iter()
+                    .all(|&s| covered(&centre, s) == answer)
+                    .then_some(answer)
+            }
+            (Class::Edge, _) => None,
+        };
+        match agreed {
+            Some(false) => {}
+            Some(true) => sink.whole(x, y, n, |s| at(centre, s)),
+            None => {
+                for s in 0..n {
+                    if covered(&centre, s) {
+                        sink.sample(x, y, s, at(centre, s));
+                    }
+                }
+            }
+        }
+    };
+
+    // Blocks of pixels, classified first from their own closed squares
+    // when sampling is adaptive: over a block of w × h pixels the edge
+    // values lie within its first centre's, plus the steps to its far
+    // pixels, plus one pixel's spread.
     let b = setup.bounds;
-    for y in b.y0..b.y1 {
-        let mut centre = edges.map(|e| e.at(b.x0, y));
-        for x in b.x0..b.x1 {
-            let class = match sampling {
-                Sampling::Full | Sampling::Refine => Class::Edge,
-                Sampling::Adaptive => classify(&centre, &bias, &spread, true),
-                #[cfg(test)]
-                Sampling::NonStrictCorners => classify(&centre, &bias, &spread, false),
-            };
-            match class {
-                Class::Outside => {}
-                Class::Inside => sink.whole(x, y, n, |s| At {
-                    centre,
-                    delta: deltas[s],
-                    bias,
-                }),
-                Class::Edge => {
-                    let agreed = match sampling {
-                        Sampling::Refine => {
-                            let answer = covered(&centre, first[0]);
-                            first
-                                .iter()
-                                .all(|&s| covered(&centre, s) == answer)
-                                .then_some(answer)
-                        }
-                        _ => None,
+    let mut by = b.y0;
+    while by < b.y1 {
+        let bh = BLOCK.min(b.y1 - by);
+        let mut bx = b.x0;
+        while bx < b.x1 {
+            let bw = BLOCK.min(b.x1 - bx);
+            let class = match classifying {
+                Some(strict) => {
+                    let first_centre = edges.map(|e| e.at(bx, by));
+                    let reach = |k: usize, pick: fn(E, E) -> E| {
+                        let e = &edges[k];
+                        pick(zero, e.step_x * E::from(bw - 1))
+                            + pick(zero, e.step_y * E::from(bh - 1))
                     };
-                    match agreed {
-                        Some(false) => {}
-                        Some(true) => sink.whole(x, y, n, |s| At {
-                            centre,
-                            delta: deltas[s],
-                            bias,
-                        }),
-                        None => {
-                            for (s, delta) in deltas.iter().enumerate() {
-                                if covered(&centre, s) {
-                                    let at = At {
-                                        centre,
-                                        delta: *delta,
-                                        bias,
-                                    };
-                                    sink.sample(x, y, s, at);
-                                }
-                            }
+                    let low = [0, 1, 2].map(|k| reach(k, E::min) - spread[k]);
+                    let high = [0, 1, 2].map(|k| reach(k, E::max) + spread[k]);
+                    classify(&first_centre, &bias, low, high, strict)
+                }
+                None => Class::Edge,
+            };
+            if class != Class::Outside {
+                for y in by..by + bh {
+                    let mut centre = edges.map(|e| e.at(bx, y));
+                    for x in bx..bx + bw {
+                        if class == Class::Inside {
+                            sink.whole(x, y, n, |s| at(centre, s));
+                        } else {
+                            pixel(sink, x, y, centre);
+                        }
+                        for (value, e) in centre.iter_mut().zip(edges) {
+                            *value = *value + e.step_x;
                         }
                     }
                 }
             }
-            for (value, e) in centre.iter_mut().zip(edges) {
-                *value = *value + e.step_x;
-            }
+            bx += BLOCK;
         }
+        by += BLOCK;
     }
 }
 
-/// Classifies a pixel from its centre's biased edge values: the raw value
-/// (bias removed) at the square's corners lies within ± spread of the
-/// centre's. `strict` is the correct test; the non-strict one exists to be
-/// caught by the tests.
+/// Classifies a closed square from the biased edge values at a pixel
+/// centre: the raw value (bias removed) over the square lies within
+/// [raw + low, raw + high]. `strict` is the correct test; the non-strict
+/// one exists to be caught by the tests.
 #[inline]
-fn classify<E: EdgeInt>(centre: &[E; 3], bias: &[E; 3], spread: &[E; 3], strict: bool) -> Class {
+fn classify<E: EdgeInt>(
+    centre: &[E; 3],
+    bias: &[E; 3],
+    low: [E; 3],
+    high: [E; 3],
+    strict: bool,
+) -> Class {
     let zero = E::default();
     let mut inside = true;
     for k in 0..3 {
         let raw = centre[k] - bias[k];
-        let (low, high) = (raw - spread[k], raw + spread[k]);
+        let (low, high) = (raw + low[k], raw + high[k]);
         if high < zero || (!strict && high == zero) {
             return Class::Outside;
         }
