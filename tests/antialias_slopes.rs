@@ -27,8 +27,10 @@
 
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::reference;
 use rastercheck::scene::{parse_case, Antialias, Limits, Pattern, Scene};
+use rastercheck::suite::{self, Verdict};
 
 /// Pixels per side: 256 edges per scene.
 const SIDE: u32 = 16;
@@ -342,4 +344,126 @@ fn seeded_offsets_match_the_python_port() {
         offsets(Pattern::NRooks),
         [[28, 156], [112, 56], [161, 210], [242, 89]]
     );
+}
+
+/// An area method (resolved coverage, no samples) that answers with the
+/// box resolve of the standard 4× pattern whatever the case asks for: a
+/// method of 4-sample quality.
+struct FourSampleQuality;
+
+impl Rasterizer for FourSampleQuality {
+    fn name(&self) -> &str {
+        "four-sample-quality"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities::everything()
+    }
+
+    fn rasterize(&self, scene: &Scene, _plan: &Plan) -> Result<Frame, RasterError> {
+        let mut four = scene.clone();
+        four.effects.antialias = Some(Antialias {
+            samples: 4,
+            pattern: Pattern::Standard,
+            seed: 0,
+            adaptive: false,
+            position_bits: 8,
+        });
+        let frame = reference::render(&four, &Plan::for_scene(&four));
+        let (w, h) = (scene.canvas.width, scene.canvas.height);
+        Ok(Frame::resolved_only(w, h, frame.box_resolve()))
+    }
+}
+
+/// An area method that answers the exact areas (rounded once to f64).
+struct ExactArea;
+
+impl Rasterizer for ExactArea {
+    fn name(&self) -> &str {
+        "exact-area"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities::everything()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let frame = reference::render(scene, plan);
+        let (w, h) = (scene.canvas.width, scene.canvas.height);
+        Ok(Frame::resolved_only(
+            w,
+            h,
+            frame.resolved.expect("antialiased"),
+        ))
+    }
+}
+
+fn bundled(folder: &str) -> Vec<(String, Scene)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("cases")
+        .join(folder);
+    let found = suite::discover(&[dir]);
+    assert!(found.errors.is_empty(), "{:?}", found.errors);
+    found
+        .cases
+        .iter()
+        .map(|file| {
+            let scene = suite::load(file, &Limits::default()).expect("bundled cases are valid");
+            (file.id.clone(), scene)
+        })
+        .collect()
+}
+
+/// Sweep cases whose RMS bound a 4-sample answer must break: piglit's
+/// bound for N ≥ 16, and the Monte Carlo bound 1/√N of random and n-rooks
+/// at N = 256 (at N = 64 it is 0.125, looser than 4 good samples).
+const BEYOND_FOUR_SAMPLES: [&str; 9] = [
+    "antialias/count_grid_16",
+    "antialias/count_grid_64",
+    "antialias/count_grid_256",
+    "antialias/count_stratified_16",
+    "antialias/count_stratified_64",
+    "antialias/count_stratified_256",
+    "antialias/count_random_256",
+    "antialias/count_n-rooks_256",
+    "antialias/count_standard_16",
+];
+
+/// The coverage bounds of the bundled antialiased cases
+/// (tools/gen_aa_cases.py) are neither too tight nor vacuous: an exact area
+/// method passes every one, and a method of 4-sample quality fails the RMS
+/// bound of the sweep cases written for many more samples.
+#[test]
+fn case_bounds_pass_exact_areas_and_catch_four_sample_quality() {
+    let mut caught = 0;
+    for folder in ["antialias", "polygons"] {
+        for (id, scene) in bundled(folder) {
+            if scene.effects.antialias.is_none() {
+                continue;
+            }
+            let reference = suite::run_reference(&scene);
+            let exact = suite::run_candidate(&scene, &reference, &ExactArea);
+            assert!(
+                matches!(exact.verdict, Verdict::Pass),
+                "{id}: exact areas fail: {}",
+                suite::describe(&exact)
+            );
+            let n = scene.effects.antialias.as_ref().map_or(1, |aa| aa.samples);
+            if BEYOND_FOUR_SAMPLES.contains(&id.as_str()) {
+                let coarse = suite::run_candidate(&scene, &reference, &FourSampleQuality);
+                match &coarse.verdict {
+                    Verdict::Fail(reasons) => assert!(
+                        reasons.iter().any(|r| r.contains("coverage RMS")),
+                        "{id}: {reasons:?}"
+                    ),
+                    _ => panic!(
+                        "{id}: a 4-sample answer passes a {n}-sample case: {}",
+                        suite::describe(&coarse)
+                    ),
+                }
+                caught += 1;
+            }
+        }
+    }
+    assert_eq!(caught, BEYOND_FOUR_SAMPLES.len());
 }
