@@ -14,8 +14,8 @@ use crate::fuzz::Rng;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{
-    Canvas, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter, LineRule,
-    Number, Primitive, Rules, Scene, Triangle, Vertex,
+    Antialias, Canvas, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter,
+    LineRule, Number, Pattern, Primitive, Rules, Scene, Triangle, Vertex,
 };
 
 /// The seed of every workload: the same scenes on every run.
@@ -42,6 +42,9 @@ struct Sizes {
     lines_compared: usize,
     /// Lines on which production is checked against the reference.
     lines_verified: usize,
+    /// Antialiasing: (leg, triangles), and the sample counts swept.
+    antialias: (u32, usize),
+    antialias_samples: &'static [u32],
     repetitions: usize,
 }
 
@@ -57,6 +60,8 @@ impl Sizes {
                 lines: 500,
                 lines_compared: 100,
                 lines_verified: 20,
+                antialias: (50, 40),
+                antialias_samples: &[4, 16, 64],
                 repetitions: 5,
             }
         } else {
@@ -69,6 +74,8 @@ impl Sizes {
                 lines: 10_000,
                 lines_compared: 1_000,
                 lines_verified: 100,
+                antialias: (50, 400),
+                antialias_samples: &[1, 4, 16, 64, 256],
                 repetitions: 5,
             }
         }
@@ -87,13 +94,20 @@ pub struct Measured {
     /// Mismatched samples (triangles) or lines whose pixel set differs
     /// (lines), and out of how many.
     pub errors: Option<(u64, u64)>,
+    /// Antialiasing: (RMS over edge pixels, largest) of resolved coverage
+    /// minus exact area.
+    pub coverage_error: Option<(f64, f64)>,
     pub exact: bool,
     pub note: String,
 }
 
 impl Measured {
-    /// The error as a fraction, for the chart.
+    /// The error as a fraction, for the chart: wrong samples over covered
+    /// ones, or the RMS coverage error of an antialiasing method.
     pub fn error_fraction(&self) -> Option<f64> {
+        if let Some((rms, _)) = self.coverage_error {
+            return Some(rms);
+        }
         self.errors
             .map(|(e, of)| if of == 0 { 0.0 } else { e as f64 / of as f64 })
     }
@@ -104,6 +118,8 @@ impl Measured {
 pub struct Workload {
     pub name: String,
     pub short: String,
+    /// The method the "×" column compares every other one with.
+    pub baseline: String,
     pub items: usize,
     /// Nominal pixels per item (the triangle's area, the line's length).
     pub pixels_per_item: f64,
@@ -406,6 +422,7 @@ fn measure_triangles(
                 per_item: Some(median(times) / count as u32),
                 timed_items: count,
                 errors: Some((mismatched(&exact, &frame), covered)),
+                coverage_error: None,
                 exact: is_exact(name),
                 note: String::new(),
             },
@@ -414,6 +431,7 @@ fn measure_triangles(
                 per_item: None,
                 timed_items: 0,
                 errors: None,
+                coverage_error: None,
                 exact: is_exact(name),
                 note: why,
             },
@@ -424,6 +442,7 @@ fn measure_triangles(
         per_item: Some(median(reference_times) / reference_count as u32),
         timed_items: reference_count,
         errors: Some((0, covered)),
+        coverage_error: None,
         exact: true,
         note: if reference_count < count {
             format!("timed on the first {reference_count} of the {count} triangles")
@@ -444,6 +463,7 @@ fn measure_triangles(
             sizes.canvas
         ),
         short: format!("L={leg}"),
+        baseline: "production".to_owned(),
         items: count,
         pixels_per_item: f64::from(leg * leg) / 2.0,
         error_unit: "samples".to_owned(),
@@ -525,6 +545,7 @@ fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
             } else {
                 (differ[k], compared as u64)
             }),
+            coverage_error: None,
             exact: k == 0,
             note: if k == 0 {
                 "error against the reference".to_owned()
@@ -539,9 +560,175 @@ fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
             sizes.line_lengths.0, sizes.line_lengths.1, sizes.line_canvas
         ),
         short: "lines".to_owned(),
+        baseline: "production".to_owned(),
         items: sizes.lines,
         pixels_per_item: (sizes.line_lengths.0 + sizes.line_lengths.1) / 2.0,
         error_unit: "lines".to_owned(),
+        methods: measured,
+    }
+}
+
+/// One antialiasing method of the bench: a production pattern, or a
+/// measured method of its own.
+struct AaMethod {
+    name: String,
+    antialias: Option<Antialias>,
+    rasterizer: Box<dyn Rasterizer>,
+}
+
+fn aa_methods(counts: &[u32]) -> Vec<AaMethod> {
+    let production = || -> Box<dyn Rasterizer> { Box::new(crate::production::Production) };
+    let with = |samples: u32, pattern: Pattern, adaptive: bool| Antialias {
+        samples,
+        pattern,
+        seed: SEED,
+        adaptive,
+        position_bits: 8,
+    };
+    let mut out = vec![AaMethod {
+        name: "production 1× (aliased)".to_owned(),
+        antialias: None,
+        rasterizer: production(),
+    }];
+    for pattern in [
+        Pattern::Standard,
+        Pattern::Grid,
+        Pattern::Stratified,
+        Pattern::Random,
+        Pattern::NRooks,
+    ] {
+        for &n in counts {
+            if pattern.check_count(n).is_err() || (pattern == Pattern::Standard && n > 16) {
+                continue;
+            }
+            out.push(AaMethod {
+                name: format!("production {n}× {}", pattern.name()),
+                antialias: Some(with(n, pattern, false)),
+                rasterizer: production(),
+            });
+        }
+    }
+    out.push(AaMethod {
+        name: "production 16× standard, adaptive".to_owned(),
+        antialias: Some(with(16, Pattern::Standard, true)),
+        rasterizer: production(),
+    });
+    for name in ["adaptive-refine", "area-f32", "tiny-skia", "vello-cpu"] {
+        if let Some(r) = crate::suite::rasterizer(name) {
+            out.push(AaMethod {
+                name: format!("{name} (16× standard case)"),
+                antialias: Some(with(16, Pattern::Standard, false)),
+                rasterizer: r,
+            });
+        }
+    }
+    out
+}
+
+/// (RMS over edge pixels, largest |error|) of resolved coverage against
+/// exact areas; an aliased frame's coverage counts stand for its resolve.
+fn coverage_error(exact: &[f64], frame: &Frame) -> (f64, f64) {
+    let resolved = frame
+        .resolved
+        .clone()
+        .unwrap_or_else(|| frame.box_resolve());
+    let (mut sum, mut n, mut max) = (0.0, 0usize, 0.0f64);
+    for (&e, &r) in exact.iter().zip(&resolved) {
+        let edge = (e > 0.0 && e < 1.0) || (r > 0.0 && r < 1.0) || r != e;
+        if edge {
+            sum += (r - e) * (r - e);
+            n += 1;
+            max = max.max((r - e).abs());
+        }
+    }
+    ((sum / n.max(1) as f64).sqrt(), max)
+}
+
+fn measure_antialias(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
+    let (leg, count) = sizes.antialias;
+    let base = triangle_scene(sizes.canvas, leg, count, SEED ^ 0x4141);
+    let mut aa_scene = base.clone();
+    aa_scene.effects.antialias = Some(Antialias {
+        samples: 1,
+        pattern: Pattern::Standard,
+        seed: 0,
+        adaptive: false,
+        position_bits: 8,
+    });
+    let exact: Vec<f64> = crate::reference::exact_areas(&aa_scene)
+        .iter()
+        .map(|a| a.to_f64().value())
+        .collect();
+    let methods = aa_methods(sizes.antialias_samples);
+    let scenes: Vec<(Scene, Plan)> = methods
+        .iter()
+        .map(|m| {
+            let mut s = base.clone();
+            s.effects.antialias = m.antialias.clone();
+            let plan = Plan::for_scene(&s);
+            (s, plan)
+        })
+        .collect();
+    let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
+    let mut results: Vec<Result<(f64, f64), String>> = vec![Err(String::new()); methods.len()];
+    for rep in 0..sizes.repetitions {
+        for (k, m) in methods.iter().enumerate() {
+            if rep > 0 && results[k].is_err() {
+                continue;
+            }
+            let (s, plan) = &scenes[k];
+            let started = Instant::now();
+            let result = m.rasterizer.rasterize(s, plan);
+            times[k].push(started.elapsed());
+            if rep == 0 {
+                results[k] = result
+                    .map(|frame| coverage_error(&exact, &frame))
+                    .map_err(|e| e.to_string());
+            }
+        }
+    }
+    let measured = methods
+        .iter()
+        .zip(times)
+        .zip(results)
+        .map(|((m, times), result)| match result {
+            Ok(error) => Measured {
+                method: m.name.clone(),
+                per_item: Some(median(times) / count as u32),
+                timed_items: count,
+                errors: None,
+                coverage_error: Some(error),
+                exact: false,
+                note: String::new(),
+            },
+            Err(why) => Measured {
+                method: m.name.clone(),
+                per_item: None,
+                timed_items: 0,
+                errors: None,
+                coverage_error: None,
+                exact: false,
+                note: why,
+            },
+        })
+        .collect();
+    notes.push(format!(
+        "Antialiasing: errors are resolved coverage minus the exact area of each pixel \
+         (the reference's rational areas, summed over overlapping triangles), RMS over edge \
+         pixels and largest; the aliased 1× row resolves each pixel to its centre's coverage. \
+         Seeded patterns use seed {SEED:#x}, the same offsets in every pixel."
+    ));
+    Workload {
+        name: format!(
+            "antialiasing, L={leg} ({} px each), {}² canvas",
+            leg * leg / 2,
+            sizes.canvas
+        ),
+        short: "AA".to_owned(),
+        baseline: "production 1× (aliased)".to_owned(),
+        items: count,
+        pixels_per_item: f64::from(leg * leg) / 2.0,
+        error_unit: "coverage, RMS over edge pixels / max".to_owned(),
         methods: measured,
     }
 }
@@ -583,6 +770,18 @@ fn targets(workloads: &[Workload], quick: bool) -> Vec<Target> {
             note: format!(
                 "euc is timed through its adapter (scene conversion and read-back included){scale}"
             ),
+        });
+    }
+    if let Some(w) = find("AA") {
+        let r = w.ratio(
+            "production 1× (aliased)",
+            "production 16× standard, adaptive",
+        );
+        out.push(Target {
+            target: "adaptive 16× AA ≤ 3× the cost of 1× (1250-px triangles)".to_owned(),
+            measured: r.map_or("not measured".to_owned(), |r| format!("{r:.2}× the cost")),
+            met: r.map(|r| r <= 3.0),
+            note: format!("interior pixels are filled without sampling; only edge pixels test all 16 samples{scale}"),
         });
     }
     if let Some(w) = find("lines") {
@@ -649,6 +848,11 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
     }
     progress(&format!("lines: {} lines", sizes.lines));
     workloads.push(measure_lines(&sizes, &mut notes));
+    progress(&format!(
+        "antialiasing: {} triangles, L={}",
+        sizes.antialias.1, sizes.antialias.0
+    ));
+    workloads.push(measure_antialias(&sizes, &mut notes));
     let (machine, cores) = machine();
     let targets = targets(&workloads, options.quick);
     Report {
@@ -724,8 +928,8 @@ impl Report {
             };
             let _ = writeln!(
                 md,
-                "| method | time per item | {per_second} | Mpix/s | × production | error ({}) | note |",
-                w.error_unit
+                "| method | time per item | {per_second} | Mpix/s | × `{}` | error ({}) | note |",
+                w.baseline, w.error_unit
             );
             let _ = writeln!(md, "|---|---|---|---|---|---|---|");
             for m in &w.methods {
@@ -741,14 +945,17 @@ impl Report {
                     _ => ("—".to_owned(), "—".to_owned(), "—".to_owned()),
                 };
                 let ratio = w
-                    .ratio(&m.method, "production")
+                    .ratio(&m.method, &w.baseline)
                     .map_or("—".to_owned(), |r| format!("{r:.2}"));
-                let error = match m.errors {
-                    Some((0, of)) => format!("0 of {of} (exact)"),
-                    Some((e, of)) => {
+                let error = match (m.errors, m.coverage_error) {
+                    (_, Some((rms, max))) => {
+                        format!("{} / {}", significant(rms), significant(max))
+                    }
+                    (Some((0, of)), None) => format!("0 of {of} (exact)"),
+                    (Some((e, of)), None) => {
                         format!("{e} of {of} ({:.3}%)", 100.0 * e as f64 / of.max(1) as f64)
                     }
-                    None => "—".to_owned(),
+                    (None, None) => "—".to_owned(),
                 };
                 let _ = writeln!(
                     md,
@@ -760,7 +967,7 @@ impl Report {
         }
         let _ = writeln!(
             md,
-            "“× production” is the method's speed relative to production measured side by side \
+            "“×” is the method's speed relative to the workload's baseline measured side by side \
              (above 1: faster). Mpix/s counts nominal pixels (a triangle's area L²/2, a line's \
              mean length). Triangle errors are samples whose coverage count or last primitive \
              differs from the exact reference's frame for the whole workload, out of the \

@@ -85,11 +85,36 @@ fn quick_bench_writes_the_report_and_the_chart() {
         );
     }
     assert!(row(&md, "### lines", "production").contains("| 0 of "));
+    // Antialiasing: every method timed, with an RMS / max coverage error;
+    // adaptive sampling gives exactly the error of full sampling.
+    let aa = "### antialiasing";
+    let full = row(&md, aa, "production 16× standard");
+    let adaptive = row(&md, aa, "production 16× standard, adaptive");
+    let error_of = |line: &str| line.split(" | ").nth(5).unwrap_or("").to_owned();
+    assert!(
+        error_of(full).contains(" / "),
+        "no coverage error in {full}"
+    );
+    assert_eq!(error_of(full), error_of(adaptive));
+    for method in [
+        "production 1× (aliased)",
+        "production 64× stratified",
+        "production 64× random",
+        "area-f32 (16× standard case)",
+    ] {
+        let line = row(&md, aa, method);
+        assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        assert!(
+            svg.contains(&format!(">{method} AA<")),
+            "{method} not in the chart"
+        );
+    }
     for target in [
         "naive on 1250-px",
         "naive on 50-px",
         "dda-f32",
         "within 10×",
+        "adaptive 16×",
     ] {
         let targets = &md[md.find("## Performance targets").unwrap()..];
         let line = targets
