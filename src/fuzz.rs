@@ -882,10 +882,12 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
     } else {
         None
     };
+    let areas = suite::area_check(scene);
     Ok(ReferenceRun {
         plan,
         frame,
         interior,
+        areas,
         elapsed: started.elapsed(),
     })
 }

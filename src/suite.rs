@@ -1,9 +1,7 @@
 //! Finding case files, reading them, and running them through rasterizers
 //! against the reference. Both the CLI and the test harness go through here.
 
-use std::cell::RefCell;
 use std::path::{Path, PathBuf};
-use std::rc::Rc;
 use std::time::{Duration, Instant};
 
 use dashu_ratio::RBig;
@@ -156,6 +154,10 @@ pub struct ReferenceRun {
     pub frame: Frame,
     /// The mesh interior, for cases that expect watertightness.
     pub interior: Option<Vec<bool>>,
+    /// For antialiased scenes only: what the exact areas say
+    /// ([`check_areas`]), or why the oracle failed to compute them (a panic
+    /// there fails the case with the reason instead of ending the run).
+    pub areas: Option<Result<AreaCheck, String>>,
     pub elapsed: Duration,
 }
 
@@ -167,10 +169,12 @@ pub fn run_reference(scene: &Scene) -> ReferenceRun {
         .expect
         .watertight
         .then(|| reference::mesh_interior(scene));
+    let areas = area_check(scene);
     ReferenceRun {
         plan,
         frame,
         interior,
+        areas,
         elapsed: started.elapsed(),
     }
 }
@@ -184,34 +188,20 @@ pub struct AreaCheck {
     pub broken_promises: Vec<String>,
 }
 
-/// The [`AreaCheck`] of a scene; `None` when it does not antialias.
-///
-/// The exact areas cost more than the reference's frame, and every
-/// candidate of a case needs them, while `ReferenceRun` (which the fuzzer
-/// builds by hand) carries no place for them. So the last scene's check is
-/// kept per thread (the runner judges a case's candidates one after another
-/// on one thread), keyed by everything the areas and `expect.area` depend
-/// on, written out exactly (numbers print as exact fractions).
-pub fn area_check(scene: &Scene) -> Option<Rc<AreaCheck>> {
+/// The [`AreaCheck`] of a scene, computed from the reference's exact areas:
+/// `None` when the scene does not antialias, `Some(Err(why))` when the
+/// exact areas panicked.
+pub fn area_check(scene: &Scene) -> Option<Result<AreaCheck, String>> {
     scene.effects.antialias.as_ref()?;
-    thread_local! {
-        static LAST: RefCell<Option<(String, Rc<AreaCheck>)>> = const { RefCell::new(None) };
-    }
-    let key = format!(
-        "{:?}|{:?}|{:?}|{:?}|{:?}",
-        scene.canvas, scene.rules, scene.effects, scene.expect.area, scene.primitives
-    );
-    LAST.with(|last| {
-        let mut last = last.borrow_mut();
-        if let Some((k, check)) = last.as_ref() {
-            if *k == key {
-                return Some(Rc::clone(check));
-            }
-        }
-        let check = Rc::new(check_areas(scene, &reference::exact_areas(scene)));
-        *last = Some((key, Rc::clone(&check)));
-        Some(check)
-    })
+    let computed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        check_areas(scene, &reference::exact_areas(scene))
+    }));
+    Some(computed.map_err(|panic| {
+        format!(
+            "reference: the exact areas failed: {}",
+            panic_message(&*panic)
+        )
+    }))
 }
 
 /// The exact area class of every pixel, and `expect.area` against the
@@ -357,19 +347,13 @@ pub fn run_candidate(
             elapsed,
         };
     }
-    // The oracle's exact areas; a panic there is the reference's failure,
-    // reported on the case, not a crash of the run.
-    let (areas, broken_oracle) =
-        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| area_check(scene))) {
-            Ok(areas) => (areas, None),
-            Err(panic) => (
-                None,
-                Some(format!(
-                    "reference: the exact areas failed: {}",
-                    panic_message(&*panic)
-                )),
-            ),
-        };
+    // The oracle's exact areas, computed once with the reference's frame;
+    // their failure is the reference's, reported on the case.
+    let (areas, broken_oracle) = match &reference.areas {
+        Some(Ok(check)) => (Some(check), None),
+        Some(Err(why)) => (None, Some(why.clone())),
+        None => (None, None),
+    };
     let m = metrics::measure_with_areas(
         scene,
         &reference.frame,
