@@ -8,6 +8,7 @@ pub mod foils;
 pub mod line;
 pub mod polygon;
 pub mod setup;
+pub mod tiled;
 pub mod traverse;
 
 use antialias::{Samples, Sampling};
@@ -32,6 +33,10 @@ pub struct Method {
 pub fn methods() -> Vec<Method> {
     let mut all = polygon::methods();
     all.extend(antialias::methods());
+    all.push(Method {
+        name: "production-tiled",
+        make: || Box::new(tiled::Tiled),
+    });
     all
 }
 
@@ -65,26 +70,11 @@ pub(crate) fn rasterize_with(
     plan: &Plan,
     sampling: Sampling,
 ) -> Result<Frame, RasterError> {
-    let format = match scene.rules.subpixel_bits {
-        Some(bits) => Format::snapped(bits),
-        None => {
-            Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
-                RasterError::Unsupported(format!(
-                    "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
-                    fixed::MAX_FRAC_BITS - 1
-                ))
-            })?
-        }
-    };
     let samples = plan
         .antialias
         .as_ref()
         .map(|plan| Samples { plan, sampling });
-    // Sample offsets are integers in a format at least position_bits fine.
-    let format = match &samples {
-        Some(samples) => format.with_samples(samples.plan.position_bits),
-        None => format,
-    };
+    let format = format_for(scene, samples.as_ref())?;
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     if format.fits_i64() {
         draw::<i64>(scene, plan, format, samples.as_ref(), &mut frame)?;
@@ -97,6 +87,38 @@ pub(crate) fn rasterize_with(
     Ok(frame)
 }
 
+/// The fixed-point format production draws `scene` in: the snapping grid
+/// one bit finer, or the exact coordinates' own, at least as fine as the
+/// sample offsets.
+pub(crate) fn format_for(scene: &Scene, samples: Option<&Samples>) -> Result<Format, RasterError> {
+    let format = match scene.rules.subpixel_bits {
+        Some(bits) => Format::snapped(bits),
+        None => {
+            Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
+                RasterError::Unsupported(format!(
+                    "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
+                    fixed::MAX_FRAC_BITS - 1
+                ))
+            })?
+        }
+    };
+    // Sample offsets are integers in a format at least position_bits fine.
+    Ok(match samples {
+        Some(samples) => format.with_samples(samples.plan.position_bits),
+        None => format,
+    })
+}
+
+/// A coordinate in `format`, snapped or exact as the scene's rules say.
+pub(crate) fn place(scene: &Scene, format: Format, n: &Number) -> Fixed {
+    match scene.rules.subpixel_bits {
+        Some(bits) => format.snap(n, bits),
+        None => format
+            .exact(n)
+            .expect("format_for checked every coordinate"),
+    }
+}
+
 fn draw<E: EdgeInt>(
     scene: &Scene,
     plan: &Plan,
@@ -104,43 +126,103 @@ fn draw<E: EdgeInt>(
     samples: Option<&Samples>,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
-    let place = |n: &Number| match scene.rules.subpixel_bits {
-        Some(bits) => format.snap(n, bits),
-        None => format
-            .exact(n)
-            .expect("Format::for_exact checked every coordinate"),
-    };
     let offsets = samples.map(|s| s.offsets_in(format));
+    let target = Target {
+        canvas: scene.canvas,
+        rows_from: 0,
+    };
     for (index, primitive) in scene.primitives.iter().enumerate() {
-        match primitive {
-            Primitive::Triangle(triangle) => {
-                let positions = triangle
+        let points = match primitive {
+            Primitive::Triangle(t) => t
+                .vertices
+                .each_ref()
+                .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]),
+            Primitive::Line(l) => {
+                let [a, b] = l
                     .vertices
                     .each_ref()
-                    .map(|v| [place(&v.x), place(&v.y)]);
-                let offsets = offsets.as_deref();
-                let sampled = samples.zip(offsets);
-                draw_triangle::<E>(
-                    scene, plan, format, sampled, index, triangle, positions, frame,
-                );
+                    .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]);
+                [a, b, b]
             }
-            Primitive::Line(line) => {
-                let ends = line.vertices.each_ref().map(|v| [place(&v.x), place(&v.y)]);
-                line::draw::<E>(
-                    line,
-                    ends,
-                    format,
-                    scene.rules.fill_rule,
-                    scene.canvas,
-                    plan,
-                    samples,
-                    index,
-                    frame,
-                )?;
-            }
-            Primitive::Polygon(polygon) => {
-                polygon::draw::<E>(scene, plan, format, index, polygon, frame)?;
-            }
+            Primitive::Polygon(_) => [[Fixed(0); 2]; 3],
+        };
+        draw_primitive::<E>(
+            scene,
+            plan,
+            format,
+            samples,
+            offsets.as_deref(),
+            index,
+            points,
+            target,
+            frame,
+        )?;
+    }
+    Ok(())
+}
+
+/// Where a primitive is drawn: into a frame of `canvas`'s size holding the
+/// scene's pixel rows from `rows_from` on (a band of the scene's canvas
+/// for [`tiled`], all of it otherwise).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Target {
+    pub canvas: crate::scene::Canvas,
+    pub rows_from: i64,
+}
+
+/// Draws primitive `index`, whose vertices (a line's two ends first) are
+/// `points` in `format`, into `frame` as `target` says. Moving the
+/// vertices up by whole pixel rows moves every edge function's value with
+/// them exactly, so a band draws the very samples of its rows that the
+/// whole canvas would.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn draw_primitive<E: EdgeInt>(
+    scene: &Scene,
+    plan: &Plan,
+    format: Format,
+    samples: Option<&Samples>,
+    offsets: Option<&[[i64; 2]]>,
+    index: usize,
+    points: [[Fixed; 2]; 3],
+    target: Target,
+    frame: &mut Frame,
+) -> Result<(), RasterError> {
+    let shift = target.rows_from * format.one();
+    let points = points.map(|[x, y]| [x, Fixed(y.0 - shift)]);
+    match &scene.primitives[index] {
+        Primitive::Triangle(triangle) => {
+            let sampled = samples.zip(offsets);
+            draw_triangle::<E>(
+                scene,
+                plan,
+                format,
+                sampled,
+                index,
+                triangle,
+                points,
+                target.canvas,
+                frame,
+            );
+        }
+        Primitive::Line(line) => {
+            line::draw::<E>(
+                line,
+                [points[0], points[1]],
+                format,
+                scene.rules.fill_rule,
+                target.canvas,
+                plan,
+                samples,
+                index,
+                frame,
+            )?;
+        }
+        Primitive::Polygon(polygon) => {
+            assert_eq!(
+                target.rows_from, 0,
+                "polygons are drawn on the whole canvas"
+            );
+            polygon::draw::<E>(scene, plan, format, index, polygon, frame)?;
         }
     }
     Ok(())
@@ -158,6 +240,7 @@ fn draw_triangle<E: EdgeInt>(
     index: usize,
     triangle: &Triangle,
     positions: [[Fixed; 2]; 3],
+    canvas: crate::scene::Canvas,
     frame: &mut Frame,
 ) {
     let footprint = match sampled {
@@ -170,7 +253,7 @@ fn draw_triangle<E: EdgeInt>(
         format,
         scene.rules.fill_rule,
         scene.rules.cull,
-        scene.canvas,
+        canvas,
         plan,
         |_, _| None,
         footprint,

@@ -1,0 +1,237 @@
+//! `production-tiled`: production drawn band by band in parallel.
+//!
+//! The canvas is cut into tiles of [`BAND`] pixel rows across its whole
+//! width (a band's samples are one contiguous run of every frame buffer, so
+//! the bands are disjoint slices). Each primitive is binned to the bands its
+//! vertical extent meets, and each band draws its primitives in scene order
+//! into a frame of its own with production's code, the vertices moved up by
+//! the band's first row: edge functions and tie rules are exact integers,
+//! unchanged by a move of whole pixels, so the band holds exactly the
+//! samples, last primitives and values of its rows that production writes.
+//! The bands are drawn on the current rayon pool and copied into the frame.
+//!
+//! What this module does not do: polygons (a scene with one is drawn by
+//! production alone, on one thread), and coordinates or canvases beyond
+//! 2^14 px (drawn by production alone too: moving a vertex by up to a
+//! canvas's height must stay within the bounds production's integers were
+//! sized for).
+
+use rayon::prelude::*;
+
+use super::antialias::{Samples, Sampling};
+use super::fixed::{EdgeInt, Fixed, Format};
+use super::{draw_primitive, format_for, place, Production, Target};
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{Canvas, Primitive, Scene};
+
+/// Pixel rows per band.
+pub const BAND: u32 = 64;
+
+/// Coordinates (in pixels) and canvas sides up to which bands are drawn.
+const SAFE: i64 = 1 << 14;
+
+/// Production, drawn in bands on the current rayon pool; its frame is
+/// production's.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Tiled;
+
+impl Rasterizer for Tiled {
+    fn name(&self) -> &str {
+        "production-tiled"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Production.capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if scene.has_polygons() || i64::from(scene.canvas.height) > SAFE {
+            return Production.rasterize(scene, plan);
+        }
+        let sampling = Sampling::for_plan(plan);
+        let samples = plan
+            .antialias
+            .as_ref()
+            .map(|plan| Samples { plan, sampling });
+        let format = format_for(scene, samples.as_ref())?;
+        // Place every vertex (the costly part for small triangles) in
+        // parallel; a line's second end is repeated.
+        let points: Vec<[[Fixed; 2]; 3]> = scene
+            .primitives
+            .par_iter()
+            .map(|p| {
+                let at = |v: &crate::scene::Vertex| {
+                    [place(scene, format, &v.x), place(scene, format, &v.y)]
+                };
+                match p {
+                    Primitive::Triangle(t) => t.vertices.each_ref().map(at),
+                    Primitive::Line(l) => {
+                        let [a, b] = l.vertices.each_ref().map(at);
+                        [a, b, b]
+                    }
+                    Primitive::Polygon(_) => unreachable!("polygons are drawn by production"),
+                }
+            })
+            .collect();
+        let limit = SAFE * format.one();
+        if points.iter().flatten().flatten().any(|c| c.0.abs() > limit) {
+            return Production.rasterize(scene, plan);
+        }
+        // One bit of integer range more than production's: a band moves
+        // vertices by up to the canvas's height.
+        if format.frac_bits < super::fixed::I64_MAX_FRAC_BITS {
+            draw::<i64>(scene, plan, format, samples.as_ref(), &points)
+        } else {
+            draw::<i128>(scene, plan, format, samples.as_ref(), &points)
+        }
+    }
+}
+
+/// The bands (first, last inclusive) primitive `p` may draw in.
+fn bands_of(scene: &Scene, format: Format, p: usize, points: &[[Fixed; 2]; 3]) -> (i64, i64) {
+    let one = format.one();
+    let lo = points.iter().map(|q| q[1].0).min().unwrap().div_euclid(one);
+    let hi = points.iter().map(|q| q[1].0).max().unwrap().div_euclid(one);
+    // A pixel row whose centre or square meets the extent lies within one
+    // row of it; a wide line reaches its half width (and a rectangle's
+    // caps as much again) beyond its ends.
+    let margin = match &scene.primitives[p] {
+        Primitive::Line(l) => {
+            let w = l.width.to_f64_lossy();
+            if w.is_finite() && w < SAFE as f64 {
+                w.ceil() as i64 + 2
+            } else {
+                2 * SAFE
+            }
+        }
+        _ => 1,
+    };
+    let band = i64::from(BAND);
+    (
+        (lo - margin).div_euclid(band),
+        (hi + margin).div_euclid(band),
+    )
+}
+
+/// One band's share of the frame's buffers.
+struct BandSlices<'a> {
+    coverage: &'a mut [u16],
+    last: &'a mut [u32],
+    depth: Option<&'a mut [f64]>,
+    attributes: Vec<&'a mut [f64]>,
+    resolved: Option<&'a mut [f64]>,
+}
+
+fn draw<E: EdgeInt>(
+    scene: &Scene,
+    plan: &Plan,
+    format: Format,
+    samples: Option<&Samples>,
+    points: &[[[Fixed; 2]; 3]],
+) -> Result<Frame, RasterError> {
+    let canvas = scene.canvas;
+    let bands = canvas.height.div_ceil(BAND) as usize;
+    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands.max(1)];
+    for (p, pts) in points.iter().enumerate() {
+        let (first, last) = bands_of(scene, format, p, pts);
+        let first = first.max(0) as usize;
+        let last = last.min(bands as i64 - 1);
+        if last < first as i64 {
+            // Off the canvas: drawn in band 0 anyway, so that its errors
+            // are production's.
+            bins[0].push(p as u32);
+            continue;
+        }
+        for bin in &mut bins[first..=last as usize] {
+            bin.push(p as u32);
+        }
+    }
+    let offsets = samples.map(|s| s.offsets_in(format));
+    let mut frame = Frame::for_plan(canvas.width, canvas.height, plan);
+    let width = canvas.width as usize;
+    let slots = width * BAND as usize * frame.samples as usize;
+    let pixels = width * BAND as usize;
+    let mut slices: Vec<BandSlices> = frame
+        .coverage
+        .chunks_mut(slots.max(1))
+        .zip(frame.last.chunks_mut(slots.max(1)))
+        .map(|(coverage, last)| BandSlices {
+            coverage,
+            last,
+            depth: None,
+            attributes: Vec::new(),
+            resolved: None,
+        })
+        .collect();
+    if let Some(depth) = frame.depth.as_mut() {
+        for (s, d) in slices.iter_mut().zip(depth.chunks_mut(slots.max(1))) {
+            s.depth = Some(d);
+        }
+    }
+    for channel in &mut frame.attributes {
+        for (s, a) in slices.iter_mut().zip(channel.chunks_mut(slots.max(1))) {
+            s.attributes.push(a);
+        }
+    }
+    if let Some(resolved) = frame.resolved.as_mut() {
+        for (s, r) in slices.iter_mut().zip(resolved.chunks_mut(pixels.max(1))) {
+            s.resolved = Some(r);
+        }
+    }
+    // Each band's first error, with its primitive, to report production's
+    // (the lowest primitive's).
+    let errors: Vec<(usize, RasterError)> = slices
+        .into_par_iter()
+        .enumerate()
+        .filter_map(|(b, out)| {
+            let rows_from = b as u32 * BAND;
+            let rows = BAND.min(canvas.height - rows_from);
+            let band_canvas = Canvas {
+                width: canvas.width,
+                height: rows,
+            };
+            let mut band = Frame::for_plan(canvas.width, rows, plan);
+            let target = Target {
+                canvas: band_canvas,
+                rows_from: i64::from(rows_from),
+            };
+            for &p in &bins[b] {
+                let p = p as usize;
+                if let Err(e) = draw_primitive::<E>(
+                    scene,
+                    plan,
+                    format,
+                    samples,
+                    offsets.as_deref(),
+                    p,
+                    points[p],
+                    target,
+                    &mut band,
+                ) {
+                    return Some((p, e));
+                }
+            }
+            if samples.is_some() {
+                band.resolve();
+            }
+            out.coverage.copy_from_slice(&band.coverage);
+            out.last.copy_from_slice(&band.last);
+            if let (Some(d), Some(from)) = (out.depth, &band.depth) {
+                d.copy_from_slice(from);
+            }
+            for (a, from) in out.attributes.into_iter().zip(&band.attributes) {
+                a.copy_from_slice(from);
+            }
+            if let (Some(r), Some(from)) = (out.resolved, &band.resolved) {
+                r.copy_from_slice(from);
+            }
+            None
+        })
+        .collect();
+    if let Some((_, e)) = errors.into_iter().min_by_key(|(p, _)| *p) {
+        return Err(e);
+    }
+    Ok(frame)
+}
