@@ -30,6 +30,7 @@
 //! lines, which an antialiased case may not hold.
 
 pub mod area;
+pub mod resolve;
 
 use super::fixed::{EdgeInt, Format};
 use super::setup::{Shading, TriangleSetup};
@@ -50,6 +51,10 @@ pub fn methods() -> Vec<Method> {
         Method {
             name: "area-f32",
             make: || Box::new(area::AreaF32),
+        },
+        Method {
+            name: "adaptive-resolve",
+            make: || Box::new(resolve::AdaptiveResolve),
         },
     ]
 }
