@@ -7,6 +7,10 @@
 //! `float-f64` depart from the exact reference on exactly the families built
 //! to break them, and on no other hard case. It prints a table of which foil
 //! fails which case, with the number of samples that differ.
+//!
+//! The polygon and antialiasing families (`aa_*`, `poly_*`) are beyond the
+//! float foils (unsupported there); the methods and mutants that draw them
+//! fail the families built for their weakness.
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -48,18 +52,21 @@ const F64_FAILS: &[&str] = &[
     "hard/snaptie_b8_positive",
 ];
 
-/// Samples whose coverage differs, per case, for a foil that fails it.
-fn failures(foil: &dyn Rasterizer) -> (BTreeMap<String, u64>, usize) {
+/// Samples whose coverage differs, per case, for a foil that fails it; the
+/// cases it does not support; the number of cases.
+fn failures(foil: &dyn Rasterizer) -> (BTreeMap<String, u64>, Vec<String>, usize) {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/hard");
     let found = suite::discover(&[dir]);
     assert!(found.errors.is_empty(), "{:?}", found.errors);
     let mut failed = BTreeMap::new();
+    let mut unsupported = Vec::new();
     for file in &found.cases {
         let scene = suite::load(file, &Limits::default()).expect("hard cases are valid");
         let reference = suite::run_reference(&scene);
         let run = suite::run_candidate(&scene, &reference, foil);
         match run.verdict {
             Verdict::Pass => {}
+            Verdict::Unsupported(_) => unsupported.push(file.id.clone()),
             Verdict::Fail(_) => {
                 let mismatched = run.metrics.as_ref().map_or(0, |m| m.coverage.mismatched());
                 failed.insert(file.id.clone(), mismatched);
@@ -67,14 +74,27 @@ fn failures(foil: &dyn Rasterizer) -> (BTreeMap<String, u64>, usize) {
             other => panic!("{} on {}: {other:?}", foil.name(), file.id),
         }
     }
-    (failed, found.cases.len())
+    (failed, unsupported, found.cases.len())
+}
+
+/// The polygon and antialiasing hard cases.
+fn is_polygon_or_aa(id: &str) -> bool {
+    id.starts_with("hard/aa_") || id.starts_with("hard/poly_")
 }
 
 #[test]
 fn the_float_foils_fail_exactly_the_families_built_to_break_them() {
-    let (f32_failed, cases) = failures(&FloatF32);
-    let (f64_failed, _) = failures(&FloatF64);
+    let (f32_failed, f32_unsupported, cases) = failures(&FloatF32);
+    let (f64_failed, f64_unsupported, _) = failures(&FloatF64);
     assert!(cases >= 30, "only {cases} hard cases");
+    // The foils draw triangles and lines only, without antialiasing.
+    for unsupported in [&f32_unsupported, &f64_unsupported] {
+        assert!(
+            unsupported.iter().all(|id| is_polygon_or_aa(id)),
+            "{unsupported:?}"
+        );
+        assert!(unsupported.len() >= 20, "{unsupported:?}");
+    }
 
     let mut ids: Vec<&String> = f32_failed.keys().chain(f64_failed.keys()).collect();
     ids.sort();
@@ -122,4 +142,97 @@ fn the_float_foils_fail_exactly_the_families_built_to_break_them() {
     assert!(f32_failed["hard/far_b8_near_tie_fan"] >= 8);
     assert!(f32_failed["hard/far_b16_near_tie_fan"] >= 8);
     assert!(f64_failed["hard/far_b16_near_tie_fan"] >= 2);
+}
+
+/// Each method or mutant that draws polygons or antialiases, with hard cases
+/// it must fail (a subset: the families built against its weakness) and
+/// whether it must pass every other polygon and antialiasing case it
+/// supports.
+const METHOD_FAILS: &[(&str, &[&str], bool)] = &[
+    // Exact methods: everything they support passes.
+    ("production", &[], true),
+    ("production-tiled", &[], true),
+    ("adaptive-resolve", &[], true),
+    // f32 area accumulation: sums of partial areas that do not round to
+    // exactly 1 in full pixels, and a winding-weighted area where a contour
+    // winds twice (even-odd: the doubled heptagon is not empty).
+    (
+        "area-f32",
+        &[
+            "hard/aa_abut_fan_64_standard16",
+            "hard/aa_abut_fan_128_corner_standard16",
+            "hard/aa_abut_grid_square_standard16",
+            "hard/poly_wind_twice_even_odd_standard16",
+            "hard/poly_wind_twice_nonzero_standard16",
+            "hard/poly_overlap_contours_even_odd_standard16",
+        ],
+        false,
+    ),
+    // Flood fill from seeds inside the outline: wrong where contours
+    // overlap, double back or wind twice.
+    (
+        "flood-fill",
+        &[
+            "hard/poly_wind_twice_even_odd",
+            "hard/poly_doubled_edges_nonzero",
+            "hard/poly_overlap_contours_even_odd",
+            "hard/poly_zero_area_contour_nonzero",
+            "hard/poly_collinear_repeated_vertices",
+        ],
+        false,
+    ),
+    // Deliberate bugs: ties on shared edges under 16x, full pixels not
+    // exactly 1, samples moved off the pattern.
+    (
+        "mutant:flipped-ties",
+        &[
+            "hard/aa_tie_unit_grid_top_left_standard16",
+            "hard/aa_tie_unit_grid_top_right_standard16",
+            "hard/aa_tie_unit_grid_bottom_left_standard16",
+            "hard/aa_tie_unit_grid_bottom_right_standard16",
+            "hard/aa_abut_grid_square_standard16",
+            "hard/poly_doubled_edges_nonzero",
+        ],
+        false,
+    ),
+    (
+        "mutant:leaky-full",
+        &[
+            "hard/aa_abut_fan_64_standard16",
+            "hard/aa_abut_grid_square_standard16",
+            "hard/aa_tie_border_samples_polygon_nonzero_standard16",
+            "hard/poly_far_zigzag_b8_nonzero_standard16",
+        ],
+        false,
+    ),
+    (
+        "mutant:shifted-samples",
+        &[
+            "hard/aa_abut_fan_64_standard16",
+            "hard/aa_tie_vertices_on_samples_standard16",
+            "hard/poly_collinear_repeated_vertices_standard16",
+        ],
+        false,
+    ),
+];
+
+#[test]
+fn polygon_and_antialiasing_families_catch_the_methods_built_to_fail_them() {
+    for &(name, must_fail, exact) in METHOD_FAILS {
+        let candidate = suite::rasterizer(name).expect("a known rasterizer");
+        let (failed, unsupported, _) = failures(&*candidate);
+        let ours = |id: &&String| is_polygon_or_aa(id);
+        println!(
+            "{name:<24} fails {:>2}, unsupported {:>2}: {:?}",
+            failed.keys().filter(ours).count(),
+            unsupported.iter().filter(ours).count(),
+            failed.keys().filter(ours).collect::<Vec<_>>()
+        );
+        for id in must_fail {
+            assert!(failed.contains_key(*id), "{name} passes {id}");
+        }
+        if exact {
+            assert!(failed.is_empty(), "{name}: {failed:?}");
+        }
+    }
 }
