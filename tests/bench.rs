@@ -64,7 +64,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
                 "no time in {line}"
             );
             assert!(line.contains(" of "), "no error count in {line}");
-            if ["production", "naive", "reference"].contains(&method.as_str()) {
+            if ["production", "production-tiled", "naive", "reference"].contains(&method.as_str()) {
                 assert!(
                     line.contains("| 0 of "),
                     "an exact method has errors: {line}"
@@ -76,7 +76,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
             );
         }
     }
-    for method in ["production", "dda-f32", "dda-f64"] {
+    for method in ["production", "dda-f32", "dda-f64", "midpoint-plain"] {
         let line = row(&md, "### lines", method);
         assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
         assert!(
@@ -85,6 +85,8 @@ fn quick_bench_writes_the_report_and_the_chart() {
         );
     }
     assert!(row(&md, "### lines", "production").contains("| 0 of "));
+    // The plain loop walks the same exact rule.
+    assert!(row(&md, "### lines", "midpoint-plain").contains("| 0 of "));
     // Antialiasing: every method timed, with an RMS / max coverage error;
     // adaptive sampling gives exactly the error of full sampling.
     let aa = "### antialiasing";
@@ -96,6 +98,9 @@ fn quick_bench_writes_the_report_and_the_chart() {
         "no coverage error in {full}"
     );
     assert_eq!(error_of(full), error_of(adaptive));
+    // adaptive-resolve's resolve is full sampling's, bit for bit.
+    let resolved = row(&md, aa, "adaptive-resolve 16× standard");
+    assert_eq!(error_of(full), error_of(resolved));
     for method in [
         "production 1× (aliased)",
         "production 64× stratified",
@@ -115,6 +120,10 @@ fn quick_bench_writes_the_report_and_the_chart() {
         "dda-f32",
         "within 10×",
         "adaptive 16×",
+        "`adaptive-resolve 16× standard`",
+        "`production 16× standard, adaptive`",
+        "production-tiled ≥ 1.7× production",
+        "plain midpoint loop",
     ] {
         let targets = &md[md.find("## Performance targets").unwrap()..];
         let line = targets

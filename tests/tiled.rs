@@ -199,3 +199,41 @@ fn a_frame_missing_one_band_row_is_caught() {
     frame.coverage[row..row + width].fill(0);
     assert_ne!(frame, Production.rasterize(&scene, &plan).unwrap());
 }
+
+/// Timings for development (`cargo test --release --test tiled -- --ignored
+/// --nocapture`); asserts nothing about them.
+#[test]
+#[ignore]
+fn timing() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
+    for (leg, count) in [(10, 20_000), (50, 2_000), (250, 200)] {
+        let scene = rastercheck::bench::triangle_scene(1024, leg, count, 0x6265_6e63_6821);
+        let plan = Plan::for_scene(&scene);
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        let mut best = [f64::MAX; 3];
+        for _ in 0..7 {
+            let t = std::time::Instant::now();
+            std::hint::black_box(one.install(|| Tiled.rasterize(&scene, &plan).unwrap()));
+            best[2] = best[2].min(t.elapsed().as_secs_f64());
+            let t = std::time::Instant::now();
+            std::hint::black_box(Production.rasterize(&scene, &plan).unwrap());
+            best[0] = best[0].min(t.elapsed().as_secs_f64());
+            let t = std::time::Instant::now();
+            std::hint::black_box(pool.install(|| Tiled.rasterize(&scene, &plan).unwrap()));
+            best[1] = best[1].min(t.elapsed().as_secs_f64());
+        }
+        println!(
+            "L={leg}: production {:.3} ms, tiled {:.3} ms ({:.3} ms on one thread), {:.2}×",
+            best[0] * 1e3,
+            best[1] * 1e3,
+            best[2] * 1e3,
+            best[0] / best[1]
+        );
+    }
+}

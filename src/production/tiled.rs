@@ -20,6 +20,8 @@ use rayon::prelude::*;
 
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
+use super::setup::{self, Footprint};
+use super::traverse::{self, Sink};
 use super::{draw_primitive, format_for, place, Production, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -148,8 +150,16 @@ fn draw<E: EdgeInt>(
             bin.push(p as u32);
         }
     }
-    let offsets = samples.map(|s| s.offsets_in(format));
     let mut frame = Frame::for_plan(canvas.width, canvas.height, plan);
+    let triangles_only = scene
+        .primitives
+        .iter()
+        .all(|p| matches!(p, Primitive::Triangle(_)));
+    if samples.is_none() && !plan.interpolates() && triangles_only {
+        draw_coverage::<E>(scene, plan, format, points, &bins, &mut frame);
+        return Ok(frame);
+    }
+    let offsets = samples.map(|s| s.offsets_in(format));
     let width = canvas.width as usize;
     let slots = width * BAND as usize * frame.samples as usize;
     let pixels = width * BAND as usize;
@@ -234,4 +244,82 @@ fn draw<E: EdgeInt>(
         return Err(e);
     }
     Ok(frame)
+}
+
+/// Coverage-only triangles, the common case: each band's traversal writes
+/// straight into its rows of the frame, with nothing to copy.
+fn draw_coverage<E: EdgeInt>(
+    scene: &Scene,
+    plan: &Plan,
+    format: Format,
+    points: &[[[Fixed; 2]; 3]],
+    bins: &[Vec<u32>],
+    frame: &mut Frame,
+) {
+    let canvas = scene.canvas;
+    let width = canvas.width as usize;
+    let rows = (width * BAND as usize).max(1);
+    frame
+        .coverage
+        .par_chunks_mut(rows)
+        .zip(frame.last.par_chunks_mut(rows))
+        .enumerate()
+        .for_each(|(b, (coverage, last))| {
+            let rows_from = b as u32 * BAND;
+            let band_canvas = Canvas {
+                width: canvas.width,
+                height: BAND.min(canvas.height - rows_from),
+            };
+            let shift = i64::from(rows_from) * format.one();
+            let mut sink = BandSink {
+                coverage,
+                last,
+                width,
+                index: 0,
+            };
+            for &p in &bins[b] {
+                let p = p as usize;
+                let Primitive::Triangle(triangle) = &scene.primitives[p] else {
+                    continue;
+                };
+                let moved = points[p].map(|[x, y]| [x, Fixed(y.0 - shift)]);
+                let Some(setup) = setup::setup_in::<E>(
+                    moved,
+                    triangle,
+                    format,
+                    scene.rules.fill_rule,
+                    scene.rules.cull,
+                    band_canvas,
+                    plan,
+                    |_, _| None,
+                    Footprint::Centres,
+                ) else {
+                    continue;
+                };
+                sink.index = p as u32 + 1;
+                traverse::traverse(&setup, &mut sink);
+            }
+        });
+}
+
+/// Writes covered pixels into one band's rows of the coverage and
+/// last-primitive buffers, as `Frame::hit` does.
+struct BandSink<'a> {
+    coverage: &'a mut [u16],
+    last: &'a mut [u32],
+    width: usize,
+    /// The primitive, 1-based.
+    index: u32,
+}
+
+impl Sink for BandSink<'_> {
+    #[inline]
+    fn span(&mut self, y: i64, x0: i64, x1: i64) {
+        let row = y as usize * self.width;
+        let run = row + x0 as usize..row + x1 as usize;
+        for c in &mut self.coverage[run.clone()] {
+            *c = c.saturating_add(1);
+        }
+        self.last[run].fill(self.index);
+    }
 }
