@@ -6,14 +6,15 @@
 //! rule is applied as D3D11 words it (§3.4.2.1), edge by edge, from where the
 //! third vertex lies, not from the winding.
 //!
-//! What this module does not do: incremental stepping, bounding-box
-//! blocking, or any float arithmetic. It visits each candidate sample and
-//! evaluates it from scratch; speed is the production rasterizer's job.
+//! Each row of samples is settled by exact division: where each edge's
+//! orientation, linear along the row, crosses its threshold (see
+//! [`visit`]). What this module does not do: bounding-box blocking, or any
+//! float arithmetic; speed is the production rasterizer's job.
 
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-use super::exact::{quotient_to_f64_round_odd, to_f64_round_odd, ExactInt};
+use super::exact::{ceil_div, floor_div, quotient_to_f64_round_odd, to_f64_round_odd, ExactInt};
 use super::grid::{orient, Grid, Point};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -92,9 +93,74 @@ impl<T: ExactInt> Setup<T> {
     }
 }
 
+/// What finding a row's span needs beyond [`ExactInt`]: addition, exact
+/// floor and ceiling division by a positive divisor, and small constants.
+pub trait SpanInt: ExactInt {
+    fn add(&self, other: &Self) -> Self;
+    fn from_i64(v: i64) -> Self;
+    /// ⌊self / d⌋ for d > 0.
+    fn floor_div(&self, d: &Self) -> Self;
+    /// ⌈self / d⌉ for d > 0.
+    fn ceil_div(&self, d: &Self) -> Self;
+    /// The value clamped to [lo, hi].
+    fn clamp_to(&self, lo: i64, hi: i64) -> i64;
+}
+
+impl SpanInt for i128 {
+    fn add(&self, other: &Self) -> Self {
+        self.checked_add(*other)
+            .expect("i128 bound proven by I128_COORD_BOUND")
+    }
+    fn from_i64(v: i64) -> Self {
+        i128::from(v)
+    }
+    fn floor_div(&self, d: &Self) -> Self {
+        self.div_euclid(*d)
+    }
+    fn ceil_div(&self, d: &Self) -> Self {
+        -(-self).div_euclid(*d)
+    }
+    fn clamp_to(&self, lo: i64, hi: i64) -> i64 {
+        (*self).clamp(i128::from(lo), i128::from(hi)) as i64
+    }
+}
+
+impl SpanInt for IBig {
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn from_i64(v: i64) -> Self {
+        IBig::from(v)
+    }
+    fn floor_div(&self, d: &Self) -> Self {
+        floor_div(self, d)
+    }
+    fn ceil_div(&self, d: &Self) -> Self {
+        ceil_div(self, d)
+    }
+    fn clamp_to(&self, lo: i64, hi: i64) -> i64 {
+        if *self < IBig::from(lo) {
+            lo
+        } else if *self > IBig::from(hi) {
+            hi
+        } else {
+            self.try_into().expect("between two i64")
+        }
+    }
+}
+
 /// Visits every covered sample of one triangle under `rule`:
 /// `visit(pixel, edge values, twice the area)`. `to_t` moves grid
 /// coordinates into the integer type the proof allows.
+///
+/// Row by row: along a row of sample points each edge's orientation is
+/// linear in the column, o(k) = o(0) + k·step, so the columns inside the
+/// edge (o·sign > 0, or = 0 where the edge owns its samples) are one
+/// half-line whose end is an exact floor or ceiling quotient. The row's
+/// span is the intersection of the three; its samples' values are o(0)
+/// plus whole steps, exact integers. The span's end samples are tested
+/// from scratch as well in debug builds, and the samples just beyond
+/// them found outside.
 pub fn visit<T, F>(
     grid: &Grid,
     canvas: Canvas,
@@ -104,7 +170,7 @@ pub fn visit<T, F>(
     cull: Cull,
     mut visit: F,
 ) where
-    T: ExactInt,
+    T: SpanInt,
     F: FnMut(usize, &[T; 3], &T),
 {
     let v = [0, 1, 2].map(|i| tri[i].clone().map(|c| to_t(&c)));
@@ -115,20 +181,65 @@ pub fn visit<T, F>(
     let hi = |axis: usize| tri.iter().map(|p| &p[axis]).max().unwrap();
     let xs = grid.centre_range(lo(0), hi(0), canvas.width);
     let ys = grid.centre_range(lo(1), hi(1), canvas.height);
-    let columns: Vec<T> = xs
-        .clone()
-        .map(|x| to_t(&grid.centre(i64::from(x))))
-        .collect();
+    if xs.is_empty() {
+        return;
+    }
+    let columns = i64::from(xs.end - xs.start);
+    let x0 = to_t(&grid.centre(i64::from(xs.start)));
+    let spacing = to_t(&grid.scale);
+    let sign = setup.area.signum();
+    let signed = |t: T| if sign > 0 { t } else { T::zero().sub(&t) };
+    // Per edge: the orientation's change from one column to the next,
+    // -(by - ay)·spacing, and the least signed orientation inside it.
+    let steps = [0, 1, 2].map(|i| setup.v[i][1].sub(&setup.v[(i + 1) % 3][1]).mul(&spacing));
+    let least = setup.owns.map(|owns| T::from_i64(i64::from(!owns)));
+    let zero = T::zero();
     for y in ys {
         let py = to_t(&grid.centre(i64::from(y)));
-        for (x, px) in xs.clone().zip(&columns) {
-            let p = [px.clone(), py.clone()];
-            if let Some(values) = setup.covers(&p) {
-                visit(
-                    y as usize * canvas.width as usize + x as usize,
-                    &values,
-                    &setup.area,
-                );
+        let first = [x0.clone(), py.clone()];
+        let start = [0, 1, 2].map(|i| orient(&setup.v[i], &setup.v[(i + 1) % 3], &first));
+        // Columns k in [from, to] with signed(start + k·step) ≥ least.
+        let (mut from, mut to) = (0i64, columns - 1);
+        for i in 0..3 {
+            let (b, a) = (signed(start[i].clone()), signed(steps[i].clone()));
+            match a.cmp(&zero) {
+                std::cmp::Ordering::Equal => {
+                    if b < least[i] {
+                        to = -1;
+                    }
+                }
+                // k ≥ ⌈(least − b) / a⌉.
+                std::cmp::Ordering::Greater => {
+                    let k = least[i].sub(&b).ceil_div(&a);
+                    from = from.max(k.clamp_to(0, columns));
+                }
+                // k ≤ ⌊(b − least) / −a⌋.
+                std::cmp::Ordering::Less => {
+                    let k = b.sub(&least[i]).floor_div(&zero.sub(&a));
+                    to = to.min(k.clamp_to(-1, columns - 1));
+                }
+            }
+        }
+        if from > to {
+            continue;
+        }
+        let column = |k: i64| {
+            let x = to_t(&grid.centre(i64::from(xs.start) + k));
+            [x, py.clone()]
+        };
+        debug_assert!(setup.covers(&column(from)).is_some());
+        debug_assert!(setup.covers(&column(to)).is_some());
+        debug_assert!(from == 0 || setup.covers(&column(from - 1)).is_none());
+        debug_assert!(to == columns - 1 || setup.covers(&column(to + 1)).is_none());
+        let mut values = [0, 1, 2].map(|i| {
+            let k = T::from_i64(from);
+            start[i].add(&steps[i].mul(&k))
+        });
+        let row = y as usize * canvas.width as usize + xs.start as usize;
+        for k in from..=to {
+            visit(row + k as usize, &values, &setup.area);
+            for (value, step) in values.iter_mut().zip(&steps) {
+                *value = value.add(step);
             }
         }
     }
