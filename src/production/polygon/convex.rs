@@ -10,7 +10,7 @@
 //! and polygons of several contours, is unsupported.
 
 use super::scanline::{write_span, Point, Samples, Walk};
-use super::{nudge, snapped, turn, without_repeats};
+use super::{nudge, single_contour, turn};
 use crate::frame::Frame;
 use crate::production::fixed::Format;
 use crate::rasterizer::RasterError;
@@ -114,14 +114,7 @@ pub fn draw(
     polygon: &Polygon,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
-    let contours = snapped(scene, format, polygon)?;
-    let [contour] = contours.as_slice() else {
-        return Err(RasterError::Unsupported(format!(
-            "polygon-convex fills one contour, not {}",
-            contours.len()
-        )));
-    };
-    let points = without_repeats(contour);
+    let points = single_contour(scene, format, polygon, "polygon-convex")?;
     match shape(&points) {
         Shape::Flat => return Ok(()),
         Shape::NotConvex => {

@@ -137,6 +137,25 @@ fn snapped(
         .collect()
 }
 
+/// The one contour of a polygon, snapped and without repeats, for the
+/// methods that fill a single contour; `method` names the one that refuses
+/// several.
+fn single_contour(
+    scene: &Scene,
+    format: Format,
+    polygon: &Polygon,
+    method: &str,
+) -> Result<Vec<Point>, RasterError> {
+    let contours = snapped(scene, format, polygon)?;
+    match contours.as_slice() {
+        [contour] => Ok(without_repeats(contour)),
+        _ => Err(RasterError::Unsupported(format!(
+            "{method} fills one contour, not {}",
+            contours.len()
+        ))),
+    }
+}
+
 /// The vertices of a closed contour without consecutive repeats (the
 /// last vertex counts as followed by the first): a repeated vertex adds a
 /// zero-length edge, which changes no winding number.

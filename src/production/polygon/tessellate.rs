@@ -14,7 +14,7 @@
 //! region.
 
 use super::scanline::Point;
-use super::{snapped, turn, without_repeats};
+use super::{single_contour, turn};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::fixed::{EdgeInt, Fixed, Format};
@@ -155,14 +155,7 @@ pub fn draw(
     polygon: &Polygon,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
-    let contours = snapped(scene, format, polygon)?;
-    let [contour] = contours.as_slice() else {
-        return Err(RasterError::Unsupported(format!(
-            "polygon-tessellate fills one contour, not {}",
-            contours.len()
-        )));
-    };
-    let points = without_repeats(contour);
+    let points = single_contour(scene, format, polygon, "polygon-tessellate")?;
     let flat = (0..points.len()).all(|i| {
         let n = points.len();
         turn(points[i], points[(i + 1) % n], points[(i + 2) % n]) == 0
