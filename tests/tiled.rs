@@ -237,3 +237,27 @@ fn timing() {
         );
     }
 }
+
+/// Line timings for development, like [`timing`].
+#[test]
+#[ignore]
+fn line_timing() {
+    use rastercheck::bench::PlainMidpoint;
+    let scene = rastercheck::bench::line_scene(2048, (1000.0, 1400.0), 3000, 0x6265_6e63_6821);
+    let plan = Plan::for_scene(&scene);
+    let mut best = [f64::MAX; 2];
+    for _ in 0..7 {
+        let t = std::time::Instant::now();
+        std::hint::black_box(Production.rasterize(&scene, &plan).unwrap());
+        best[0] = best[0].min(t.elapsed().as_secs_f64());
+        let t = std::time::Instant::now();
+        std::hint::black_box(PlainMidpoint.rasterize(&scene, &plan).unwrap());
+        best[1] = best[1].min(t.elapsed().as_secs_f64());
+    }
+    println!(
+        "lines: production {:.3} ms, plain {:.3} ms, {:.2}×",
+        best[0] * 1e3,
+        best[1] * 1e3,
+        best[1] / best[0]
+    );
+}

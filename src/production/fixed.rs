@@ -63,24 +63,22 @@ impl Format {
     /// Snaps `n` to the subpixel grid (ties to even) and returns it in this
     /// format.
     pub fn snap(self, n: &Number, subpixel_bits: u32) -> Fixed {
-        // round(p·2^b / q), ties to even, as ⌊(2p·2^b + q) / 2q⌋, with the
-        // result made even again where the division was an exact tie.
-        let p = n.numerator();
-        let q = IBig::from(n.denominator().clone());
-        let twice = (p << (subpixel_bits as usize + 1)) + &q;
-        let two_q = &q * IBig::from(2u8);
-        let (mut rounded, rest) = div_floor(&twice, &two_q);
-        if rest == IBig::ZERO && (&rounded % IBig::from(2u8)) != IBig::ZERO {
-            rounded -= IBig::ONE;
-        }
-        let units: i64 = (&rounded)
-            .try_into()
-            .expect("coordinates are bounded by COORD_LIMIT");
+        let units = match small(n) {
+            Some((p, q)) => snap_small(p, q, subpixel_bits),
+            None => snap_big(n, subpixel_bits),
+        };
         Fixed(units << (self.frac_bits - subpixel_bits))
     }
 
     /// `n` in this format when it is exactly representable.
     pub fn exact(self, n: &Number) -> Option<Fixed> {
+        if let Some((p, q)) = small(n) {
+            // p·2^f < 2^(63 + 17) and q < 2^63: i128 holds both.
+            let scaled = i128::from(p) << self.frac_bits;
+            let q = i128::from(q);
+            return (scaled.rem_euclid(q) == 0)
+                .then(|| Fixed(i64::try_from(scaled.div_euclid(q)).expect("bounded coordinates")));
+        }
         let scaled = n.numerator() << self.frac_bits as usize;
         let q = IBig::from(n.denominator().clone());
         let (units, rest) = div_floor(&scaled, &q);
@@ -127,6 +125,44 @@ impl Format {
     pub fn fits_i64(self) -> bool {
         self.frac_bits <= I64_MAX_FRAC_BITS
     }
+}
+
+/// (numerator, denominator) of `n` when both are below 2^63: the common
+/// case, snapped in i128.
+#[inline]
+fn small(n: &Number) -> Option<(i64, i64)> {
+    let p = i64::try_from(n.numerator()).ok()?;
+    let q = i64::try_from(n.denominator()).ok()?;
+    Some((p, q))
+}
+
+/// round(p·2^b / q), ties to even, as ⌊(2p·2^b + q) / 2q⌋, with the result
+/// made even again where the division was an exact tie. With |p|, q below
+/// 2^63 and b ≤ 16, every intermediate is below 2^81.
+fn snap_small(p: i64, q: i64, subpixel_bits: u32) -> i64 {
+    let q = i128::from(q);
+    let twice = (i128::from(p) << (subpixel_bits + 1)) + q;
+    let two_q = 2 * q;
+    let mut rounded = twice.div_euclid(two_q);
+    if twice.rem_euclid(two_q) == 0 && rounded.rem_euclid(2) != 0 {
+        rounded -= 1;
+    }
+    i64::try_from(rounded).expect("coordinates are bounded by COORD_LIMIT")
+}
+
+/// [`snap_small`] for any size, in big integers.
+fn snap_big(n: &Number, subpixel_bits: u32) -> i64 {
+    let p = n.numerator();
+    let q = IBig::from(n.denominator().clone());
+    let twice = (p << (subpixel_bits as usize + 1)) + &q;
+    let two_q = &q * IBig::from(2u8);
+    let (mut rounded, rest) = div_floor(&twice, &two_q);
+    if rest == IBig::ZERO && (&rounded % IBig::from(2u8)) != IBig::ZERO {
+        rounded -= IBig::ONE;
+    }
+    (&rounded)
+        .try_into()
+        .expect("coordinates are bounded by COORD_LIMIT")
 }
 
 fn div_floor(a: &IBig, b: &IBig) -> (IBig, IBig) {
@@ -185,6 +221,52 @@ mod tests {
         let f8 = Format::snapped(8);
         assert_eq!(f8.snap(&n("1/3"), 8), Fixed(85 * 2));
         assert_eq!(f8.snap(&n("32768"), 8), Fixed(32768 << 9));
+    }
+
+    /// The i128 path snaps as the big-integer one on random ratios,
+    /// ties and both signs included; a path that rounded ties away from
+    /// zero would differ on the ties.
+    #[test]
+    fn small_snapping_is_big_snapping() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut ties = 0;
+        for round in 0..20_000 {
+            let bits = (next() % 17) as u32;
+            let q = match round % 3 {
+                0 => 1i64 << (next() % 20),
+                1 => (next() % 1000) as i64 + 1,
+                _ => (next() >> 2) as i64 % (1 << 40) + 1,
+            };
+            let limit = (1i64 << 14) * q.min(1 << 40);
+            let p = (next() % (2 * limit as u64)) as i64 - limit;
+            let n = Number::ratio(p, q);
+            let (sp, sq) = small(&n).unwrap();
+            assert_eq!(
+                snap_small(sp, sq, bits),
+                snap_big(&n, bits),
+                "{p}/{q} at {bits}"
+            );
+            ties += i32::from(
+                (i128::from(sp) << (bits + 1)).rem_euclid(i128::from(2 * sq)) == i128::from(sq),
+            );
+            let f = Format {
+                frac_bits: bits + 1,
+            };
+            let big_exact = {
+                let scaled = n.numerator() << f.frac_bits as usize;
+                let q = IBig::from(n.denominator().clone());
+                let (units, rest) = div_floor(&scaled, &q);
+                (rest == IBig::ZERO).then(|| Fixed((&units).try_into().unwrap()))
+            };
+            assert_eq!(f.exact(&n), big_exact, "{p}/{q}");
+        }
+        assert!(ties > 100, "{ties} ties");
     }
 
     #[test]

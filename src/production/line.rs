@@ -578,6 +578,18 @@ pub fn draw<E: EdgeInt>(
     let shading = plan
         .interpolates()
         .then(|| LineShading::new(line, &g, plan));
+    if line.rule == LineRule::Midpoint && shading.is_none() {
+        // Coverage only: each pixel written in place, as `Frame::hit` does.
+        let width = frame.width as usize;
+        let id = index as u32 + 1;
+        let (coverage, last) = (&mut frame.coverage, &mut frame.last);
+        midpoint(&g, format, line.last_pixel, canvas, |x, y| {
+            let i = y as usize * width + x as usize;
+            coverage[i] = coverage[i].saturating_add(1);
+            last[i] = id;
+        });
+        return Ok(());
+    }
     let mut sink = LineSink {
         frame,
         index,
