@@ -185,8 +185,11 @@ pub fn visit<T, F>(
         return;
     }
     let columns = i64::from(xs.end - xs.start);
-    let x0 = to_t(&grid.centre(i64::from(xs.start)));
     let spacing = to_t(&grid.scale);
+    // Grid::centre in T: i·scale + scale/2.
+    let half = to_t(&(&grid.scale >> 1));
+    let centre = |i: u32| T::from_i64(i64::from(i)).mul(&spacing).add(&half);
+    let x0 = centre(xs.start);
     let sign = setup.area.signum();
     let signed = |t: T| if sign > 0 { t } else { T::zero().sub(&t) };
     // Per edge: the orientation's change from one column to the next,
@@ -195,7 +198,8 @@ pub fn visit<T, F>(
     let least = setup.owns.map(|owns| T::from_i64(i64::from(!owns)));
     let zero = T::zero();
     for y in ys {
-        let py = to_t(&grid.centre(i64::from(y)));
+        let py = centre(y);
+        debug_assert!(py == to_t(&grid.centre(i64::from(y))));
         let first = [x0.clone(), py.clone()];
         let start = [0, 1, 2].map(|i| orient(&setup.v[i], &setup.v[(i + 1) % 3], &first));
         // Columns k in [from, to] with signed(start + k·step) ≥ least.
