@@ -6,7 +6,10 @@
 
 use std::path::Path;
 
-use rastercheck::adapters::lavapipe::{self, Lavapipe};
+use rastercheck::adapters::lavapipe::{self, Lavapipe, STANDARD_4X};
+use rastercheck::frame::Frame;
+use rastercheck::plan::{Plan, SamplePlan};
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::Scene;
 use rastercheck::suite::{self, CandidateRun, Verdict};
 
@@ -25,7 +28,7 @@ fn available() -> bool {
 }
 
 mod common;
-use common::{case, inline, report};
+use common::{case, inline, mismatched_samples, report, sample_name};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Lavapipe)
@@ -270,4 +273,385 @@ fn is_listed_by_name() {
     assert!(rastercheck::adapters::names().contains(&"lavapipe"));
     let r = rastercheck::adapters::by_name("lavapipe").expect("registered");
     assert_eq!(r.name(), "lavapipe");
+}
+
+/// The bundled standard 4× antialiasing cases (`cases/antialias/*standard4*`,
+/// the probe among them, and `count_standard_4`), sorted.
+fn standard_4x_cases() -> Vec<String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/antialias");
+    let mut ids: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| {
+            let name = e.ok()?.file_name().into_string().ok()?;
+            let stem = name.strip_suffix(".json")?;
+            (stem.contains("standard4") || stem.ends_with("standard_4"))
+                .then(|| format!("antialias/{stem}"))
+        })
+        .collect();
+    ids.sort();
+    assert!(ids.contains(&"antialias/probe_standard4".to_owned()));
+    ids
+}
+
+/// lavapipe's 4× MSAA mask, read back sample by sample, against the exact
+/// reference's on every bundled standard 4× case: every sample's count and
+/// last primitive equal. The polygon sweeps are refused (lavapipe draws
+/// triangles only), never passed.
+#[test]
+fn standard_4x_masks_equal_the_references_sample_by_sample() {
+    if !available() {
+        return;
+    }
+    eprintln!("msaa formats: {}", lavapipe::msaa_formats().unwrap());
+    let (mut passed, mut refused) = (0, 0);
+    let mut failures = Vec::new();
+    for id in standard_4x_cases() {
+        let scene = case(&id);
+        let (reference, run) = run(&scene);
+        eprintln!("{}", report(&id, &reference, &run));
+        if scene.has_polygons() {
+            assert!(
+                matches!(run.verdict, Verdict::Unsupported(_)),
+                "{id}: {}",
+                run.verdict.label()
+            );
+            refused += 1;
+            continue;
+        }
+        let frame = run.frame.as_ref().expect("lavapipe drew a frame");
+        assert_eq!(frame.samples, 4, "{id}");
+        assert!(
+            frame.covered_samples() > 0 || reference.frame.covered_samples() == 0,
+            "{id}: lavapipe drew nothing"
+        );
+        let wrong = mismatched_samples(&reference.frame, frame);
+        if !wrong.is_empty() || run.verdict != Verdict::Pass {
+            let names: Vec<String> = wrong.iter().map(|&i| sample_name(frame, i)).collect();
+            failures.push(format!(
+                "{id}: {} ({})",
+                run.verdict.label(),
+                names.join(" ")
+            ));
+        } else {
+            passed += 1;
+        }
+    }
+    eprintln!("standard 4x: {passed} exact, {refused} refused (polygons)");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(passed >= 10, "only {passed} cases drawn");
+}
+
+/// A 1/16-px square (two triangles, half-size 1/32) centred on the
+/// standard location of sample i, in pixel (i, 0), for each i: the centre
+/// is on the squares' shared diagonal, which the top-left rule gives to one
+/// of them, and the square reaches no other sample.
+fn probe_scene() -> Scene {
+    let mut triangles = Vec::new();
+    for (i, [sx, sy]) in STANDARD_4X.iter().enumerate() {
+        let (cx, cy) = (i as f64 + f64::from(*sx) / 16.0, f64::from(*sy) / 16.0);
+        let (l, r, t, b) = (
+            cx - 1.0 / 32.0,
+            cx + 1.0 / 32.0,
+            cy - 1.0 / 32.0,
+            cy + 1.0 / 32.0,
+        );
+        triangles.push(format!(
+            r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#
+        ));
+        triangles.push(format!(
+            r#"{{"triangle": [[{l}, {t}], [{r}, {b}], [{l}, {b}]]}}"#
+        ));
+    }
+    inline(&format!(
+        r#"{{"name": "probe", "canvas": {{"width": 4, "height": 1}},
+            "rules": {{"subpixel_bits": 8}},
+            "effects": {{"antialias": {{"samples": 4, "pattern": "standard"}}}},
+            "primitives": [{}],
+            "expect": {{"max_coverage_error": 0.25, "max_coverage_rms": 0.25}}}}"#,
+        triangles.join(", ")
+    ))
+}
+
+/// The readback's slot order and lavapipe's sample positions: a tiny square
+/// on standard location i lights exactly slot i of its pixel and nothing
+/// else, so sample index i of the driver is standard location i, slot i.
+#[test]
+fn a_probe_on_each_standard_location_lights_exactly_that_slot() {
+    if !available() {
+        return;
+    }
+    let scene = probe_scene();
+    let (reference, run) = run(&scene);
+    let frame = run.frame.as_ref().expect("lavapipe drew a frame");
+    let lit: Vec<String> = (0..frame.sample_count())
+        .filter(|&i| frame.coverage[i] > 0)
+        .map(|i| sample_name(frame, i))
+        .collect();
+    assert_eq!(lit, ["(0,0)#0", "(1,0)#1", "(2,0)#2", "(3,0)#3"]);
+    for i in 0..4 {
+        assert_eq!(frame.coverage[i * 4 + i], 1, "sample {i}");
+    }
+    assert_eq!(frame.resolved, Some(vec![0.25; 4]));
+    assert_eq!(
+        run.verdict,
+        Verdict::Pass,
+        "{}",
+        report("probe", &reference, &run)
+    );
+}
+
+/// lavapipe with each pixel's samples read back in the wrong order.
+struct SlotsReversed;
+
+impl Rasterizer for SlotsReversed {
+    fn name(&self) -> &str {
+        "lavapipe-slots-reversed"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Lavapipe.capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut frame = Lavapipe.rasterize(scene, plan)?;
+        let n = frame.samples as usize;
+        frame.coverage.chunks_mut(n).for_each(<[u16]>::reverse);
+        frame.last.chunks_mut(n).for_each(<[u32]>::reverse);
+        Ok(frame)
+    }
+}
+
+/// The comparison has teeth: the same frames with each pixel's slots
+/// reversed fail the probe (every probe lands on the wrong slot) and the
+/// bundled probe case, though the box resolve is unchanged.
+#[test]
+fn a_readback_in_the_wrong_slot_order_fails() {
+    if !available() {
+        return;
+    }
+    for (id, scene) in [
+        ("probe", probe_scene()),
+        (
+            "antialias/probe_standard4",
+            case("antialias/probe_standard4"),
+        ),
+    ] {
+        let reference = suite::run_reference(&scene);
+        let right = suite::run_candidate(&scene, &reference, &Lavapipe);
+        assert_eq!(
+            right.verdict,
+            Verdict::Pass,
+            "{}",
+            report(id, &reference, &right)
+        );
+        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed);
+        eprintln!("{}", report(id, &reference, &wrong));
+        assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
+        let frame = wrong.frame.as_ref().unwrap();
+        // Slots 0 and 3, 1 and 2 trade places: every covered sample moves.
+        let moved = mismatched_samples(&reference.frame, frame).len();
+        assert_eq!(moved as u64, 2 * reference.frame.covered_samples(), "{id}");
+        assert_eq!(
+            frame.resolved,
+            right.frame.as_ref().unwrap().resolved,
+            "{id}"
+        );
+    }
+}
+
+/// Only Vulkan's standard 4× offsets are drawn, checked offset by offset:
+/// other counts and patterns are refused with the reason, and the standard
+/// table in the wrong order is refused though its positions are the same.
+#[test]
+fn other_sample_patterns_are_refused() {
+    let plan = |offsets: Vec<[u32; 2]>, position_bits| SamplePlan {
+        offsets,
+        position_bits,
+        adaptive: false,
+    };
+    assert_eq!(
+        lavapipe::standard_4x_refusal(&plan(STANDARD_4X.to_vec(), 4)),
+        None
+    );
+    let at_8: Vec<[u32; 2]> = STANDARD_4X.iter().map(|p| p.map(|c| c << 4)).collect();
+    assert_eq!(lavapipe::standard_4x_refusal(&plan(at_8.clone(), 8)), None);
+    assert!(lavapipe::standard_4x_refusal(&plan(at_8, 9)).is_some());
+    let mut reversed = STANDARD_4X.to_vec();
+    reversed.reverse();
+    assert!(lavapipe::standard_4x_refusal(&plan(reversed, 4)).is_some());
+    if !available() {
+        return;
+    }
+    let scene = |aa: &str| {
+        inline(&format!(
+            r#"{{"name": "aa", "canvas": {{"width": 8, "height": 8}},
+                "effects": {{"antialias": {aa}}},
+                "primitives": [{{"triangle": [[0, 0], [8, 1], [1, 7]]}}]}}"#
+        ))
+    };
+    for aa in [
+        r#"{"samples": 8, "pattern": "standard"}"#,
+        r#"{"samples": 16, "pattern": "standard"}"#,
+        r#"{"samples": 4, "pattern": "grid"}"#,
+        r#"{"samples": 4, "pattern": "random", "seed": 3}"#,
+    ] {
+        let (_, r) = run(&scene(aa));
+        match &r.verdict {
+            Verdict::Unsupported(why) => assert!(why.contains("standard positions only"), "{why}"),
+            other => panic!("{aa}: {}", other.label()),
+        }
+    }
+    for bits in [4, 8, 16] {
+        let aa = format!(r#"{{"samples": 4, "pattern": "standard", "position_bits": {bits}}}"#);
+        let (reference, r) = run(&scene(&aa));
+        assert_eq!(r.verdict, Verdict::Pass, "{}", report(&aa, &reference, &r));
+    }
+}
+
+/// Depth and linear and flat attributes under 4× MSAA, interpolated at
+/// each sample's own position (`@interpolate(linear, sample)`), within the
+/// default bound, the mask exact: the linear and flat triangles of
+/// `triangles/interp_mixed_modes`.
+#[test]
+fn depth_and_linear_attributes_per_sample_are_within_the_bound() {
+    if !available() {
+        return;
+    }
+    let scene = inline(
+        r#"{"name": "modes4x", "canvas": {"width": 16, "height": 16},
+            "rules": {"subpixel_bits": 8},
+            "effects": {"antialias": {"samples": 4, "pattern": "standard"}},
+            "primitives": [
+              {"triangle": [{"position": [16, 0], "z": 2, "w": 3, "attributes": [-100, 100]},
+                            {"position": [16, 16], "z": 4, "w": 0.5, "attributes": [0, 0]},
+                            {"position": [0, 16], "z": 3, "w": 1, "attributes": ["1/3", 50]}],
+               "interpolation": "linear"},
+              {"triangle": [{"position": [16, 16], "z": 4, "w": 0.5, "attributes": [0, 0]},
+                            {"position": [0, 0], "z": 1, "w": 0.2, "attributes": [100, -100]},
+                            {"position": [8, -4], "z": 0, "w": 2, "attributes": [-7, 7]}],
+               "interpolation": "flat"}],
+            "expect": {"max_coverage_error": 1, "max_coverage_rms": 1}}"#,
+    );
+    let (reference, r) = run(&scene);
+    eprintln!("{}", report("linear and flat at 4x", &reference, &r));
+    let frame = r.frame.as_ref().expect("lavapipe drew a frame");
+    assert!(mismatched_samples(&reference.frame, frame).is_empty());
+    let m = r.metrics.as_ref().unwrap();
+    assert_eq!(m.channels.len(), 3, "depth and two attributes compared");
+    for c in &m.channels {
+        eprintln!(
+            "        {}: max {:.3e} ({:.1} ulp), bound {:.3e} over {} samples",
+            c.channel, c.max_abs, c.max_ulp, c.allowed_abs, c.samples
+        );
+        assert!(c.within_bounds(), "{}", c.channel);
+        assert_eq!(
+            c.samples,
+            reference.frame.covered_samples(),
+            "{}",
+            c.channel
+        );
+    }
+    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+}
+
+/// A finding in the driver (Mesa 22.3 llvmpipe): with per-sample
+/// interpolation, a perspective attribute is Σ λ·a/w interpolated at the
+/// sample divided by Σ λ/w interpolated at the pixel centre, not at the
+/// sample. The check catches it (the case fails, errors up to ~12 on a
+/// range of 200); in fully covered pixels every sample equals that mixed
+/// quotient to f32 precision.
+#[test]
+fn perspective_attributes_per_sample_divide_by_w_at_the_pixel_centre() {
+    if !available() {
+        return;
+    }
+    // (0,0) w 0.2 a 100; (16,0) w 3 a −100; (0,16) w 1 a 1/3: λ1 = x/16,
+    // λ2 = y/16 in screen space.
+    let scene = inline(
+        r#"{"name": "persp4x", "canvas": {"width": 16, "height": 16},
+            "rules": {"subpixel_bits": 8},
+            "effects": {"antialias": {"samples": 4, "pattern": "standard"}},
+            "primitives": [
+              {"triangle": [{"position": [0, 0], "w": 0.2, "attributes": [100]},
+                            {"position": [16, 0], "w": 3, "attributes": [-100]},
+                            {"position": [0, 16], "w": 1, "attributes": ["1/3"]}]}]}"#,
+    );
+    let (reference, r) = run(&scene);
+    eprintln!("finding: {}", report("perspective at 4x", &reference, &r));
+    assert!(
+        matches!(r.verdict, Verdict::Fail(_)),
+        "{}",
+        suite::describe(&r)
+    );
+    let frame = r.frame.as_ref().expect("lavapipe drew a frame");
+    assert!(mismatched_samples(&reference.frame, frame).is_empty());
+    let (a, w) = ([100.0, -100.0, 1.0 / 3.0], [0.2f64, 3.0, 1.0]);
+    let sums = |x: f64, y: f64| {
+        let l = [1.0 - x / 16.0 - y / 16.0, x / 16.0, y / 16.0];
+        let den: f64 = (0..3).map(|k| l[k] / w[k]).sum();
+        let num: f64 = (0..3).map(|k| l[k] * a[k] / w[k]).sum();
+        (num, den)
+    };
+    let (mut checked, mut worst_reference) = (0, 0.0f64);
+    for p in 0..frame.pixel_count() {
+        let slots = p * 4..p * 4 + 4;
+        if !slots.clone().all(|i| frame.coverage[i] == 1) {
+            continue;
+        }
+        let (px, py) = ((p % 16) as f64, (p / 16) as f64);
+        let (_, den_centre) = sums(px + 0.5, py + 0.5);
+        for (s, i) in slots.enumerate() {
+            let [sx, sy] = STANDARD_4X[s].map(|c| f64::from(c) / 16.0);
+            let (num, den) = sums(px + sx, py + sy);
+            let got = frame.attributes[0][i];
+            let mixed = num / den_centre;
+            assert!(
+                (got - mixed).abs() <= 1e-4 * mixed.abs().max(1.0),
+                "{}: {got} is not {mixed} (exact {})",
+                sample_name(frame, i),
+                num / den
+            );
+            worst_reference = worst_reference.max((got - reference.frame.attributes[0][i]).abs());
+            checked += 1;
+        }
+    }
+    eprintln!("{checked} samples of fully covered pixels; worst error {worst_reference:.3}");
+    assert!(checked > 100 && worst_reference > 1.0);
+}
+
+/// Every antialiasing case once, for the record: lavapipe draws the
+/// standard 4× ones it can (triangles), refuses the rest with a reason, and
+/// never errors.
+#[test]
+fn every_antialias_case_for_the_record() {
+    if !available() {
+        return;
+    }
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/antialias");
+    let mut ids: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| {
+            let name = e.ok()?.file_name().into_string().ok()?;
+            Some(format!("antialias/{}", name.strip_suffix(".json")?))
+        })
+        .collect();
+    ids.sort();
+    let (mut drawn, mut refused) = (0, 0);
+    let mut errors = Vec::new();
+    for id in &ids {
+        let scene = case(id);
+        let (reference, run) = run(&scene);
+        eprintln!("{}", report(id, &reference, &run));
+        match &run.verdict {
+            Verdict::Error(why) => errors.push(format!("{id}: {why}")),
+            Verdict::Unsupported(_) => refused += 1,
+            _ => {
+                drawn += 1;
+                assert_eq!(reference.plan.samples_per_pixel, 4, "{id}");
+            }
+        }
+    }
+    eprintln!("{drawn} drawn, {refused} refused of {}", ids.len());
+    assert!(errors.is_empty(), "lavapipe broke: {}", errors.join("\n"));
+    assert!(drawn >= 13, "{drawn} drawn");
 }

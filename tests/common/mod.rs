@@ -30,21 +30,51 @@ pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> (suite::ReferenceRun, C
 }
 
 /// The samples whose count or owner differ, as "(x,y) reference
-/// count/owner NAME count/owner", at most 12.
+/// count/owner NAME count/owner", at most 12; "(x,y)#s" names sample slot s
+/// of a multisampled frame. Frames of other sample counts (an area method's
+/// resolved-only frame) have no samples to compare.
 pub fn differences(reference: &Frame, candidate: &Frame, name: &str) -> Vec<String> {
+    mismatched_samples(reference, candidate)
+        .into_iter()
+        .take(12)
+        .map(|i| {
+            format!(
+                "{} reference {}/{} {name} {}/{}",
+                sample_name(reference, i),
+                reference.coverage[i],
+                reference.last[i],
+                candidate.coverage[i],
+                candidate.last[i]
+            )
+        })
+        .collect()
+}
+
+/// Every sample slot whose count or owner differ (none when the frames'
+/// sample counts differ).
+pub fn mismatched_samples(reference: &Frame, candidate: &Frame) -> Vec<usize> {
+    if reference.samples != candidate.samples
+        || reference.sample_count() != candidate.sample_count()
+    {
+        return Vec::new();
+    }
     (0..reference.sample_count())
         .filter(|&i| {
             reference.coverage[i] != candidate.coverage[i] || reference.last[i] != candidate.last[i]
         })
-        .take(12)
-        .map(|i| {
-            let (x, y) = (i as u32 % reference.width, i as u32 / reference.width);
-            format!(
-                "({x},{y}) reference {}/{} {name} {}/{}",
-                reference.coverage[i], reference.last[i], candidate.coverage[i], candidate.last[i]
-            )
-        })
         .collect()
+}
+
+/// Slot i as "(x,y)", or "(x,y)#s" in a frame of several samples per pixel.
+pub fn sample_name(frame: &Frame, i: usize) -> String {
+    let n = frame.samples.max(1) as usize;
+    let (p, s) = (i / n, i % n);
+    let (x, y) = (p as u32 % frame.width, p as u32 / frame.width);
+    if n == 1 {
+        format!("({x},{y})")
+    } else {
+        format!("({x},{y})#{s}")
+    }
 }
 
 /// One line per case: verdict, metrics, and the first differing samples.
