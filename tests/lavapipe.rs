@@ -655,3 +655,53 @@ fn every_antialias_case_for_the_record() {
     assert!(errors.is_empty(), "lavapipe broke: {}", errors.join("\n"));
     assert!(drawn >= 13, "{drawn} drawn");
 }
+
+/// The tie rule at the sample positions: two triangles share the vertical
+/// edge x = 4 + 6/16, which runs through sample 0 of every pixel of column
+/// 4. lavapipe gives those 8 samples to the right triangle (the edge is
+/// its left edge: top-left), sample by sample as the reference does under
+/// top-left and bottom-left; under top-right and bottom-right the reference
+/// gives them to the left triangle and the check sees exactly those 8.
+#[test]
+fn ties_at_sample_positions_follow_the_top_left_rule() {
+    if !available() {
+        return;
+    }
+    let pair = |rule: &str| {
+        inline(&format!(
+            r#"{{"name": "tie4x", "canvas": {{"width": 8, "height": 8}},
+                "rules": {{"subpixel_bits": 8, "fill_rule": "{rule}"}},
+                "effects": {{"antialias": {{"samples": 4, "pattern": "standard"}}}},
+                "primitives": [
+                  {{"triangle": [[4.375, -8], [4.375, 16], [-20, 4]]}},
+                  {{"triangle": [[4.375, -8], [30, 4], [4.375, 16]]}}],
+                "expect": {{"max_coverage_error": 1, "max_coverage_rms": 1}}}}"#
+        ))
+    };
+    for (rule, differing) in [
+        ("top-left", 0),
+        ("bottom-left", 0),
+        ("top-right", 8),
+        ("bottom-right", 8),
+    ] {
+        let (reference, r) = run(&pair(rule));
+        eprintln!("{}", report(rule, &reference, &r));
+        let frame = r.frame.as_ref().expect("lavapipe drew a frame");
+        assert_eq!(frame.covered_samples(), 256, "{rule}");
+        let wrong: Vec<String> = mismatched_samples(&reference.frame, frame)
+            .into_iter()
+            .map(|i| sample_name(frame, i))
+            .collect();
+        let expected: Vec<String> = (0..differing).map(|y| format!("(4,{y})#0")).collect();
+        assert_eq!(wrong, expected, "{rule}");
+        for y in 0..8 {
+            assert_eq!(frame.last[frame.index(4, y)], 2, "{rule}: (4,{y})#0");
+        }
+        let m = r.metrics.as_ref().unwrap();
+        assert_eq!(
+            (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),
+            (differing as u64, 0, 0),
+            "{rule}"
+        );
+    }
+}
