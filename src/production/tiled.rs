@@ -28,8 +28,10 @@ use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Canvas, Primitive, Scene};
 
-/// Pixel rows per band.
-pub const BAND: u32 = 64;
+/// Pixel rows per band: small enough that two threads share even a small
+/// canvas in many pieces (a thread the scheduler puts off leaves few rows
+/// behind), large enough that most small triangles are set up once.
+pub const BAND: u32 = 16;
 
 /// Coordinates (in pixels) and canvas sides up to which bands are drawn.
 const SAFE: i64 = 1 << 14;
