@@ -162,6 +162,9 @@ pub struct Report {
     pub targets: Vec<Target>,
     pub notes: Vec<String>,
     pub elapsed: Duration,
+    /// The machine's load averages (1, 5, 15 min) before and after the
+    /// run, where the system reports them: other work sharing the cores.
+    pub load: Option<(String, String)>,
 }
 
 // --- The naive floor --------------------------------------------------------
@@ -1025,7 +1028,14 @@ fn machine() -> (String, usize) {
 }
 
 /// Runs every workload.
+fn load_average() -> Option<String> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    let fields: Vec<&str> = text.split_whitespace().take(3).collect();
+    (fields.len() == 3).then(|| fields.join(" "))
+}
+
 pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
+    let load_before = load_average();
     let started = Instant::now();
     let sizes = Sizes::for_options(options);
     let mut notes = Vec::new();
@@ -1066,6 +1076,7 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
         targets,
         notes,
         elapsed: started.elapsed(),
+        load: load_before.zip(load_average()),
     }
 }
 
@@ -1111,6 +1122,15 @@ impl Report {
             self.repetitions,
             self.elapsed.as_secs_f64()
         );
+        if let Some((before, after)) = &self.load {
+            let _ = writeln!(
+                md,
+                "- load average (1, 5, 15 min): {before} before the run, {after} after; \
+                 above 0 it is other work sharing the {} cores, which the two-thread \
+                 method feels most",
+                self.cores
+            );
+        }
         if self.quick {
             let _ = writeln!(
                 md,
