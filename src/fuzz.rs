@@ -54,8 +54,9 @@ use crate::rasterizer::Rasterizer;
 use crate::reference::{self, exact::snap};
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS, W_LIMIT};
 use crate::scene::{
-    Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter,
-    LineRule, Number, Primitive, Rules, Scene, Triangle, Vertex,
+    parse_case, Antialias, Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel,
+    Limits, Line, LineParameter, LineRule, Number, Pattern, Polygon, PolygonFill, Primitive, Rules,
+    Scene, Triangle, Vertex,
 };
 use crate::suite::{self, ReferenceRun, Verdict};
 
@@ -150,16 +151,31 @@ pub enum Family {
     Lines,
     /// Watertight meshes, with `expect.watertight: true`.
     Meshes,
+    /// Polygons of one to three contours (self-intersecting, holes, doubled
+    /// and repeated vertices) under both fills, with a triangle or two.
+    Polygons,
+    /// Triangles, polygons and parallelogram lines under
+    /// `effects.antialias` (every pattern, 1 to 256 samples, adaptive or
+    /// not, position bits 4 to 16).
+    Antialias,
 }
 
 impl Family {
-    pub const ALL: [Family; 3] = [Family::Triangles, Family::Meshes, Family::Lines];
+    pub const ALL: [Family; 5] = [
+        Family::Triangles,
+        Family::Meshes,
+        Family::Lines,
+        Family::Polygons,
+        Family::Antialias,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             Family::Triangles => "triangles",
             Family::Lines => "lines",
             Family::Meshes => "meshes",
+            Family::Polygons => "polygons",
+            Family::Antialias => "antialias",
         }
     }
 
@@ -171,13 +187,15 @@ impl Family {
 /// Case `index` of a run with `seed`: its family (the one asked for, or the
 /// families in turn) and its scene.
 pub fn generate(seed: u64, index: u64, family: Option<Family>) -> (Family, Scene) {
-    let family = family.unwrap_or(Family::ALL[(index % 3) as usize]);
+    let family = family.unwrap_or(Family::ALL[(index % Family::ALL.len() as u64) as usize]);
     let mut rng = Rng::for_case(seed, index);
     loop {
         let scene = match family {
             Family::Triangles => Some(triangle_scene(&mut rng)),
             Family::Lines => Some(line_scene(&mut rng)),
             Family::Meshes => mesh_scene(&mut rng),
+            Family::Polygons => Some(polygon_scene(&mut rng)),
+            Family::Antialias => Some(antialias_scene(&mut rng)),
         };
         if let Some(mut scene) = scene.filter(|s| valid(s).is_ok()) {
             scene.name = format!("fuzz_{}_{seed}_{index}", family.name());
@@ -380,6 +398,202 @@ fn line_scene(rng: &mut Rng) -> Scene {
         }));
     }
     scene_of(canvas, any_rules(rng), primitives, &values)
+}
+
+// Polygons and antialiasing (SPEC.md §14).
+
+/// One contour of 3 to 8 vertices; sometimes with a vertex repeated, a
+/// vertex inserted halfway along an edge (collinear), or the whole contour
+/// run twice (winding twice, every edge doubled).
+fn contour(rng: &mut Rng, canvas: Canvas) -> Vec<Vertex> {
+    let n = rng.range(3, 9) as usize;
+    let mut vs: Vec<Vertex> = (0..n)
+        .map(|_| {
+            Vertex::at(
+                coordinate(rng, canvas.width),
+                coordinate(rng, canvas.height),
+            )
+        })
+        .collect();
+    if rng.chance(1, 5) {
+        let k = rng.below(vs.len() as u64) as usize;
+        let copy = vs[k].clone();
+        vs.insert(k, copy);
+    }
+    if rng.chance(1, 5) {
+        let k = rng.below(vs.len() as u64) as usize;
+        let (a, b) = (&vs[k], &vs[(k + 1) % vs.len()]);
+        let half = |p: &Number, q: &Number| num(&((p.as_rbig() + q.as_rbig()) / RBig::from(2u8)));
+        let mid = Vertex::at(half(&a.x, &b.x), half(&a.y, &b.y));
+        vs.insert(k + 1, mid);
+    }
+    if rng.chance(1, 10) {
+        vs.extend(vs.clone());
+    }
+    vs
+}
+
+fn polygon(rng: &mut Rng, canvas: Canvas) -> Polygon {
+    let mut vertices = Vec::new();
+    let mut contour_ends = Vec::new();
+    for _ in 0..*rng.pick(&[1, 1, 1, 2, 2, 3]) {
+        vertices.extend(contour(rng, canvas));
+        contour_ends.push(vertices.len());
+    }
+    let fill = *rng.pick(&[PolygonFill::NonZero, PolygonFill::EvenOdd]);
+    Polygon {
+        vertices,
+        contour_ends,
+        fill,
+    }
+}
+
+/// A triangle of plain positions (scenes with polygons carry no depth and
+/// no attributes).
+fn plain_triangle(rng: &mut Rng, canvas: Canvas) -> Primitive {
+    let mut point = || {
+        Vertex::at(
+            coordinate(rng, canvas.width),
+            coordinate(rng, canvas.height),
+        )
+    };
+    let vertices = [point(), point(), point()];
+    Primitive::Triangle(Triangle {
+        vertices,
+        interpolation: Interpolation::Perspective,
+    })
+}
+
+/// Rules for polygons: every consistent fill rule (`all-edges` is an input
+/// error there), no culling (it does not apply to polygons).
+fn polygon_rules(rng: &mut Rng) -> Rules {
+    Rules {
+        subpixel_bits: any_bits(rng),
+        fill_rule: *rng.pick(&FillRule::CONSISTENT),
+        cull: Cull::None,
+    }
+}
+
+fn polygon_scene(rng: &mut Rng) -> Scene {
+    let canvas = canvas(rng);
+    let mut primitives = Vec::new();
+    for _ in 0..rng.range(1, 3) {
+        primitives.push(Primitive::Polygon(polygon(rng, canvas)));
+    }
+    for _ in 0..*rng.pick(&[0, 0, 1, 2]) {
+        let at = rng.below(primitives.len() as u64 + 1) as usize;
+        let t = plain_triangle(rng, canvas);
+        primitives.insert(at, t);
+    }
+    let none = Values {
+        attributes: 0,
+        depth: false,
+        w: false,
+    };
+    scene_of(canvas, polygon_rules(rng), primitives, &none)
+}
+
+/// `effects.antialias` with a sample count valid for its pattern; more
+/// samples on smaller canvases.
+fn antialias(rng: &mut Rng, canvas: Canvas) -> Antialias {
+    let pattern = *rng.pick(&Pattern::ALL);
+    let small = canvas.width * canvas.height <= 256;
+    let counts: &[u32] = match pattern {
+        Pattern::Standard => &[1, 2, 4, 8, 16, 16],
+        Pattern::Grid | Pattern::Stratified if small => &[1, 4, 16, 16, 64, 256],
+        Pattern::Grid | Pattern::Stratified => &[1, 4, 9, 16, 16],
+        Pattern::Random | Pattern::NRooks if small => &[1, 3, 8, 16, 16, 64, 256],
+        Pattern::Random | Pattern::NRooks => &[1, 3, 8, 16, 16],
+    };
+    let samples = *rng.pick(counts);
+    debug_assert!(pattern.check_count(samples).is_ok());
+    let position_bits = if rng.chance(2, 3) {
+        8
+    } else {
+        rng.range(4, 17) as u32
+    };
+    Antialias {
+        samples,
+        pattern,
+        seed: if pattern.is_seeded() {
+            rng.below(1000)
+        } else {
+            0
+        },
+        adaptive: rng.chance(1, 3),
+        position_bits,
+    }
+}
+
+fn antialias_scene(rng: &mut Rng) -> Scene {
+    let canvas = Canvas {
+        width: *rng.pick(&[8, 12, 16, 24]),
+        height: *rng.pick(&[8, 12, 16, 24]),
+    };
+    let mut primitives = Vec::new();
+    let with_polygons = rng.chance(1, 2);
+    for _ in 0..rng.range(1, 4) {
+        let p = match rng.below(4) {
+            0 | 1 if with_polygons => Primitive::Polygon(polygon(rng, canvas)),
+            0 => {
+                // The other side of an edge of the last triangle: its
+                // samples go to exactly one, and the coverages add up.
+                match primitives.last() {
+                    Some(Primitive::Triangle(t)) => {
+                        let k = rng.below(3) as usize;
+                        let (a, b) = (t.vertices[k].clone(), t.vertices[(k + 1) % 3].clone());
+                        let c = Vertex::at(
+                            coordinate(rng, canvas.width),
+                            coordinate(rng, canvas.height),
+                        );
+                        Primitive::Triangle(Triangle {
+                            vertices: [b, a, c],
+                            interpolation: Interpolation::Perspective,
+                        })
+                    }
+                    _ => plain_triangle(rng, canvas),
+                }
+            }
+            1 | 2 => plain_triangle(rng, canvas),
+            _ => {
+                let mut point = || {
+                    Vertex::at(
+                        coordinate(rng, canvas.width),
+                        coordinate(rng, canvas.height),
+                    )
+                };
+                let vertices = [point(), point()];
+                let width = match rng.below(4) {
+                    0 => Number::ratio(1, 3),
+                    1 => Number::from_int(2),
+                    2 => Number::ratio(1, 16),
+                    _ => Number::ONE,
+                };
+                Primitive::Line(Line {
+                    vertices,
+                    rule: LineRule::Parallelogram,
+                    width,
+                    last_pixel: LastPixel::Include,
+                    parameter: LineParameter::Major,
+                    interpolation: Interpolation::Perspective,
+                })
+            }
+        };
+        primitives.push(p);
+    }
+    let none = Values {
+        attributes: 0,
+        depth: false,
+        w: false,
+    };
+    let rules = if with_polygons {
+        polygon_rules(rng)
+    } else {
+        any_rules(rng)
+    };
+    let mut scene = scene_of(canvas, rules, primitives, &none);
+    scene.effects.antialias = Some(antialias(rng, canvas));
+    scene
 }
 
 // Meshes, after the strategies of tests/properties.rs.
@@ -701,6 +915,21 @@ fn valid(scene: &Scene) -> Result<(), String> {
             return Err("attribute count".to_owned());
         }
     }
+    // Polygons and antialiasing have rules of their own (contours of at
+    // least 3 vertices, sample counts per pattern, no `all-edges` for
+    // polygons, no midpoint lines under antialiasing): the scene must read
+    // back from its case file, so that a shrunk counterexample is a case.
+    let polygons = scene
+        .primitives
+        .iter()
+        .any(|p| matches!(p, Primitive::Polygon(_)));
+    if polygons || scene.effects.antialias.is_some() {
+        let mut named = scene.clone();
+        named.name = "fuzz".to_owned();
+        named.description = "fuzz".to_owned();
+        parse_case(&case_json(&named), "fuzz", &Limits::default())
+            .map_err(|e| format!("not a valid case: {}", e.message))?;
+    }
     Ok(())
 }
 
@@ -720,17 +949,22 @@ pub enum Kind {
     Lines,
     /// Coverage differs from the reference's (§6.1).
     Coverage,
+    /// Resolved coverage against the exact areas: piglit's rule, the
+    /// coverage error bounds, a resolve that is not the box resolve of the
+    /// candidate's own mask (§14.3).
+    Antialias,
     /// Depth or an attribute beyond its bound (§6.3).
     Interpolation,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 6] = [
+    pub const ALL: [Kind; 7] = [
         Kind::Error,
         Kind::Holes,
         Kind::Overdraw,
         Kind::Lines,
         Kind::Coverage,
+        Kind::Antialias,
         Kind::Interpolation,
     ];
 
@@ -741,6 +975,7 @@ impl Kind {
             Kind::Overdraw => "overdraw",
             Kind::Lines => "lines",
             Kind::Coverage => "coverage",
+            Kind::Antialias => "antialias",
             Kind::Interpolation => "interpolation",
         }
     }
@@ -754,6 +989,9 @@ impl Kind {
             }
             Kind::Lines => "lights one pixel of a midpoint line per major-axis step",
             Kind::Coverage => "covers exactly the reference's samples, with the same owners",
+            Kind::Antialias => {
+                "resolves full pixels to exactly 1, empty ones to 0, within the coverage bounds"
+            }
             Kind::Interpolation => "interpolates depth and attributes within the bound",
         }
     }
@@ -777,7 +1015,8 @@ pub struct Failure {
     pub kinds: Vec<Kind>,
     /// The reasons `run` prints ([`crate::metrics::failures`]), or the error.
     pub reasons: Vec<String>,
-    /// Per kind, the samples (row-major indices) that show it.
+    /// Per kind, the samples (sample `s` of pixel `p` at `p * N + s`, N the
+    /// scene's samples per pixel) that show it.
     focus: Vec<(Kind, Vec<usize>)>,
 }
 
@@ -789,6 +1028,7 @@ impl Failure {
             Kind::Holes | Kind::Overdraw => &["watertight:"],
             Kind::Lines => &["lines:"],
             Kind::Coverage => &["coverage:"],
+            Kind::Antialias => &["antialias:"],
             Kind::Interpolation => &["depth:", "attribute "],
         };
         let found: Vec<String> = self
@@ -840,6 +1080,35 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
             ))
         }
     };
+    // The exact N-sample method (the reference's mask, box-resolved) must
+    // meet the case's coverage bounds: with few samples no sampler meets
+    // piglit's RMS bound on some scenes, and such a scene says nothing
+    // about the candidate.
+    if scene.effects.antialias.is_some() {
+        let mut exact = reference.frame.clone();
+        exact.resolve();
+        let m = crate::metrics::measure_with_areas(
+            scene,
+            &reference.frame,
+            &exact,
+            reference.interior.as_deref(),
+            reference
+                .areas
+                .as_ref()
+                .and_then(|a| a.as_ref().ok())
+                .map(|a| a.classes.as_slice()),
+        );
+        if let Some(aa) = &m.antialias {
+            let broken = crate::metrics::antialias::failures(aa);
+            if !broken.is_empty() {
+                return Outcome::Invalid(format!(
+                    "the exact {}-sample method breaks the coverage bounds: {}",
+                    scene.effects.antialias.as_ref().map_or(1, |a| a.samples),
+                    broken.join("; ")
+                ));
+            }
+        }
+    }
     let run = suite::run_candidate(scene, &reference, candidate);
     match (run.verdict, run.metrics, run.frame) {
         (Verdict::Pass, ..) => Outcome::Pass,
@@ -998,6 +1267,19 @@ fn classify(
         let differ = (0..n).filter(|&i| c.mask[i] != SampleDiff::Same).collect();
         focus.push((Kind::Coverage, differ));
     }
+    if let Some(aa) = &m.antialias {
+        if !crate::metrics::antialias::failures(aa).is_empty() {
+            let per_pixel = r.samples.max(1) as usize;
+            let w = r.width as usize;
+            let pixels: Vec<usize> = aa
+                .first_violation
+                .into_iter()
+                .chain([aa.worst_pixel])
+                .map(|[x, y]| (y as usize * w + x as usize) * per_pixel)
+                .collect();
+            focus.push((Kind::Antialias, pixels));
+        }
+    }
     if m.channels.iter().any(|ch| !ch.within_bounds()) {
         let mut pixels = Vec::new();
         let exact = r.depth.iter().chain(&r.attributes);
@@ -1103,6 +1385,8 @@ pub fn shrink(scene: &Scene, failure: Failure, kind: Kind, candidate: &dyn Raste
         progress |= s.crop();
         progress |= s.trim();
         progress |= s.simplify_state();
+        progress |= s.simplify_antialias();
+        progress |= s.remove_contours_and_vertices();
         progress |= s.move_shared_vertices();
         progress |= s.move_vertices();
         progress |= s.simplify_values();
@@ -1176,6 +1460,15 @@ fn simpler(v: &Number, lo: i64, hi: i64, finest: u32) -> Vec<Number> {
         fresh
     });
     out
+}
+
+/// Sample slots per pixel of a scene's frames.
+fn samples_per_pixel(scene: &Scene) -> usize {
+    scene
+        .effects
+        .antialias
+        .as_ref()
+        .map_or(1, |a| a.samples.max(1) as usize)
 }
 
 impl Shrinker<'_> {
@@ -1262,8 +1555,9 @@ impl Shrinker<'_> {
         }
         let Canvas { width, height } = self.best.canvas;
         let w = width as usize;
-        let xs = focus.iter().map(|i| (i % w) as u32);
-        let ys = focus.iter().map(|i| (i / w) as u32);
+        let n = samples_per_pixel(&self.best);
+        let xs = focus.iter().map(|i| (i / n % w) as u32);
+        let ys = focus.iter().map(|i| (i / n / w) as u32);
         let (x0, x1) = (xs.clone().min().unwrap(), xs.max().unwrap());
         let (y0, y1) = (ys.clone().min().unwrap(), ys.max().unwrap());
         for margin in [0, 1, 2, 4] {
@@ -1398,6 +1692,118 @@ impl Shrinker<'_> {
         self.try_each(edits)
     }
 
+    /// Drops `effects.antialias`, or else makes it simpler: fewer samples
+    /// (each smaller count the pattern allows, smallest first), the
+    /// standard or grid pattern, seed 0, not adaptive, 8 position bits.
+    fn simplify_antialias(&mut self) -> bool {
+        let Some(aa) = self.best.effects.antialias.clone() else {
+            return false;
+        };
+        let mut edits: Vec<Edit> = vec![Box::new(|s| s.effects.antialias.take().is_some())];
+        for n in [1, 2, 3, 4, 8, 9, 16, 64] {
+            if n < aa.samples && aa.pattern.check_count(n).is_ok() {
+                edits.push(Box::new(move |s| {
+                    s.effects.antialias.as_mut().is_some_and(|a| {
+                        a.samples = n;
+                        true
+                    })
+                }));
+            }
+        }
+        for pattern in [Pattern::Standard, Pattern::Grid] {
+            if aa.pattern != pattern && pattern.check_count(aa.samples).is_ok() {
+                edits.push(Box::new(move |s| {
+                    s.effects.antialias.as_mut().is_some_and(|a| {
+                        a.pattern = pattern;
+                        a.seed = 0;
+                        true
+                    })
+                }));
+            }
+        }
+        edits.push(Box::new(|s| {
+            s.effects.antialias.as_mut().is_some_and(|a| {
+                let before = (a.seed, a.adaptive, a.position_bits);
+                if !a.pattern.is_seeded() {
+                    a.seed = 0;
+                }
+                a.adaptive = false;
+                a.position_bits = 8;
+                before != (a.seed, a.adaptive, a.position_bits)
+            })
+        }));
+        edits.push(Box::new(|s| {
+            s.effects
+                .antialias
+                .as_mut()
+                .is_some_and(|a| std::mem::replace(&mut a.seed, 0) != 0)
+        }));
+        self.try_each(edits)
+    }
+
+    /// Removes whole contours of polygons, then single vertices of contours
+    /// longer than 3, and sets the fill to nonzero; a polygon of one
+    /// triangular contour becomes a triangle when that still fails.
+    fn remove_contours_and_vertices(&mut self) -> bool {
+        let mut progress = false;
+        for i in 0..self.best.primitives.len() {
+            let mut c = 0;
+            while let Primitive::Polygon(p) = &self.best.primitives[i] {
+                if c >= p.contour_ends.len() || p.contour_ends.len() == 1 {
+                    break;
+                }
+                let mut scene = self.best.clone();
+                if let Primitive::Polygon(q) = &mut scene.primitives[i] {
+                    remove_contour(q, c);
+                }
+                if self.try_scene(scene) {
+                    progress = true;
+                } else {
+                    c += 1;
+                }
+            }
+            let mut k = 0;
+            while let Primitive::Polygon(p) = &self.best.primitives[i] {
+                if k >= p.vertices.len() {
+                    break;
+                }
+                let mut scene = self.best.clone();
+                let removed = match &mut scene.primitives[i] {
+                    Primitive::Polygon(q) => remove_vertex(q, k),
+                    _ => false,
+                };
+                if removed && self.try_scene(scene) {
+                    progress = true;
+                } else {
+                    k += 1;
+                }
+            }
+            let mut scene = self.best.clone();
+            if let Primitive::Polygon(q) = &mut scene.primitives[i] {
+                if q.fill != PolygonFill::NonZero {
+                    q.fill = PolygonFill::NonZero;
+                    progress |= self.try_scene(scene);
+                }
+            }
+            if let Primitive::Polygon(q) = &self.best.primitives[i] {
+                if q.contour_ends == [3] {
+                    let mut scene = self.best.clone();
+                    let vertices = [
+                        q.vertices[0].clone(),
+                        q.vertices[1].clone(),
+                        q.vertices[2].clone(),
+                    ];
+                    scene.primitives[i] = Primitive::Triangle(Triangle {
+                        vertices,
+                        interpolation: Interpolation::Perspective,
+                    });
+                    progress |= self.try_scene(scene);
+                }
+            }
+        }
+        progress
+    }
+
     /// How simple a vertex position is: its larger denominator, then how
     /// far it lies outside the canvas, then its distance from the origin
     /// (L1). Every coordinate move makes one vertex's key smaller.
@@ -1424,8 +1830,12 @@ impl Shrinker<'_> {
     /// middle when none does).
     fn focus_sample(&self) -> [Number; 2] {
         let Canvas { width, height } = self.best.canvas;
+        let n = samples_per_pixel(&self.best);
         let (px, py) = match self.failure.focus(self.kind).first() {
-            Some(&i) => ((i % width as usize) as i64, (i / width as usize) as i64),
+            Some(&i) => (
+                (i / n % width as usize) as i64,
+                (i / n / width as usize) as i64,
+            ),
             None => (i64::from(width / 2), i64::from(height / 2)),
         };
         [Number::ratio(2 * px + 1, 2), Number::ratio(2 * py + 1, 2)]
@@ -1634,6 +2044,32 @@ impl Shrinker<'_> {
     }
 }
 
+/// Removes contour `c` of a polygon of several contours.
+fn remove_contour(p: &mut Polygon, c: usize) {
+    let start = if c == 0 { 0 } else { p.contour_ends[c - 1] };
+    let end = p.contour_ends[c];
+    p.vertices.drain(start..end);
+    p.contour_ends.remove(c);
+    for e in &mut p.contour_ends[c..] {
+        *e -= end - start;
+    }
+}
+
+/// Removes vertex `k` of a polygon when its contour keeps 3 or more;
+/// `false` when it would not.
+fn remove_vertex(p: &mut Polygon, k: usize) -> bool {
+    let c = p.contour_ends.partition_point(|&e| e <= k);
+    let start = if c == 0 { 0 } else { p.contour_ends[c - 1] };
+    if p.contour_ends[c] - start <= 3 {
+        return false;
+    }
+    p.vertices.remove(k);
+    for e in &mut p.contour_ends[c..] {
+        *e -= 1;
+    }
+    true
+}
+
 // --- Case files ------------------------------------------------------------
 
 fn json_number(n: &Number) -> String {
@@ -1742,8 +2178,27 @@ pub fn case_json(scene: &Scene) -> String {
     if let Some(x) = e.max_ulp_error {
         expect.push(format!("\"max_ulp_error\": {x:e}"));
     }
+    if let Some(x) = e.max_coverage_error {
+        expect.push(format!("\"max_coverage_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_coverage_rms {
+        expect.push(format!("\"max_coverage_rms\": {x:e}"));
+    }
+    if let Some(a) = &e.area {
+        expect.push(format!("\"area\": \"{}\"", a.to_exact_string()));
+    }
+    let effects = scene.effects.antialias.as_ref().map_or(String::new(), |a| {
+        format!(
+            "  \"effects\": {{ \"antialias\": {{ \"samples\": {}, \"pattern\": \"{}\", \"seed\": {}, \"adaptive\": {}, \"position_bits\": {} }} }},\n",
+            a.samples,
+            a.pattern.name(),
+            a.seed,
+            a.adaptive,
+            a.position_bits
+        )
+    });
     format!(
-        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
+        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n{effects}  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
         json_string(&scene.name),
         json_string(&scene.description),
         scene.canvas.width,
@@ -1813,20 +2268,25 @@ fn sanitize(text: &str) -> String {
 }
 
 fn describe_size(scene: &Scene) -> String {
-    let triangles = scene.triangles().count();
-    let lines = scene.primitives.len() - triangles;
+    let count = |f: fn(&Primitive) -> bool| scene.primitives.iter().filter(|p| f(p)).count();
+    let triangles = count(|p| matches!(p, Primitive::Triangle(_)));
+    let lines = count(|p| matches!(p, Primitive::Line(_)));
+    let polygons = count(|p| matches!(p, Primitive::Polygon(_)));
     let mut parts = Vec::new();
-    if triangles > 0 {
-        parts.push(format!(
-            "{triangles} triangle{}",
-            if triangles == 1 { "" } else { "s" }
-        ));
+    for (n, what) in [
+        (triangles, "triangle"),
+        (lines, "line"),
+        (polygons, "polygon"),
+    ] {
+        if n > 0 {
+            parts.push(format!("{n} {what}{}", if n == 1 { "" } else { "s" }));
+        }
     }
-    if lines > 0 {
-        parts.push(format!("{lines} line{}", if lines == 1 { "" } else { "s" }));
-    }
+    let antialias = scene.effects.antialias.as_ref().map_or(String::new(), |a| {
+        format!(" at {} {} samples per pixel", a.samples, a.pattern.name())
+    });
     format!(
-        "{} on a {}×{} canvas",
+        "{} on a {}×{} canvas{antialias}",
         parts.join(" and "),
         scene.canvas.width,
         scene.canvas.height
@@ -1865,6 +2325,12 @@ fn finished_case(
     );
     let plan = Plan::for_scene(&scene);
     scene.expect.samples_covered = Some(reference::render(&scene, &plan).covered_samples());
+    if scene.effects.antialias.is_some() {
+        let total = reference::exact_areas(&scene)
+            .iter()
+            .fold(RBig::ZERO, |sum, a| sum + a);
+        scene.expect.area = Some(num(&total));
+    }
     scene
 }
 
@@ -2000,6 +2466,67 @@ mod tests {
                 .unwrap_or_else(|e| panic!("{e}\n{text}"));
             assert_eq!(case_json(&back), text);
         }
+    }
+
+    #[test]
+    fn polygon_and_antialias_families_read_back_and_vary() {
+        let (mut contours, mut fills, mut patterns) = (0, Vec::new(), Vec::new());
+        let (mut adaptive, mut lines) = (false, false);
+        for i in 0..150 {
+            for family in [Family::Polygons, Family::Antialias] {
+                let (_, scene) = generate(3, i, Some(family));
+                let text = case_json(&scene);
+                let back = crate::scene::parse_case(&text, "t", &Default::default())
+                    .unwrap_or_else(|e| panic!("{e}\n{text}"));
+                assert_eq!(case_json(&back), text);
+                for p in &scene.primitives {
+                    match p {
+                        Primitive::Polygon(q) => {
+                            contours = contours.max(q.contour_ends.len());
+                            if !fills.contains(&q.fill) {
+                                fills.push(q.fill);
+                            }
+                        }
+                        Primitive::Line(l) => lines |= l.rule == LineRule::Parallelogram,
+                        Primitive::Triangle(_) => {}
+                    }
+                }
+                if let Some(a) = &scene.effects.antialias {
+                    assert_eq!(family, Family::Antialias);
+                    adaptive |= a.adaptive;
+                    if !patterns.contains(&a.pattern) {
+                        patterns.push(a.pattern);
+                    }
+                }
+            }
+        }
+        assert_eq!(contours, 3);
+        assert_eq!(fills.len(), 2);
+        assert_eq!(patterns.len(), Pattern::ALL.len());
+        assert!(adaptive && lines);
+    }
+
+    #[test]
+    fn contours_and_vertices_are_removed_in_place() {
+        let v = |k: i64| Vertex::at(Number::from_int(k), Number::from_int(-k));
+        let mut p = Polygon {
+            vertices: (0..10).map(v).collect(),
+            contour_ends: vec![3, 7, 10],
+            fill: PolygonFill::EvenOdd,
+        };
+        // A 3-vertex contour keeps its vertices.
+        assert!(!remove_vertex(&mut p, 1));
+        assert!(remove_vertex(&mut p, 4));
+        assert_eq!(p.contour_ends, vec![3, 6, 9]);
+        let xs = |p: &Polygon| p.vertices.iter().map(|v| v.x.clone()).collect::<Vec<_>>();
+        let n = |ks: &[i64]| ks.iter().map(|&k| Number::from_int(k)).collect::<Vec<_>>();
+        assert_eq!(xs(&p), n(&[0, 1, 2, 3, 5, 6, 7, 8, 9]));
+        remove_contour(&mut p, 1);
+        assert_eq!(p.contour_ends, vec![3, 6]);
+        assert_eq!(xs(&p), n(&[0, 1, 2, 7, 8, 9]));
+        remove_contour(&mut p, 0);
+        assert_eq!(p.contour_ends, vec![3]);
+        assert_eq!(xs(&p), n(&[7, 8, 9]));
     }
 
     #[test]

@@ -207,3 +207,74 @@ fn check_selects_the_kind_to_shrink() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Fuzzes `family` on `rasterizer` and checks the shrunk case: it reads
+/// back (effects and polygons included), has at most `most` primitives,
+/// `run` fails it for `rasterizer` with a reason starting `reason` and
+/// production passes it. Returns the case text.
+fn finds_and_shrinks(
+    rasterizer: &str,
+    family: &str,
+    seed: &str,
+    most: usize,
+    reason: &str,
+) -> String {
+    let dir = scratch(&format!("{family}-{}", rasterizer.replace(':', "-")));
+    let out = rastercheck(&[
+        "fuzz",
+        "-r",
+        rasterizer,
+        "--family",
+        family,
+        "--seed",
+        seed,
+        "--cases",
+        "100",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{log}");
+    let path = written(&dir);
+    let case = std::fs::read_to_string(&path).unwrap();
+    let scene = parse_case(&case, "shrunk", &Limits::default()).expect("a valid case");
+    assert!(
+        (1..=most).contains(&scene.primitives.len()),
+        "not shrunk to {most} primitives or fewer:\n{case}"
+    );
+    let again = rastercheck(&["run", path.to_str().unwrap(), "-r", rasterizer]);
+    let again_log = text(&again);
+    assert_eq!(again.status.code(), Some(1), "{again_log}\n{case}");
+    assert!(again_log.contains(reason), "{again_log}\n{case}");
+    let production = rastercheck(&["run", path.to_str().unwrap(), "-r", "production"]);
+    assert_eq!(
+        production.status.code(),
+        Some(0),
+        "{}\n{case}",
+        text(&production)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    case
+}
+
+#[test]
+fn a_wrong_resolve_on_antialiased_scenes_shrinks_to_a_small_antialiased_case() {
+    // leaky-full resolves full pixels a hair under 1: only antialiased
+    // scenes show it, so the shrunk case keeps its effects.antialias.
+    let case = finds_and_shrinks("mutant:leaky-full", "antialias", "1", 2, "antialias: ");
+    let scene = parse_case(&case, "shrunk", &Limits::default()).unwrap();
+    let aa = scene
+        .effects
+        .antialias
+        .expect("the effect is written and kept");
+    assert!(aa.samples <= 16, "{case}");
+    assert!(scene.expect.area.is_some(), "{case}");
+}
+
+#[test]
+fn flipped_ties_on_polygons_shrink_to_a_small_polygon_case() {
+    let case = finds_and_shrinks("mutant:flipped-ties", "polygons", "1", 2, "coverage: ");
+    let scene = parse_case(&case, "shrunk", &Limits::default()).unwrap();
+    let vertices: usize = scene.primitives.iter().map(|p| p.vertices().len()).sum();
+    assert!(vertices <= 8, "{case}");
+}
