@@ -36,6 +36,21 @@ Families (the case names start with the family):
   degenerate_*      zero-area triangles inside a mesh
   rules_far_*       every fill rule on one tie-heavy mesh at large coordinates
 
+Polygons and antialiasing (SPEC.md section 14; expectations from the exact
+checker of tools/gen_aa_cases.py, imported, with each case's claims asserted
+here: exact total areas from the shoelace formula, full pixels, no sample
+covered twice, the same samples as a simpler scene):
+
+  aa_abut_*         fans of 64 and 128 triangles, a 200-triangle grid tiling a
+                    square, a far square with a far hole, at standard 16x:
+                    coverages that must sum to exactly 1
+  poly_*            self-overlapping polygons (winding twice, overlapping
+                    contours, doubled edges, repeated and collinear vertices,
+                    zero-area contours), with and without 16x, both fills;
+                    poly_far_*: vertices near +-32768 px at 8 bits
+  aa_sliver_*       antialiased slivers and near-collinear triangles
+  aa_tie_*          samples on shared edges and vertices under 16x
+
 Usage: python3 tools/gen_hard_cases.py [--check]   (run from anywhere)
 """
 
