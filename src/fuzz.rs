@@ -9,13 +9,15 @@
 //!
 //! - **Generation** is deterministic from the seed: case `i` of seed `s`
 //!   comes from its own [`Rng`] stream, so a case can be regenerated without
-//!   the ones before it. Three families, taken in turn unless one is named:
+//!   the ones before it. Five families, taken in turn unless one is named:
 //!   random triangles (tie-forcing half-pixel vertices, subpixel-grid and
 //!   free rationals, vertices anywhere in the coordinate range, pairs sharing
 //!   an edge), lines of every rule (strips, wide lines, both `last_pixel`s),
 //!   and watertight meshes (fans around sample centres, jittered grids with
 //!   shared vertices, convex fans and ear-clipped star polygons) with
-//!   `expect.watertight: true`. No float function whose result may differ
+//!   `expect.watertight: true`, polygons (one to three contours with
+//!   repeated, collinear and doubled vertices, both fills) and antialiased
+//!   scenes (every pattern, 1 to 256 samples). No float function whose result may differ
 //!   between machines is used (the sines are a fixed polynomial).
 //! - **Failure kinds** ([`Kind`]): a candidate that breaks (error), holes and
 //!   overdraw in a mesh, crowded midpoint-line steps, coverage, and

@@ -125,7 +125,8 @@ struct FuzzArgs {
     /// Folder for the shrunk case files.
     #[arg(long, value_name = "DIR", default_value = rastercheck::fuzz::default_out().to_str())]
     out: PathBuf,
-    /// Only this family: triangles, lines or meshes (default: each in turn).
+    /// Only this family: triangles, lines, meshes, polygons or antialias
+    /// (default: each in turn).
     #[arg(long)]
     family: Option<String>,
     /// Only failures of this check count: coverage, holes, overdraw,
@@ -913,7 +914,11 @@ fn fuzz(args: FuzzArgs) -> u8 {
         None => None,
         Some((_, Some(family))) => Some(family),
         Some((f, None)) => {
-            eprintln!("error: unknown family {f:?}; known: triangles, lines, meshes");
+            let known: Vec<&str> = rastercheck::fuzz::Family::ALL
+                .iter()
+                .map(|f| f.name())
+                .collect();
+            eprintln!("error: unknown family {f:?}; known: {}", known.join(", "));
             return BAD_INPUT;
         }
     };
