@@ -773,7 +773,7 @@ fn jittered_grid(rng: &mut Rng) -> Shape {
 /// Ear clipping of a simple polygon given in `sign` winding. Vertices where
 /// the boundary runs straight on are dropped (they become T-junctions on a
 /// later triangle's edge, which keeps the tiling exact).
-fn ear_clip(points: &[Exact2], sign: Ordering) -> Option<Vec<[usize; 3]>> {
+pub fn ear_clip(points: &[[RBig; 2]], sign: Ordering) -> Option<Vec<[usize; 3]>> {
     let mut left: Vec<usize> = (0..points.len()).collect();
     let mut triangles = Vec::new();
     let corner = |left: &[usize], k: usize| {

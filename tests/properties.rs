@@ -747,52 +747,6 @@ fn jittered_grid() -> impl Strategy<Value = Shape> {
     })
 }
 
-/// Ear clipping of a simple polygon given in `sign` winding. Vertices where
-/// the boundary runs straight on are dropped (they become T-junctions on a
-/// later triangle's edge, which keeps the tiling exact).
-fn ear_clip(points: &[Exact2], sign: std::cmp::Ordering) -> Option<Vec<[usize; 3]>> {
-    use std::cmp::Ordering::Equal;
-    let mut left: Vec<usize> = (0..points.len()).collect();
-    let mut triangles = Vec::new();
-    let corner = |left: &[usize], k: usize| {
-        let m = left.len();
-        (left[(k + m - 1) % m], left[k], left[(k + 1) % m])
-    };
-    while left.len() > 3 {
-        let m = left.len();
-        if let Some(k) = (0..m).find(|&k| {
-            let (a, b, c) = corner(&left, k);
-            orient(&points[a], &points[b], &points[c]) == Equal
-        }) {
-            left.remove(k);
-            continue;
-        }
-        let ear = (0..m).find(|&k| {
-            let (a, b, c) = corner(&left, k);
-            let (pa, pb, pc) = (&points[a], &points[b], &points[c]);
-            orient(pa, pb, pc) == sign
-                && left.iter().all(|&q| {
-                    q == a
-                        || q == b
-                        || q == c
-                        || [
-                            orient(pa, pb, &points[q]),
-                            orient(pb, pc, &points[q]),
-                            orient(pc, pa, &points[q]),
-                        ]
-                        .contains(&sign.reverse())
-                })
-        })?;
-        let (a, b, c) = corner(&left, ear);
-        triangles.push([a, b, c]);
-        left.remove(ear);
-    }
-    if orient(&points[left[0]], &points[left[1]], &points[left[2]]) == sign {
-        triangles.push([left[0], left[1], left[2]]);
-    }
-    Some(triangles)
-}
-
 /// A mesh scene: the shape snapped under `bits`, each triangle's winding
 /// reversed or its vertices rotated at random. `None` when snapping folded
 /// a triangle over (the shape is then no longer a mesh).
@@ -816,7 +770,7 @@ fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Sce
             if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
                 return None;
             }
-            let triangles = ear_clip(&placed_points, signs[0])?;
+            let triangles = rastercheck::fuzz::ear_clip(&placed_points, signs[0])?;
             (points, triangles)
         }
     };
