@@ -383,6 +383,47 @@ impl Gpu {
         })
     }
 
+    /// Records one render pass per channel group over the scene's runs of
+    /// triangles (the count target too, in group 0), into `samples`-sample
+    /// targets cleared first, scissored to the canvas.
+    fn record_groups(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        (count, values): (&wgpu::Texture, &[wgpu::Texture]),
+        runs: &[(Interpolation, u32, u32)],
+        (cull, samples): (Cull, u32),
+        vertex_buffer: &wgpu::Buffer,
+        (w, h): (u32, u32),
+    ) {
+        for (g, value) in values.iter().enumerate() {
+            let pipelines: Vec<(wgpu::RenderPipeline, u32, u32)> = runs
+                .iter()
+                .map(|&(mode, a, b)| (self.pipeline(mode, g, cull, samples), a, b))
+                .collect();
+            let count_view = count.create_view(&Default::default());
+            let value_view = value.create_view(&Default::default());
+            let attachments = if g == 0 {
+                vec![cleared(&count_view), cleared(&value_view)]
+            } else {
+                vec![cleared(&value_view)]
+            };
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("rastercheck lavapipe"),
+                color_attachments: &attachments,
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_scissor_rect(0, 0, w, h);
+            pass.set_vertex_buffer(0, vertex_buffer.slice(..));
+            for (pipeline, a, b) in &pipelines {
+                pass.set_pipeline(pipeline);
+                pass.draw(*a..*b, 0..1);
+            }
+        }
+    }
+
     /// The pipeline drawing channel group `group` (and the count, for group
     /// 0) into `samples`-sample targets (1, or 4 for MSAA).
     fn pipeline(
@@ -519,44 +560,14 @@ impl Gpu {
             .collect();
 
         let mut encoder = device.create_command_encoder(&Default::default());
-        for (g, value) in values.iter().enumerate() {
-            let pipelines: Vec<(wgpu::RenderPipeline, u32, u32)> = runs
-                .iter()
-                .map(|&(mode, a, b)| (self.pipeline(mode, g, scene.rules.cull, 1), a, b))
-                .collect();
-            let count_view = count.create_view(&Default::default());
-            let value_view = value.create_view(&Default::default());
-            let attachment = |view| {
-                Some(wgpu::RenderPassColorAttachment {
-                    view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })
-            };
-            let attachments = if g == 0 {
-                vec![attachment(&count_view), attachment(&value_view)]
-            } else {
-                vec![attachment(&value_view)]
-            };
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("rastercheck lavapipe"),
-                color_attachments: &attachments,
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            pass.set_scissor_rect(0, 0, w, h);
-            pass.set_vertex_buffer(0, vertex_buffer.slice(..));
-            for (pipeline, a, b) in &pipelines {
-                pass.set_pipeline(pipeline);
-                pass.draw(*a..*b, 0..1);
-            }
-        }
+        self.record_groups(
+            &mut encoder,
+            (&count, &values),
+            &runs,
+            (scene.rules.cull, 1),
+            &vertex_buffer,
+            (w, h),
+        );
         let readback = |texture: &wgpu::Texture, texel: u32, encoder: &mut wgpu::CommandEncoder| {
             copy_out(&device, encoder, texture, texel, (w, h))
         };
@@ -774,33 +785,14 @@ impl Gpu {
             .collect();
 
         let mut encoder = device.create_command_encoder(&Default::default());
-        for (g, value) in values.iter().enumerate() {
-            let pipelines: Vec<(wgpu::RenderPipeline, u32, u32)> = runs
-                .iter()
-                .map(|&(mode, a, b)| (self.pipeline(mode, g, scene.rules.cull, N), a, b))
-                .collect();
-            let count_view = count.create_view(&Default::default());
-            let value_view = value.create_view(&Default::default());
-            let attachments = if g == 0 {
-                vec![cleared(&count_view), cleared(&value_view)]
-            } else {
-                vec![cleared(&value_view)]
-            };
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("rastercheck lavapipe msaa"),
-                color_attachments: &attachments,
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            pass.set_scissor_rect(0, 0, w, h);
-            pass.set_vertex_buffer(0, vertex_buffer.slice(..));
-            for (pipeline, a, b) in &pipelines {
-                pass.set_pipeline(pipeline);
-                pass.draw(*a..*b, 0..1);
-            }
-        }
+        self.record_groups(
+            &mut encoder,
+            (&count, &values),
+            &runs,
+            (scene.rules.cull, N),
+            &vertex_buffer,
+            (w, h),
+        );
 
         // Each sample to its own texel: (4x + s, y).
         let unpack = self.unpack();
