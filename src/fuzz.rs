@@ -241,6 +241,21 @@ fn any_rules(rng: &mut Rng) -> Rules {
 /// A coordinate over a canvas side of `size`: on the half-pixel grid (ties
 /// at sample centres and pixel edges), on a 1/4096 grid, a free rational,
 /// or an integer anywhere in the coordinate range.
+/// A random point for `canvas`, each coordinate from [`coordinate`].
+fn xy(rng: &mut Rng, canvas: Canvas) -> (Number, Number) {
+    (
+        coordinate(rng, canvas.width),
+        coordinate(rng, canvas.height),
+    )
+}
+
+/// A vertex of plain position at a random point (polygon scenes carry no
+/// depth and no attributes).
+fn position(rng: &mut Rng, canvas: Canvas) -> Vertex {
+    let (x, y) = xy(rng, canvas);
+    Vertex::at(x, y)
+}
+
 fn coordinate(rng: &mut Rng, size: u32) -> Number {
     let span = i64::from(size) + 8;
     match rng.below(11) {
@@ -326,10 +341,7 @@ fn triangle_scene(rng: &mut Rng) -> Scene {
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 5) {
         let point = |rng: &mut Rng| {
-            let (x, y) = (
-                coordinate(rng, canvas.width),
-                coordinate(rng, canvas.height),
-            );
+            let (x, y) = xy(rng, canvas);
             values.vertex(rng, x, y)
         };
         let vertices = match primitives.last() {
@@ -358,10 +370,7 @@ fn line_scene(rng: &mut Rng) -> Scene {
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 4) {
         let point = |rng: &mut Rng| {
-            let (x, y) = (
-                coordinate(rng, canvas.width),
-                coordinate(rng, canvas.height),
-            );
+            let (x, y) = xy(rng, canvas);
             values.vertex(rng, x, y)
         };
         let start = match primitives.last() {
@@ -409,14 +418,7 @@ fn line_scene(rng: &mut Rng) -> Scene {
 /// run twice (winding twice, every edge doubled).
 fn contour(rng: &mut Rng, canvas: Canvas) -> Vec<Vertex> {
     let n = rng.range(3, 9) as usize;
-    let mut vs: Vec<Vertex> = (0..n)
-        .map(|_| {
-            Vertex::at(
-                coordinate(rng, canvas.width),
-                coordinate(rng, canvas.height),
-            )
-        })
-        .collect();
+    let mut vs: Vec<Vertex> = (0..n).map(|_| position(rng, canvas)).collect();
     if rng.chance(1, 5) {
         let k = rng.below(vs.len() as u64) as usize;
         let copy = vs[k].clone();
@@ -453,12 +455,7 @@ fn polygon(rng: &mut Rng, canvas: Canvas) -> Polygon {
 /// A triangle of plain positions (scenes with polygons carry no depth and
 /// no attributes).
 fn plain_triangle(rng: &mut Rng, canvas: Canvas) -> Primitive {
-    let mut point = || {
-        Vertex::at(
-            coordinate(rng, canvas.width),
-            coordinate(rng, canvas.height),
-        )
-    };
+    let mut point = || position(rng, canvas);
     let vertices = [point(), point(), point()];
     Primitive::Triangle(Triangle {
         vertices,
@@ -544,10 +541,7 @@ fn antialias_scene(rng: &mut Rng) -> Scene {
                     Some(Primitive::Triangle(t)) => {
                         let k = rng.below(3) as usize;
                         let (a, b) = (t.vertices[k].clone(), t.vertices[(k + 1) % 3].clone());
-                        let c = Vertex::at(
-                            coordinate(rng, canvas.width),
-                            coordinate(rng, canvas.height),
-                        );
+                        let c = position(rng, canvas);
                         Primitive::Triangle(Triangle {
                             vertices: [b, a, c],
                             interpolation: Interpolation::Perspective,
@@ -558,12 +552,7 @@ fn antialias_scene(rng: &mut Rng) -> Scene {
             }
             1 | 2 => plain_triangle(rng, canvas),
             _ => {
-                let mut point = || {
-                    Vertex::at(
-                        coordinate(rng, canvas.width),
-                        coordinate(rng, canvas.height),
-                    )
-                };
+                let mut point = || position(rng, canvas);
                 let vertices = [point(), point()];
                 let width = match rng.below(4) {
                     0 => Number::ratio(1, 3),
