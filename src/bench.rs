@@ -189,6 +189,7 @@ impl Rasterizer for NaiveBbox {
             depth: false,
             polygons: false,
             antialias: false,
+            motion_blur: false,
         }
     }
 
@@ -321,6 +322,7 @@ impl Rasterizer for PlainMidpoint {
             depth: false,
             polygons: false,
             antialias: false,
+            motion_blur: false,
         }
     }
 

@@ -1,6 +1,7 @@
 //! What every rasterizer returns: per-sample coverage counts, the primitive
 //! that wrote each sample last, and the interpolated depth and attributes;
-//! for antialiased scenes, also a resolved coverage per pixel.
+//! for antialiased scenes, also a resolved coverage per pixel; for scenes in
+//! which something moves, only a time coverage per pixel (SPEC.md §15).
 //!
 //! Without antialiasing there is one sample per pixel, at its centre. With
 //! it, each pixel holds a run of `samples` slots, sample s of pixel p at
@@ -36,6 +37,33 @@ pub struct Frame {
     /// the fraction of the pixel each covers (box resolve). The reference
     /// gives the exact area.
     pub resolved: Option<Vec<f64>>,
+    /// Scenes in which something moves: each pixel's time coverage, the
+    /// mean over its spatial samples of the sum over primitives of the
+    /// fraction of the shutter each covers the sample. Such a frame has no
+    /// sample slots.
+    pub time: Option<Vec<f64>>,
+    /// What a sample method spent on its time loop, when it counts it.
+    pub sample_tests: Option<SampleTests>,
+}
+
+/// Sample tests of moving primitives: every (instant, sample) a method
+/// tested, and how many of them were covered.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SampleTests {
+    pub tests: u64,
+    pub covered: u64,
+}
+
+impl SampleTests {
+    /// Covered tests over all tests: the cost measure of stochastic
+    /// rasterization (1 when no test was wasted).
+    pub fn efficiency(&self) -> f64 {
+        if self.tests == 0 {
+            1.0
+        } else {
+            self.covered as f64 / self.tests as f64
+        }
+    }
 }
 
 impl Frame {
@@ -46,6 +74,10 @@ impl Frame {
 
     /// An empty frame with room for what the plan asks for.
     pub fn for_plan(width: u32, height: u32, plan: &Plan) -> Frame {
+        if plan.motion.is_some() {
+            let n = width as usize * height as usize;
+            return Frame::time_only(width, height, vec![0.0; n]);
+        }
         let mut frame = Frame::with_samples(
             width,
             height,
@@ -76,6 +108,17 @@ impl Frame {
             depth: depth.then(|| vec![0.0; n]),
             attributes: vec![vec![0.0; n]; attributes],
             resolved: None,
+            time: None,
+            sample_tests: None,
+        }
+    }
+
+    /// A frame of a scene in which something moves: time coverage only.
+    pub fn time_only(width: u32, height: u32, time: Vec<f64>) -> Frame {
+        assert_eq!(time.len(), width as usize * height as usize);
+        Frame {
+            time: Some(time),
+            ..Frame::with_samples(width, height, 0, false, 0)
         }
     }
 

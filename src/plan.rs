@@ -2,9 +2,11 @@
 //!
 //! A scene pays only for what it asks for. Depth is interpolated only when a
 //! vertex gives `z`; attributes only when vertices carry them; several
-//! samples per pixel and a resolved coverage only with `effects.antialias`.
+//! samples per pixel and a resolved coverage only with `effects.antialias`;
+//! a time loop only when `effects.motion_blur` is declared *and* some
+//! primitive moves, and then only for the primitives that move.
 
-use crate::scene::Scene;
+use crate::scene::{MotionBlur, Scene};
 
 /// The work a rasterizer has to do for one scene.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -17,6 +19,17 @@ pub struct Plan {
     pub depth: bool,
     /// Attribute channels to interpolate.
     pub attributes: usize,
+    /// The time loop, when something moves.
+    pub motion: Option<MotionPlan>,
+}
+
+/// The time samples of a scene in which something moves (SPEC.md §15).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MotionPlan {
+    pub blur: MotionBlur,
+    /// Which primitives move, in scene order; the others are drawn once,
+    /// with no time loop.
+    pub moving: Vec<bool>,
 }
 
 /// The samples of an antialiased scene (SPEC.md §14.2).
@@ -39,11 +52,21 @@ impl Plan {
             position_bits: aa.position_bits,
             adaptive: aa.adaptive,
         });
+        let motion = scene
+            .effects
+            .motion_blur
+            .as_ref()
+            .filter(|_| scene.moves())
+            .map(|blur| MotionPlan {
+                blur: blur.clone(),
+                moving: scene.primitives.iter().map(|p| p.moves()).collect(),
+            });
         Plan {
             samples_per_pixel: antialias.as_ref().map_or(1, |s| s.offsets.len() as u32),
             antialias,
             depth: scene.has_depth,
             attributes: scene.attribute_count,
+            motion,
         }
     }
 

@@ -21,6 +21,10 @@ pub struct Capabilities {
     /// Scenes with `effects.antialias`: several samples per pixel and a
     /// resolved coverage per pixel (SPEC.md §14).
     pub antialias: bool,
+    /// Scenes in which something moves (SPEC.md §15): a time coverage per
+    /// pixel. A scene that declares motion blur and moves nothing is
+    /// static and needs no such capability.
+    pub motion_blur: bool,
 }
 
 impl Capabilities {
@@ -32,6 +36,7 @@ impl Capabilities {
             depth: true,
             polygons: true,
             antialias: true,
+            motion_blur: true,
         }
     }
 
@@ -43,6 +48,9 @@ impl Capabilities {
         }
         if !self.antialias && scene.effects.antialias.is_some() {
             return Some("this rasterizer does not antialias".to_owned());
+        }
+        if !self.motion_blur && scene.effects.motion_blur.is_some() && scene.moves() {
+            return Some("this rasterizer does not draw moving primitives".to_owned());
         }
         None
     }

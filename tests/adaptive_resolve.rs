@@ -55,6 +55,7 @@ fn scene(rng: &mut Rng, pattern: Pattern, samples: u32, rule: FillRule) -> Scene
                 adaptive: false,
                 position_bits: if samples <= 16 { *rng.pick(&[4, 8]) } else { 8 },
             }),
+            motion_blur: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

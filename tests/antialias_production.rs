@@ -157,6 +157,7 @@ fn random_scene_of(
         primitives,
         effects: Effects {
             antialias: Some(antialias(rng, position_bits, adaptive)),
+            motion_blur: None,
         },
         expect: Expect::default(),
         attribute_count: usize::from(valued),
@@ -304,6 +305,7 @@ fn an_edge_on_samples_follows_the_fill_rule() {
                     adaptive: false,
                     position_bits: 8,
                 }),
+                motion_blur: None,
             },
             expect: Expect::default(),
             attribute_count: 0,
@@ -397,6 +399,7 @@ fn adaptive_refine_misses_a_thin_sliver_and_resolves_its_own_mask() {
                 adaptive: false,
                 position_bits: 8,
             }),
+            motion_blur: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

@@ -178,7 +178,10 @@ fn scene_of(
             cull: Cull::None,
         },
         primitives: polygons.into_iter().map(Primitive::Polygon).collect(),
-        effects: Effects { antialias },
+        effects: Effects {
+            antialias,
+            motion_blur: None,
+        },
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,

@@ -309,6 +309,7 @@ fn valued_vertex(
             z,
             w,
             attributes,
+            to: None,
         })
 }
 
@@ -1554,7 +1555,10 @@ fn aa_scene_of(primitives: Vec<Primitive>, rules: Rules, antialias: Option<Antia
         },
         rules,
         primitives,
-        effects: Effects { antialias },
+        effects: Effects {
+            antialias,
+            motion_blur: None,
+        },
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,

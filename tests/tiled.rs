@@ -113,7 +113,10 @@ fn random_scene(rng: &mut Rng, antialiased: bool, polygons: bool) -> Scene {
             cull: *rng.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
         },
         primitives,
-        effects: Effects { antialias },
+        effects: Effects {
+            antialias,
+            motion_blur: None,
+        },
         expect: Expect::default(),
         attribute_count: attributes,
         has_depth: values,

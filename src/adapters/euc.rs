@@ -148,6 +148,7 @@ impl Rasterizer for Euc {
         Capabilities {
             polygons: false,
             antialias: false,
+            motion_blur: false,
             ..Capabilities::everything()
         }
     }

@@ -207,7 +207,11 @@ impl Rasterizer for External {
     /// Everything: the program says what it does not do, case by case.
     fn capabilities(&self) -> Capabilities {
         // The program says itself what it cannot do (`unsupported`).
-        Capabilities::everything()
+        // The protocol does not carry moving vertices yet (SPEC.md §12).
+        Capabilities {
+            motion_blur: false,
+            ..Capabilities::everything()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -146,6 +146,7 @@ fn capabilities() -> Capabilities {
         depth: true,
         polygons: false,
         antialias: false,
+        motion_blur: false,
     }
 }
 

@@ -145,6 +145,7 @@ impl Rasterizer for Lavapipe {
             depth: true,
             polygons: false,
             antialias: true,
+            motion_blur: false,
         }
     }
 

@@ -60,6 +60,7 @@ impl Rasterizer for TinySkia {
             depth: false,
             polygons: true,
             antialias: true,
+            motion_blur: false,
         }
     }
 

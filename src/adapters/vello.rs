@@ -47,6 +47,7 @@ impl Rasterizer for VelloCpu {
             depth: false,
             polygons: true,
             antialias: true,
+            motion_blur: false,
         }
     }
 

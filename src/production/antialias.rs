@@ -450,6 +450,7 @@ mod tests {
                     adaptive: false,
                     position_bits: 8,
                 }),
+                motion_blur: None,
             },
             expect: Expect::default(),
             attribute_count: 0,

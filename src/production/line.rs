@@ -740,6 +740,7 @@ fn parallelogram_in<E: EdgeInt>(
         antialias: None,
         depth: false,
         attributes: 0,
+        motion: None,
     };
     let placeholder = Triangle {
         vertices: [0, 1, 2].map(|_| Vertex::at(Number::ZERO, Number::ZERO)),
@@ -1223,6 +1224,7 @@ mod tests {
             antialias: None,
             depth: false,
             attributes: 0,
+            motion: None,
         };
         let ends = [
             [Fixed(g.v0[0]), Fixed(g.v0[1])],
@@ -1436,6 +1438,7 @@ mod tests {
             antialias: None,
             depth: true,
             attributes: 0,
+            motion: None,
         };
         let shading = LineShading::new(&line, &g, &plan);
         assert_eq!(shading.weights([-3, 5]), [1.0, 0.0]);

@@ -54,6 +54,7 @@ impl Rasterizer for Production {
         Capabilities {
             polygons: true,
             antialias: true,
+            motion_blur: false,
             ..Capabilities::everything()
         }
     }

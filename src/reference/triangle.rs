@@ -435,6 +435,7 @@ mod tests {
                 antialias: None,
                 depth: true,
                 attributes: 2,
+                motion: None,
             };
             let mut frame = Frame::new(1, 1, true, 2);
             VertexValues::new(&t).write(&mut frame, 0, &plan, &e, &area);

@@ -16,7 +16,8 @@ use super::rules::{
     limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
 };
 use super::samples::{Antialias, Pattern};
-use super::{Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, Triangle, Vertex};
+use super::time::{MotionBlur, TimePattern};
+use super::{Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, TimePin, Triangle, Vertex};
 
 /// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -363,6 +364,7 @@ impl Reader<'_> {
                 return fail(&primitives_path.index(i), why);
             }
         }
+        self.check_motion(scene, fields)?;
         if !antialias {
             let e = &scene.expect;
             let given = [
@@ -377,6 +379,80 @@ impl Reader<'_> {
                     &expect_path.key(key),
                     format!(
                         "{key} measures antialiased coverage; the case needs effects.antialias"
+                    ),
+                );
+            }
+        }
+        Ok(())
+    }
+
+    /// Moving primitives need `effects.motion_blur`, move only as triangles
+    /// and parallelogram lines, and carry positions only; time expectations
+    /// need something that moves (SPEC.md §15).
+    fn check_motion(&self, scene: &Scene, fields: &Fields) -> Result<()> {
+        let primitives_path = Path::root().key("primitives");
+        let moving = scene.primitives.iter().position(Primitive::moves);
+        if let Some(i) = moving {
+            let path = primitives_path.index(i);
+            let primitive = &scene.primitives[i];
+            if scene.effects.motion_blur.is_none() {
+                return fail(
+                    &path,
+                    "this primitive moves (a vertex gives from and to), so the case needs effects.motion_blur",
+                );
+            }
+            for (i, primitive) in scene.primitives.iter().enumerate() {
+                if !primitive.moves() {
+                    continue;
+                }
+                let why = match primitive {
+                    Primitive::Polygon(_) => "a polygon cannot move in this version of rastercheck; move triangles or parallelogram lines",
+                    Primitive::Line(line) if line.rule != LineRule::Parallelogram => "only parallelogram lines can move in this version of rastercheck (a midpoint or diamond-exit line chooses whole pixels at each instant, and a rectangle's corners are irrational)",
+                    _ => continue,
+                };
+                return fail(&primitives_path.index(i), why);
+            }
+            let valued = scene.has_depth
+                || scene.attribute_count > 0
+                || scene.vertices().any(|v| v.w != Number::ONE);
+            if valued {
+                return fail(
+                    &path.key(primitive.kind()),
+                    "a scene in which something moves is judged on time coverage only: z, w and attributes are not supported with motion in this version of rastercheck",
+                );
+            }
+            if scene.rules.subpixel_bits.is_none() {
+                return fail(
+                    &Path::root().key("rules").key("subpixel_bits"),
+                    "moving vertices snap at shutter open and close: a moving scene needs subpixel_bits",
+                );
+            }
+        }
+        let e = &scene.expect;
+        let given = [
+            ("max_time_error", e.max_time_error.is_some()),
+            ("max_time_rms", e.max_time_rms.is_some()),
+            ("time_coverage", !e.time_coverage.is_empty()),
+        ];
+        if let (Some((key, _)), Some((_, expect_path))) =
+            (given.iter().find(|(_, g)| *g), fields.get("expect"))
+        {
+            if moving.is_none() {
+                return fail(
+                    &expect_path.key(key),
+                    format!("{key} measures time coverage; the case needs a primitive that moves and effects.motion_blur"),
+                );
+            }
+        }
+        for (i, pin) in e.time_coverage.iter().enumerate() {
+            let [x, y] = pin.pixel;
+            if x >= scene.canvas.width || y >= scene.canvas.height {
+                let path = fields.get("expect").map_or(Path::root(), |(_, p)| p);
+                return fail(
+                    &path.key("time_coverage").index(i).key("pixel"),
+                    format!(
+                        "pixel ({x}, {y}) is outside the {}×{} canvas",
+                        scene.canvas.width, scene.canvas.height
                     ),
                 );
             }
@@ -630,6 +706,12 @@ impl Reader<'_> {
             for (j, item) in list.iter().enumerate() {
                 let (x, y) = match item {
                     Value::Array(_) => self.position(item, &contour_path.index(j))?,
+                    Value::Object(map) if map.contains_key("from") || map.contains_key("to") => {
+                        return fail(
+                            &contour_path.index(j),
+                            "a polygon cannot move in this version of rastercheck; move triangles or parallelogram lines",
+                        );
+                    }
                     _ => {
                         return fail(
                             &contour_path.index(j),
@@ -671,10 +753,12 @@ impl Reader<'_> {
                 Ok(Vertex::at(x, y))
             }
             Value::Object(_) => {
-                let fields = Fields::new(value, path, &["position", "z", "w", "attributes"])?;
-                let (position, position_path) = fields.require("position")?;
-                let (x, y) = self.position(position, &position_path)?;
-                let mut vertex = Vertex::at(x, y);
+                let fields = Fields::new(
+                    value,
+                    path,
+                    &["position", "from", "to", "z", "w", "attributes"],
+                )?;
+                let mut vertex = self.moving_position(&fields, path)?;
                 let value_limit = Number::from_int(limits::VALUE_LIMIT);
                 if let Some((v, p)) = fields.get("z") {
                     vertex.z = number(v, &p)?;
@@ -730,6 +814,40 @@ impl Reader<'_> {
         }
     }
 
+    /// `position`, or `from` and `to` for a moving vertex (SPEC.md §15.1).
+    fn moving_position(&self, fields: &Fields, path: &Path) -> Result<Vertex> {
+        match (fields.get("position"), fields.get("from"), fields.get("to")) {
+            (Some((v, p)), None, None) => {
+                let (x, y) = self.position(v, &p)?;
+                Ok(Vertex::at(x, y))
+            }
+            (None, Some((from, from_path)), Some((to, to_path))) => {
+                let (x, y) = self.position(from, &from_path)?;
+                let (to_x, to_y) = self.position(to, &to_path)?;
+                Ok(Vertex {
+                    to: Some(Box::new([to_x, to_y])),
+                    ..Vertex::at(x, y)
+                })
+            }
+            (Some((_, p)), _, _) => fail(
+                &p,
+                "a vertex gives either position or from and to (a moving vertex), not both",
+            ),
+            (None, Some(_), None) => fail(
+                &path.key("to"),
+                "a moving vertex gives both from and to; this one has no to",
+            ),
+            (None, None, Some(_)) => fail(
+                &path.key("from"),
+                "a moving vertex gives both from and to; this one has no from",
+            ),
+            (None, None, None) => fail(
+                &path.key("position"),
+                "missing required field (a vertex gives position, or from and to)",
+            ),
+        }
+    }
+
     fn position(&self, value: &Value, path: &Path) -> Result<(Number, Number)> {
         let items = array(value, path)?;
         if items.len() != 2 {
@@ -748,17 +866,77 @@ impl Reader<'_> {
 
     fn effects(&self, value: &Value, path: &Path) -> Result<Effects> {
         let fields = Fields::new(value, path, &["antialias", "motion_blur"])?;
-        if let Some((_, p)) = fields.get("motion_blur") {
-            return fail(
-                &p,
-                "the motion_blur effect is not supported by this version of rastercheck yet",
-            );
-        }
         let antialias = match fields.get("antialias") {
             Some((v, p)) => Some(self.antialias(v, &p)?),
             None => None,
         };
-        Ok(Effects { antialias })
+        let motion_blur = match fields.get("motion_blur") {
+            Some((v, p)) => Some(self.motion_blur(v, &p)?),
+            None => None,
+        };
+        Ok(Effects {
+            antialias,
+            motion_blur,
+        })
+    }
+
+    fn motion_blur(&self, value: &Value, path: &Path) -> Result<MotionBlur> {
+        use super::time::limits as mb;
+        let fields = Fields::new(value, path, &["shutter", "samples", "pattern", "seed"])?;
+        let shutter = match fields.get("shutter") {
+            Some((v, p)) => {
+                let items = array(v, &p)?;
+                if items.len() != 2 {
+                    return fail(
+                        &p,
+                        format!("a shutter is [open, close], found {} values", items.len()),
+                    );
+                }
+                let mut ends = [0u32; 2];
+                for (i, item) in items.iter().enumerate() {
+                    let t = number(item, &p.index(i))?;
+                    within(&t, &p.index(i), &Number::ZERO, &Number::ONE, "shutter time")?;
+                    let units = t.as_rbig() * dashu_ratio::RBig::from(mb::TIME_ONE);
+                    if units.denominator() != &dashu_int::UBig::ONE {
+                        return fail(
+                            &p.index(i),
+                            format!("shutter time {t} is not a multiple of 2^-{} (1/{}); shutter times are exact in 16-bit fixed point", mb::TIME_BITS, mb::TIME_ONE),
+                        );
+                    }
+                    ends[i] = units.to_f64().value() as u32;
+                }
+                if ends[0] >= ends[1] {
+                    return fail(&p, "the shutter opens before it closes: open < close");
+                }
+                ends
+            }
+            None => [0, mb::TIME_ONE],
+        };
+        let (v, samples_path) = fields.require("samples")?;
+        let samples = count(v, &samples_path, u64::MAX >> 1)?;
+        if samples == 0 || samples > u64::from(mb::MAX_SAMPLES) {
+            return fail(
+                &samples_path,
+                format!("samples {samples} is outside [1, {}]", mb::MAX_SAMPLES),
+            );
+        }
+        let pattern = match fields.get("pattern") {
+            Some((v, p)) => {
+                let names: Vec<&str> = TimePattern::ALL.iter().map(|p| p.name()).collect();
+                named(v, &p, TimePattern::from_name, &names)?
+            }
+            None => TimePattern::Stratified,
+        };
+        let seed = match fields.get("seed") {
+            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
+            None => 0,
+        };
+        Ok(MotionBlur {
+            shutter,
+            samples: samples as u32,
+            pattern,
+            seed,
+        })
     }
 
     fn antialias(&self, value: &Value, path: &Path) -> Result<Antialias> {
@@ -846,6 +1024,9 @@ impl Reader<'_> {
                 "max_coverage_error",
                 "max_coverage_rms",
                 "area",
+                "max_time_error",
+                "max_time_rms",
+                "time_coverage",
             ],
         )?;
         let mut expect = Expect::default();
@@ -879,6 +1060,36 @@ impl Reader<'_> {
         expect.max_ulp_error = tolerance("max_ulp_error")?;
         expect.max_coverage_error = tolerance("max_coverage_error")?;
         expect.max_coverage_rms = tolerance("max_coverage_rms")?;
+        expect.max_time_error = tolerance("max_time_error")?;
+        expect.max_time_rms = tolerance("max_time_rms")?;
+        if let Some((v, p)) = fields.get("time_coverage") {
+            for (i, item) in array(v, &p)?.iter().enumerate() {
+                let item_path = p.index(i);
+                let pin = Fields::new(item, &item_path, &["pixel", "value"])?;
+                let (pixel, pixel_path) = pin.require("pixel")?;
+                let xy = array(pixel, &pixel_path)?;
+                if xy.len() != 2 {
+                    return fail(
+                        &pixel_path,
+                        format!("a pixel is [x, y], found {} values", xy.len()),
+                    );
+                }
+                let x = count(&xy[0], &pixel_path.index(0), u64::from(u32::MAX))? as u32;
+                let y = count(&xy[1], &pixel_path.index(1), u64::from(u32::MAX))? as u32;
+                let (value, value_path) = pin.require("value")?;
+                let value = number(value, &value_path)?;
+                if value < Number::ZERO {
+                    return fail(
+                        &value_path,
+                        format!("a time coverage is ≥ 0, found {value}"),
+                    );
+                }
+                expect.time_coverage.push(TimePin {
+                    pixel: [x, y],
+                    value,
+                });
+            }
+        }
         if let Some((v, p)) = fields.get("area") {
             let area = number(v, &p)?;
             if area < Number::ZERO {

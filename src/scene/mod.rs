@@ -8,6 +8,7 @@ pub mod case;
 pub mod number;
 pub mod rules;
 pub mod samples;
+pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
 pub use number::Number;
@@ -15,6 +16,7 @@ pub use rules::{
     Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
 };
 pub use samples::{Antialias, Pattern};
+pub use time::{MotionBlur, TimePattern};
 
 /// One case: a canvas, rules, primitives, effects and expectations.
 #[derive(Clone, Debug)]
@@ -75,6 +77,11 @@ impl Primitive {
             Primitive::Line(l) => l.interpolation,
             Primitive::Polygon(_) => Interpolation::Linear,
         }
+    }
+
+    /// Whether any vertex moves during the shutter (SPEC.md §15.1).
+    pub fn moves(&self) -> bool {
+        self.vertices().iter().any(Vertex::moves)
     }
 
     /// The word a case file uses for this kind of primitive.
@@ -146,6 +153,9 @@ pub struct Vertex {
     /// Clip-space w, used by perspective interpolation; 1 when not given.
     pub w: Number,
     pub attributes: Vec<Number>,
+    /// A moving vertex's position at shutter close, τ = 1 (SPEC.md §15.1);
+    /// `x` and `y` are then its position at τ = 0 (`from`).
+    pub to: Option<Box<[Number; 2]>>,
 }
 
 impl Vertex {
@@ -156,16 +166,35 @@ impl Vertex {
             z: Number::ZERO,
             w: Number::ONE,
             attributes: Vec::new(),
+            to: None,
+        }
+    }
+
+    /// Whether the vertex is somewhere else at shutter close than at open.
+    pub fn moves(&self) -> bool {
+        self.to
+            .as_deref()
+            .is_some_and(|[x, y]| *x != self.x || *y != self.y)
+    }
+
+    /// The position at τ = 1: `to` for a moving vertex, the position
+    /// otherwise.
+    pub fn end(&self) -> [&Number; 2] {
+        match self.to.as_deref() {
+            Some([x, y]) => [x, y],
+            None => [&self.x, &self.y],
         }
     }
 }
 
 /// Effects a case turns on; a scene pays only for those it names.
-/// Motion blur arrives with its own issue; until then it is refused.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Effects {
     /// Several samples per pixel and a resolved coverage per pixel.
     pub antialias: Option<Antialias>,
+    /// A shutter interval and time samples (SPEC.md §15); it changes
+    /// nothing unless some primitive moves.
+    pub motion_blur: Option<MotionBlur>,
 }
 
 /// What a case expects of a rasterizer under test.
@@ -191,6 +220,21 @@ pub struct Expect {
     /// Antialiased cases: the exact total area of the primitives, which the
     /// reference's per-pixel areas must sum to.
     pub area: Option<Number>,
+    /// Moving scenes: the largest |time coverage − exact| of any pixel.
+    pub max_time_error: Option<f64>,
+    /// Moving scenes: the largest RMS time-coverage error over moving
+    /// pixels (default 0.75·(M·N)^-1/2, SPEC.md §15.4).
+    pub max_time_rms: Option<f64>,
+    /// Moving scenes: exact time coverages of chosen pixels, which the
+    /// reference must reproduce within its certified bound + 10^-12.
+    pub time_coverage: Vec<TimePin>,
+}
+
+/// One pixel's time coverage as the case author computed it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TimePin {
+    pub pixel: [u32; 2],
+    pub value: Number,
 }
 
 impl Scene {
@@ -210,6 +254,11 @@ impl Scene {
         self.primitives
             .iter()
             .any(|p| matches!(p, Primitive::Polygon(_)))
+    }
+
+    /// Whether any primitive moves: only then is there a time loop.
+    pub fn moves(&self) -> bool {
+        self.primitives.iter().any(Primitive::moves)
     }
 
     /// Every vertex of every primitive.

@@ -36,6 +36,7 @@ impl Rasterizer for AreaF32 {
         Capabilities {
             attributes: false,
             depth: false,
+            motion_blur: false,
             ..Capabilities::everything()
         }
     }

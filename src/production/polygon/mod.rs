@@ -214,6 +214,7 @@ impl Rasterizer for PolygonMethod {
             triangles: false,
             polygons: true,
             antialias: false,
+            motion_blur: false,
             ..Capabilities::everything()
         }
     }

@@ -180,6 +180,7 @@ pub fn draw(
         antialias: None,
         depth: false,
         attributes: 0,
+        motion: None,
     };
     let corner = || Vertex::at(Number::ZERO, Number::ZERO);
     let triangle = Triangle {
