@@ -16,6 +16,7 @@ pub mod area;
 pub mod exact;
 pub mod grid;
 pub mod line;
+pub mod motion;
 pub mod polygon;
 pub mod triangle;
 
@@ -199,6 +200,9 @@ pub fn render(scene: &Scene, plan: &Plan) -> Frame {
 
 /// [`render`] with a choice of integer arithmetic.
 pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
+    if plan.motion.is_some() {
+        return motion::frame(scene, plan);
+    }
     // One slot per offset, whatever a hand-made plan says.
     let consistent;
     let plan = match &plan.antialias {
