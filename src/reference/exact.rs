@@ -14,17 +14,7 @@ use crate::scene::Number;
 /// Rounds `n` to the nearest multiple of 2^-bits, ties to even
 /// (D3D11.3 §3.2.4.1 rounds to nearest-even when it snaps to 16.8).
 pub fn snap(n: &Number, bits: u32) -> RBig {
-    let scaled = n.numerator() << bits as usize;
-    let den = IBig::from(n.denominator().clone());
-    let q = floor_div(&scaled, &den);
-    let twice_rest: IBig = (&scaled - &q * &den) * IBig::from(2u8);
-    let up = match twice_rest.cmp(&den) {
-        std::cmp::Ordering::Greater => true,
-        std::cmp::Ordering::Equal => (&q % IBig::from(2u8)) != IBig::ZERO,
-        std::cmp::Ordering::Less => false,
-    };
-    let q = if up { q + IBig::ONE } else { q };
-    RBig::from_parts(q, UBig::ONE << bits as usize)
+    n.snapped(bits).as_rbig().clone()
 }
 
 /// ⌊a / b⌋ for b > 0.

@@ -261,6 +261,35 @@ impl Scene {
         self.primitives.iter().any(Primitive::moves)
     }
 
+    /// The static scene this one is at instant τ ∈ [0, 1] (SPEC.md §15.1):
+    /// every vertex at (1 − τ)·snap(from) + τ·snap(to), exactly. Its
+    /// positions are already snapped, so its `subpixel_bits` is null; motion
+    /// blur and expectations are dropped. Brute force for tests: the static
+    /// rules at one instant.
+    ///
+    /// # Panics
+    /// When the scene has no `subpixel_bits` (a moving scene always has).
+    pub fn at_instant(&self, instant: &Number) -> Scene {
+        let bits = self
+            .rules
+            .subpixel_bits
+            .expect("a moving scene has subpixel_bits");
+        let mut scene = self.clone();
+        let tau = instant.as_rbig();
+        let one_minus = &dashu_ratio::RBig::ONE - tau;
+        for vertex in scene.primitives.iter_mut().flat_map(|p| p.vertices_mut()) {
+            let [x1, y1] = vertex.end().map(|c| c.snapped(bits).as_rbig().clone());
+            let [x0, y0] = [&vertex.x, &vertex.y].map(|c| c.snapped(bits).as_rbig().clone());
+            vertex.x = Number::from_rbig(&one_minus * x0 + tau * x1);
+            vertex.y = Number::from_rbig(&one_minus * y0 + tau * y1);
+            vertex.to = None;
+        }
+        scene.rules.subpixel_bits = None;
+        scene.effects.motion_blur = None;
+        scene.expect = Expect::default();
+        scene
+    }
+
     /// Every vertex of every primitive.
     pub fn vertices(&self) -> impl Iterator<Item = &Vertex> {
         self.primitives.iter().flat_map(|p| p.vertices())

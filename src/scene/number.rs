@@ -166,6 +166,32 @@ impl Number {
         ))
     }
 
+    pub fn from_rbig(value: RBig) -> Number {
+        Number(value)
+    }
+
+    /// The nearest multiple of 2^-bits, ties to even: the snapping of
+    /// SPEC.md §2 (D3D11.3 §3.2.4.1 rounds to nearest-even when it converts
+    /// to 16.8 fixed point).
+    pub fn snapped(&self, bits: u32) -> Number {
+        let scaled = self.0.numerator() << bits as usize;
+        let den = IBig::from(self.0.denominator().clone());
+        // ⌊scaled / den⌋ for den > 0, and twice the remainder against den.
+        let (q, r) = (&scaled / &den, &scaled % &den);
+        let (q, r) = if r < IBig::ZERO {
+            (q - IBig::ONE, r + &den)
+        } else {
+            (q, r)
+        };
+        let up = match (r * IBig::from(2u8)).cmp(&den) {
+            std::cmp::Ordering::Greater => true,
+            std::cmp::Ordering::Equal => (&q % IBig::from(2u8)) != IBig::ZERO,
+            std::cmp::Ordering::Less => false,
+        };
+        let q = if up { q + IBig::ONE } else { q };
+        Number(RBig::from_parts(q, UBig::ONE << bits as usize))
+    }
+
     pub fn from_int(value: i64) -> Number {
         Number(RBig::from(value))
     }
