@@ -179,7 +179,10 @@ pub fn point_coverage_with(
         .rules
         .subpixel_bits
         .expect("a moving scene has subpixel_bits");
-    assert!(shutter[0] < shutter[1], "the shutter opens before it closes");
+    assert!(
+        shutter[0] < shutter[1],
+        "the shutter opens before it closes"
+    );
     // The grid: 2^bits and the point's denominators divide its scale.
     let scale = point.iter().fold(UBig::ONE << bits as usize, |l, c| {
         let d = c.denominator();
@@ -266,7 +269,12 @@ fn static_coverage(scene: &Scene, plan: &Plan) -> Vec<u64> {
     }
     let counts = super::coverage_under(&still, scene.rules.fill_rule);
     (0..pixels)
-        .map(|p| counts[p * m..(p + 1) * m].iter().map(|&c| u64::from(c)).sum())
+        .map(|p| {
+            counts[p * m..(p + 1) * m]
+                .iter()
+                .map(|&c| u64::from(c))
+                .sum()
+        })
         .collect()
 }
 

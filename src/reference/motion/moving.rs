@@ -208,7 +208,13 @@ fn prepare(polys: Vec<Quadratic>, mutation: Mutation) -> Vec<Quadratic> {
 /// decides: it changes only with the signs of A (the winding), of the
 /// edge's dy (turning horizontal) and, for a horizontal edge, of the third
 /// vertex's height above it, so those join the list.
-fn triangle(v: &[Track; 3], p: &Point<IBig>, span: [&RBig; 2], bits: usize, rules: Rules) -> Measure {
+fn triangle(
+    v: &[Track; 3],
+    p: &Point<IBig>,
+    span: [&RBig; 2],
+    bits: usize,
+    rules: Rules,
+) -> Measure {
     let at = v.clone().map(|t| t.poly());
     let q = constant(p);
     let area = cross(&minus(&at[1], &at[0]), &minus(&at[2], &at[0]));
@@ -242,7 +248,12 @@ fn triangle(v: &[Track; 3], p: &Point<IBig>, span: [&RBig; 2], bits: usize, rule
 /// SPEC.md §2 and §3 at one instant: zero area covers nothing, cull by
 /// the winding (`winding` overrides it for a wrong variant), and a sample
 /// on an edge is covered when every edge it lies on owns it.
-fn triangle_covers(v: &[Point<IBig>; 3], p: &Point<IBig>, rules: Rules, winding: Option<i32>) -> bool {
+fn triangle_covers(
+    v: &[Point<IBig>; 3],
+    p: &Point<IBig>,
+    rules: Rules,
+    winding: Option<i32>,
+) -> bool {
     let sign = signum(&orient(&v[0], &v[1], &v[2]));
     if sign == 0 {
         return false;
@@ -329,10 +340,21 @@ fn line(
         let mut holds = |t: &RBig| {
             let t = Instant::new(t);
             let w = (&width.0 * &t.den, width.1.clone());
-            line_covers(&ends[0].at(&t), &ends[1].at(&t), &t.scale(p), &w, rules.fill)
+            line_covers(
+                &ends[0].at(&t),
+                &ends[1].at(&t),
+                &t.scale(p),
+                &w,
+                rules.fill,
+            )
         };
         let piece = [&piece[0], &piece[1]];
-        total.add(measure(piece, &prepare(polys, rules.mutation), bits, &mut holds));
+        total.add(measure(
+            piece,
+            &prepare(polys, rules.mutation),
+            bits,
+            &mut holds,
+        ));
     }
     total
 }
@@ -342,7 +364,13 @@ fn line(
 /// border is covered when every border it lies on is owned, each border
 /// classified by its outward normal (§4.3). `width` is (num, den) of grid
 /// units on the points' scale.
-fn line_covers(a: &Point<IBig>, b: &Point<IBig>, p: &Point<IBig>, width: &(IBig, IBig), fill: FillRule) -> bool {
+fn line_covers(
+    a: &Point<IBig>,
+    b: &Point<IBig>,
+    p: &Point<IBig>,
+    width: &(IBig, IBig),
+    fill: FillRule,
+) -> bool {
     let d = [&b[0] - &a[0], &b[1] - &a[1]];
     if d[0] == IBig::ZERO && d[1] == IBig::ZERO {
         return false;
@@ -366,9 +394,9 @@ fn line_covers(a: &Point<IBig>, b: &Point<IBig>, p: &Point<IBig>, width: &(IBig,
         (&limit - &twice, [-d[1].clone(), d[0].clone()]),
         (&limit + &twice, [d[1].clone(), -d[0].clone()]),
     ];
-    borders.iter().all(|(value, normal)| {
-        *value > IBig::ZERO || (*value == IBig::ZERO && owns(fill, normal))
-    })
+    borders
+        .iter()
+        .all(|(value, normal)| *value > IBig::ZERO || (*value == IBig::ZERO && owns(fill, normal)))
 }
 
 /// The major axis of direction d: x (0) when |dx| ≥ |dy|, so that
