@@ -110,16 +110,17 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
     let m = offsets.len();
     let static_counts = static_coverage(scene, plan);
     // Per pixel: Σ value and Σ bound of the moving primitives' samples,
-    // in units of τ.
-    let mut moving = vec![(RBig::ZERO, RBig::ZERO); scene.canvas.pixel_count()];
+    // in units of τ. A primitive moves when a vertex does (not as a
+    // hand-made plan may say).
+    let mut sums = vec![(RBig::ZERO, RBig::ZERO); scene.canvas.pixel_count()];
     let rules = Rules {
         fill: scene.rules.fill_rule,
         cull: scene.rules.cull,
         mutation,
     };
     for primitive in scene.primitives.iter().filter(|p| p.moves()) {
-        let track = Moving::new(primitive, bits, &scale);
-        let [xs, ys] = track
+        let mover = Moving::new(primitive, bits, &scale);
+        let [xs, ys] = mover
             .bounds([&open, &close], &time_unit)
             .map(|[lo, hi]| pixel_range(&lo, &hi, &(&scale * &time_unit)));
         let xs = xs[0].max(0)..=xs[1].min(i64::from(width) - 1);
@@ -127,10 +128,10 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
         for y in ys {
             for x in xs.clone() {
                 let corner = [IBig::from(x) * &scale, IBig::from(y) * &scale];
-                let pixel = &mut moving[y as usize * width as usize + x as usize];
+                let pixel = &mut sums[y as usize * width as usize + x as usize];
                 for offset in &offsets {
                     let p = [&corner[0] + &offset[0], &corner[1] + &offset[1]];
-                    let (value, bound) = sample_measure(&track, &p, [&span[0], &span[1]], rules);
+                    let (value, bound) = sample_measure(&mover, &p, [&span[0], &span[1]], rules);
                     pixel.0 += value;
                     pixel.1 += bound;
                 }
@@ -139,8 +140,7 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
     }
     let samples = RBig::from(m);
     let per_sample = &length * &samples;
-    moving
-        .into_iter()
+    sums.into_iter()
         .zip(static_counts)
         .map(|((value, bound), count)| Certified {
             value: RBig::from(count) / &samples + value / &per_sample,
@@ -191,13 +191,13 @@ pub fn point_coverage_with(
     });
     let scale = IBig::from(scale);
     let p = point.map(|c| c.numerator() * (&scale / IBig::from(c.denominator().clone())));
-    let track = Moving::new(&scene.primitives[primitive], bits, &scale);
+    let mover = Moving::new(&scene.primitives[primitive], bits, &scale);
     let rules = Rules {
         fill: scene.rules.fill_rule,
         cull: scene.rules.cull,
         mutation,
     };
-    let (value, bound) = sample_measure(&track, &p, shutter, rules);
+    let (value, bound) = sample_measure(&mover, &p, shutter, rules);
     let length = shutter[1] - shutter[0];
     Certified {
         value: value / &length,
@@ -209,11 +209,11 @@ pub fn point_coverage_with(
 /// covered measure plus half of the undecided one, and that half. The
 /// isolation is refined until the bound is at most [`max_bound`] of the
 /// span, which is asserted.
-fn sample_measure(track: &Moving, p: &[IBig; 2], span: [&RBig; 2], rules: Rules) -> (RBig, RBig) {
+fn sample_measure(mover: &Moving, p: &[IBig; 2], span: [&RBig; 2], rules: Rules) -> (RBig, RBig) {
     let allowed = max_bound() * (span[1] - span[0]);
     let mut bits = ISOLATION_BITS;
     loop {
-        let measured = track.measure(p, span, bits, rules);
+        let measured = mover.measure(p, span, bits, rules);
         let bound = measured.undecided / RBig::from(2u8);
         if bound <= allowed || bits >= MAX_ISOLATION_BITS {
             assert!(

@@ -163,10 +163,11 @@ impl Moving {
         }
     }
 
-    /// Grid bounds [min, max] per axis of every point the primitive may
-    /// cover during [lo, hi], in units of 1/(scale·den) where `den` is the
-    /// common denominator of lo and hi given as (num_lo, num_hi, den).
-    pub fn bounds(&self, ends: [&IBig; 2], den: &IBig) -> [[IBig; 2]; 2] {
+    /// [min, max] per axis of every point the primitive may cover at the
+    /// instants between num_0/den and num_1/den (`instants` = [num_0,
+    /// num_1]), in units of 1/den of a grid unit: a vertex moves along a
+    /// segment, so its positions at the two instants bound it.
+    pub fn bounds(&self, instants: [&IBig; 2], den: &IBig) -> [[IBig; 2]; 2] {
         let (tracks, reach): (&[Track], IBig) = match self {
             Moving::Triangle(v) => (v, IBig::ZERO),
             // A parallelogram reaches width/2 beyond its ends' box along the
@@ -178,7 +179,7 @@ impl Moving {
         };
         [0, 1].map(|k| {
             let at = |v: &Track, n: &IBig| &v.start[k] * den + &v.velocity[k] * n;
-            let all = tracks.iter().flat_map(|v| ends.map(|n| at(v, n)));
+            let all = tracks.iter().flat_map(|v| instants.map(|n| at(v, n)));
             let lo = all.clone().min().expect("vertices") - &reach;
             let hi = all.max().expect("vertices") + &reach;
             [lo, hi]
@@ -215,7 +216,7 @@ fn triangle(
     bits: usize,
     rules: Rules,
 ) -> Measure {
-    let at = v.clone().map(|t| t.poly());
+    let at = [0, 1, 2].map(|i| v[i].poly());
     let q = constant(p);
     let area = cross(&minus(&at[1], &at[0]), &minus(&at[2], &at[0]));
     let mut polys = vec![area];
@@ -232,14 +233,14 @@ fn triangle(
     let winding_at_open = match rules.mutation {
         Mutation::WindingAtOpen => {
             let t = Instant::new(span[0]);
-            let w = v.clone().map(|track| track.at(&t));
+            let w = [0, 1, 2].map(|i| v[i].at(&t));
             Some(signum(&orient(&w[0], &w[1], &w[2]))).filter(|s| *s != 0)
         }
         _ => None,
     };
     let mut holds = |t: &RBig| {
         let t = Instant::new(t);
-        let w = v.clone().map(|track| track.at(&t));
+        let w = [0, 1, 2].map(|i| v[i].at(&t));
         triangle_covers(&w, &t.scale(p), rules, winding_at_open)
     };
     measure(span, &prepare(polys, rules.mutation), bits, &mut holds)
