@@ -902,7 +902,21 @@ README_TOP = [
                          "values)."),
     ("// numbers", "exact: a JSON number is the decimal it spells (0.1 is 1/10); a string holds a "
                    "fraction \"p/q\" or a decimal."),
-    ("// effects", "{} for now: antialias and motion_blur are named but not supported yet."),
+    ("// effects", "{} (default) or an object with antialias, motion_blur or both. antialias "
+                   "{\"samples\": N, \"pattern\", \"seed\", \"adaptive\", \"resolve\", "
+                   "\"position_bits\"} takes N samples per pixel (SPEC.md section 14.2). "
+                   "motion_blur makes vertices move: a moving vertex is {\"from\": [x, y], \"to\": "
+                   "[x, y]} instead of position, each end snaps on its own, and the vertex moves "
+                   "linearly from its from at time 0 to its to at time 1 (triangles and "
+                   "parallelogram lines only, and no z, w or attributes anywhere in a moving "
+                   "scene). shutter: [open, close] within [0, 1], multiples of 2^-16 (default "
+                   "[0, 1]), the interval over which coverage is averaged. samples: N time samples "
+                   "per spatial sample, 1 to 1024, required. pattern: random, stratified (default), "
+                   "stratified-shuffled or jittered-xy-t, how a sample method draws its instants "
+                   "(SPEC.md section 15.3). seed: the seed of every pattern (default 0). A moving "
+                   "scene is judged on each pixel's time coverage (expect.time_coverage, "
+                   "max_time_error, max_time_rms; SPEC.md section 15.4); with nothing moving, "
+                   "motion_blur changes nothing."),
     ("// expect", "max_mismatched_samples (default 0), watertight (default false: no holes, no "
                   "overdraw), samples_covered (the exact count the reference must cover), "
                   "max_abs_error (default 2^-16 * max(1, largest vertex magnitude)) and "
