@@ -253,15 +253,13 @@ fn a_broken_oracle_is_reported_on_every_candidate() {
     );
 }
 
+type MakeFrame = Box<dyn Fn(&Scene, &Plan) -> Frame + Send + Sync>;
+
 #[test]
 fn frames_of_the_wrong_shape_are_errors() {
     let slide = Slide::new("slide");
     let (s, r) = reference(&slide);
-    let cases: [(
-        &str,
-        Box<dyn Fn(&Scene, &Plan) -> Frame + Send + Sync>,
-        &str,
-    ); 4] = [
+    let cases: [(&str, MakeFrame, &str); 4] = [
         (
             "static",
             Box::new(|s: &Scene, _: &Plan| Frame::new(s.canvas.width, s.canvas.height, false, 0)),
