@@ -63,6 +63,20 @@ fn the_exact_time_coverage_passes() {
     assert_eq!(run.verdict, Verdict::Pass, "{}", suite::describe(&run));
     let t = run.metrics.as_ref().unwrap().time.clone().unwrap();
     assert_eq!((t.max_error, t.rms_moving, t.moving_pixels), (0.0, 0.0, 48));
+    // The sample metrics have nothing to compare and stay quiet, with 4×
+    // antialiasing too (no resolved coverage, no mask).
+    let aa = Slide {
+        antialias: Some(4),
+        ..Slide::new("slide_aa4")
+    };
+    let (s, r) = reference(&aa);
+    let run = suite::run_candidate(&s, &r, &exact_candidate(&aa));
+    assert_eq!(run.verdict, Verdict::Pass, "{}", suite::describe(&run));
+    let m = run.metrics.as_ref().unwrap();
+    assert_eq!((m.coverage.samples, m.coverage.mismatched()), (0, 0));
+    assert!(m.coverage.mask.is_empty() && m.channels.is_empty());
+    assert!(m.antialias.is_none() && m.watertight.is_none() && m.lines.is_none());
+    assert!(m.time.is_some());
     assert!(
         suite::describe(&run).starts_with("time coverage only · time max err 0.00e0"),
         "{}",
