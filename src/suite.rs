@@ -231,24 +231,16 @@ fn time_reference(
 ) -> (Frame, Result<TimeCheck, String>) {
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let pixels = scene.canvas.pixel_count();
-    let computed =
-        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| time_coverage(scene, plan)))
-            .map_err(|panic| {
-                format!(
-                    "reference: the time-coverage oracle failed: {}",
-                    panic_message(&*panic)
-                )
-            })
-            .and_then(|certified| {
-                if certified.len() == pixels {
-                    Ok(certified)
-                } else {
-                    Err(format!(
-                "reference: the time-coverage oracle returned {} values for {pixels} pixels",
-                certified.len()
+    let computed = catch_oracle(|| time_coverage(scene, plan)).and_then(|certified| {
+        if certified.len() == pixels {
+            Ok(certified)
+        } else {
+            let n = certified.len();
+            Err(format!(
+                "reference: the time-coverage oracle returned {n} values for {pixels} pixels"
             ))
-                }
-            });
+        }
+    });
     match computed {
         Ok(certified) => {
             let time = certified
@@ -265,6 +257,16 @@ fn time_reference(
             Err(why),
         ),
     }
+}
+
+/// The time-coverage oracle's answer, or why it panicked.
+fn catch_oracle(oracle: impl FnOnce() -> Vec<Certified>) -> Result<Vec<Certified>, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(oracle)).map_err(|panic| {
+        format!(
+            "reference: the time-coverage oracle failed: {}",
+            panic_message(&*panic)
+        )
+    })
 }
 
 /// The [`TimeCheck`] of certified per-pixel time coverage: each pin of
@@ -558,33 +560,27 @@ pub fn shape_problem(reference: &Frame, frame: &Frame) -> Option<String> {
         || frame.depth.is_some() != reference.depth.is_some() && !samples_only_resolved;
     wrong.then(|| {
         format!(
-            "{} samples per pixel{}, {} attributes{} for the reference's {}{}, {}{}",
-            frame.samples,
-            if frame.resolved.is_some() {
-                " and resolved coverage"
-            } else {
-                ""
-            },
-            frame.attributes.len(),
-            if frame.depth.is_some() {
-                " and depth"
-            } else {
-                ""
-            },
-            reference.samples,
-            if reference.resolved.is_some() {
-                " and resolved coverage"
-            } else {
-                ""
-            },
-            reference.attributes.len(),
-            if reference.depth.is_some() {
-                " and depth"
-            } else {
-                ""
-            },
+            "{} for the reference's {}",
+            channels(frame),
+            channels(reference)
         )
     })
+}
+
+/// What a frame holds, in words, for [`shape_problem`].
+fn channels(frame: &Frame) -> String {
+    let mut out = format!(
+        "{} samples per pixel, {} attributes",
+        frame.samples,
+        frame.attributes.len()
+    );
+    if frame.depth.is_some() {
+        out.push_str(", depth");
+    }
+    if frame.resolved.is_some() {
+        out.push_str(", resolved coverage");
+    }
+    out
 }
 
 /// The message a panic carried.
