@@ -58,17 +58,19 @@ pub enum Mutation {
     LeakyFull,
     /// Every moving primitive drawn where it is at shutter open, as a
     /// renderer that ignores the velocity would: time coverage 0 or 1 per
-    /// spatial sample. Caught by the time-coverage error bounds.
+    /// spatial sample. Caught by the time-coverage RMS (and by
+    /// `max_time_error` where a case gives one); not by the bias, since a
+    /// primitive keeps its area at every instant and the errors cancel.
     MotionAtOpen,
     /// An accumulation buffer over the first half of the shutter only: the
     /// scene drawn at N instants, the midpoints of N equal strata of
     /// [open, (open + close)/2], the same at every pixel, as an off-by-two
-    /// in the shutter's length would. Moving primitives lag behind and
-    /// the bias is that of the missing half; caught by the time-coverage
-    /// error bounds. (The same buffer over the whole shutter is not a bug
-    /// the metrics can catch: strata midpoints shared by every pixel err
-    /// by at most about 1/N per edge, below the RMS bound; they strobe,
-    /// but strobing is not an error of the mean.)
+    /// in the shutter's length would. Moving primitives cover only the
+    /// first half of their path, twice as long; caught by the time-coverage
+    /// RMS. (The same buffer over the whole shutter is not a bug these
+    /// metrics catch: midpoints shared by every pixel err by at most about
+    /// 1/N per edge, below the RMS bound, tests/mutants.rs shows it. It
+    /// strobes, but strobing is no error in any one pixel's mean.)
     MotionHalfShutter,
 }
 

@@ -6,7 +6,7 @@ use rastercheck::mutants::{Mutant, Mutation};
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
-use rastercheck::scene::{parse_case, Limits, Scene};
+use rastercheck::scene::{parse_case, Limits, Number, Scene};
 use rastercheck::suite::{self, CandidateRun, Verdict};
 
 fn scene(json: &str) -> Scene {
@@ -925,5 +925,34 @@ fn motion_mutants_draw_static_scenes_as_production_does() {
     let s = scene(DIAGONAL_PAIR);
     for mutation in [Mutation::MotionAtOpen, Mutation::MotionHalfShutter] {
         assert_eq!(run(&s, &Mutant(mutation)).verdict, Verdict::Pass);
+    }
+}
+
+#[test]
+fn an_accumulation_buffer_over_the_whole_shutter_is_not_caught() {
+    // The limit of what time metrics see: N strata midpoints shared by
+    // every pixel (an accumulation buffer, which strobes) estimate each
+    // pixel's mean within about 1/N per edge, well inside the RMS bound.
+    // Only the half-shutter variant above is a bug they catch.
+    for base in slides() {
+        for dx in [8, 7] {
+            let slide = Slide { dx, ..base.clone() };
+            let (s, reference) = slide_reference(&slide);
+            let midpoints = |_: &Scene, _: &Plan| {
+                let instants: Vec<Number> = (0..16).map(|k| Number::ratio(2 * k + 1, 32)).collect();
+                rastercheck::mutants::accumulate(&s, &instants).unwrap()
+            };
+            let r = suite::run_candidate(&s, &reference, &Given("accumulation", midpoints));
+            let t = time_metrics(&r);
+            assert_eq!(r.verdict, Verdict::Pass, "{}: {t:?}", slide.name);
+            assert!(t.max_error <= 1.0 / 16.0 + 1e-12, "{}: {t:?}", slide.name);
+            eprintln!(
+                "{} dx {dx}: accumulation over the whole shutter: rms {:.4} (bound {:.4}), max {:.4}",
+                slide.name,
+                t.rms_moving,
+                t.allowed_rms.unwrap(),
+                t.max_error
+            );
+        }
     }
 }
