@@ -42,14 +42,18 @@
 //!   antialiased cases `antialias.max_error`, `antialias.rms_edge`,
 //!   `antialias.rms_all` (resolved coverage against the exact area) and
 //!   `antialias.piglit_violations`, `antialias.resolve_mismatches`,
-//!   `antialias.invalid_values`. Lower is
-//!   better for every one. Counts are integers; errors are numbers, or
-//!   `"inf"` for an error that was not a number (NaN).
+//!   `antialias.invalid_values`, and for scenes in which something moves
+//!   `time.max_error`, `time.rms_moving`, `time.rms_all` and
+//!   `time.abs_bias` (|mean signed error| over moving pixels: a bias
+//!   either way is worse the larger it is) and `time.invalid_values`.
+//!   Lower is better for every one. Counts are integers; errors are
+//!   numbers, or `"inf"` for an error that was not a number (NaN).
 //! - `tolerance`: a metric **regresses** when
 //!   `new > old · (1 + relative) + absolute`, and **improves** when
 //!   `old > new · (1 + relative) + absolute`. `counts` applies to the count
-//!   metrics, `errors` to `max_abs`, `rms` and the antialiasing errors
-//!   (`max_error`, `rms_edge`, `rms_all`); `overrides` maps a metric
+//!   metrics, `errors` to `max_abs`, `rms`, the antialiasing errors
+//!   (`max_error`, `rms_edge`, `rms_all`) and the time errors (`max_error`,
+//!   `rms_moving`, `rms_all`, `abs_bias`); `overrides` maps a metric
 //!   name (`"depth.max_abs"`) or a metric kind after the last dot
 //!   (`"rms"`, `"mismatched"`) to its own tolerance. Edit them by hand.
 //! - A verdict regresses when it gets worse on the scale pass = foil <
@@ -191,12 +195,20 @@ impl Tolerances {
     }
 }
 
-/// `max_abs`, `rms` and the antialiasing errors are float errors;
-/// everything else is a count.
+/// `max_abs`, `rms`, the antialiasing and the time errors are float
+/// errors; everything else is a count.
 pub fn is_error_metric(metric: &str) -> bool {
-    [".max_abs", ".rms", ".max_error", ".rms_edge", ".rms_all"]
-        .iter()
-        .any(|kind| metric.ends_with(kind))
+    [
+        ".max_abs",
+        ".rms",
+        ".max_error",
+        ".rms_edge",
+        ".rms_all",
+        ".rms_moving",
+        ".abs_bias",
+    ]
+    .iter()
+    .any(|kind| metric.ends_with(kind))
 }
 
 /// One case on one rasterizer.
@@ -310,6 +322,13 @@ pub fn metrics_of(m: &Metrics) -> BTreeMap<String, Value> {
             a.resolve_mismatches as f64,
         );
         put("antialias.invalid_values".into(), a.invalid_values as f64);
+    }
+    if let Some(t) = &m.time {
+        put("time.max_error".into(), t.max_error);
+        put("time.rms_moving".into(), t.rms_moving);
+        put("time.rms_all".into(), t.rms_all);
+        put("time.abs_bias".into(), t.bias_moving.abs());
+        put("time.invalid_values".into(), t.invalid_values as f64);
     }
     out
 }
@@ -898,5 +917,85 @@ mod tests {
         assert_eq!(t.for_metric("depth.rms").relative, 2.0);
         assert_eq!(t.for_metric("depth.max_abs").relative, 0.01);
         assert_eq!(t.for_metric("coverage.missing").relative, 0.0);
+    }
+
+    #[test]
+    fn worse_time_errors_regress() {
+        use crate::frame::Frame;
+        use crate::metrics;
+        let scene = crate::scene::parse_case(
+            r#"{"name": "slide", "canvas": {"width": 4, "height": 1},
+                "primitives": [{"triangle": [{"from": [0, 0], "to": [2, 0]}, [4, 0], [0, 1]]}],
+                "effects": {"motion_blur": {"samples": 16}}}"#,
+            "inline.json",
+            &crate::scene::Limits::default(),
+        )
+        .unwrap();
+        let reference = Frame::time_only(4, 1, vec![0.25, 0.5, 1.0, 0.0]);
+        let recorded = |time: Vec<f64>| {
+            let m = metrics::measure(&scene, &reference, &Frame::time_only(4, 1, time), None);
+            metrics_of(&m)
+        };
+        let entry = |metrics| Entry {
+            case: "slide".into(),
+            rasterizer: "r".into(),
+            verdict: "pass".into(),
+            metrics,
+        };
+        let good = recorded(vec![0.3, 0.5, 1.0, 0.0]);
+        let names: Vec<&str> = good
+            .keys()
+            .filter(|k| k.starts_with("time."))
+            .map(String::as_str)
+            .collect();
+        assert_eq!(
+            names,
+            [
+                "time.abs_bias",
+                "time.invalid_values",
+                "time.max_error",
+                "time.rms_all",
+                "time.rms_moving"
+            ]
+        );
+        assert!((good["time.max_error"].0 - 0.05).abs() < 1e-15);
+        assert!(names
+            .iter()
+            .all(|n| *n == "time.invalid_values" || is_error_metric(n)));
+        let regressed = |old: &BTreeMap<String, Value>, new: &BTreeMap<String, Value>| {
+            let mut names: Vec<String> =
+                compare(vec![entry(old.clone())], vec![entry(new.clone())])
+                    .findings
+                    .into_iter()
+                    .filter(|f| f.change == Change::Regression)
+                    .map(|f| f.metric)
+                    .collect();
+            names.sort();
+            names
+        };
+        // Worse in every error; the bias flips sign and grows.
+        let worse = recorded(vec![0.15, 0.5, 1.0, 0.0]);
+        assert_eq!(
+            regressed(&good, &worse),
+            [
+                "time.abs_bias",
+                "time.max_error",
+                "time.rms_all",
+                "time.rms_moving"
+            ]
+        );
+        assert!(regressed(&worse, &good).is_empty());
+        // A second error of the opposite sign cancels the bias: the RMS
+        // regresses, the bias improves (to 0), the largest error stays.
+        let cancelled = recorded(vec![0.3, 0.45, 1.0, 0.0]);
+        assert_eq!(cancelled["time.abs_bias"].0, 0.0);
+        assert_eq!(
+            regressed(&good, &cancelled),
+            ["time.rms_all", "time.rms_moving"]
+        );
+        // A value that is not a number.
+        let broken = recorded(vec![f64::NAN, 0.5, 1.0, 0.0]);
+        assert_eq!(broken["time.max_error"].0, f64::INFINITY);
+        assert!(regressed(&good, &broken).contains(&"time.invalid_values".to_owned()));
     }
 }

@@ -1148,6 +1148,7 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
         frame,
         interior,
         areas,
+        time: None,
         elapsed: started.elapsed(),
     })
 }

@@ -17,6 +17,12 @@
 //! the two 32-bit halves of the f64's bits, `resolved.f64.high` and
 //! `resolved.f64.low` (u32), so that it is checked to the bit. A
 //! single-sample case without antialiasing keeps its one layer as before.
+//!
+//! A scene in which something moves (SPEC.md §15.4) has no samples: its
+//! file holds one layer, `time`, of the canvas's size, with each pixel's
+//! exact time coverage rounded to f64, stored like `resolved`: as `time`
+//! (f32, for people) and as `time.f64.high` and `time.f64.low` (u32), so
+//! that it is checked to the bit.
 
 use std::path::{Path, PathBuf};
 
@@ -36,6 +42,8 @@ pub fn path_for(root: &Path, case_id: &str) -> PathBuf {
 const SAMPLES_LAYER: &str = "reference";
 /// The layer of the resolved coverage (antialiased cases only).
 const RESOLVED_LAYER: &str = "resolved";
+/// The layer of the time coverage (scenes in which something moves).
+const TIME_LAYER: &str = "time";
 
 /// Stored values of one channel: f32 for values, u32 for exact bits.
 #[derive(Clone, Debug, PartialEq)]
@@ -96,27 +104,35 @@ fn layers(frame: &Frame) -> Vec<LayerData> {
                 .collect(),
         });
     }
-    if let Some(resolved) = &frame.resolved {
-        let word = |shift: u32| {
-            resolved
-                .iter()
-                .map(|v| (v.to_bits() >> shift) as u32)
-                .collect()
-        };
-        out.push(LayerData {
-            name: RESOLVED_LAYER.to_owned(),
-            size: (frame.width as usize, frame.height as usize),
-            channels: vec![
-                (
-                    "resolved".to_owned(),
-                    Values::F32(resolved.iter().map(|&v| v as f32).collect()),
-                ),
-                ("resolved.f64.high".to_owned(), Values::U32(word(32))),
-                ("resolved.f64.low".to_owned(), Values::U32(word(0))),
-            ],
-        });
+    for (name, values) in [(RESOLVED_LAYER, &frame.resolved), (TIME_LAYER, &frame.time)] {
+        if let Some(values) = values {
+            out.push(per_pixel_f64(name, frame, values));
+        }
     }
     out
+}
+
+/// A layer of one f64 per pixel: `<name>` as its nearest f32, for people,
+/// and the f64's bits as `<name>.f64.high` and `<name>.f64.low`.
+fn per_pixel_f64(name: &str, frame: &Frame, values: &[f64]) -> LayerData {
+    let word = |shift: u32| {
+        values
+            .iter()
+            .map(|v| (v.to_bits() >> shift) as u32)
+            .collect()
+    };
+    LayerData {
+        name: name.to_owned(),
+        size: (frame.width as usize, frame.height as usize),
+        channels: vec![
+            (
+                name.to_owned(),
+                Values::F32(values.iter().map(|&v| v as f32).collect()),
+            ),
+            (format!("{name}.f64.high"), Values::U32(word(32))),
+            (format!("{name}.f64.low"), Values::U32(word(0))),
+        ],
+    }
 }
 
 /// The sample channels of a frame, named as stored, in f32.
@@ -146,8 +162,19 @@ fn channels(frame: &Frame) -> Vec<(String, Vec<f32>)> {
     out
 }
 
-/// Writes a frame as its golden file, creating folders as needed.
+/// Writes a frame as its golden file, creating folders as needed. A time
+/// coverage that is not a number (what the suite holds when the oracle
+/// failed) is refused: a golden file records what the oracle computed.
 pub fn write(frame: &Frame, path: &Path) -> Result<(), String> {
+    if let Some(p) = frame.time.iter().flatten().position(|v| v.is_nan()) {
+        let width = frame.width.max(1) as usize;
+        return Err(format!(
+            "{}: the time coverage of pixel ({}, {}) is not a number (the oracle failed); nothing written",
+            path.display(),
+            p % width,
+            p / width
+        ));
+    }
     if let Some(parent) = path.parent() {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
@@ -393,6 +420,51 @@ mod tests {
         assert_eq!(read(&path).unwrap().0, (3, 2));
         let err = check(&frame, &path).unwrap_err();
         assert!(err.contains("layer resolved is missing"), "{err}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn time_coverage_round_trips_to_the_bit() {
+        let dir = std::env::temp_dir().join(format!("rastercheck-golden-t-{}", std::process::id()));
+        let path = dir.join("time.exr");
+        let frame = Frame::time_only(4, 3, (0..12).map(|p| p as f64 / 7.0).collect());
+        write(&frame, &path).unwrap();
+        assert_eq!(check(&frame, &path), Ok(()));
+        let layers = read_layers(&path).unwrap();
+        assert_eq!(layers.len(), 1);
+        assert_eq!((layers[0].name.as_str(), layers[0].size), ("time", (4, 3)));
+        let mut names: Vec<&str> = layers[0].channels.iter().map(|(n, _)| n.as_str()).collect();
+        names.sort();
+        assert_eq!(names, ["time", "time.f64.high", "time.f64.low"]);
+
+        // One ulp of pixel (2, 1): caught in the low word only.
+        let mut changed = frame.clone();
+        let t = changed.time.as_mut().unwrap();
+        t[6] = f64::from_bits(t[6].to_bits() + 1);
+        let err = check(&changed, &path).unwrap_err();
+        assert!(
+            err.contains("channel time.f64.low: 1 samples differ; first at pixel (2, 1)"),
+            "{err}"
+        );
+        assert!(!err.contains("channel time:"), "{err}");
+
+        // A static frame against a moving scene's file, and back.
+        let plain = Frame::new(4, 3, false, 0);
+        let err = check(&plain, &path).unwrap_err();
+        assert!(
+            err.contains("layer reference is missing") && err.contains("layer time, which"),
+            "{err}"
+        );
+        write(&plain, &path).unwrap();
+        let err = check(&frame, &path).unwrap_err();
+        assert!(err.contains("layer time is missing"), "{err}");
+
+        // A failed oracle's NaN is never written.
+        let mut broken = frame.clone();
+        broken.time.as_mut().unwrap()[5] = f64::NAN;
+        let err = write(&broken, &path).unwrap_err();
+        assert!(err.contains("pixel (1, 1) is not a number"), "{err}");
+        assert_eq!(check(&plain, &path), Ok(()), "the file is unchanged");
         std::fs::remove_dir_all(&dir).ok();
     }
 }

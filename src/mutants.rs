@@ -5,9 +5,14 @@
 //! A bug is applied by rewriting what production sees (the scene, or the
 //! plan's sample offsets) or what it returns (the resolved coverage of an
 //! antialiased frame); production itself is never changed.
+//!
+//! The motion mutants draw a moving scene as static scenes at chosen
+//! instants ([`accumulate`]), with production's static path at the scene's
+//! own spatial samples; the other mutants do not claim motion blur, since
+//! a rewritten scene says nothing about the time loop.
 
 use crate::frame::Frame;
-use crate::plan::Plan;
+use crate::plan::{MotionPlan, Plan};
 use crate::production::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, Interpolation, LastPixel, LineRule, Number, Primitive, Scene};
@@ -51,10 +56,26 @@ pub enum Mutation {
     /// Fully covered pixels resolve to 1 − 2^-20, as an accumulation with a
     /// bias would. Caught by piglit's rule (full pixels are exactly 1).
     LeakyFull,
+    /// Every moving primitive drawn where it is at shutter open, as a
+    /// renderer that ignores the velocity would: time coverage 0 or 1 per
+    /// spatial sample. Caught by the time-coverage RMS (and by
+    /// `max_time_error` where a case gives one); not by the bias, since a
+    /// primitive keeps its area at every instant and the errors cancel.
+    MotionAtOpen,
+    /// An accumulation buffer over the first half of the shutter only: the
+    /// scene drawn at N instants, the midpoints of N equal strata of
+    /// [open, (open + close)/2], the same at every pixel, as an off-by-two
+    /// in the shutter's length would. Moving primitives cover only the
+    /// first half of their path, twice as long; caught by the time-coverage
+    /// RMS. (The same buffer over the whole shutter is not a bug these
+    /// metrics catch: midpoints shared by every pixel err by at most about
+    /// 1/N per edge, below the RMS bound, tests/mutants.rs shows it. It
+    /// strobes, but strobing is no error in any one pixel's mean.)
+    MotionHalfShutter,
 }
 
 impl Mutation {
-    pub const ALL: [Mutation; 10] = [
+    pub const ALL: [Mutation; 12] = [
         Mutation::FlippedTies,
         Mutation::ClosedEdges,
         Mutation::VertexNudge,
@@ -65,6 +86,8 @@ impl Mutation {
         Mutation::ShiftedSamples,
         Mutation::CoarseResolve,
         Mutation::LeakyFull,
+        Mutation::MotionAtOpen,
+        Mutation::MotionHalfShutter,
     ];
 
     pub fn name(self) -> &'static str {
@@ -79,6 +102,33 @@ impl Mutation {
             Mutation::ShiftedSamples => "mutant:shifted-samples",
             Mutation::CoarseResolve => "mutant:coarse-resolve",
             Mutation::LeakyFull => "mutant:leaky-full",
+            Mutation::MotionAtOpen => "mutant:motion-at-open",
+            Mutation::MotionHalfShutter => "mutant:motion-half-shutter",
+        }
+    }
+
+    /// Whether the bug is in the time loop: only these mutants draw
+    /// moving scenes.
+    pub fn is_motion(self) -> bool {
+        matches!(self, Mutation::MotionAtOpen | Mutation::MotionHalfShutter)
+    }
+
+    /// The instants (in [0, 1]) a motion mutant draws a moving scene at.
+    fn instants(self, motion: &MotionPlan) -> Vec<Number> {
+        let one = i64::from(crate::scene::time::limits::TIME_ONE);
+        let [open, close] = motion.blur.shutter.map(i64::from);
+        match self {
+            Mutation::MotionHalfShutter => {
+                // open + (close − open)·(2k + 1)/(4N): the midpoints of N
+                // strata of the first half.
+                let n = i64::from(motion.blur.samples.max(1));
+                (0..n)
+                    .map(|k| {
+                        Number::ratio(4 * n * open + (close - open) * (2 * k + 1), 4 * n * one)
+                    })
+                    .collect()
+            }
+            _ => vec![Number::ratio(open, one)],
         }
     }
 
@@ -175,7 +225,11 @@ impl Mutation {
                 LineRule::Midpoint,
                 LastPixel::Exclude,
             ),
-            Mutation::ShiftedSamples | Mutation::CoarseResolve | Mutation::LeakyFull => {}
+            Mutation::ShiftedSamples
+            | Mutation::CoarseResolve
+            | Mutation::LeakyFull
+            | Mutation::MotionAtOpen
+            | Mutation::MotionHalfShutter => {}
         }
         scene
     }
@@ -201,12 +255,62 @@ impl Rasterizer for Mutant {
         self.0.name()
     }
 
+    /// Production's, except motion blur: only the motion mutants draw
+    /// moving scenes (they do it their own way, [`accumulate`]), whatever
+    /// production can do.
     fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
+        Capabilities {
+            motion_blur: self.0.is_motion(),
+            ..Production.capabilities()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if let (true, Some(motion)) = (self.0.is_motion(), &plan.motion) {
+            return accumulate(scene, &self.0.instants(motion));
+        }
         let frame = Production.rasterize(&self.0.apply(scene), &self.0.plan(plan))?;
         Ok(self.0.frame(frame))
     }
+}
+
+/// A moving scene drawn as an accumulation buffer: the static scene at
+/// each of `instants` (in [0, 1]) drawn by production at the scene's own
+/// spatial samples, and each pixel's time coverage the covered
+/// (instant, sample) tests over all of them, counting every primitive
+/// that covers a sample (SPEC.md §15.3's estimate with the same instants
+/// at every pixel). Each static scene is snapped again to the case's grid,
+/// as such a renderer would snap every frame; positions at an instant on
+/// that grid (every instant of a shutter open at 0, say) do not move.
+///
+/// # Errors
+/// What production reports for a static scene; `Failed` for a scene
+/// without `subpixel_bits` (every moving scene has them) or no instants.
+pub fn accumulate(scene: &Scene, instants: &[Number]) -> Result<Frame, RasterError> {
+    let bits = scene
+        .rules
+        .subpixel_bits
+        .ok_or_else(|| RasterError::Failed("a moving scene without subpixel_bits".to_owned()))?;
+    if instants.is_empty() {
+        return Err(RasterError::Failed("no instants to draw".to_owned()));
+    }
+    let mut covered = vec![0u64; scene.canvas.pixel_count()];
+    let mut tests = 0u64;
+    for instant in instants {
+        let mut still = scene.at_instant(instant);
+        still.rules.subpixel_bits = Some(bits);
+        let plan = Plan::for_scene(&still);
+        let frame = Production.rasterize(&still, &plan)?;
+        let n = frame.samples.max(1) as usize;
+        for (sum, run) in covered.iter_mut().zip(frame.coverage.chunks(n)) {
+            *sum += run.iter().map(|&c| u64::from(c)).sum::<u64>();
+        }
+        tests += n as u64;
+    }
+    let time = covered.iter().map(|&c| c as f64 / tests as f64).collect();
+    Ok(Frame::time_only(
+        scene.canvas.width,
+        scene.canvas.height,
+        time,
+    ))
 }

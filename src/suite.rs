@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use dashu_int::ops::Abs;
 use dashu_ratio::RBig;
 
 use crate::frame::Frame;
@@ -14,6 +15,7 @@ use crate::plan::Plan;
 use crate::production::foils::{DdaF32, DdaF64, FloatF32, FloatF64};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
+use crate::reference::motion::Certified;
 use crate::reference::{self, Reference};
 use crate::scene::{parse_case, CaseError, Limits, Scene};
 
@@ -158,12 +160,39 @@ pub struct ReferenceRun {
     /// ([`check_areas`]), or why the oracle failed to compute them (a panic
     /// there fails the case with the reason instead of ending the run).
     pub areas: Option<Result<AreaCheck, String>>,
+    /// For scenes in which something moves only: what the certified time
+    /// coverage says ([`check_time`]), or why the oracle failed to compute
+    /// it (then `frame` holds NaN, which no golden file matches).
+    pub time: Option<Result<TimeCheck, String>>,
     pub elapsed: Duration,
 }
 
 pub fn run_reference(scene: &Scene) -> ReferenceRun {
+    run_reference_with(scene, reference::motion::time_coverage)
+}
+
+/// [`run_reference`] with the time-coverage oracle given, so that tests
+/// can judge moving scenes against exact values they computed themselves.
+/// A scene in which something moves gets its frame from the oracle's
+/// certified values, computed once; it has no mesh interior and no exact
+/// areas (it is judged on time coverage only).
+pub fn run_reference_with(
+    scene: &Scene,
+    time_coverage: impl FnOnce(&Scene, &Plan) -> Vec<Certified>,
+) -> ReferenceRun {
     let started = Instant::now();
     let plan = Plan::for_scene(scene);
+    if plan.motion.is_some() {
+        let (frame, time) = time_reference(scene, &plan, time_coverage);
+        return ReferenceRun {
+            plan,
+            frame,
+            interior: None,
+            areas: None,
+            time: Some(time),
+            elapsed: started.elapsed(),
+        };
+    }
     let frame = reference::render(scene, &plan);
     let interior = scene
         .expect
@@ -175,7 +204,106 @@ pub fn run_reference(scene: &Scene) -> ReferenceRun {
         frame,
         interior,
         areas,
+        time: None,
         elapsed: started.elapsed(),
+    }
+}
+
+/// What the certified time coverage of a moving scene says: whether each
+/// pixel's exact value is a whole number (for the moving pixels of SPEC.md
+/// §15.4), the largest certified bound, and the promises of the case the
+/// reference breaks (`expect.time_coverage`), which fail every candidate,
+/// as `expect.area` does.
+pub struct TimeCheck {
+    pub whole: Vec<bool>,
+    /// The largest bound of any pixel (0 when every value is exact).
+    pub max_bound: f64,
+    pub broken_promises: Vec<String>,
+}
+
+/// The frame and the [`TimeCheck`] of a moving scene from the oracle
+/// `time_coverage`; a panic there, or an answer of the wrong length, is
+/// `Err(why)` with a frame of NaN.
+fn time_reference(
+    scene: &Scene,
+    plan: &Plan,
+    time_coverage: impl FnOnce(&Scene, &Plan) -> Vec<Certified>,
+) -> (Frame, Result<TimeCheck, String>) {
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    let pixels = scene.canvas.pixel_count();
+    let computed = catch_oracle(|| time_coverage(scene, plan)).and_then(|certified| {
+        if certified.len() == pixels {
+            Ok(certified)
+        } else {
+            let n = certified.len();
+            Err(format!(
+                "reference: the time-coverage oracle returned {n} values for {pixels} pixels"
+            ))
+        }
+    });
+    match computed {
+        Ok(certified) => {
+            let time = certified
+                .iter()
+                .map(|c| reference::area::to_f64_nearest(&c.value))
+                .collect();
+            (
+                Frame::time_only(width, height, time),
+                Ok(check_time(scene, &certified)),
+            )
+        }
+        Err(why) => (
+            Frame::time_only(width, height, vec![f64::NAN; pixels]),
+            Err(why),
+        ),
+    }
+}
+
+/// The time-coverage oracle's answer, or why it panicked.
+fn catch_oracle(oracle: impl FnOnce() -> Vec<Certified>) -> Result<Vec<Certified>, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(oracle)).map_err(|panic| {
+        format!(
+            "reference: the time-coverage oracle failed: {}",
+            panic_message(&*panic)
+        )
+    })
+}
+
+/// The [`TimeCheck`] of certified per-pixel time coverage: each pin of
+/// `expect.time_coverage` must hold as SPEC.md §15.4 says,
+/// |value − pinned| ≤ bound + 10^-12, decided in exact rationals (pins are
+/// written with 15 significant digits, hence the 10^-12).
+pub fn check_time(scene: &Scene, certified: &[Certified]) -> TimeCheck {
+    let slack = RBig::from_parts(1.into(), dashu_int::UBig::from(10u8).pow(12));
+    let width = scene.canvas.width as usize;
+    let mut broken = Vec::new();
+    for pin in &scene.expect.time_coverage {
+        let [x, y] = pin.pixel;
+        let Some(c) = certified.get(y as usize * width + x as usize) else {
+            continue;
+        };
+        let off = (&c.value - pin.value.as_rbig()).abs();
+        if off > &c.bound + &slack {
+            broken.push(format!(
+                "reference: its time coverage of pixel ({x}, {y}) is {value} (≈ {:.15}, certified within {:.3e}) but the case pins {pinned}: off by {:.3e}, more than the bound + 1e-12",
+                reference::area::to_f64_nearest(&c.value),
+                reference::area::to_f64_nearest(&c.bound),
+                reference::area::to_f64_nearest(&off),
+                value = c.value,
+                pinned = pin.value,
+            ));
+        }
+    }
+    TimeCheck {
+        whole: certified
+            .iter()
+            .map(|c| c.bound == RBig::ZERO && c.value.is_int())
+            .collect(),
+        max_bound: certified
+            .iter()
+            .map(|c| reference::area::to_f64_nearest(&c.bound))
+            .fold(0.0, f64::max),
+        broken_promises: broken,
     }
 }
 
@@ -326,19 +454,8 @@ pub fn run_candidate(
             );
         }
     };
-    let samples_only_resolved = frame.samples == 0 && reference.frame.resolved.is_some();
-    if (frame.width, frame.height) != (reference.frame.width, reference.frame.height)
-        || !(frame.samples == reference.frame.samples || samples_only_resolved)
-        || frame.resolved.is_some() != reference.frame.resolved.is_some()
-        || frame
-            .resolved
-            .as_ref()
-            .is_some_and(|r| r.len() != frame.pixel_count())
-        || frame.sample_count() != frame.pixel_count() * frame.samples as usize
-        || frame.attributes.len() != reference.frame.attributes.len() && !samples_only_resolved
-        || frame.depth.is_some() != reference.frame.depth.is_some() && !samples_only_resolved
-    {
-        let why = "returned a frame of the wrong size or with the wrong channels".to_owned();
+    if let Some(why) = shape_problem(&reference.frame, &frame) {
+        let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return CandidateRun {
             rasterizer: name,
             verdict: Verdict::Error(why),
@@ -354,18 +471,33 @@ pub fn run_candidate(
         Some(Err(why)) => (None, Some(why.clone())),
         None => (None, None),
     };
-    let m = metrics::measure_with_areas(
-        scene,
-        &reference.frame,
-        &frame,
-        reference.interior.as_deref(),
-        areas.as_ref().map(|a| a.classes.as_slice()),
-    );
-    let mut failures = metrics::failures(scene, &reference.frame, &m);
+    // Likewise the certified time coverage of a moving scene.
+    let (time, broken_time_oracle) = match &reference.time {
+        Some(Ok(check)) => (Some(check), None),
+        Some(Err(why)) => (None, Some(why.clone())),
+        None => (None, None),
+    };
+    let known = metrics::Known {
+        interior: reference.interior.as_deref(),
+        classes: areas.as_ref().map(|a| a.classes.as_slice()),
+        whole_time: time.map(|t| t.whole.as_slice()),
+    };
+    let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
+    // Without the oracle's values there is nothing to measure against: the
+    // one reason is the oracle's failure.
+    let mut failures = if broken_time_oracle.is_some() {
+        Vec::new()
+    } else {
+        metrics::failures(scene, &reference.frame, &m)
+    };
     if let Some(check) = &areas {
         failures.extend(check.broken_promises.iter().cloned());
     }
     failures.extend(broken_oracle);
+    if let Some(check) = time {
+        failures.extend(check.broken_promises.iter().cloned());
+    }
+    failures.extend(broken_time_oracle);
     let verdict = if failures.is_empty() {
         Verdict::Pass
     } else {
@@ -378,6 +510,77 @@ pub fn run_candidate(
         frame: Some(frame),
         elapsed,
     }
+}
+
+/// Why a candidate's frame cannot be compared with the reference's, if it
+/// cannot: another canvas, other samples or channels; for a scene in which
+/// something moves, anything but a time-only frame (one time coverage per
+/// pixel, no sample slots), and time coverage for any other scene.
+pub fn shape_problem(reference: &Frame, frame: &Frame) -> Option<String> {
+    if (frame.width, frame.height) != (reference.width, reference.height) {
+        return Some(format!(
+            "{}×{} for a {}×{} canvas",
+            frame.width, frame.height, reference.width, reference.height
+        ));
+    }
+    if reference.time.is_some() {
+        let time_only = frame.samples == 0
+            && frame.sample_count() == 0
+            && frame.last.is_empty()
+            && frame.resolved.is_none()
+            && frame.depth.is_none()
+            && frame.attributes.is_empty();
+        return match &frame.time {
+            None => Some(
+                "a scene in which something moves needs a time coverage per pixel".to_owned(),
+            ),
+            Some(t) if t.len() != frame.pixel_count() => Some(format!(
+                "{} time coverages for {} pixels",
+                t.len(),
+                frame.pixel_count()
+            )),
+            Some(_) if !time_only => Some(
+                "a scene in which something moves is judged on time coverage only: its frame has no sample slots, resolved coverage, depth or attributes".to_owned(),
+            ),
+            Some(_) => None,
+        };
+    }
+    if frame.time.is_some() {
+        return Some("time coverage for a scene in which nothing moves".to_owned());
+    }
+    let samples_only_resolved = frame.samples == 0 && reference.resolved.is_some();
+    let wrong = !(frame.samples == reference.samples || samples_only_resolved)
+        || frame.resolved.is_some() != reference.resolved.is_some()
+        || frame
+            .resolved
+            .as_ref()
+            .is_some_and(|r| r.len() != frame.pixel_count())
+        || frame.sample_count() != frame.pixel_count() * frame.samples as usize
+        || frame.attributes.len() != reference.attributes.len() && !samples_only_resolved
+        || frame.depth.is_some() != reference.depth.is_some() && !samples_only_resolved;
+    wrong.then(|| {
+        format!(
+            "{} for the reference's {}",
+            channels(frame),
+            channels(reference)
+        )
+    })
+}
+
+/// What a frame holds, in words, for [`shape_problem`].
+fn channels(frame: &Frame) -> String {
+    let mut out = format!(
+        "{} samples per pixel, {} attributes",
+        frame.samples,
+        frame.attributes.len()
+    );
+    if frame.depth.is_some() {
+        out.push_str(", depth");
+    }
+    if frame.resolved.is_some() {
+        out.push_str(", resolved coverage");
+    }
+    out
 }
 
 /// The message a panic carried.
@@ -417,7 +620,9 @@ pub fn describe(run: &CandidateRun) -> String {
         };
     };
     let c = &m.coverage;
-    let mut parts = vec![if !c.has_mask() {
+    let mut parts = vec![if m.time.is_some() {
+        "time coverage only".to_owned()
+    } else if !c.has_mask() {
         "no samples (resolved coverage only)".to_owned()
     } else if c.mismatched() == 0 {
         format!(
@@ -446,6 +651,16 @@ pub fn describe(run: &CandidateRun) -> String {
         parts.push(format!(
             "aa max err {:.2e} edge rms {:.2e} (bias {:+.1e}) over {} edge pixels, {} piglit violations",
             aa.max_error, aa.rms_edge, aa.bias_edge, aa.edge_pixels, aa.piglit_violations
+        ));
+    }
+    if let Some(t) = &m.time {
+        let efficiency = t
+            .efficiency()
+            .map(|e| format!(", sample test efficiency {:.1}%", e * 100.0))
+            .unwrap_or_default();
+        parts.push(format!(
+            "time max err {:.2e} at ({}, {}) rms {:.2e} (bias {:+.1e}) over {} moving pixels{efficiency}",
+            t.max_error, t.worst_pixel[0], t.worst_pixel[1], t.rms_moving, t.bias_moving, t.moving_pixels
         ));
     }
     if let Some(worst) = m

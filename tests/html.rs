@@ -142,6 +142,29 @@ fn check_exr(dir: &Path, report: &Value) -> usize {
                         "{file} resolved.error: largest {largest:e}, metrics say {expected:e}"
                     );
                 }
+                // Moving scenes: exact, candidate and signed error per pixel.
+                if let Some(time) = layer_named("time") {
+                    assert_eq!(
+                        (time.size.width() as u64, time.size.height() as u64),
+                        (w, h),
+                        "{file}"
+                    );
+                    let largest = time
+                        .channel_data
+                        .list
+                        .iter()
+                        .find(|c| c.name.to_string() == "time.error")
+                        .unwrap_or_else(|| panic!("{file} has no time.error"))
+                        .sample_data
+                        .values_as_f32()
+                        .map(|v| f64::from(v.abs()))
+                        .fold(0.0, f64::max);
+                    let expected = m["time"]["max_error"].as_f64().unwrap();
+                    assert!(
+                        (largest - expected).abs() <= expected * 1e-6 + 1e-30,
+                        "{file} time.error: largest {largest:e}, metrics say {expected:e}"
+                    );
+                }
                 // Per sample: N times wider than the canvas.
                 let Some(layer) = layer_named("error") else {
                     assert!(

@@ -5,6 +5,7 @@ pub mod antialias;
 pub mod coverage;
 pub mod interpolation;
 pub mod line;
+pub mod time;
 pub mod watertight;
 
 use crate::frame::Frame;
@@ -14,6 +15,7 @@ pub use antialias::{AntialiasMetrics, AreaClass};
 pub use coverage::{CoverageMetrics, SampleDiff};
 pub use interpolation::ChannelError;
 pub use line::LineMetrics;
+pub use time::TimeMetrics;
 pub use watertight::WatertightMetrics;
 
 /// The default interpolation bound, relative to the channel's largest vertex
@@ -31,6 +33,24 @@ pub struct Metrics {
     pub channels: Vec<ChannelError>,
     /// Antialiased cases: resolved coverage against the exact area.
     pub antialias: Option<AntialiasMetrics>,
+    /// Scenes in which something moves: time coverage against the exact
+    /// time coverage (SPEC.md §15.4). Such frames have no samples, so this
+    /// is then the only metric with anything in it.
+    pub time: Option<TimeMetrics>,
+}
+
+/// What the oracle knows exactly beyond the reference's frame, for the
+/// metrics that read it; every part is optional.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Known<'a> {
+    /// The mesh interior, for mesh cases (`expect.watertight`).
+    pub interior: Option<&'a [bool]>,
+    /// Each pixel's exact area class, for antialiased cases (from
+    /// `reference::exact_areas`).
+    pub classes: Option<&'a [AreaClass]>,
+    /// Whether each pixel's exact time coverage is a whole number, for
+    /// moving scenes (from the oracle's certified values).
+    pub whole_time: Option<&'a [bool]>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -54,8 +74,25 @@ pub fn measure_with_areas(
     interior: Option<&[bool]>,
     classes: Option<&[AreaClass]>,
 ) -> Metrics {
+    let known = Known {
+        interior,
+        classes,
+        whole_time: None,
+    };
+    measure_known(scene, reference, candidate, &known)
+}
+
+/// [`measure`], with what the oracle knows exactly ([`Known`]).
+pub fn measure_known(
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+    known: &Known,
+) -> Metrics {
+    let (interior, classes) = (known.interior, known.classes);
     let coverage = coverage::compare(reference, candidate);
     let watertight = interior.and_then(|inside| watertight::measure(inside, reference, candidate));
+    let time = time::measure(reference, candidate, known.whole_time, time::bounds(scene));
     let antialias = antialias::measure(
         reference,
         candidate,
@@ -74,6 +111,7 @@ pub fn measure_with_areas(
             lines: None,
             channels,
             antialias,
+            time,
         };
     }
     let expect = &scene.expect;
@@ -117,6 +155,7 @@ pub fn measure_with_areas(
         lines: line::measure(scene, candidate),
         channels,
         antialias,
+        time,
     }
 }
 
@@ -174,6 +213,22 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
     }
     if let Some(aa) = &m.antialias {
         out.extend(antialias::failures(aa));
+    }
+    if reference.time.is_some() {
+        match &m.time {
+            Some(t) => out.extend(time::failures(t)),
+            None => out.push(
+                "time: the candidate returned no time coverage of the right size for a scene in which something moves".to_owned(),
+            ),
+        }
+        // Judged on time coverage only: the sample expectations cannot
+        // hold or fail, so a case that gives them is wrong.
+        for key in time::inapplicable(expect) {
+            out.push(format!(
+                "case: expect.{key} does not apply to a scene in which something moves (it is judged on time coverage only, SPEC.md §15.1)"
+            ));
+        }
+        return out;
     }
     if let Some(expected) = expect.samples_covered {
         let covered = reference.covered_samples();

@@ -15,6 +15,12 @@
 //! the canvas's size, holds `resolved.error`: the candidate's resolved
 //! coverage minus the exact area, signed. A candidate without samples (an
 //! area method) has only the `resolved` layer.
+//!
+//! A scene in which something moves (SPEC.md §15.4) has no samples: its
+//! map is one layer, `time`, of the canvas's size, with `time.exact` (the
+//! reference's time coverage), `time.candidate` and `time.error`
+//! (candidate − exact, signed; infinite where the candidate's value is not
+//! a number), so that a tool can read all three from the one file.
 
 use std::path::{Path, PathBuf};
 
@@ -24,7 +30,7 @@ use ::exr::prelude::{
 };
 
 use crate::frame::Frame;
-use crate::metrics::{antialias, coverage, Metrics};
+use crate::metrics::{antialias, coverage, time, Metrics};
 
 /// Whether sample `i` has comparable interpolated values: the reference
 /// covers it and both frames drew the same primitive last (the metrics'
@@ -76,6 +82,28 @@ pub fn has_error(passed: bool, metrics: &Metrics) -> bool {
             .antialias
             .as_ref()
             .is_some_and(|a| a.max_error != 0.0 || a.max_error.is_nan())
+        || metrics
+            .time
+            .as_ref()
+            .is_some_and(|t| t.max_error != 0.0 || t.max_error.is_nan())
+}
+
+/// The channels of the `time` layer: exact, candidate and signed error;
+/// empty when either frame has no time coverage of the canvas's size.
+pub fn time_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<f32>)> {
+    let errors = time::signed_errors(reference, candidate);
+    let (Some(exact), Some(values)) = (&reference.time, &candidate.time) else {
+        return Vec::new();
+    };
+    if errors.len() != reference.pixel_count() {
+        return Vec::new();
+    }
+    let narrow = |v: &[f64]| v.iter().map(|&x| x as f32).collect();
+    vec![
+        ("time.exact".to_owned(), narrow(exact)),
+        ("time.candidate".to_owned(), narrow(values)),
+        ("time.error".to_owned(), narrow(&errors)),
+    ]
 }
 
 /// Every per-sample channel of the error map, named as stored; empty when
@@ -146,6 +174,10 @@ pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBu
             canvas,
             vec![("resolved.error".to_owned(), values)],
         ));
+    }
+    let time = time_channels(reference, candidate);
+    if !time.is_empty() {
+        layers.push(layer("time", canvas, time));
     }
     let written = match layers.len() {
         0 => return Err(format!("{}: nothing to compare", path.display())),

@@ -28,6 +28,12 @@
 //! with any coverage error get a card like passes with interpolation error.
 //! With several samples per pixel a heat map shows each pixel's largest
 //! error over its samples.
+//!
+//! A scene in which something moves (SPEC.md §15.4) is shown the same way
+//! by its time coverage: the exact time coverage and the candidate's in
+//! grey, and the signed error, with the time metrics (and the sample test
+//! efficiency of a method that counts it). Passing results with any time
+//! error get a card too.
 
 use std::fmt::Write as _;
 use std::path::{Component, Path, PathBuf};
@@ -35,7 +41,7 @@ use std::path::{Component, Path, PathBuf};
 use image::{Rgb, RgbImage};
 
 use super::exr::interpolation_errors;
-use super::json::{CaseEntry, ChannelEntry, MetricsEntry, Report, ResultEntry};
+use super::json::{CaseEntry, ChannelEntry, MetricsEntry, Report, ResultEntry, TimeEntry};
 use super::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
 use super::{escape, MAX_PICTURED};
 use crate::frame::Frame;
@@ -197,8 +203,8 @@ enum Kind {
     Problem,
     /// A foil departing from the reference.
     Departure,
-    /// A pass with some interpolation or coverage error: the heat maps and
-    /// the antialiasing pictures are worth seeing.
+    /// A pass with some interpolation, coverage or time-coverage error: the
+    /// heat maps and the antialiasing or time pictures are worth seeing.
     Interpolation,
 }
 
@@ -235,6 +241,9 @@ fn interpolation_error(m: &MetricsEntry) -> bool {
         || m.antialias
             .as_ref()
             .is_some_and(|a| a.max_error != 0.0 || a.max_error.is_nan())
+        || m.time
+            .as_ref()
+            .is_some_and(|t| t.max_error != 0.0 || t.max_error.is_nan())
 }
 
 /// Every card the run deserves, the most important first (case order within
@@ -355,7 +364,9 @@ fn cell(result: &ResultEntry, link: Option<&str>) -> String {
     let mut html = badge(result.verdict, &result.verdict.to_uppercase());
     if let Some(m) = &result.metrics {
         let c = &m.coverage;
-        let mut parts = vec![if c.samples == 0 {
+        let mut parts = vec![if m.time.is_some() {
+            "time coverage".to_owned()
+        } else if c.samples == 0 {
             "no samples".to_owned()
         } else {
             format!("{} mismatched", c.mismatched)
@@ -375,6 +386,15 @@ fn cell(result: &ResultEntry, link: Option<&str>) -> String {
             ));
             if a.piglit_violations > 0 {
                 parts.push(format!("{} piglit violations", a.piglit_violations));
+            }
+        }
+        if let Some(t) = &m.time {
+            parts.push(format!(
+                "time max {:.2e} · rms {:.2e}",
+                t.max_error, t.rms_moving
+            ));
+            if t.invalid_values > 0 {
+                parts.push(format!("{} invalid values", t.invalid_values));
             }
         }
         if let Some(ch) = worst_channel(m) {
@@ -449,15 +469,18 @@ fn metrics_tables(m: &MetricsEntry) -> String {
         rows.push(("midpoint lines", l.lines.to_string()));
         rows.push(("crowded steps", l.crowded_steps.to_string()));
     }
-    html.push_str("<table><tr><th colspan=\"2\">coverage</th></tr>");
-    for (name, value) in rows {
-        let _ = write!(
-            html,
-            "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
-            escape(&value)
-        );
+    // A moving scene has no samples: its table is the time table alone.
+    if m.time.is_none() {
+        html.push_str("<table><tr><th colspan=\"2\">coverage</th></tr>");
+        for (name, value) in rows {
+            let _ = write!(
+                html,
+                "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
+                escape(&value)
+            );
+        }
+        html.push_str("</table>");
     }
-    html.push_str("</table>");
     if let Some(a) = &m.antialias {
         let bound = |b: Option<f64>| b.map_or("—".to_owned(), |b| format!("{b:.3e}"));
         let rows = [
@@ -503,6 +526,9 @@ fn metrics_tables(m: &MetricsEntry) -> String {
         }
         html.push_str("</table>");
     }
+    if let Some(t) = &m.time {
+        html.push_str(&time_table(t));
+    }
     if !m.channels.is_empty() {
         html.push_str("<table><tr><th>channel</th><th class=\"n\">samples</th><th class=\"n\">max |error|</th><th class=\"n\">max ulp</th><th class=\"n\">rms</th><th class=\"n\">bound</th><th class=\"n\">ulp bound</th></tr>");
         for ch in &m.channels {
@@ -521,6 +547,54 @@ fn metrics_tables(m: &MetricsEntry) -> String {
         html.push_str("</table>");
     }
     html.push_str("</div>");
+    html
+}
+
+/// The time metrics of a moving scene (SPEC.md §15.4).
+fn time_table(t: &TimeEntry) -> String {
+    let bound = |b: Option<f64>| b.map_or("—".to_owned(), |b| format!("{b:.3e}"));
+    let mut rows = vec![
+        (
+            "moving pixels",
+            format!("{} of {}", t.moving_pixels, t.pixels),
+        ),
+        (
+            "max |error|",
+            format!(
+                "{:.3e} at ({}, {})",
+                t.max_error, t.worst_pixel[0], t.worst_pixel[1]
+            ),
+        ),
+        (
+            "there: candidate / exact",
+            format!("{:.6} / {:.6}", t.worst_candidate, t.worst_exact),
+        ),
+        ("bound", bound(t.allowed_error)),
+        ("moving RMS", format!("{:.3e}", t.rms_moving)),
+        ("RMS bound", bound(t.allowed_rms)),
+        ("RMS, all pixels", format!("{:.3e}", t.rms_all)),
+        ("moving bias", format!("{:+.3e}", t.bias_moving)),
+        (
+            "nonzero pixels: reference / candidate",
+            format!("{} / {}", t.reference_pixels, t.candidate_pixels),
+        ),
+        ("not a finite number ≥ 0", t.invalid_values.to_string()),
+    ];
+    if let Some(s) = &t.sample_tests {
+        rows.push((
+            "sample tests: covered / all",
+            format!("{} / {} ({:.1}%)", s.covered, s.tests, s.efficiency * 100.0),
+        ));
+    }
+    let mut html = String::from("<table><tr><th colspan=\"2\">time coverage − exact</th></tr>");
+    for (name, value) in rows {
+        let _ = write!(
+            html,
+            "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
+            escape(&value)
+        );
+    }
+    html.push_str("</table>");
     html
 }
 
@@ -594,6 +668,17 @@ fn card_header(case: &CaseEntry, result: Option<&ResultEntry>, kind_class: &str)
                 escape(aa.pattern)
             );
         }
+        if let Some(mb) = rules.motion_blur.as_ref().filter(|mb| mb.moving > 0) {
+            let _ = write!(
+                html,
+                "<span class=\"muted\">motion blur: {} moving primitives, shutter [{}, {}], {} time samples, {} pattern</span>",
+                mb.moving,
+                mb.shutter[0],
+                mb.shutter[1],
+                mb.samples,
+                escape(mb.pattern)
+            );
+        }
     }
     html.push_str("</header>");
     if let Some(d) = case.description.as_deref().filter(|d| !d.is_empty()) {
@@ -658,10 +743,11 @@ fn result_card(dir: &Path, v: &ResultView) -> String {
         html.push_str("</ul>");
     }
 
-    // An antialiased case: its resolved coverage, drawn from the frames.
+    // An antialiased case: its resolved coverage, drawn from the frames; a
+    // moving scene: its time coverage, likewise.
     let resolved = v.reference.filter(|r| png::pictured_resolved(r));
     if let (Some(scene), Some(r), Some(c)) = (v.scene, resolved, v.candidate) {
-        html.push_str(&antialias_pictures(case, scene, r, c, &result.rasterizer));
+        html.push_str(&coverage_pictures(case, scene, r, c, &result.rasterizer));
     }
 
     // The three pictures, as written under images/.
@@ -747,8 +833,9 @@ fn picture_shape(case: &CaseEntry) -> &'static str {
 
 /// The resolved coverage of an antialiased case: the exact area and the
 /// candidate's resolved value in grey, the signed error, and for a
-/// candidate with samples, the samples picture.
-fn antialias_pictures(
+/// candidate with samples, the samples picture. A moving scene's time
+/// coverage likewise, with the exact time coverage (it has no samples).
+fn coverage_pictures(
     case: &CaseEntry,
     scene: &Scene,
     reference: &Frame,
@@ -760,19 +847,35 @@ fn antialias_pictures(
     let errors: Vec<f64> = resolved.iter().zip(&exact).map(|(r, e)| r - e).collect();
     let full = png::error_scale(&errors);
     let shape = picture_shape(case);
-    let mut html = format!("<h4>resolved coverage</h4><div class=\"pictures{shape}\">");
+    // A moving scene's time coverage is pictured as resolved coverage is.
+    let timed = reference.time.is_some();
+    let heading = if timed {
+        "time coverage"
+    } else {
+        "resolved coverage"
+    };
+    let mut html = format!("<h4>{heading}</h4><div class=\"pictures{shape}\">");
     let mut show = |img: &RgbImage, role: &str, caption: &str| {
         html.push_str(&figure(&data_uri(&png_bytes(img)), role, caption, None));
     };
     show(
         &png::resolved_picture(scene, &exact, scale),
         "reference",
-        "exact area (reference)",
+        if timed {
+            "exact time coverage (reference)"
+        } else {
+            "exact area (reference)"
+        },
     );
-    let caption = if candidate.samples == 0 {
-        format!("{name}: resolved (area method)")
-    } else {
-        format!("{name}: resolved ({} samples)", candidate.samples)
+    let caption = match (timed, candidate.sample_tests) {
+        (true, Some(tests)) => format!(
+            "{name}: time coverage ({:.1}% of {} sample tests covered)",
+            tests.efficiency() * 100.0,
+            tests.tests
+        ),
+        (true, None) => format!("{name}: time coverage"),
+        (false, _) if candidate.samples == 0 => format!("{name}: resolved (area method)"),
+        (false, _) => format!("{name}: resolved ({} samples)", candidate.samples),
     };
     show(
         &png::resolved_picture(scene, &resolved, scale),
@@ -797,14 +900,20 @@ fn antialias_pictures(
     if comparable(reference, candidate) {
         html.push_str(&first_differences(reference, candidate));
     }
-    html.push_str(&colour_key(&[
+    let mut key = vec![
         ([0, 0, 0], "0"),
         ([255, 255, 255], "1 (fully covered)"),
         (png::OVER_ONE, "above 1 (overlap)"),
         (png::TOO_MUCH, "error > 0: too much coverage"),
         (png::TOO_LITTLE, "error < 0: too little"),
-        ([0, 200, 255], "snapped edges"),
-    ]));
+    ];
+    if timed {
+        key.push(([0, 200, 255], "snapped edges at shutter open"));
+        key.push((png::EDGE_AT_CLOSE, "at shutter close"));
+    } else {
+        key.push(([0, 200, 255], "snapped edges"));
+    }
+    html.push_str(&colour_key(&key));
     if samples.is_some() {
         html.push_str(&colour_key(&[
             (png::SAMPLE_SAME, "sample covered alike"),
@@ -981,7 +1090,7 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
             (Kind::Departure, "foil departures"),
             (
                 Kind::Interpolation,
-                "error maps of passing results (interpolation, antialiasing)",
+                "error maps of passing results (interpolation, antialiasing, time coverage)",
             ),
         ]
         .iter()
@@ -1113,8 +1222,12 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
 }
 
 /// Whether a candidate's frame can be pictured beside the reference's: the
-/// same samples, or resolved coverage of the same canvas.
+/// same samples, or resolved or time coverage of the same canvas.
 fn same_shape(reference: &Frame, candidate: &Frame) -> bool {
+    if reference.time.is_some() || candidate.time.is_some() {
+        let time = |f: &Frame| f.time.as_ref().map(Vec::len);
+        return time(candidate) == time(reference);
+    }
     let resolved = |f: &Frame| f.resolved.as_ref().map(Vec::len);
     reference.sample_count() == candidate.sample_count() && candidate.samples == reference.samples
         || candidate.samples == 0

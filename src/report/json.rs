@@ -108,6 +108,20 @@ pub struct RulesInfo {
     /// Antialiased cases only: `effects.antialias` as the case gives it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub antialias: Option<AntialiasRules>,
+    /// Cases that declare `effects.motion_blur` only, as the case gives it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub motion_blur: Option<MotionBlurRules>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct MotionBlurRules {
+    /// [open, close] in [0, 1].
+    pub shutter: [f64; 2],
+    pub samples: u32,
+    pub pattern: &'static str,
+    pub seed: u64,
+    /// Primitives that move; 0: the scene is drawn as a static one.
+    pub moving: usize,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -144,6 +158,47 @@ pub struct MetricsEntry {
     /// Antialiased cases only (SPEC.md §14.3).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub antialias: Option<AntialiasEntry>,
+    /// Scenes in which something moves only (SPEC.md §15.4).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time: Option<TimeEntry>,
+}
+
+/// Time coverage against the exact time coverage, per pixel (SPEC.md
+/// §15.4).
+#[derive(Clone, Debug, Serialize)]
+pub struct TimeEntry {
+    pub pixels: u64,
+    /// Pixels whose exact value is not a whole number, or whose candidate
+    /// value differs from it.
+    pub moving_pixels: u64,
+    /// Largest |candidate − exact|, the pixel [x, y] where it is, and the
+    /// two values there.
+    pub max_error: f64,
+    pub worst_pixel: [u32; 2],
+    pub worst_candidate: f64,
+    pub worst_exact: f64,
+    pub rms_moving: f64,
+    pub rms_all: f64,
+    pub bias_moving: f64,
+    /// Pixels of NaN, an infinity or a negative value.
+    pub invalid_values: u64,
+    pub reference_pixels: u64,
+    pub candidate_pixels: u64,
+    /// For a candidate that counts its sample tests.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sample_tests: Option<SampleTestsEntry>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub allowed_error: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub allowed_rms: Option<f64>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct SampleTestsEntry {
+    pub tests: u64,
+    pub covered: u64,
+    /// covered / tests: the cost measure of stochastic rasterization.
+    pub efficiency: f64,
 }
 
 /// Resolved coverage against the exact area, per pixel (SPEC.md §14.3).
@@ -259,6 +314,27 @@ impl MetricsEntry {
                 allowed_error: a.allowed_error,
                 allowed_rms: a.allowed_rms,
             }),
+            time: m.time.as_ref().map(|t| TimeEntry {
+                pixels: t.pixels,
+                moving_pixels: t.moving_pixels,
+                max_error: t.max_error,
+                worst_pixel: t.worst_pixel,
+                worst_candidate: t.worst_candidate,
+                worst_exact: t.worst_exact,
+                rms_moving: t.rms_moving,
+                rms_all: t.rms_all,
+                bias_moving: t.bias_moving,
+                invalid_values: t.invalid_values,
+                reference_pixels: t.reference_pixels,
+                candidate_pixels: t.candidate_pixels,
+                sample_tests: t.sample_tests.map(|s| SampleTestsEntry {
+                    tests: s.tests,
+                    covered: s.covered,
+                    efficiency: s.efficiency(),
+                }),
+                allowed_error: t.allowed_error,
+                allowed_rms: t.allowed_rms,
+            }),
         }
     }
 }
@@ -276,6 +352,16 @@ fn rules_info(scene: &Scene) -> RulesInfo {
             seed: a.seed,
             adaptive: a.adaptive,
             position_bits: a.position_bits,
+        }),
+        motion_blur: scene.effects.motion_blur.as_ref().map(|m| {
+            let one = f64::from(crate::scene::time::limits::TIME_ONE);
+            MotionBlurRules {
+                shutter: m.shutter.map(|u| f64::from(u) / one),
+                samples: m.samples,
+                pattern: m.pattern.name(),
+                seed: m.seed,
+                moving: scene.primitives.iter().filter(|p| p.moves()).count(),
+            }
         }),
     }
 }

@@ -9,10 +9,12 @@
 //! DIR/summary.md           totals, failures first, worst metrics
 //! DIR/images/<id>/*.png    reference, candidate and difference mask, for
 //!                          every result that is not a pass (antialiased
-//!                          cases: resolved coverage, signed error, samples)
+//!                          cases: resolved coverage, signed error, samples;
+//!                          moving scenes: time coverage, signed error)
 //! DIR/exr/<id>/<rast>.exr  signed float error maps, for every result that
 //!                          is not a pass or has any nonzero error (per
-//!                          sample; antialiased: resolved error per pixel)
+//!                          sample; antialiased: resolved error per pixel;
+//!                          moving: exact, candidate and error per pixel)
 //! DIR/index.html           one self-contained page for people
 //! ```
 

@@ -23,6 +23,12 @@
 //!   dot at its position in the magnified pixel, coloured as in the
 //!   difference mask (white = covered alike, dark grey = empty in both),
 //!   over the exact area in dim grey.
+//!
+//! Scenes in which something moves (SPEC.md §15.4) are pictured the same
+//! way by their time coverage per pixel: the exact time coverage and the
+//! candidate's in grey, and the signed error. Their outlines are drawn
+//! twice: where the primitives are at shutter open (cyan) and at shutter
+//! close (lime).
 
 use std::path::{Path, PathBuf};
 
@@ -37,6 +43,8 @@ pub const EXTRA: [u8; 3] = [255, 0, 0];
 pub const WRONG_OWNER: [u8; 3] = [255, 220, 0];
 pub const SAME_COVERED: [u8; 3] = [110, 110, 110];
 const EDGE: [u8; 3] = [0, 200, 255];
+/// Edges of moving primitives at shutter close.
+pub const EDGE_AT_CLOSE: [u8; 3] = [180, 255, 0];
 const GRID: [u8; 3] = [40, 40, 40];
 /// Resolved coverage above 1 (primitives overlap).
 pub const OVER_ONE: [u8; 3] = [255, 150, 0];
@@ -106,20 +114,21 @@ pub fn error_scale(errors: &[f64]) -> f64 {
         .fold(MIN_ERROR_SCALE, f64::max)
 }
 
-/// A frame's coverage per pixel: its resolved value, or the box resolve of
-/// its samples when it has none.
+/// A frame's coverage per pixel: its time coverage (a moving scene), its
+/// resolved value, or the box resolve of its samples when it has neither.
 pub fn resolved_of(frame: &Frame) -> Vec<f64> {
-    match &frame.resolved {
-        Some(r) if r.len() == frame.pixel_count() => r.clone(),
-        _ if frame.samples > 0 => frame.box_resolve(),
+    match (&frame.time, &frame.resolved) {
+        (Some(t), _) if t.len() == frame.pixel_count() => t.clone(),
+        (_, Some(r)) if r.len() == frame.pixel_count() => r.clone(),
+        _ if frame.samples > 0 && frame.sample_count() > 0 => frame.box_resolve(),
         _ => vec![0.0; frame.pixel_count()],
     }
 }
 
-/// Whether a frame is pictured by its resolved coverage: it antialiases, or
-/// holds other than one sample per pixel.
+/// Whether a frame is pictured by its resolved coverage: it antialiases,
+/// holds other than one sample per pixel, or holds time coverage.
 pub fn pictured_resolved(frame: &Frame) -> bool {
-    frame.resolved.is_some() || frame.samples != 1
+    frame.resolved.is_some() || frame.samples != 1 || frame.time.is_some()
 }
 
 /// The resolved coverage as grey levels, magnified.
@@ -221,28 +230,46 @@ fn picture(scene: &Scene, scale: u32, colour: impl Fn(usize) -> [u8; 3]) -> RgbI
     img
 }
 
-/// Draws the primitives' snapped edges (a line's centre line).
+/// Draws the primitives' snapped edges (a line's centre line); a moving
+/// primitive's at shutter close too, in [`EDGE_AT_CLOSE`] (where it is at
+/// τ = 1: the shutter's ends are drawn only as far as τ = 0 and 1).
 fn outline(scene: &Scene, scale: u32, img: &mut RgbImage) {
     let grid = scene.rules.subpixel_bits.map(|b| f64::from(1u32 << b));
     let snap = |v: f64| grid.map_or(v, |g| (v * g).round_ties_even() / g);
     let s = f64::from(scale);
+    let moving = scene.effects.motion_blur.is_some();
     for primitive in &scene.primitives {
-        let p: Vec<(f64, f64)> = primitive
+        let open: Vec<(f64, f64)> = primitive
             .vertices()
             .iter()
             .map(|v| (snap(v.x.to_f64_lossy()) * s, snap(v.y.to_f64_lossy()) * s))
             .collect();
-        let edges = if p.len() == 2 { 1 } else { p.len() };
-        for i in 0..edges {
-            let (a, b) = (p[i], p[(i + 1) % p.len()]);
-            let steps =
-                ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as usize).clamp(1, 1 << 20);
-            for k in 0..=steps {
-                let f = k as f64 / steps as f64;
-                let (x, y) = (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
-                if x >= 0.0 && y >= 0.0 && (x as u32) < img.width() && (y as u32) < img.height() {
-                    img.put_pixel(x as u32, y as u32, Rgb(EDGE));
-                }
+        if moving && primitive.moves() {
+            let close: Vec<(f64, f64)> = primitive
+                .vertices()
+                .iter()
+                .map(|v| {
+                    let [x, y] = v.end();
+                    (snap(x.to_f64_lossy()) * s, snap(y.to_f64_lossy()) * s)
+                })
+                .collect();
+            polyline(&close, EDGE_AT_CLOSE, img);
+        }
+        polyline(&open, EDGE, img);
+    }
+}
+
+/// A closed outline through `p` (a segment for two points).
+fn polyline(p: &[(f64, f64)], colour: [u8; 3], img: &mut RgbImage) {
+    let edges = if p.len() == 2 { 1 } else { p.len() };
+    for i in 0..edges {
+        let (a, b) = (p[i], p[(i + 1) % p.len()]);
+        let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as usize).clamp(1, 1 << 20);
+        for k in 0..=steps {
+            let f = k as f64 / steps as f64;
+            let (x, y) = (a.0 + (b.0 - a.0) * f, a.1 + (b.1 - a.1) * f);
+            if x >= 0.0 && y >= 0.0 && (x as u32) < img.width() && (y as u32) < img.height() {
+                img.put_pixel(x as u32, y as u32, Rgb(colour));
             }
         }
     }
@@ -306,6 +333,8 @@ fn write_resolved_comparison(
     let errors: Vec<f64> = resolved.iter().zip(&exact).map(|(r, e)| r - e).collect();
     let errors = if errors.len() == reference.pixel_count() {
         errors
+    } else if reference.time.is_some() {
+        crate::metrics::time::signed_errors(reference, candidate)
     } else {
         antialias::signed_errors(reference, candidate)
     };

@@ -117,6 +117,46 @@ pub fn render(report: &Report) -> String {
             md.push('\n');
         }
     }
+    md.push_str(&time_errors(report));
+    md
+}
+
+/// The worst time-coverage errors (SPEC.md §15.4), the nearest to their
+/// RMS bound first.
+fn time_errors(report: &Report) -> String {
+    let mut rows: Vec<(f64, String)> = report
+        .cases
+        .iter()
+        .flat_map(|c| c.results.iter().map(move |r| (c, r)))
+        .filter_map(|(c, r)| {
+            let t = r.metrics.as_ref()?.time.as_ref()?;
+            let rules = c.rules.as_ref();
+            let spatial = rules.and_then(|r| r.antialias.as_ref()).map_or(1, |a| a.samples);
+            let time = rules.and_then(|r| r.motion_blur.as_ref()).map_or(0, |m| m.samples);
+            let bound = t.allowed_rms.map_or("—".to_owned(), |b| format!("{b:.3e}"));
+            let efficiency = t
+                .sample_tests
+                .as_ref()
+                .map_or("—".to_owned(), |s| format!("{:.1}%", s.efficiency * 100.0));
+            let [x, y] = t.worst_pixel;
+            Some((
+                t.rms_moving / t.allowed_rms.unwrap_or(1.0),
+                format!(
+                    "| `{}` | {} | {spatial}×{time} | {:.3e} | ({x}, {y}) | {:.3e} | {:+.2e} | {bound} | {efficiency} |",
+                    c.id, r.rasterizer, t.max_error, t.rms_moving, t.bias_moving
+                ),
+            ))
+        })
+        .collect();
+    rows.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut md = String::new();
+    if !rows.is_empty() {
+        md.push_str("\n## Worst time-coverage errors\n\n| case | rasterizer | samples (space×time) | max error | worst pixel | moving RMS | bias | RMS bound | test efficiency |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (_, row) in rows.iter().take(10) {
+            md.push_str(row);
+            md.push('\n');
+        }
+    }
     md
 }
 
