@@ -324,18 +324,13 @@ impl Mover {
                     c
                 };
                 let (a, b, c, e) = (corner(v0, -1), corner(v1, -1), corner(v1, 1), corner(v0, 1));
-                // ABC and ACE, the diagonal AC given to exactly one of them
-                // whatever the rule: ACE owns it when ABC does not (ACE walks
-                // it the other way round).
-                let diagonal = |p: Point, q: Point| (p == a && q == c) || (p == c && q == a);
-                triangle_covers([a, b, c], q, Cull::None, |p, q| edge_owned(p, q, rule))
-                    || triangle_covers([a, c, e], q, Cull::None, |p, q| {
-                        if diagonal(p, q) {
-                            !edge_owned(q, p, rule)
-                        } else {
-                            edge_owned(p, q, rule)
-                        }
-                    })
+                // ABC or ACE. They share only the diagonal AC, and a sample
+                // is covered once whichever covers it, so the static path's
+                // care to give the diagonal to one of them (it counts
+                // coverage per triangle) changes nothing here.
+                let owned = |p: Point, q: Point| edge_owned(p, q, rule);
+                triangle_covers([a, b, c], q, Cull::None, owned)
+                    || triangle_covers([a, c, e], q, Cull::None, owned)
             }
         }
     }
