@@ -396,6 +396,8 @@ impl Rasterizer for AdaptiveRefine {
         Capabilities {
             polygons: false,
             antialias: true,
+            // Its static samples are inexact, and it has no time loop.
+            motion_blur: false,
             ..super::Production.capabilities()
         }
     }

@@ -6,6 +6,7 @@ pub mod antialias;
 pub mod fixed;
 pub mod foils;
 pub mod line;
+pub mod motion;
 pub mod polygon;
 pub mod setup;
 pub mod tiled;
@@ -54,7 +55,7 @@ impl Rasterizer for Production {
         Capabilities {
             polygons: true,
             antialias: true,
-            motion_blur: false,
+            motion_blur: true,
             ..Capabilities::everything()
         }
     }
@@ -65,12 +66,29 @@ impl Rasterizer for Production {
 }
 
 /// Production's rasterizer with the antialiased scenes' samples decided by
-/// `sampling` (ignored without antialiasing).
+/// `sampling` (ignored without antialiasing). A plan with motion goes to
+/// the time loop ([`motion`]).
 pub(crate) fn rasterize_with(
     scene: &Scene,
     plan: &Plan,
     sampling: Sampling,
 ) -> Result<Frame, RasterError> {
+    if plan.motion.is_some() {
+        return motion::rasterize(scene, plan, sampling);
+    }
+    draw_frame(scene, plan, sampling, |_| true)
+}
+
+/// Production's frame of the primitives `keep` selects (by index in the
+/// scene), drawn as a plan without motion says: the whole scene, or the
+/// static primitives of a moving one, drawn once ([`motion`]).
+pub(crate) fn draw_frame(
+    scene: &Scene,
+    plan: &Plan,
+    sampling: Sampling,
+    keep: impl Fn(usize) -> bool,
+) -> Result<Frame, RasterError> {
+    debug_assert!(plan.motion.is_none());
     let samples = plan
         .antialias
         .as_ref()
@@ -78,9 +96,9 @@ pub(crate) fn rasterize_with(
     let format = format_for(scene, samples.as_ref())?;
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     if format.fits_i64() {
-        draw::<i64>(scene, plan, format, samples.as_ref(), &mut frame)?;
+        draw::<i64>(scene, plan, format, samples.as_ref(), &keep, &mut frame)?;
     } else {
-        draw::<i128>(scene, plan, format, samples.as_ref(), &mut frame)?;
+        draw::<i128>(scene, plan, format, samples.as_ref(), &keep, &mut frame)?;
     }
     if samples.is_some() {
         frame.resolve();
@@ -125,6 +143,7 @@ fn draw<E: EdgeInt>(
     plan: &Plan,
     format: Format,
     samples: Option<&Samples>,
+    keep: &impl Fn(usize) -> bool,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
     let offsets = samples.map(|s| s.offsets_in(format));
@@ -133,6 +152,9 @@ fn draw<E: EdgeInt>(
         rows_from: 0,
     };
     for (index, primitive) in scene.primitives.iter().enumerate() {
+        if !keep(index) {
+            continue;
+        }
         let points = match primitive {
             Primitive::Triangle(t) => t
                 .vertices

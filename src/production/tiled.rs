@@ -11,7 +11,8 @@
 //! The bands are drawn on the current rayon pool and copied into the frame.
 //!
 //! What this module does not do: polygons (a scene with one is drawn by
-//! production alone, on one thread), and coordinates or canvases beyond
+//! production alone, on one thread), scenes in which something moves
+//! (production's time loop draws them, its rows in parallel), and coordinates or canvases beyond
 //! 2^14 px (drawn by production alone too: moving a vertex by up to a
 //! canvas's height must stay within the bounds production's integers were
 //! sized for).
@@ -51,6 +52,10 @@ impl Rasterizer for Tiled {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if plan.motion.is_some() {
+            // Production's time loop, whose rows run on the current pool.
+            return Production.rasterize(scene, plan);
+        }
         if scene.has_polygons() || i64::from(scene.canvas.height) > SAFE {
             return Production.rasterize(scene, plan);
         }

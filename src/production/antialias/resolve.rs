@@ -39,6 +39,7 @@ impl Rasterizer for AdaptiveResolve {
             depth: false,
             polygons: false,
             antialias: true,
+            motion_blur: false,
             ..Production.capabilities()
         }
     }

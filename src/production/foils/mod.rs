@@ -25,6 +25,7 @@ macro_rules! foil {
                 Capabilities {
                     polygons: false,
                     antialias: false,
+                    motion_blur: false,
                     ..Production.capabilities()
                 }
             }
