@@ -57,7 +57,10 @@ fn antialiasing_plans_its_offsets_and_no_time_loop() {
     let plan = Plan::for_scene(&scene(STATIC, AA));
     assert_eq!(plan.samples_per_pixel, 4);
     let samples = plan.antialias.expect("antialiased");
-    assert_eq!(samples.offsets, [[96, 32], [224, 96], [32, 160], [160, 224]]);
+    assert_eq!(
+        samples.offsets,
+        [[96, 32], [224, 96], [32, 160], [160, 224]]
+    );
     assert_eq!(plan.motion, None);
 }
 

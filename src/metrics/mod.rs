@@ -223,7 +223,7 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
         }
         // Judged on time coverage only: the sample expectations cannot
         // hold or fail, so a case that gives them is wrong.
-        for key in time::inapplicable(expect) {
+        for key in expect.sample_expectations() {
             out.push(format!(
                 "case: expect.{key} does not apply to a scene in which something moves (it is judged on time coverage only, SPEC.md §15.1)"
             ));

@@ -22,7 +22,7 @@
 //! are checked once per case in exact rationals by the suite.
 
 use crate::frame::{Frame, SampleTests};
-use crate::scene::{Expect, Scene};
+use crate::scene::Scene;
 
 /// The default bound on the RMS error over moving pixels with M spatial
 /// and N time samples: 0.75·(M·N)^-1/2 (SPEC.md §15.4). M·N independent
@@ -220,29 +220,10 @@ pub fn failures(m: &TimeMetrics) -> Vec<String> {
     out
 }
 
-/// The expectations a scene in which something moves cannot be judged on
-/// (it is judged on time coverage only, SPEC.md §15.1), by their key in
-/// the case file: a case that gives one is wrong, and says so rather than
-/// being silently passed over.
-pub fn inapplicable(expect: &Expect) -> Vec<&'static str> {
-    [
-        ("samples_covered", expect.samples_covered.is_some()),
-        ("watertight", expect.watertight),
-        ("max_mismatched_samples", expect.max_mismatched_samples > 0),
-        ("max_abs_error", expect.max_abs_error.is_some()),
-        ("max_ulp_error", expect.max_ulp_error.is_some()),
-        ("max_coverage_error", expect.max_coverage_error.is_some()),
-        ("max_coverage_rms", expect.max_coverage_rms.is_some()),
-        ("area", expect.area.is_some()),
-    ]
-    .into_iter()
-    .filter_map(|(key, given)| given.then_some(key))
-    .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::Expect;
 
     fn frame(time: &[f64]) -> Frame {
         Frame::time_only(time.len() as u32, 1, time.to_vec())
@@ -358,7 +339,10 @@ mod tests {
             max_time_rms: Some(0.1),
             ..Expect::default()
         };
-        assert_eq!(inapplicable(&expect), ["watertight", "max_coverage_rms"]);
-        assert!(inapplicable(&Expect::default()).is_empty());
+        assert_eq!(
+            expect.sample_expectations(),
+            ["watertight", "max_coverage_rms"]
+        );
+        assert!(Expect::default().sample_expectations().is_empty());
     }
 }

@@ -421,6 +421,15 @@ impl Reader<'_> {
                     "a scene in which something moves is judged on time coverage only: z, w and attributes are not supported with motion in this version of rastercheck",
                 );
             }
+            if let (Some(key), Some((_, expect_path))) = (
+                scene.expect.sample_expectations().first(),
+                fields.get("expect"),
+            ) {
+                return fail(
+                    &expect_path.key(key),
+                    format!("expect.{key} measures samples; a scene in which something moves is judged on time coverage only (max_time_error, max_time_rms, time_coverage)"),
+                );
+            }
             if scene.rules.subpixel_bits.is_none() {
                 return fail(
                     &Path::root().key("rules").key("subpixel_bits"),

@@ -230,6 +230,27 @@ pub struct Expect {
     pub time_coverage: Vec<TimePin>,
 }
 
+impl Expect {
+    /// The expectations a scene in which something moves cannot be judged
+    /// on (it is judged on time coverage only, SPEC.md §15.1), by their key
+    /// in the case file: the reader refuses a case that gives one.
+    pub fn sample_expectations(&self) -> Vec<&'static str> {
+        [
+            ("samples_covered", self.samples_covered.is_some()),
+            ("watertight", self.watertight),
+            ("max_mismatched_samples", self.max_mismatched_samples > 0),
+            ("max_abs_error", self.max_abs_error.is_some()),
+            ("max_ulp_error", self.max_ulp_error.is_some()),
+            ("max_coverage_error", self.max_coverage_error.is_some()),
+            ("max_coverage_rms", self.max_coverage_rms.is_some()),
+            ("area", self.area.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(key, given)| given.then_some(key))
+        .collect()
+    }
+}
+
 /// One pixel's time coverage as the case author computed it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TimePin {
