@@ -57,25 +57,42 @@ pub fn measure(
     }
     zones.sort_by(|a, b| a.0.cmp(&b.0));
     let mut result = Measure::default();
-    let mut gap = |from: &RBig, to: &RBig, result: &mut Measure| {
-        if from < to {
-            let inside = (from + to) / RBig::from(2u8);
-            if holds(&inside) {
-                result.covered += to - from;
+    let gap =
+        |from: &RBig, to: &RBig, result: &mut Measure, holds: &mut dyn FnMut(&RBig) -> bool| {
+            if from < to {
+                let inside = (from + to) / RBig::from(2u8);
+                if holds(&inside) {
+                    result.covered += to - from;
+                }
             }
-        }
-    };
+        };
     let mut cursor = lo.clone();
     let mut zones = zones.into_iter().peekable();
     while let Some((start, mut end)) = zones.next() {
+        let mut merged = 1;
         while let Some((_, next_end)) = zones.next_if(|next| next.0 <= end) {
             end = end.max(next_end);
+            merged += 1;
         }
-        gap(&cursor, &start, &mut result);
-        result.undecided += &end - &start;
+        gap(&cursor, &start, &mut result, holds);
+        if start < end {
+            // One isolating interval alone holds one root and no other, its
+            // ends included: the predicate is constant from `start` to the
+            // root and from the root to `end`. Where it is the same on both
+            // sides, the root changes nothing and the zone is decided.
+            let width = &end - &start;
+            let before = holds(&start);
+            if merged == 1 && before == holds(&end) {
+                if before {
+                    result.covered += width;
+                }
+            } else {
+                result.undecided += width;
+            }
+        }
         cursor = end;
     }
-    gap(&cursor, hi, &mut result);
+    gap(&cursor, hi, &mut result, holds);
     result
 }
 
@@ -121,5 +138,23 @@ mod tests {
         assert!(&m.covered * &m.covered * &two < RBig::ONE);
         let upper = &m.covered + &m.undecided;
         assert!(&upper * &upper * &two > RBig::ONE);
+    }
+
+    #[test]
+    fn a_root_that_changes_nothing_leaves_no_zone() {
+        // 2τ² − 1 has the root 1/√2 in the span, but the predicate (say,
+        // another edge already excludes the sample) is false on both sides
+        // of it, or true on both: the pixel's value stays a whole number.
+        let polys = [q(-1, 0, 2)];
+        for value in [false, true] {
+            let m = measure([&RBig::ZERO, &RBig::ONE], &polys, 40, &mut |_| value);
+            assert_eq!(m.undecided, RBig::ZERO);
+            assert_eq!(m.covered, if value { RBig::ONE } else { RBig::ZERO });
+        }
+        // Two roots in one zone (here the same root twice, from two
+        // polynomials) stay undecided: the predicate could change twice.
+        let polys = [q(-1, 0, 2), q(-2, 0, 4)];
+        let m = measure([&RBig::ZERO, &RBig::ONE], &polys, 40, &mut |_| true);
+        assert!(m.undecided > RBig::ZERO);
     }
 }
