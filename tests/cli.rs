@@ -1,23 +1,10 @@
 //! The binary as a user runs it: exit codes, output, files written.
 
+mod common;
+
+use common::{rastercheck, text};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn rastercheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
-}
+use std::process::Output;
 
 /// A fresh folder with a `cases/` tree holding the given files.
 fn workspace(name: &str, files: &[(&str, &str)]) -> PathBuf {

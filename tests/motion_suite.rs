@@ -10,8 +10,10 @@
 
 mod sliding;
 
+mod common;
+
+use common::{rastercheck, text};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use dashu_ratio::RBig;
 
@@ -128,22 +130,6 @@ fn with_the_oracle_the_motion_mutants_fail_and_an_honest_sampler_passes() {
             }
         }
     }
-}
-
-fn rastercheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
 }
 
 fn workspace(name: &str) -> PathBuf {

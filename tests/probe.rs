@@ -1,8 +1,10 @@
 //! `probe` recovers each rasterizer's conventions from its frames alone, and
 //! `run --profile` judges a rasterizer under the fill rule it declares.
 
+mod common;
+
+use common::{rastercheck, text};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use rastercheck::probe::{self, Profile};
 use rastercheck::suite;
@@ -85,22 +87,6 @@ fn lavapipe_is_top_left_with_8_bits() {
 #[test]
 fn lavapipe_is_top_left_with_8_bits() {
     eprintln!("skipped: built without the lavapipe feature");
-}
-
-fn rastercheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
 }
 
 fn temp(name: &str) -> PathBuf {

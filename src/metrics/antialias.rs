@@ -123,21 +123,7 @@ pub fn bounds(
 /// The signed coverage error per pixel, candidate − reference resolved;
 /// empty when either frame has no resolved coverage.
 pub fn signed_errors(reference: &Frame, candidate: &Frame) -> Vec<f64> {
-    match (&reference.resolved, &candidate.resolved) {
-        (Some(exact), Some(resolved)) if exact.len() == resolved.len() => exact
-            .iter()
-            .zip(resolved)
-            .map(|(e, r)| {
-                let error = r - e;
-                if error.is_nan() {
-                    f64::INFINITY
-                } else {
-                    error
-                }
-            })
-            .collect(),
-        _ => Vec::new(),
-    }
+    super::signed_differences(reference.resolved.as_deref(), candidate.resolved.as_deref())
 }
 
 /// Measures an antialiased candidate; `None` when either frame has no

@@ -24,6 +24,26 @@ pub use watertight::WatertightMetrics;
 /// setup, tight enough to catch a wrong weight, vertex or formula.
 pub const DEFAULT_RELATIVE_BOUND: f64 = 1.0 / 65536.0;
 
+/// candidate − exact per pixel, a NaN error counted as infinite; empty when
+/// either is missing or they differ in length.
+pub(crate) fn signed_differences(exact: Option<&[f64]>, candidate: Option<&[f64]>) -> Vec<f64> {
+    match (exact, candidate) {
+        (Some(exact), Some(candidate)) if exact.len() == candidate.len() => exact
+            .iter()
+            .zip(candidate)
+            .map(|(e, c)| {
+                let error = c - e;
+                if error.is_nan() {
+                    f64::INFINITY
+                } else {
+                    error
+                }
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
 /// Everything measured for one candidate on one case.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Metrics {

@@ -102,21 +102,7 @@ impl TimeMetrics {
 /// error is infinite); empty when either frame has no time coverage or
 /// they differ in size.
 pub fn signed_errors(reference: &Frame, candidate: &Frame) -> Vec<f64> {
-    match (&reference.time, &candidate.time) {
-        (Some(exact), Some(time)) if exact.len() == time.len() => exact
-            .iter()
-            .zip(time)
-            .map(|(e, c)| {
-                let error = c - e;
-                if error.is_nan() {
-                    f64::INFINITY
-                } else {
-                    error
-                }
-            })
-            .collect(),
-        _ => Vec::new(),
-    }
+    super::signed_differences(reference.time.as_deref(), candidate.time.as_deref())
 }
 
 /// Measures a candidate of a moving scene; `None` when either frame has no

@@ -4,6 +4,7 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 use std::path::Path;
+use std::process::{Command, Output};
 
 use rastercheck::frame::Frame;
 use rastercheck::rasterizer::Rasterizer;
@@ -93,5 +94,23 @@ pub fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> 
         } else {
             format!("\n        {}", diffs.join("; "))
         }
+    )
+}
+
+/// Runs the rastercheck binary in `dir`, as a user would.
+pub fn rastercheck(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+/// Everything the binary printed, stdout then stderr.
+pub fn text(out: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
     )
 }
