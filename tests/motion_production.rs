@@ -338,7 +338,7 @@ fn mismatches(scene: &Scene, t: u64, decide: impl Fn(u32, u32, usize) -> u32) ->
     out
 }
 
-const SCENES: u64 = 160;
+const SCENES: u64 = 500;
 
 /// Each of production's tests decides its sample exactly as the static
 /// rules at its instant: on random scenes, at every pixel and spatial

@@ -614,15 +614,11 @@ impl Sampler {
         [x * one + ox, y * one + oy]
     }
 
-    /// The pixel's instants t (τ = t/2^32), slot s·N + k for instant k of
-    /// spatial sample s (SPEC.md §15.3).
-    fn instants(&self, x: i64, y: i64) -> Vec<i128> {
+    /// The pixel's u (SPEC.md §15.3), slot s·N + k for instant k of
+    /// spatial sample s; its instant is `blur.instant(u)`/2^32.
+    fn times(&self, x: i64, y: i64) -> Vec<u32> {
         let p = self.pixel_index(x, y) as u64;
-        self.blur
-            .pixel_times(p, self.offsets.len() as u32)
-            .iter()
-            .map(|&u| i128::from(self.blur.instant(u)))
-            .collect()
+        self.blur.pixel_times(p, self.offsets.len() as u32)
     }
 
     /// How many primitives cover spatial sample `s` of pixel (x, y) at the
@@ -672,18 +668,18 @@ impl Sampler {
         mut hit: impl FnMut(usize),
     ) {
         let n = self.time_samples();
-        let mut instants: Option<Vec<i128>> = None;
+        let mut times: Option<Vec<u32>> = None;
         for mover in movers.iter().filter(|m| m.columns.contains(&x)) {
             for s in 0..self.offsets.len() {
                 let q = mover.sample(self.sample_at(x, y, s));
                 if !mover.sweeps(q) {
                     continue;
                 }
-                let instants = instants.get_or_insert_with(|| self.instants(x, y));
+                let times = times.get_or_insert_with(|| self.times(x, y));
                 let probe = mover.probe(q);
-                for (k, &t) in instants[s * n..(s + 1) * n].iter().enumerate() {
+                for (k, &u) in times[s * n..(s + 1) * n].iter().enumerate() {
                     tests.tests += 1;
-                    if probe.covers(t, self.rule) {
+                    if probe.covers(i128::from(self.blur.instant(u)), self.rule) {
                         tests.covered += 1;
                         hit(s * n + k);
                     }
