@@ -5,6 +5,8 @@
 use std::path::PathBuf;
 use std::process::Command;
 
+use rastercheck::scene::Scene;
+
 fn row<'a>(md: &'a str, section: &str, method: &str) -> &'a str {
     let start = md
         .find(section)
@@ -46,6 +48,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
         "### triangles, L=10",
         "### triangles, L=50",
         "### lines",
+        "### motion blur",
         "## Performance targets",
         "## Notes",
     ] {
@@ -85,6 +88,47 @@ fn quick_bench_writes_the_report_and_the_chart() {
         );
     }
     assert!(row(&md, "### lines", "production").contains("| 0 of "));
+    // A static scene declaring motion blur draws the exact frame, as the
+    // same scene drawn in turn with it.
+    for section in ["### triangles, L=10", "### triangles, L=50"] {
+        for method in [rastercheck::bench::PAIRED, rastercheck::bench::DECLARED] {
+            let line = row(&md, section, method);
+            assert!(line.contains("| 0 of "), "{line}");
+            assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        }
+    }
+    // Motion blur: every row timed, with an RMS / max time error; the
+    // stratified error falls as N grows (seeded: not a timing).
+    let motion = "### motion blur";
+    let error_of = |line: &str| line.split(" | ").nth(5).unwrap_or("").to_owned();
+    let rms_of = |method: &str| -> f64 {
+        let line = row(&md, motion, method);
+        assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        let error = error_of(line);
+        error
+            .split(" / ")
+            .next()
+            .and_then(|r| r.parse().ok())
+            .unwrap_or_else(|| panic!("no time error in {line}"))
+    };
+    let stratified = [4, 16, 64].map(|n| rms_of(&format!("production {n}× stratified")));
+    assert!(
+        stratified[0] > stratified[1] && stratified[1] > stratified[2],
+        "{stratified:?}"
+    );
+    assert!(rms_of("production 16× random") > stratified[1]);
+    assert!(rms_of(rastercheck::bench::MOTION_BASELINE) > stratified[0]);
+    for n in [4, 16, 64] {
+        let line = row(&md, motion, &format!("production {n}× stratified"));
+        assert!(line.contains("sample test efficiency 0."), "{line}");
+    }
+    // The tiled method draws production's frame.
+    let tiled = row(&md, motion, "production-tiled 64× stratified (2 threads)");
+    assert_eq!(
+        error_of(tiled),
+        error_of(row(&md, motion, "production 64× stratified"))
+    );
+    assert!(svg.contains(">production 16× stratified motion<"));
     // The plain loop walks the same exact rule.
     assert!(row(&md, "### lines", "midpoint-plain").contains("| 0 of "));
     // Antialiasing: every method timed, with an RMS / max coverage error;
@@ -92,7 +136,6 @@ fn quick_bench_writes_the_report_and_the_chart() {
     let aa = "### antialiasing";
     let full = row(&md, aa, "production 16× standard");
     let adaptive = row(&md, aa, "production 16× standard, adaptive");
-    let error_of = |line: &str| line.split(" | ").nth(5).unwrap_or("").to_owned();
     assert!(
         error_of(full).contains(" / "),
         "no coverage error in {full}"
@@ -124,6 +167,8 @@ fn quick_bench_writes_the_report_and_the_chart() {
         "`production 16× standard, adaptive`",
         "production-tiled ≥ 1.7× production",
         "plain midpoint loop",
+        "declaring motion blur ≤ 1.1× the cost of the same scene without (L=10)",
+        "declaring motion blur ≤ 1.1× the cost of the same scene without (L=50)",
     ] {
         let targets = &md[md.find("## Performance targets").unwrap()..];
         let line = targets
@@ -132,7 +177,108 @@ fn quick_bench_writes_the_report_and_the_chart() {
             .unwrap_or_else(|| panic!("no target {target:?}:\n{md}"));
         assert!(line.contains('×') && (line.contains("| met |") || line.contains("| not met |")));
     }
+    for n in [4, 16, 64] {
+        let targets = &md[md.find("## Performance targets").unwrap()..];
+        let name = format!("`production {n}× stratified` within SPEC's default max_time_rms");
+        let line = targets
+            .lines()
+            .find(|l| l.contains(&name))
+            .unwrap_or_else(|| panic!("no target {name:?}:\n{md}"));
+        assert!(line.contains("| met |"), "{line}");
+    }
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert!(svg.contains(">exact<") && svg.contains("time per item") && svg.contains("error ("));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// How many pixels' exact time coverage (`bench::translation_time_coverage`)
+/// strays from the reference's static coverage averaged over K instants
+/// (midpoints of K equal parts of the shutter) by more than P/K: each
+/// primitive covers a centre over one interval of the shutter, whose length
+/// K midpoints measure within 1/K.
+fn riemann_disagreements(scene: &Scene, exact: &[f64]) -> usize {
+    use rastercheck::scene::Number;
+    const K: i64 = 64;
+    let [open, close] = scene
+        .effects
+        .motion_blur
+        .as_ref()
+        .unwrap()
+        .shutter
+        .map(i64::from);
+    let mut sums = vec![0u32; exact.len()];
+    for j in 0..K {
+        // open + (close − open)·(j + ½)/K, in units of 2^-16 / 2K.
+        let tau = Number::ratio(open * 2 * K + (close - open) * (2 * j + 1), (2 * K) << 16);
+        let at = scene.at_instant(&tau);
+        let counts = rastercheck::reference::coverage_under(&at, scene.rules.fill_rule);
+        for (sum, c) in sums.iter_mut().zip(counts) {
+            *sum += u32::from(c);
+        }
+    }
+    let tolerance = scene.primitives.len() as f64 / K as f64 + 1e-12;
+    sums.iter()
+        .zip(exact)
+        .filter(|(&sum, &e)| (f64::from(sum) / K as f64 - e).abs() > tolerance)
+        .count()
+}
+
+/// The bench's exact time coverage under translation is the static rules'
+/// coverage integrated over the shutter: on seeded scenes of translating
+/// triangles (every fill rule and cull, shutters inside [0, 1], edges that
+/// slide along rows of centres), against the reference at 64 instants. The
+/// time-reversed motion's values, a plausible slip, are caught.
+#[test]
+fn translation_time_coverage_is_the_reference_over_the_shutter() {
+    use rastercheck::scene::{Cull, FillRule, TimePattern};
+    let mut caught = 0;
+    for k in 0..24u64 {
+        let mut s = rastercheck::bench::motion_scene(24, 8, 3, 6.0, 1, TimePattern::Random, k);
+        s.rules.fill_rule = FillRule::ALL[k as usize % 5];
+        s.rules.cull = [Cull::None, Cull::Clockwise, Cull::CounterClockwise][k as usize % 3];
+        // Both windings, for the cull to keep one.
+        s.primitives[2].vertices_mut().swap(1, 2);
+        if k % 4 == 3 {
+            s.effects.motion_blur.as_mut().unwrap().shutter = [1 << 13, 3 << 14];
+        }
+        if k % 2 == 1 {
+            // The first triangle slides along the row of centres y = 4.5
+            // with a horizontal edge on it: its centres ride that edge, and
+            // the fill rule decides them all shutter long.
+            use rastercheck::scene::Number;
+            let p = |x: i64, y2: i64| [Number::from_int(x), Number::ratio(y2, 2)];
+            // Above the edge (a bottom edge) or below it (a top edge).
+            let third = if k % 4 == 1 { 4 } else { 14 };
+            let corners = [p(2, 9), p(10, 9), p(6, third)];
+            let vertices = s.primitives[0].vertices_mut();
+            for (v, [x, y]) in vertices.iter_mut().zip(corners) {
+                let to = [&x + &Number::from_int(5), y.clone()];
+                v.x = x;
+                v.y = y;
+                v.to = Some(Box::new(to));
+            }
+        }
+        let exact = rastercheck::bench::translation_time_coverage(&s).expect("translations");
+        assert!(
+            exact.iter().any(|&e| e > 0.0 && e < 1.0),
+            "scene {k} moves over centres"
+        );
+        assert_eq!(riemann_disagreements(&s, &exact), 0, "scene {k}: {s:#?}");
+        let mut reversed = s.clone();
+        for v in reversed
+            .primitives
+            .iter_mut()
+            .flat_map(|p| p.vertices_mut())
+        {
+            let [x, y] = *v.to.take().unwrap();
+            let from = [
+                std::mem::replace(&mut v.x, x),
+                std::mem::replace(&mut v.y, y),
+            ];
+            v.to = Some(Box::new(from));
+        }
+        let wrong = rastercheck::bench::translation_time_coverage(&reversed).unwrap();
+        caught += riemann_disagreements(&s, &wrong);
+    }
+    assert!(caught > 0, "time-reversed values went unnoticed");
 }

@@ -15,6 +15,15 @@
 //! `parallelogram` line is its two triangles at τ with the minor axis of
 //! its direction at τ, as `line::parallelogram` builds them (SPEC.md §4.4).
 //!
+//! Triangles in formats of up to [`FAST_MAX_FRAC_BITS`] fraction bits (12
+//! subpixel bits) take a faster road to the same integers: each edge
+//! function at a sample, and twice the area, is a quadratic in τ
+//! ([`Quadratic`]), set up once per sample and evaluated exactly at each of
+//! its instants, about 3× faster than placing the vertices at every
+//! instant. Finer triangles, and parallelograms, place their vertices at
+//! each instant and compare products in 256 bits where i128 does not hold
+//! them.
+//!
 //! Static primitives of a moving scene are drawn once, by production's
 //! static path at the same spatial samples ([`super::draw_frame`]), and a
 //! sample one covers counts as covered at all N instants: the frame's
@@ -145,6 +154,127 @@ fn triangle_covers(
     })
 }
 
+/// The finest format whose triangles take the fast test ([`Quadratic`]).
+///
+/// At format f a vertex lies within 2^15 px of the origin and a sample on
+/// the canvas in [0, 2^14] px, so in units of 2^-f an edge D or a vertex to
+/// a sample R is below 2^(16+f) per axis, a velocity V below 2^(16+f) and a
+/// difference of velocities W below 2^(17+f); a cross product |u × w| is at
+/// most 2·|u|·|w|. An edge function's coefficients (below) are then under
+/// 2^(33+2f), 2^(35+2f) and 2^(34+2f), twice the area's under 2^(33+2f),
+/// 2^(35+2f) and 2^(35+2f), and with t ≤ 2^32 each scaled value
+/// 2^64·q0 + 2^32·t·q1 + t²·q2 is below 2^(64+2f)·(2^33 + 2^35 + 2^35),
+/// under 2^(100+2f): in i128 for f ≤ 13.
+const FAST_MAX_FRAC_BITS: u32 = 13;
+const _: () = assert!(100 + 2 * FAST_MAX_FRAC_BITS <= 126);
+const _: () = assert!(limits::COORD_LIMIT == 1 << 15 && limits::MAX_CANVAS_SIDE <= 1 << 14);
+
+/// q(τ) = q0 + q1·τ + q2·τ², held as its coefficients: an edge function at
+/// one sample, or twice a triangle's area, as a vertex moves linearly. Its
+/// sign at τ = t/2^32 is that of 2^64·q(τ) = 2^32·(2^32·q0 + t·q1) + t²·q2,
+/// an exact integer.
+#[derive(Clone, Copy, Debug)]
+struct Quadratic([i128; 3]);
+
+impl Quadratic {
+    #[inline]
+    fn sign_at(&self, t: i128, t2: i128) -> Ordering {
+        let [q0, q1, q2] = self.0;
+        ((((q0 << TIME_BITS) + t * q1) << TIME_BITS) + t2 * q2).cmp(&0)
+    }
+}
+
+/// The cross product u × w in i128 (the fast path's small values).
+#[inline]
+fn cross(u: Point, w: Point) -> i128 {
+    u[0] * w[1] - u[1] * w[0]
+}
+
+/// A moving triangle in a format of at most [`FAST_MAX_FRAC_BITS`]: each
+/// edge function at a sample is a [`Quadratic`] in τ whose τ² coefficient
+/// does not depend on the sample, so a sample's three quadratics are set up
+/// once for its N instants, and a test evaluates them.
+#[derive(Clone, Debug)]
+struct Fast {
+    /// Each vertex at τ = 0 (units of 2^-f) and its motion to τ = 1.
+    a: [Point; 3],
+    v: [Point; 3],
+    /// Twice the area, and its sign when that never changes (the area is
+    /// then constant: a translation, say).
+    area: Quadratic,
+    fixed: Option<Ordering>,
+    /// −W × V of each edge i → i + 1 (vertices in the case's order).
+    c2: [i128; 3],
+    cull: Cull,
+}
+
+impl Fast {
+    fn new(ends: [[[i64; 2]; 2]; 3], cull: Cull) -> Fast {
+        let a = ends.map(|[a, _]| a.map(i128::from));
+        let v = ends.map(|[a, b]| [0, 1].map(|k| i128::from(b[k]) - i128::from(a[k])));
+        let (d1, d2) = (sub(a[1], a[0]), sub(a[2], a[0]));
+        let (w1, w2) = (sub(v[1], v[0]), sub(v[2], v[0]));
+        let area = Quadratic([cross(d1, d2), cross(d1, w2) + cross(w1, d2), cross(w1, w2)]);
+        let fixed = (area.0[1] == 0 && area.0[2] == 0).then(|| area.0[0].cmp(&0));
+        let c2 = [0, 1, 2].map(|i| -cross(sub(v[(i + 1) % 3], v[i]), v[i]));
+        Fast {
+            a,
+            v,
+            area,
+            fixed,
+            c2,
+            cull,
+        }
+    }
+
+    /// The edge functions i → i + 1 at the sample q (units of 2^-f):
+    /// (D + τW) × (R − τV) = D × R + τ·(W × R − D × V) − τ²·(W × V), with
+    /// D and W the edge and its motion, R = q − a_i and V = v_i.
+    fn edges_at(&self, q: Point) -> [Quadratic; 3] {
+        [0, 1, 2].map(|i| {
+            let j = (i + 1) % 3;
+            let (d, w) = (sub(self.a[j], self.a[i]), sub(self.v[j], self.v[i]));
+            let r = sub(q, self.a[i]);
+            Quadratic([cross(d, r), cross(w, r) - cross(d, self.v[i]), self.c2[i]])
+        })
+    }
+
+    /// [`triangle_covers`] from the quadratics: the winding at τ (zero
+    /// area covers nothing; the cull), then each edge walked clockwise, an
+    /// edge of a counter-clockwise triangle reversed (its function negated,
+    /// its direction turned round).
+    #[inline]
+    fn covers(&self, edges: &[Quadratic; 3], t: i128, rule: FillRule) -> bool {
+        let t2 = t * t;
+        let clockwise = match self.fixed.unwrap_or_else(|| self.area.sign_at(t, t2)) {
+            Ordering::Equal => return false,
+            o => o == Ordering::Greater,
+        };
+        match self.cull {
+            Cull::Clockwise if clockwise => return false,
+            Cull::CounterClockwise if !clockwise => return false,
+            _ => {}
+        }
+        (0..3).all(|i| {
+            let sign = edges[i].sign_at(t, t2);
+            match if clockwise { sign } else { sign.reverse() } {
+                Ordering::Greater => true,
+                Ordering::Less => false,
+                Ordering::Equal => {
+                    // 2^32 times the edge's direction at τ, walked clockwise.
+                    let j = (i + 1) % 3;
+                    let d = [0, 1].map(|k| {
+                        ((self.a[j][k] - self.a[i][k]) << TIME_BITS)
+                            + t * (self.v[j][k] - self.v[i][k])
+                    });
+                    let d = if clockwise { d } else { d.map(|c| -c) };
+                    edge_owned([0, 0], d, rule)
+                }
+            }
+        })
+    }
+}
+
 /// A moving primitive's vertices: 2^32 times each at shutter open of the
 /// case (τ = 0), and its motion to τ = 1, B − A; at instant t the vertex is
 /// `from + t·velocity`.
@@ -171,15 +301,13 @@ impl<const K: usize> Path<K> {
 
 #[derive(Clone, Debug)]
 enum Shape {
-    Triangle {
-        path: Path<3>,
-        cull: Cull,
-    },
+    /// A triangle in a format of at most [`FAST_MAX_FRAC_BITS`].
+    Fast(Box<Fast>),
+    /// Any triangle, its positions at each instant compared in 256 bits
+    /// where i128 does not hold the products.
+    Triangle { path: Path<3>, cull: Cull },
     /// A `parallelogram` line: its two ends, and 2^32 times half its width.
-    Parallelogram {
-        path: Path<2>,
-        half: i128,
-    },
+    Parallelogram { path: Path<2>, half: i128 },
 }
 
 /// A moving primitive ready to be tested.
@@ -208,14 +336,21 @@ impl Mover {
             let [ex, ey] = v.end();
             [[&v.x, &v.y], [ex, ey]].map(|p| p.map(|c| place(scene, format, c).0 << shift))
         };
-        let (shape, shift) = match primitive {
-            Primitive::Triangle(t) => (
-                Shape::Triangle {
-                    path: Path::new(t.vertices.each_ref().map(|v| ends(v, 0))),
-                    cull: scene.rules.cull,
-                },
-                0,
-            ),
+        // The shape; its vertices at τ = 0 and 1 and how far beyond them
+        // it reaches, for the swept box.
+        let (shape, shift, vertices, margin) = match primitive {
+            Primitive::Triangle(t) => {
+                let vertices = t.vertices.each_ref().map(|v| ends(v, 0));
+                let shape = if format.frac_bits <= FAST_MAX_FRAC_BITS {
+                    Shape::Fast(Box::new(Fast::new(vertices, scene.rules.cull)))
+                } else {
+                    Shape::Triangle {
+                        path: Path::new(vertices),
+                        cull: scene.rules.cull,
+                    }
+                };
+                (shape, 0, vertices.to_vec(), 0)
+            }
             Primitive::Line(line) if line.rule == LineRule::Parallelogram => {
                 // As `line::parallelogram`: the first format, from the
                 // scene's on, in which half the width is exact (width/2 in
@@ -237,12 +372,18 @@ impl Mover {
                         ))
                     })?;
                 let shift = fine - format.frac_bits;
+                let vertices = line.vertices.each_ref().map(|v| ends(v, shift));
+                let half = i128::from(half) << TIME_BITS;
                 (
                     Shape::Parallelogram {
-                        path: Path::new(line.vertices.each_ref().map(|v| ends(v, shift))),
-                        half: i128::from(half) << TIME_BITS,
+                        path: Path::new(vertices),
+                        half,
                     },
                     shift,
+                    vertices.to_vec(),
+                    // The corners lie half the width from the ends along
+                    // one axis or the other.
+                    half,
                 )
             }
             Primitive::Line(line) => {
@@ -257,19 +398,18 @@ impl Mover {
                 ))
             }
         };
-        // The box of every vertex (corner) at the shutter's two ends.
+        // The box of every vertex at the shutter's two ends.
         let [open, close] = blur.shutter.map(|e| i128::from(e) << (TIME_BITS / 2));
-        let (points, margin): (Vec<Point>, i128) = match &shape {
-            Shape::Triangle { path, .. } => {
-                ([open, close].iter().flat_map(|&t| path.at(t)).collect(), 0)
-            }
-            // The corners lie half the width from the ends along one axis
-            // or the other.
-            Shape::Parallelogram { path, half } => (
-                [open, close].iter().flat_map(|&t| path.at(t)).collect(),
-                *half,
-            ),
-        };
+        let points: Vec<Point> = vertices
+            .iter()
+            .flat_map(|&[a, b]| {
+                [open, close].map(|t| {
+                    [0, 1].map(|k| {
+                        (i128::from(a[k]) << TIME_BITS) + t * (i128::from(b[k]) - i128::from(a[k]))
+                    })
+                })
+            })
+            .collect();
         let lo = [0, 1].map(|k| points.iter().map(|p| p[k]).min().unwrap() - margin);
         let hi = [0, 1].map(|k| points.iter().map(|p| p[k]).max().unwrap() + margin);
         // A sample i·one + o with o in [0, one) lies in [lo, hi] only in
@@ -290,23 +430,33 @@ impl Mover {
         })
     }
 
-    /// A sample given in the scene's format, in this primitive's units.
+    /// A sample given in the scene's format, in this primitive's format.
     #[inline]
     fn sample(&self, q: [i64; 2]) -> Point {
-        q.map(|c| i128::from(c) << (self.shift + TIME_BITS))
+        q.map(|c| i128::from(c) << self.shift)
     }
 
-    /// Whether the sample lies in the swept bounding box: elsewhere the
-    /// primitive covers it at no instant of the shutter.
+    /// Whether the sample (this primitive's format) lies in the swept
+    /// bounding box: elsewhere the primitive covers it at no instant of the
+    /// shutter.
     #[inline]
     fn sweeps(&self, q: Point) -> bool {
-        (0..2).all(|k| self.lo[k] <= q[k] && q[k] <= self.hi[k])
+        (0..2).all(|k| self.lo[k] <= q[k] << TIME_BITS && q[k] << TIME_BITS <= self.hi[k])
     }
 
-    /// Whether the primitive covers the sample `q` (its units) at instant
-    /// t/2^32: one test.
+    /// The sample `q` (this primitive's format) set up for its tests.
+    fn probe(&self, q: Point) -> Probe<'_> {
+        match &self.shape {
+            Shape::Fast(fast) => Probe::Fast(fast, fast.edges_at(q)),
+            _ => Probe::Exact(self, q.map(|c| c << TIME_BITS)),
+        }
+    }
+
+    /// Whether the primitive covers the sample `q` (units of 2^-(f+32)) at
+    /// instant t/2^32, from its positions at t.
     fn covers(&self, q: Point, t: i128, rule: FillRule) -> bool {
         match &self.shape {
+            Shape::Fast(_) => unreachable!("fast triangles are probed"),
             Shape::Triangle { path, cull } => {
                 triangle_covers(path.at(t), q, *cull, |a, b| edge_owned(a, b, rule))
             }
@@ -332,6 +482,24 @@ impl Mover {
                 triangle_covers([a, b, c], q, Cull::None, owned)
                     || triangle_covers([a, c, e], q, Cull::None, owned)
             }
+        }
+    }
+}
+
+/// One sample of one moving primitive, ready for its N tests.
+enum Probe<'a> {
+    Fast(&'a Fast, [Quadratic; 3]),
+    /// The sample in units of 2^-(f+32).
+    Exact(&'a Mover, Point),
+}
+
+impl Probe<'_> {
+    /// Whether the primitive covers the sample at instant t/2^32: one test.
+    #[inline]
+    fn covers(&self, t: i128, rule: FillRule) -> bool {
+        match self {
+            Probe::Fast(fast, edges) => fast.covers(edges, t, rule),
+            Probe::Exact(mover, q) => mover.covers(*q, t, rule),
         }
     }
 }
@@ -446,15 +614,11 @@ impl Sampler {
         [x * one + ox, y * one + oy]
     }
 
-    /// The pixel's instants t (τ = t/2^32), slot s·N + k for instant k of
-    /// spatial sample s (SPEC.md §15.3).
-    fn instants(&self, x: i64, y: i64) -> Vec<i128> {
+    /// The pixel's u (SPEC.md §15.3), slot s·N + k for instant k of
+    /// spatial sample s; its instant is `blur.instant(u)`/2^32.
+    fn times(&self, x: i64, y: i64) -> Vec<u32> {
         let p = self.pixel_index(x, y) as u64;
-        self.blur
-            .pixel_times(p, self.offsets.len() as u32)
-            .iter()
-            .map(|&u| i128::from(self.blur.instant(u)))
-            .collect()
+        self.blur.pixel_times(p, self.offsets.len() as u32)
     }
 
     /// How many primitives cover spatial sample `s` of pixel (x, y) at the
@@ -469,7 +633,7 @@ impl Sampler {
         let moving = self
             .movers
             .iter()
-            .filter(|m| m.covers(m.sample(q), i128::from(instant), self.rule))
+            .filter(|m| m.probe(m.sample(q)).covers(i128::from(instant), self.rule))
             .count();
         moving as u32 + self.statics(self.pixel_index(x, y), s)
     }
@@ -504,17 +668,18 @@ impl Sampler {
         mut hit: impl FnMut(usize),
     ) {
         let n = self.time_samples();
-        let mut instants: Option<Vec<i128>> = None;
+        let mut times: Option<Vec<u32>> = None;
         for mover in movers.iter().filter(|m| m.columns.contains(&x)) {
             for s in 0..self.offsets.len() {
                 let q = mover.sample(self.sample_at(x, y, s));
                 if !mover.sweeps(q) {
                     continue;
                 }
-                let instants = instants.get_or_insert_with(|| self.instants(x, y));
-                for (k, &t) in instants[s * n..(s + 1) * n].iter().enumerate() {
+                let times = times.get_or_insert_with(|| self.times(x, y));
+                let probe = mover.probe(q);
+                for (k, &u) in times[s * n..(s + 1) * n].iter().enumerate() {
                     tests.tests += 1;
-                    if mover.covers(q, t, self.rule) {
+                    if probe.covers(i128::from(self.blur.instant(u)), self.rule) {
                         tests.covered += 1;
                         hit(s * n + k);
                     }
@@ -602,6 +767,44 @@ mod tests {
         assert_eq!(wide_product(i128::MIN, i128::MAX), (-(1 << 126), 1 << 127));
         assert!(wide_product(1 << 100, 1 << 30) > wide_product((1 << 100) - 1, 1 << 30));
         assert!(wide_product(-(1 << 100), 1 << 30) < wide_product(-(1 << 100) + 1, 1 << 30));
+    }
+
+    /// The fast path's bound, tried at its corners: at FAST_MAX_FRAC_BITS,
+    /// vertices at the coordinate limits moving from one limit to the
+    /// other, samples at the canvas's corners and t up to 2^32, every
+    /// intermediate of every quadratic's evaluation is computed with
+    /// checked arithmetic and fits.
+    #[test]
+    fn fast_quadratics_fit_at_their_finest_format() {
+        let f = FAST_MAX_FRAC_BITS;
+        let limit = limits::COORD_LIMIT << f;
+        let side = i64::from(limits::MAX_CANVAS_SIDE) << f;
+        let corners = [-limit, limit];
+        let checked = |q: &Quadratic, t: i128| -> Option<i128> {
+            let [q0, q1, q2] = q.0;
+            let inner = q0
+                .checked_mul(1 << TIME_BITS)?
+                .checked_add(t.checked_mul(q1)?)?;
+            inner
+                .checked_mul(1 << TIME_BITS)?
+                .checked_add((t * t).checked_mul(q2)?)
+        };
+        let mut tried = 0;
+        for bits in 0..1u32 << 12 {
+            let c = |k: u32| corners[(bits >> k & 1) as usize];
+            let ends = [0, 4, 8].map(|k| [[c(k), c(k + 1)], [c(k + 2), c(k + 3)]]);
+            let fast = Fast::new(ends, Cull::None);
+            for q in [[0, 0], [side, 0], [0, side], [side, side]] {
+                let edges = fast.edges_at(q.map(i128::from));
+                for t in [0, 1 << 31, (1 << 32) - 1, 1 << 32] {
+                    for quadratic in edges.iter().chain([&fast.area]) {
+                        assert!(checked(quadratic, t).is_some(), "{ends:?} {q:?} {t}");
+                        tried += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(tried, 4096 * 4 * 4 * 4);
     }
 
     /// The sign of a cross product beyond i128 (at 16 subpixel bits and
