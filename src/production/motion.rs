@@ -76,7 +76,8 @@ const _: () = assert!(DIFF_BITS <= 126);
 // of the case reader is drawn.
 const _: () = assert!(2 * DIFF_BITS < 255);
 
-/// A point in units of 2^-(f+32) px: 2^32 times a position at an instant.
+/// A point: 2^32 times a position at an instant, in units of 2^-(f+32) px,
+/// or on the fast path ([`Fast`]) a position in units of 2^-f px.
 type Point = [i128; 2];
 
 #[inline]
@@ -399,7 +400,8 @@ impl Mover {
             }
         };
         // The box of every vertex at the shutter's two ends.
-        let [open, close] = blur.shutter.map(|e| i128::from(e) << (TIME_BITS / 2));
+        let [open, close] =
+            [0, crate::scene::time::limits::TIME_ONE].map(|u| i128::from(blur.instant(u)));
         let points: Vec<Point> = vertices
             .iter()
             .flat_map(|&[a, b]| {
