@@ -84,7 +84,7 @@ impl Grid {
     }
 }
 
-fn gcd(a: &UBig, b: &UBig) -> UBig {
+pub(super) fn gcd(a: &UBig, b: &UBig) -> UBig {
     let (mut a, mut b) = (a.clone(), b.clone());
     while b != UBig::ZERO {
         let r = &a % &b;

@@ -186,7 +186,7 @@ pub fn point_coverage_with(
     // The grid: 2^bits and the point's denominators divide its scale.
     let scale = point.iter().fold(UBig::ONE << bits as usize, |l, c| {
         let d = c.denominator();
-        let g = gcd(&l, d);
+        let g = super::grid::gcd(&l, d);
         &l / g * d
     });
     let scale = IBig::from(scale);
@@ -235,16 +235,6 @@ fn pixel_range(lo: &IBig, hi: &IBig, unit: &IBig) -> [i64; 2] {
         let f = super::exact::floor_div(v, unit).clamp(-IBig::ONE, limit.clone());
         i64::try_from(&f).expect("clamped")
     })
-}
-
-fn gcd(a: &UBig, b: &UBig) -> UBig {
-    let (mut a, mut b) = (a.clone(), b.clone());
-    while b != UBig::ZERO {
-        let r = &a % &b;
-        a = b;
-        b = r;
-    }
-    a
 }
 
 /// How many of each pixel's samples the static primitives cover, summed
