@@ -11,6 +11,9 @@
 //! ½ − o_s; the translation is exact for unsnapped scenes and for snapped
 //! scenes whose vertices and offsets lie on the snapping grid.
 
+mod common;
+
+use common::Rng;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::production::{self, Production};
@@ -20,28 +23,6 @@ use rastercheck::scene::{
     Antialias, Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel, Line,
     LineParameter, LineRule, Number, Pattern, Primitive, Rules, Scene, Triangle, Vertex,
 };
-
-/// SplitMix64, as the patterns use: every test replays from its seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in lo..=hi.
-    fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next() % (hi - lo + 1) as u64) as i64
-    }
-
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[self.next() as usize % items.len()]
-    }
-}
 
 const CANVAS: Canvas = Canvas {
     width: 9,

@@ -25,6 +25,9 @@
 //! production rasterizer antialiases, its own resolved values are measured
 //! the same way.
 
+mod common;
+
+use common::Rng;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
@@ -45,20 +48,6 @@ const EDGE_BITS: u32 = 16;
 /// 256 times finer than a 256-sample cell and quantization is negligible.
 const POSITION_BITS: u32 = 12;
 const COUNTS: [u32; 4] = [4, 16, 64, 256];
-
-/// SplitMix64 for the edges (the crate's generator is for sample patterns;
-/// this one is the test's own, seeded separately).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
 
 /// A point of the unit square's border at perimeter position t (clockwise
 /// from the top-left corner, one side per 2^16), in 2^-16 units.

@@ -10,6 +10,9 @@
 //! sweeping by a pure translation crosses a pixel centre at one rational
 //! instant, so the exact time coverage is written down directly.
 
+mod common;
+
+use common::Rng;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::production::antialias::Sampling;
@@ -23,28 +26,6 @@ use rastercheck::scene::{
     LineParameter, LineRule, MotionBlur, Number, Pattern, Primitive, Rules, Scene, TimePattern,
     Triangle, Vertex,
 };
-
-/// SplitMix64: every test replays from its seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in lo..=hi.
-    fn range(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next() % (hi - lo + 1) as u64) as i64
-    }
-
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[self.next() as usize % items.len()]
-    }
-}
 
 /// A point in units of 2^-g px (g = `grid`), as exact numbers.
 type Units = [i64; 2];
