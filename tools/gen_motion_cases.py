@@ -87,56 +87,25 @@ from functools import cmp_to_key
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exactjson import exact, js  # noqa: E402
+import gen_aa_cases as aac  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT_DIR = os.path.join(ROOT, "cases", "motion")
 
 # ---------------------------------------------------------------------------
-# SplitMix64, spatial offsets (section 14.2) and instants (section 15.3).
+# Spatial offsets (section 14.2) come from gen_aa_cases.py's port of the
+# patterns, with its SplitMix64; the instants (section 15.3) are written here.
 
-MASK64 = (1 << 64) - 1
 TIME_BITS = 16
 TIME_ONE = 1 << TIME_BITS
 PIXEL_MIX = 0xD6E8FEB86659FD93
-
-
-class SplitMix64:
-    def __init__(self, seed):
-        self.state = seed & MASK64
-
-    def next(self):
-        self.state = (self.state + 0x9E3779B97F4A7C15) & MASK64
-        z = self.state
-        z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & MASK64
-        z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & MASK64
-        return z ^ (z >> 31)
-
-
-STANDARD4 = [(F(3, 8), F(1, 8)), (F(7, 8), F(3, 8)), (F(1, 8), F(5, 8)), (F(5, 8), F(7, 8))]
 
 
 def spatial_offsets(aa):
     """The M offsets of effects.antialias in slot order, or the pixel centre."""
     if aa is None:
         return [(F(1, 2), F(1, 2))]
-    n, pattern, seed = aa["samples"], aa.get("pattern", "standard"), aa.get("seed", 0)
-    bits = aa.get("position_bits", 8)
-    L = 1 << bits
-    if pattern == "standard":
-        assert n == 4, "only the standard 4x table is written here"
-        return list(STANDARD4)
-    if pattern == "stratified":
-        k = math.isqrt(n)
-        assert k * k == n
-        rng = SplitMix64(seed)
-        out = []
-        for s in range(n):
-            i, j = s % k, s // k
-            x = (i * L + (rng.next() >> (64 - bits))) // k
-            y = (j * L + (rng.next() >> (64 - bits))) // k
-            out.append((F(x, L), F(y, L)))
-        return out
-    raise ValueError(pattern)
+    return aac.offsets(aa)
 
 
 def pixel_us(mb, pixel, M):
@@ -144,10 +113,10 @@ def pixel_us(mb, pixel, M):
     slot s*N + k is instant k of spatial sample s."""
     N = mb["samples"]
     T = M * N
-    rng = SplitMix64(mb.get("seed", 0) ^ (((pixel + 1) * PIXEL_MIX) & MASK64))
+    rng = aac.SplitMix64(mb.get("seed", 0) ^ (((pixel + 1) * PIXEL_MIX) & aac.MASK64))
 
     def draw():
-        return rng.next() >> (64 - TIME_BITS)
+        return rng.draw(TIME_BITS)
 
     pattern = mb.get("pattern", "stratified")
     if pattern == "random":
