@@ -242,16 +242,10 @@ fn time_reference(
         }
     });
     match computed {
-        Ok(certified) => {
-            let time = certified
-                .iter()
-                .map(|c| reference::area::to_f64_nearest(&c.value))
-                .collect();
-            (
-                Frame::time_only(width, height, time),
-                Ok(check_time(scene, &certified)),
-            )
-        }
+        Ok(certified) => (
+            reference::motion::frame_of(scene, &certified),
+            Ok(check_time(scene, &certified)),
+        ),
         Err(why) => (
             Frame::time_only(width, height, vec![f64::NAN; pixels]),
             Err(why),

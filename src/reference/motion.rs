@@ -271,9 +271,16 @@ fn static_coverage(scene: &Scene, plan: &Plan) -> Vec<u64> {
 /// The reference's frame of a scene in which something moves: each
 /// pixel's certified time coverage rounded to the nearest f64.
 pub fn frame(scene: &Scene, plan: &Plan) -> Frame {
-    let time = time_coverage(scene, plan)
+    frame_of(scene, &time_coverage(scene, plan))
+}
+
+/// The time-only frame of certified per-pixel values (one per pixel),
+/// each rounded to the nearest f64: the one rounding of `frame` and of the
+/// suite, which keeps the certified values for its checks.
+pub fn frame_of(scene: &Scene, certified: &[Certified]) -> Frame {
+    let time = certified
         .iter()
-        .map(|c| c.value.to_f64().value())
+        .map(|c| super::area::to_f64_nearest(&c.value))
         .collect();
     Frame::time_only(scene.canvas.width, scene.canvas.height, time)
 }
