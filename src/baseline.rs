@@ -71,7 +71,7 @@ use std::path::Path;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::metrics::Metrics;
-use crate::runner::{CaseOutcome, Problem, Selection};
+use crate::runner::{CaseOutcome, Selection};
 use crate::suite::{CandidateRun, CaseFile};
 
 pub const SCHEMA: &str = "rastercheck-baseline/1";
@@ -362,16 +362,8 @@ impl Observed {
         let mut observed = Observed::default();
         for outcome in outcomes {
             let id = &outcome.file.id;
-            match &outcome.problem {
-                Some(Problem::Unreadable(e)) => {
-                    observed.problems.insert(id.clone(), e.clone());
-                }
-                Some(Problem::ReferenceFailed(e)) => {
-                    observed
-                        .problems
-                        .insert(id.clone(), format!("the reference failed: {e}"));
-                }
-                None => {}
+            if let Some(problem) = &outcome.problem {
+                observed.problems.insert(id.clone(), problem.message());
             }
             for ((run, name), &is_foil) in outcome.candidates.iter().zip(recorded).zip(foil) {
                 observed

@@ -20,6 +20,7 @@
 pub mod adapters;
 pub mod baseline;
 pub mod bench;
+pub mod deadline;
 pub mod frame;
 pub mod fuzz;
 pub mod golden;

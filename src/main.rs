@@ -232,13 +232,40 @@ struct LimitArgs {
     /// Largest number of primitives in one case.
     #[arg(long, default_value_t = Limits::default().max_primitives)]
     max_primitives: usize,
+    /// Largest number of sample points in one case: pixels × samples per
+    /// pixel × time samples (these only when something moves).
+    #[arg(long, default_value_t = Limits::default().max_samples)]
+    max_samples: u64,
+    /// Seconds each rasterizer (the reference, then each candidate) may
+    /// spend on one case; 0 for no limit. A case over it is an error.
+    #[arg(long, value_name = "SECONDS", default_value_t = default_case_timeout(), value_parser = seconds)]
+    case_timeout: f64,
+}
+
+/// A number of seconds: finite and not negative.
+fn seconds(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(s) if (0.0..1e9).contains(&s) => Ok(s),
+        _ => Err(format!(
+            "expected a number of seconds (0 for no limit), got {text:?}"
+        )),
+    }
+}
+
+fn default_case_timeout() -> f64 {
+    Limits::default()
+        .case_timeout
+        .map_or(0.0, |d| d.as_secs_f64())
 }
 
 impl LimitArgs {
     fn limits(&self) -> Limits {
+        let seconds = self.case_timeout;
         Limits {
             max_canvas_pixels: self.max_canvas_pixels,
             max_primitives: self.max_primitives,
+            max_samples: self.max_samples,
+            case_timeout: (seconds > 0.0).then(|| std::time::Duration::from_secs_f64(seconds)),
         }
     }
 }
@@ -370,10 +397,7 @@ fn run(args: RunArgs) -> u8 {
                 foil: c.is_foil(),
             })
             .collect(),
-        LimitsInfo {
-            max_canvas_pixels: limits.max_canvas_pixels,
-            max_primitives: limits.max_primitives,
-        },
+        LimitsInfo::of(&limits),
     );
     report.cases = files.iter().map(CaseEntry::not_run).collect();
     if let Some(dir) = &args.report {
@@ -403,7 +427,10 @@ fn run(args: RunArgs) -> u8 {
     let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
     for outcome in &outcomes {
         print_outcome(outcome, &candidates, args.quiet, colour, width);
-        bad_input |= matches!(outcome.problem, Some(Problem::Unreadable(_)));
+        bad_input |= outcome
+            .problem
+            .as_ref()
+            .is_some_and(Problem::is_input_error);
     }
     report.cases = outcomes
         .iter()
@@ -416,7 +443,16 @@ fn run(args: RunArgs) -> u8 {
         || t.golden.differing > 0
         || t.verdicts.iter().any(|v| v.tally.fail + v.tally.error > 0);
     println!();
-    println!("{} case files, {} unreadable", t.cases, t.unreadable);
+    println!(
+        "{} case files, {} unreadable{}",
+        t.cases,
+        t.unreadable,
+        if t.limit_exceeded > 0 {
+            format!(", {} over the time limit", t.limit_exceeded)
+        } else {
+            String::new()
+        }
+    );
     for (candidate, v) in candidates.iter().zip(&t.verdicts) {
         let x = &v.tally;
         if candidate.is_foil() {
@@ -479,6 +515,9 @@ fn print_outcome(
                 "{} {id:width$}  the reference failed on this case: {e}",
                 paint("ERROR", RED, colour)
             )
+        }
+        Some(Problem::LimitExceeded(e)) => {
+            return println!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
         }
         None => {}
     }
@@ -582,7 +621,16 @@ fn bless(paths: Vec<PathBuf>, limits: Limits) -> u8 {
                 continue;
             }
         };
-        let reference = suite::run_reference(&scene);
+        let reference = match rastercheck::deadline::within(limits.case_timeout, || {
+            suite::run_reference(&scene)
+        }) {
+            Ok(reference) => reference,
+            Err(exceeded) => {
+                eprintln!("error: {}: the reference {exceeded}", file.path.display());
+                bad_input = true;
+                continue;
+            }
+        };
         let path = golden::path_for(&root, &file.id);
         match golden::write(&reference.frame, &path) {
             Ok(()) => written += 1,

@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use rayon::prelude::*;
 
+use crate::deadline;
 use crate::rasterizer::Rasterizer;
 use crate::scene::{Limits, Scene};
 use crate::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
@@ -104,6 +105,27 @@ pub enum Problem {
     Unreadable(String),
     /// The reference itself broke on this case (a bug in rastercheck).
     ReferenceFailed(String),
+    /// The reference took longer than the time limit per case
+    /// (`--case-timeout`): an error of the run's limits, like a canvas too
+    /// large, not of the case or of the rasterizers.
+    LimitExceeded(String),
+}
+
+impl Problem {
+    /// What went wrong, in a sentence that names the file (bad input and
+    /// limits) or the reference's failure.
+    pub fn message(&self) -> String {
+        match self {
+            Problem::Unreadable(e) | Problem::LimitExceeded(e) => e.clone(),
+            Problem::ReferenceFailed(e) => format!("the reference failed: {e}"),
+        }
+    }
+
+    /// Bad input or an exceeded limit: exit code 2, not a failure of a
+    /// rasterizer.
+    pub fn is_input_error(&self) -> bool {
+        matches!(self, Problem::Unreadable(_) | Problem::LimitExceeded(_))
+    }
 }
 
 impl CaseOutcome {
@@ -137,10 +159,19 @@ pub fn run_case(
             return outcome;
         }
     };
+    let limit = limits.case_timeout;
     let reference = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        suite::run_reference(&scene)
+        deadline::within(limit, || suite::run_reference(&scene))
     })) {
-        Ok(reference) => reference,
+        Ok(Ok(reference)) => reference,
+        Ok(Err(exceeded)) => {
+            outcome.problem = Some(Problem::LimitExceeded(format!(
+                "{}: the reference {exceeded}",
+                file.path.display()
+            )));
+            outcome.scene = Some(scene);
+            return outcome;
+        }
         Err(panic) => {
             outcome.problem = Some(Problem::ReferenceFailed(suite::panic_message(&*panic)));
             outcome.scene = Some(scene);
@@ -150,7 +181,19 @@ pub fn run_case(
     outcome.golden = Some(suite::check_golden(root, &file.id, &reference.frame));
     outcome.candidates = candidates
         .iter()
-        .map(|c| suite::run_candidate(&scene, &reference, c.as_ref()))
+        .map(|c| {
+            let started = std::time::Instant::now();
+            deadline::within(limit, || {
+                suite::run_candidate(&scene, &reference, c.as_ref())
+            })
+            .unwrap_or_else(|exceeded| {
+                CandidateRun::without_frame(
+                    c.name().to_owned(),
+                    Verdict::Error(exceeded.to_string()),
+                    started.elapsed(),
+                )
+            })
+        })
         .collect();
     outcome.reference = Some(reference);
     outcome.scene = Some(scene);

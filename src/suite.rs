@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use dashu_int::ops::Abs;
 use dashu_ratio::RBig;
 
+use crate::deadline;
 use crate::frame::Frame;
 use crate::golden;
 use crate::metrics::{self, AreaClass, Metrics};
@@ -255,12 +256,8 @@ fn time_reference(
 
 /// The time-coverage oracle's answer, or why it panicked.
 fn catch_oracle(oracle: impl FnOnce() -> Vec<Certified>) -> Result<Vec<Certified>, String> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(oracle)).map_err(|panic| {
-        format!(
-            "reference: the time-coverage oracle failed: {}",
-            panic_message(&*panic)
-        )
-    })
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(oracle))
+        .map_err(|panic| pass_on_deadline(panic, "reference: the time-coverage oracle failed"))
 }
 
 /// The [`TimeCheck`] of certified per-pixel time coverage: each pin of
@@ -318,12 +315,7 @@ pub fn area_check(scene: &Scene) -> Option<Result<AreaCheck, String>> {
     let computed = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         check_areas(scene, &reference::exact_areas(scene))
     }));
-    Some(computed.map_err(|panic| {
-        format!(
-            "reference: the exact areas failed: {}",
-            panic_message(&*panic)
-        )
-    }))
+    Some(computed.map_err(|panic| pass_on_deadline(panic, "reference: the exact areas failed")))
 }
 
 /// The exact area class of every pixel, and `expect.area` against the
@@ -402,7 +394,7 @@ pub struct CandidateRun {
 }
 
 impl CandidateRun {
-    fn without_frame(rasterizer: String, verdict: Verdict, elapsed: Duration) -> CandidateRun {
+    pub fn without_frame(rasterizer: String, verdict: Verdict, elapsed: Duration) -> CandidateRun {
         CandidateRun {
             rasterizer,
             verdict,
@@ -440,12 +432,8 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
         }
         Err(panic) => {
-            let why = panic_message(&*panic);
-            return CandidateRun::without_frame(
-                name,
-                Verdict::Error(format!("panicked: {why}")),
-                elapsed,
-            );
+            let why = pass_on_deadline(panic, "panicked");
+            return CandidateRun::without_frame(name, Verdict::Error(why), elapsed);
         }
     };
     if let Some(why) = shape_problem(&reference.frame, &frame) {
@@ -578,6 +566,16 @@ fn channels(frame: &Frame) -> String {
 }
 
 /// The message a panic carried.
+/// `what: message` for a caught panic; a deadline's unwinding
+/// ([`deadline::Exceeded`]) is not a crash and goes on unwinding to the
+/// runner that set the deadline.
+fn pass_on_deadline(panic: Box<dyn std::any::Any + Send>, what: &str) -> String {
+    if deadline::is_exceeded(&*panic) {
+        std::panic::resume_unwind(panic);
+    }
+    format!("{what}: {}", panic_message(&*panic))
+}
+
 pub fn panic_message(panic: &(dyn std::any::Any + Send)) -> String {
     panic
         .downcast_ref::<&str>()

@@ -602,3 +602,91 @@ fn show_pictures_an_antialiased_case_by_its_resolved_coverage() {
     let [r, g, b] = reference.get_pixel(20, 20).0;
     assert!(r == g && g == b && r > 0 && r < 128, "{:?}", [r, g, b]);
 }
+
+/// A polygon of 800 pseudo-random vertices on a 64² canvas, antialiased:
+/// its edges cross each other tens of thousands of times, and the
+/// reference's exact areas take a minute or more on this machine.
+fn slow_case() -> String {
+    let mut state: u64 = 5;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 33) % 1025
+    };
+    let points: Vec<String> = (0..800)
+        .map(|_| format!("[{}, {}]", next() as f64 / 16.0, next() as f64 / 16.0))
+        .collect();
+    format!(
+        r#"{{"name": "slow", "canvas": {{"width": 64, "height": 64}},
+  "rules": {{"subpixel_bits": 8}},
+  "effects": {{"antialias": {{"samples": 16, "pattern": "standard"}}}},
+  "primitives": [{{"polygon": [{}]}}]}}"#,
+        points.join(", ")
+    )
+}
+
+#[test]
+fn a_case_over_the_time_limit_is_an_error_and_the_others_still_run() {
+    let slow = slow_case();
+    let dir = workspace(
+        "timeout",
+        &[("cases/a.json", SINGLE), ("cases/slow.json", &slow)],
+    );
+    let started = std::time::Instant::now();
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            "cases",
+            "--case-timeout",
+            "0.5",
+            "--report",
+            "report",
+        ],
+    );
+    let elapsed = started.elapsed();
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains("LIMIT slow  cases/slow.json: the reference took longer than the time limit of 0.5 s per case (raise it with --case-timeout)"),
+        "{t}"
+    );
+    assert!(t.contains("PASS  a     production"), "{t}");
+    assert!(
+        t.contains("2 case files, 0 unreadable, 1 over the time limit"),
+        "{t}"
+    );
+    assert_no_panic(&out);
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("report/report.json")).unwrap())
+            .unwrap();
+    let slow = &report["cases"][1];
+    assert_eq!(slow["status"], "limit-exceeded", "{slow}");
+    assert_eq!(report["totals"]["limit_exceeded"], 1);
+    assert_eq!(report["limits"]["case_timeout_s"], 0.5);
+    let junit = std::fs::read_to_string(dir.join("report/junit.xml")).unwrap();
+    assert!(junit.contains("limit-exceeded"), "{junit}");
+    assert!(junit.contains("errors=\"1\""), "{junit}");
+    // The reference stopped at the limit rather than finishing and being
+    // judged afterwards: uncapped, this case takes a minute or more. (A
+    // loose bound: a shared machine may be slow, never 30 s slow.)
+    assert!(
+        elapsed < std::time::Duration::from_secs(30),
+        "the run took {elapsed:?}: the reference does not poll its deadline"
+    );
+}
+
+#[test]
+fn a_time_limit_must_be_a_number_of_seconds() {
+    let dir = workspace("timeout-usage", &[("cases/a.json", SINGLE)]);
+    for bad in ["-1", "NaN", "inf", "soon"] {
+        let flag = format!("--case-timeout={bad}");
+        let out = rastercheck(&dir, &["run", "cases", &flag]);
+        let t = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {t}");
+        assert!(t.contains("expected a number of seconds"), "{bad}: {t}");
+    }
+    let out = rastercheck(&dir, &["run", "cases", "--case-timeout", "0"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+}

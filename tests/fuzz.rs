@@ -87,6 +87,7 @@ fn check(text: &str) -> Result<(), TestCaseError> {
     let limits = Limits {
         max_canvas_pixels: 64 * 64,
         max_primitives: 2000,
+        ..Limits::default()
     };
     let result = catch_unwind(|| parse_case(text, "fuzz.json", &limits));
     prop_assert!(result.is_ok(), "the reader panicked on {:?}", text);

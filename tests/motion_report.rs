@@ -19,7 +19,7 @@ use rastercheck::rasterizer::Rasterizer;
 use rastercheck::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
 use rastercheck::report::{self, png};
 use rastercheck::runner::{CaseOutcome, Selection};
-use rastercheck::scene::Scene;
+use rastercheck::scene::{Limits, Scene};
 use rastercheck::suite::{self, CaseFile, GoldenStatus};
 use sliding::{Given, Slide};
 
@@ -81,10 +81,7 @@ fn write_report(dir: &Path, outcomes: &[CaseOutcome]) -> (PathBuf, Value) {
                 foil: false,
             })
             .collect(),
-        LimitsInfo {
-            max_canvas_pixels: 1 << 24,
-            max_primitives: 100_000,
-        },
+        LimitsInfo::of(&Limits::default()),
     );
     report.cases = outcomes
         .iter()

@@ -152,6 +152,10 @@ fn draw<E: EdgeInt>(
         rows_from: 0,
     };
     for (index, primitive) in scene.primitives.iter().enumerate() {
+        if index % 64 == 0 {
+            // The per-case time limit, polled every few primitives.
+            crate::deadline::check();
+        }
         if !keep(index) {
             continue;
         }

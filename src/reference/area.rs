@@ -69,6 +69,7 @@ pub fn exact_areas(scene: &Scene) -> Vec<RBig> {
     let (width, height) = (scene.canvas.width as usize, scene.canvas.height as usize);
     let mut areas = vec![RBig::ZERO; width * height];
     for index in 0..scene.primitives.len() {
+        crate::deadline::check();
         if let Some(outline) = outline(scene, index) {
             add_pixel_areas(&outline, width, height, &mut areas);
         }
@@ -320,6 +321,7 @@ where
     let mut active: Vec<usize> = Vec::new();
     let two = RBig::from(2u8);
     for pair in heights.windows(2) {
+        crate::deadline::check();
         let (y0, y1) = (&pair[0], &pair[1]);
         while next < edges.len() && edges[next].top[1] <= *y0 {
             active.push(next);

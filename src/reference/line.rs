@@ -71,6 +71,7 @@ pub fn visit<F: FnMut(usize, RBig)>(
             let hi = |k: usize| a[k].clone().max(b[k].clone()) + &half;
             let xs = grid.centre_range(&lo(0), &hi(0), canvas.width);
             for y in grid.centre_range(&lo(1), &hi(1), canvas.height) {
+                crate::deadline::check();
                 for x in xs.clone() {
                     let p = [grid.centre(i64::from(x)), grid.centre(i64::from(y))];
                     if region.covers(&p) {
@@ -101,6 +102,7 @@ fn midpoint<F: FnMut(u32, u32, Point<IBig>)>(
         a[major].clone().max(b[major].clone()),
     );
     for i in grid.centre_range(&lo, &hi, sizes[major]) {
+        crate::deadline::check();
         let c = grid.centre(i64::from(i));
         if last_pixel == LastPixel::Exclude && c == b[major] {
             continue;
@@ -154,6 +156,7 @@ fn diamond_exit<F: FnMut(u32, u32, Point<IBig>)>(
     let lo = a[major].clone().min(b[major].clone()) - &grid.scale;
     let hi = a[major].clone().max(b[major].clone()) + &grid.scale;
     for i in grid.centre_range(&lo, &hi, sizes[major]) {
+        crate::deadline::check();
         let c = grid.centre(i64::from(i));
         // The line's minor coordinate at c, in pixels, rounded down.
         let mut num = &a[minor] * &d[major] + (&c - &a[major]) * &d[minor];

@@ -124,6 +124,7 @@ fn visit_scene<F>(
     let fast = on.fits_i128 && arithmetic == Arithmetic::Auto;
     let (grid, canvas, cull) = (&on.grid, scene.canvas, scene.rules.cull);
     for (index, (primitive, points)) in scene.primitives.iter().zip(&on.points).enumerate() {
+        crate::deadline::check();
         match primitive {
             Primitive::Triangle(_) if fast => {
                 triangle::visit(grid, canvas, points, to_i128, rule, cull, |p, e, a| {

@@ -126,6 +126,7 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
         let xs = xs[0].max(0)..=xs[1].min(i64::from(width) - 1);
         let ys = ys[0].max(0)..=ys[1].min(i64::from(height) - 1);
         for y in ys {
+            crate::deadline::check();
             for x in xs.clone() {
                 let corner = [IBig::from(x) * &scale, IBig::from(y) * &scale];
                 let pixel = &mut sums[y as usize * width as usize + x as usize];

@@ -180,6 +180,7 @@ fn visit_nudged<T, F>(
     // every edge of the row.
     let mut change = vec![0i64; columns.len() + 1];
     for y in ys {
+        crate::deadline::check();
         let py = to_t(&grid.centre(i64::from(y)));
         change.iter_mut().for_each(|c| *c = 0);
         for edge in edges.iter().filter(|e| nudge.spans(&e.lo, &e.hi, &py)) {

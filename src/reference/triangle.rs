@@ -198,6 +198,7 @@ pub fn visit<T, F>(
     let least = setup.owns.map(|owns| T::from_i64(i64::from(!owns)));
     let zero = T::zero();
     for y in ys {
+        crate::deadline::check();
         let py = centre(y);
         debug_assert!(py == to_t(&grid.centre(i64::from(y))));
         let first = [x0.clone(), py.clone()];

@@ -301,7 +301,7 @@ table.cases { width:100%; } table.cases td { font-size:13px; }
 table.cases td.id { font-family:ui-monospace,Menlo,Consolas,monospace; font-size:12.5px; white-space:nowrap; }
 .badge { display:inline-block; min-width:44px; text-align:center; font-size:11px; font-weight:700; letter-spacing:.03em; color:#fff; border-radius:4px; padding:1px 6px; margin-right:6px; }
 .pass { background:var(--pass); } .fail { background:var(--fail); } .foil { background:var(--foil); }
-.unsupported { background:var(--unsupported); } .error, .unreadable, .reference-failed, .differ { background:var(--error); }
+.unsupported { background:var(--unsupported); } .error, .unreadable, .reference-failed, .limit-exceeded, .differ { background:var(--error); }
 .not-run, .missing { background:#8c959f; } .match { background:var(--pass); }
 .metric { color:var(--muted); font-size:12px; }
 .card { background:var(--card); border:1px solid var(--line); border-left:5px solid var(--line); border-radius:8px; padding:14px 16px; margin:16px 0; }
@@ -1077,8 +1077,8 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
     let g = &t.golden;
     let _ = write!(
         html,
-        "<div class=\"panel\"><b>{}</b> case files · {} unreadable · {} reference failures · {} not run<br>golden files: {} match, {} differ, {} missing</div></div>",
-        t.cases, t.unreadable, t.reference_failed, t.not_run, g.matching, g.differing, g.missing
+        "<div class=\"panel\"><b>{}</b> case files · {} unreadable · {} reference failures · {} over the time limit · {} not run<br>golden files: {} match, {} differ, {} missing</div></div>",
+        t.cases, t.unreadable, t.reference_failed, t.limit_exceeded, t.not_run, g.matching, g.differing, g.missing
     );
 
     // Cards: chosen over the whole run, the most important first.

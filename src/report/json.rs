@@ -46,6 +46,20 @@ pub struct RasterizerInfo {
 pub struct LimitsInfo {
     pub max_canvas_pixels: u64,
     pub max_primitives: usize,
+    pub max_samples: u64,
+    /// Seconds per rasterizer and case; `null` for none.
+    pub case_timeout_s: Option<f64>,
+}
+
+impl LimitsInfo {
+    pub fn of(limits: &crate::scene::Limits) -> LimitsInfo {
+        LimitsInfo {
+            max_canvas_pixels: limits.max_canvas_pixels,
+            max_primitives: limits.max_primitives,
+            max_samples: limits.max_samples,
+            case_timeout_s: limits.case_timeout.map(|d| d.as_secs_f64()),
+        }
+    }
 }
 
 #[derive(Clone, Debug, Default, Serialize)]
@@ -53,6 +67,8 @@ pub struct Totals {
     pub cases: usize,
     pub unreadable: usize,
     pub reference_failed: usize,
+    /// Cases the reference could not finish within `--case-timeout`.
+    pub limit_exceeded: usize,
     pub not_run: usize,
     /// Per rasterizer, in the order of `rasterizers`.
     pub verdicts: Vec<RasterizerTotals>,
@@ -79,7 +95,8 @@ pub struct CaseEntry {
     pub path: String,
     /// The first segment of the id.
     pub family: String,
-    /// `ran`, `unreadable`, `reference-failed` or `not-run`.
+    /// `ran`, `unreadable`, `reference-failed`, `limit-exceeded` or
+    /// `not-run`.
     pub status: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
@@ -397,11 +414,9 @@ impl CaseEntry {
             None => "ran",
             Some(Problem::Unreadable(_)) => "unreadable",
             Some(Problem::ReferenceFailed(_)) => "reference-failed",
+            Some(Problem::LimitExceeded(_)) => "limit-exceeded",
         };
-        entry.error = outcome.problem.as_ref().map(|p| match p {
-            Problem::Unreadable(e) => e.clone(),
-            Problem::ReferenceFailed(e) => format!("the reference failed: {e}"),
-        });
+        entry.error = outcome.problem.as_ref().map(Problem::message);
         if let Some(scene) = &outcome.scene {
             entry.name = Some(scene.name.clone());
             entry.description = Some(scene.description.clone());
@@ -485,6 +500,7 @@ impl Report {
             match case.status {
                 "unreadable" => totals.unreadable += 1,
                 "reference-failed" => totals.reference_failed += 1,
+                "limit-exceeded" => totals.limit_exceeded += 1,
                 "not-run" => totals.not_run += 1,
                 _ => {}
             }

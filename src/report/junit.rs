@@ -11,8 +11,10 @@ pub fn render(report: &Report) -> String {
     let mut xml = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     let t = &report.totals;
     let failures: usize = t.verdicts.iter().map(|v| v.tally.fail).sum();
-    let errors: usize =
-        t.verdicts.iter().map(|v| v.tally.error).sum::<usize>() + t.unreadable + t.reference_failed;
+    let errors: usize = t.verdicts.iter().map(|v| v.tally.error).sum::<usize>()
+        + t.unreadable
+        + t.reference_failed
+        + t.limit_exceeded;
     let tests: usize = report.cases.iter().map(|c| c.results.len().max(1)).sum();
     xml.push_str(&format!(
         "<testsuites name=\"rastercheck\" tests=\"{tests}\" failures=\"{failures}\" errors=\"{errors}\">\n"
@@ -28,7 +30,7 @@ pub fn render(report: &Report) -> String {
             "  <testsuite name=\"{}\" tests=\"{suite_tests}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\">\n",
             escape(&rasterizer.name),
             tally.fail,
-            tally.error + t.unreadable + t.reference_failed,
+            tally.error + t.unreadable + t.reference_failed + t.limit_exceeded,
             tally.unsupported
         ));
         for case in &report.cases {

@@ -24,6 +24,14 @@ use super::{Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, TimePin, T
 pub struct Limits {
     pub max_canvas_pixels: u64,
     pub max_primitives: usize,
+    /// Sample points per case: pixels × spatial samples × time samples
+    /// (the last only when something moves). It bounds the frames'
+    /// memory and the work of each primitive.
+    pub max_samples: u64,
+    /// Wall time each rasterizer (the reference, then each candidate) may
+    /// spend on one case; `None` for no limit. Not a property of the file:
+    /// the reader ignores it, the runner enforces it ([`crate::deadline`]).
+    pub case_timeout: Option<std::time::Duration>,
 }
 
 impl Default for Limits {
@@ -31,6 +39,8 @@ impl Default for Limits {
         Limits {
             max_canvas_pixels: limits::DEFAULT_MAX_CANVAS_PIXELS,
             max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
+            max_samples: limits::DEFAULT_MAX_SAMPLES,
+            case_timeout: Some(limits::DEFAULT_CASE_TIMEOUT),
         }
     }
 }
@@ -328,7 +338,48 @@ impl Reader<'_> {
         };
         self.check_attribute_counts(&scene, &primitives_path)?;
         self.check_combinations(&scene, &fields)?;
+        self.check_samples(&scene)?;
         Ok(scene)
+    }
+
+    /// Pixels × spatial samples × time samples within `max_samples`; time
+    /// samples count only when something moves (otherwise no time loop
+    /// runs, SPEC.md §15.1).
+    fn check_samples(&self, scene: &Scene) -> Result<()> {
+        let pixels = u64::from(scene.canvas.width) * u64::from(scene.canvas.height);
+        let spatial = scene.effects.antialias.as_ref().map_or(1, |a| a.samples);
+        let time = match &scene.effects.motion_blur {
+            Some(blur) if scene.moves() => blur.samples,
+            _ => 1,
+        };
+        // At most 2^28 · 2^8 · 2^10: no overflow.
+        let total = pixels * u64::from(spatial) * u64::from(time);
+        if total <= self.limits.max_samples {
+            return Ok(());
+        }
+        let effects = Path::root().key("effects");
+        let (path, factors) = match (spatial, time) {
+            (1, 1) => (Path::root().key("canvas"), String::new()),
+            (s, 1) => (
+                effects.key("antialias").key("samples"),
+                format!(" × {s} samples"),
+            ),
+            (1, t) => (
+                effects.key("motion_blur").key("samples"),
+                format!(" × {t} time samples"),
+            ),
+            (s, t) => (
+                effects.key("motion_blur").key("samples"),
+                format!(" × {s} samples × {t} time samples"),
+            ),
+        };
+        fail(
+            &path,
+            format!(
+                "{pixels} pixels{factors} = {total} sample points exceed the limit of {} (raise it with --max-samples)",
+                self.limits.max_samples
+            ),
+        )
     }
 
     /// Rules, primitives, effects and expectations that are each valid

@@ -315,6 +315,12 @@ pub mod limits {
     pub const DEFAULT_MAX_CANVAS_PIXELS: u64 = 1 << 24;
     /// Default largest number of primitives in one case.
     pub const DEFAULT_MAX_PRIMITIVES: usize = 100_000;
+    /// Default largest number of sample points in one case (pixels ×
+    /// spatial samples × time samples): 2^26, a 4096² canvas at 4×, whose
+    /// frame of coverage counts and owners takes 384 MiB.
+    pub const DEFAULT_MAX_SAMPLES: u64 = 1 << 26;
+    /// Default wall time per rasterizer and case.
+    pub const DEFAULT_CASE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(60);
     /// Largest number of attributes a vertex may carry.
     pub const MAX_ATTRIBUTES: usize = 16;
     /// |attribute| and |z| bound, so that every f32 pipeline stays finite.
