@@ -9,29 +9,43 @@
 //!
 //! - **Generation** is deterministic from the seed: case `i` of seed `s`
 //!   comes from its own [`Rng`] stream, so a case can be regenerated without
-//!   the ones before it. Five families, taken in turn unless one is named:
+//!   the ones before it. Six families, taken in turn unless one is named:
 //!   random triangles (tie-forcing half-pixel vertices, subpixel-grid and
 //!   free rationals, vertices anywhere in the coordinate range, pairs sharing
 //!   an edge), lines of every rule (strips, wide lines, both `last_pixel`s),
 //!   and watertight meshes (fans around sample centres, jittered grids with
 //!   shared vertices, convex fans and ear-clipped star polygons) with
 //!   `expect.watertight: true`, polygons (one to three contours with
-//!   repeated, collinear and doubled vertices, both fills) and antialiased
-//!   scenes (every pattern, 1 to 256 samples). No float function whose result may differ
-//!   between machines is used (the sines are a fixed polynomial).
+//!   repeated, collinear and doubled vertices, both fills), antialiased
+//!   scenes (every pattern, 1 to 256 samples) and moving scenes (SPEC.md
+//!   §15: translations, rotations, collapses through a point, vertices
+//!   through sample centres, winding flips, double roots, vanishing τ²
+//!   coefficients, under every time pattern and part of the shutter). No
+//!   float function whose result may differ between machines is used (the
+//!   sines are a fixed polynomial).
 //! - **Failure kinds** ([`Kind`]): a candidate that breaks (error), holes and
-//!   overdraw in a mesh, crowded midpoint-line steps, coverage, and
-//!   interpolation. A scene failing several checks is shrunk for the first
-//!   in that order (or the one `--check` asks for).
+//!   overdraw in a mesh, crowded midpoint-line steps, coverage, antialiased
+//!   coverage, time coverage, and interpolation. A scene failing several
+//!   checks is shrunk for the first in that order (or the one `--check`
+//!   asks for).
+//! - **Fair scenes only**: a scene the exact method with the case's own
+//!   samples fails is no test of a candidate, and is skipped: the exact
+//!   N-sample mask under antialiasing, and for a moving scene the sample
+//!   method of §15.3 with the case's own instants, each test decided by the
+//!   static reference (`sampled_time`), whose RMS can exceed the
+//!   statistical bound where few pixels move.
 //! - **Shrinking** is a greedy delta-debugging loop. Each pass proposes
 //!   simpler scenes and keeps the first that still fails the same kind; the
 //!   loop stops when a whole round of passes makes no progress (or after
 //!   [`SHRINK_BUDGET`] evaluations). Passes: remove primitives (halves, then
 //!   quarters, ... then one at a time); crop the canvas to the failing
 //!   samples' neighbourhood and trim its sides, translating everything by
-//!   whole pixels; drop depth, attributes, w, and non-default rules, line
-//!   options and expectations that do not matter; move vertices to simpler
-//!   values (shared vertices together, then each on its own: integers near
+//!   whole pixels (a moving vertex's `from` and `to` together); drop depth,
+//!   attributes, w, and non-default rules, line options and expectations
+//!   that do not matter; fewer samples and time samples, the whole shutter,
+//!   the simplest patterns and seeds; make moving vertices static; move
+//!   vertices and the ends of their paths to simpler values (shared
+//!   vertices together, then each on its own: integers near
 //!   the canvas, coarser dyadic grids, halfway in from far away); simplify
 //!   depth, w and attribute values; lower `subpixel_bits` when the snapping
 //!   still matters. Every accepted step makes a well-founded measure
@@ -55,10 +69,11 @@ use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference::{self, exact::snap};
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS, W_LIMIT};
+use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{
     parse_case, Antialias, Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel,
-    Limits, Line, LineParameter, LineRule, Number, Pattern, Polygon, PolygonFill, Primitive, Rules,
-    Scene, Triangle, Vertex,
+    Limits, Line, LineParameter, LineRule, MotionBlur, Number, Pattern, Polygon, PolygonFill,
+    Primitive, Rules, Scene, TimePattern, TimePin, Triangle, Vertex,
 };
 use crate::suite::{self, ReferenceRun, Verdict};
 
@@ -160,15 +175,22 @@ pub enum Family {
     /// `effects.antialias` (every pattern, 1 to 256 samples, adaptive or
     /// not, position bits 4 to 16).
     Antialias,
+    /// Moving triangles and parallelogram lines under
+    /// `effects.motion_blur` (SPEC.md §15): translations, rotations,
+    /// collapses through a point, vertices through sample centres, winding
+    /// flips, double roots, vanishing τ² coefficients; every time pattern,
+    /// 1 to 64 time samples, parts of the shutter, sometimes antialiased.
+    Motion,
 }
 
 impl Family {
-    pub const ALL: [Family; 5] = [
+    pub const ALL: [Family; 6] = [
         Family::Triangles,
         Family::Meshes,
         Family::Lines,
         Family::Polygons,
         Family::Antialias,
+        Family::Motion,
     ];
 
     pub fn name(self) -> &'static str {
@@ -178,6 +200,7 @@ impl Family {
             Family::Meshes => "meshes",
             Family::Polygons => "polygons",
             Family::Antialias => "antialias",
+            Family::Motion => "motion",
         }
     }
 
@@ -198,6 +221,7 @@ pub fn generate(seed: u64, index: u64, family: Option<Family>) -> (Family, Scene
             Family::Meshes => mesh_scene(&mut rng),
             Family::Polygons => Some(polygon_scene(&mut rng)),
             Family::Antialias => Some(antialias_scene(&mut rng)),
+            Family::Motion => Some(motion_scene(&mut rng)),
         };
         if let Some(mut scene) = scene.filter(|s| valid(s).is_ok()) {
             scene.name = format!("fuzz_{}_{seed}_{index}", family.name());
@@ -587,6 +611,475 @@ fn antialias_scene(rng: &mut Rng) -> Scene {
     scene
 }
 
+// Motion blur (SPEC.md §15).
+
+type Point = [RBig; 2];
+
+fn ratio(n: i64, d: i64) -> RBig {
+    Number::ratio(n, d).as_rbig().clone()
+}
+
+fn plus(a: &Point, b: &Point) -> Point {
+    [&a[0] + &b[0], &a[1] + &b[1]]
+}
+
+fn minus(a: &Point, b: &Point) -> Point {
+    [&a[0] - &b[0], &a[1] - &b[1]]
+}
+
+fn times(k: &RBig, a: &Point) -> Point {
+    [k * &a[0], k * &a[1]]
+}
+
+/// A coordinate within 4 px of a canvas side of `size`: on the half-pixel
+/// grid (vertices on sample centres and pixel edges: ties), on the 1/256
+/// and 1/4096 grids, or a free rational.
+fn near(rng: &mut Rng, size: u32) -> RBig {
+    let span = i64::from(size) + 4;
+    match rng.below(10) {
+        0..=4 => ratio(rng.range(-8, 2 * span), 2),
+        5..=6 => ratio(rng.range(-4 * 256, span * 256), 256),
+        7..=8 => ratio(rng.range(-4 * 4096, span * 4096), 4096),
+        _ => ratio(rng.range(-4 << 20, span << 20), rng.range(1, 1 << 20)),
+    }
+}
+
+fn near_point(rng: &mut Rng, canvas: Canvas) -> Point {
+    [near(rng, canvas.width), near(rng, canvas.height)]
+}
+
+/// The centre of a random pixel of the canvas: the sample without
+/// antialiasing.
+fn pixel_centre(rng: &mut Rng, canvas: Canvas) -> Point {
+    [
+        ratio(2 * rng.range(0, canvas.width.into()) + 1, 2),
+        ratio(2 * rng.range(0, canvas.height.into()) + 1, 2),
+    ]
+}
+
+/// A sample centre or any point near the canvas.
+fn pivot(rng: &mut Rng, canvas: Canvas) -> Point {
+    if rng.chance(1, 2) {
+        pixel_centre(rng, canvas)
+    } else {
+        near_point(rng, canvas)
+    }
+}
+
+/// A displacement of at most `reach` px per axis: whole and half pixels
+/// (a vertex on a sample centre stays on one), 1/256 steps, none, or free.
+fn step(rng: &mut Rng, reach: i64) -> Point {
+    let mut axis = || match rng.below(8) {
+        0..=3 => ratio(rng.range(-2 * reach, 2 * reach + 1), 2),
+        4..=5 => ratio(rng.range(-256 * reach, 256 * reach + 1), 256),
+        6 => RBig::ZERO,
+        _ => ratio(
+            rng.range(-(reach << 20), (reach << 20) + 1),
+            rng.range(1, 1 << 20),
+        ),
+    };
+    [axis(), axis()]
+}
+
+/// Paths `[from, to]` of `n` vertices (2 or 3) under one of the motions
+/// that make time coverage hard to get right (SPEC.md §15.2): a
+/// translation (linear edge functions), a rotation and a free motion
+/// (quadratics with irrational roots), a scaling through a point (the
+/// primitive collapses to it at a rational instant, and turns inside out
+/// for a negative factor), a vertex through a sample centre at a rational
+/// instant, a vertex through the opposite edge (the winding flips), an
+/// edge touching a sample centre without crossing it (a double root),
+/// parallel velocities (the τ² coefficient vanishes, exactly or nearly),
+/// and for lines a direction turning through 45° (the major axis changes
+/// at τ = ½).
+fn paths(rng: &mut Rng, canvas: Canvas, n: usize) -> Vec<[Point; 2]> {
+    let reach = i64::from(canvas.width.max(canvas.height)) / 2 + 1;
+    let starts =
+        |rng: &mut Rng| -> Vec<Point> { (0..n).map(|_| near_point(rng, canvas)).collect() };
+    let still = |points: Vec<Point>| -> Vec<[Point; 2]> {
+        points.into_iter().map(|p| [p.clone(), p]).collect()
+    };
+    match rng.below(10) {
+        0 => {
+            let d = step(rng, reach);
+            starts(rng)
+                .into_iter()
+                .map(|p| {
+                    let to = plus(&p, &d);
+                    [p, to]
+                })
+                .collect()
+        }
+        1 => {
+            // The rotation's sine and cosine rounded to 1/4096: the path
+            // of each vertex is a chord, not an arc, as every renderer's is.
+            let c = pivot(rng, canvas);
+            let (s, co) = sin_cos(rng.uniform(-std::f64::consts::PI, std::f64::consts::PI));
+            let (s, co) = (
+                ratio((s * 4096.0).round() as i64, 4096),
+                ratio((co * 4096.0).round() as i64, 4096),
+            );
+            starts(rng)
+                .into_iter()
+                .map(|p| {
+                    let r = minus(&p, &c);
+                    let to = [
+                        &c[0] + &co * &r[0] - &s * &r[1],
+                        &c[1] + &s * &r[0] + &co * &r[1],
+                    ];
+                    [p, to]
+                })
+                .collect()
+        }
+        2 => {
+            // Through c with factor k: every vertex is at c when
+            // (1 − τ) + τ·k = 0, at τ = 1/(1 − k): ½ for −1, ¼ for −3,
+            // ¾ for −1/3, at shutter close for 0.
+            let c = pivot(rng, canvas);
+            let (num_k, den_k) =
+                *rng.pick(&[(-1, 1), (-3, 1), (-1, 3), (0, 1), (2, 1), (-2, 1), (1, 2)]);
+            let k = ratio(num_k, den_k);
+            starts(rng)
+                .into_iter()
+                .map(|p| {
+                    let to = plus(&c, &times(&k, &minus(&p, &c)));
+                    [p, to]
+                })
+                .collect()
+        }
+        3 => {
+            // Vertex k from c − a·d to c + b·d: on the sample centre c at
+            // τ = a/(a + b); the others still, or all translated.
+            let mut out = still(starts(rng));
+            if rng.chance(1, 2) {
+                let d = step(rng, 2);
+                for path in &mut out {
+                    path[1] = plus(&path[1], &d);
+                }
+            }
+            let k = rng.below(n as u64) as usize;
+            let c = pixel_centre(rng, canvas);
+            let (a, b) = (rng.range(1, 8), rng.range(1, 8));
+            let d = [ratio(rng.range(-8, 9), 4), ratio(rng.range(-8, 9), 4)];
+            out[k] = [
+                minus(&c, &times(&ratio(a, 1), &d)),
+                plus(&c, &times(&ratio(b, 1), &d)),
+            ];
+            out
+        }
+        4 if n == 3 => {
+            // Vertex k to its mirror image through the midpoint of the
+            // opposite edge: zero area at τ = ½ and the winding flipped
+            // after; with another vertex moving too, the flip is at an
+            // irrational instant.
+            let p = starts(rng);
+            let mut out = still(p.clone());
+            let k = rng.below(3) as usize;
+            out[k][1] = minus(&plus(&p[(k + 1) % 3], &p[(k + 2) % 3]), &p[k]);
+            if rng.chance(1, 3) {
+                let j = (k + 1) % 3;
+                out[j][1] = plus(&out[j][1], &step(rng, 2));
+            } else if rng.chance(1, 2) {
+                let d = step(rng, reach);
+                for path in &mut out {
+                    path[1] = plus(&path[1], &d);
+                }
+            }
+            out
+        }
+        5 => double_root(rng, canvas, n),
+        6 => {
+            // Velocities k·d: cross(v_a, v_b) = 0, so every edge
+            // function and the area are linear in τ; nearly so when one
+            // velocity is nudged by 2^-8 to 2^-16 (a root far away).
+            let d = step(rng, 3);
+            let nudge = rng.chance(1, 3);
+            starts(rng)
+                .into_iter()
+                .map(|p| {
+                    let k = ratio(rng.range(-4, 5), *rng.pick(&[1, 2]));
+                    let mut to = plus(&p, &times(&k, &d));
+                    if nudge && rng.chance(1, 2) {
+                        let axis = rng.below(2) as usize;
+                        to[axis] += ratio(*rng.pick(&[1, -1]), *rng.pick(&[256, 4096, 65536]));
+                    }
+                    [p, to]
+                })
+                .collect()
+        }
+        7 if n == 2 => {
+            // Direction (l, l − k) at open, (l, l + k) at close: exactly
+            // diagonal at τ = ½, where the major axis changes.
+            let a = near_point(rng, canvas);
+            let l = ratio(rng.range(2, 2 * reach + 1), 2);
+            let k = ratio(rng.range(1, 2 * reach), 4);
+            let (sx, sy) = (ratio(*rng.pick(&[1, -1]), 1), ratio(*rng.pick(&[1, -1]), 1));
+            let mut d0 = [&sx * &l, &sy * (&l - &k)];
+            let mut d1 = [&sx * &l, &sy * (&l + &k)];
+            if rng.chance(1, 2) {
+                d0.swap(0, 1);
+                d1.swap(0, 1);
+            }
+            let t = step(rng, 2);
+            let a1 = plus(&a, &t);
+            let b0 = plus(&a, &d0);
+            let b1 = plus(&a1, &d1);
+            vec![[a, a1], [b0, b1]]
+        }
+        _ => starts(rng)
+            .into_iter()
+            .map(|p| {
+                let to = near_point(rng, canvas);
+                [p, to]
+            })
+            .collect(),
+    }
+}
+
+/// Paths whose first two vertices a, b make an edge that touches a sample
+/// centre c at τ0 without crossing it: with a(τ0) = c + u,
+/// b(τ0) = c + λu and v_b = λ·v_a + μ·u, the edge function at c is
+/// cross(a − c, b − c) = μ·cross(v_a, u)·(τ − τ0)², a double root (and
+/// identically zero when v_a ∥ u: the sample rides the edge's line).
+fn double_root(rng: &mut Rng, canvas: Canvas, n: usize) -> Vec<[Point; 2]> {
+    let c = pixel_centre(rng, canvas);
+    let (t_num, t_den) = *rng.pick(&[(1, 2), (1, 4), (3, 4), (3, 8)]);
+    let tau0 = ratio(t_num, t_den);
+    let mut u = [ratio(rng.range(-6, 7), 2), ratio(rng.range(-6, 7), 2)];
+    if u[0] == RBig::ZERO && u[1] == RBig::ZERO {
+        u[0] = RBig::ONE;
+    }
+    let (l_num, l_den) = *rng.pick(&[(-1, 1), (-2, 1), (-1, 2), (-3, 1), (2, 1)]);
+    let lambda = ratio(l_num, l_den);
+    let va = [ratio(rng.range(-6, 7), 1), ratio(rng.range(-6, 7), 1)];
+    let mu = ratio(*rng.pick(&[1, -1, 2, -2]), 1);
+    let vb = plus(&times(&lambda, &va), &times(&mu, &u));
+    let a0 = minus(&plus(&c, &u), &times(&tau0, &va));
+    let b0 = minus(&plus(&c, &times(&lambda, &u)), &times(&tau0, &vb));
+    let (a1, b1) = (plus(&a0, &va), plus(&b0, &vb));
+    let mut out = vec![[a0, a1], [b0, b1]];
+    if n == 3 {
+        let p = near_point(rng, canvas);
+        let to = if rng.chance(1, 2) {
+            p.clone()
+        } else {
+            plus(&p, &step(rng, 2))
+        };
+        out.push([p, to]);
+    }
+    out
+}
+
+fn path_vertex(rng: &mut Rng, [from, to]: [Point; 2]) -> Vertex {
+    let mut v = Vertex::at(num(&from[0]), num(&from[1]));
+    // A vertex that stays put is sometimes written with from = to.
+    if to != from || rng.chance(1, 4) {
+        v.to = Some(Box::new([num(&to[0]), num(&to[1])]));
+    }
+    v
+}
+
+/// A moving triangle (two in three) or parallelogram line, in any winding.
+fn moving_primitive(rng: &mut Rng, canvas: Canvas) -> Primitive {
+    if rng.chance(1, 3) {
+        let [a, b]: [Vertex; 2] = paths(rng, canvas, 2)
+            .into_iter()
+            .map(|p| path_vertex(rng, p))
+            .collect::<Vec<_>>()
+            .try_into()
+            .expect("two paths");
+        let width = match rng.below(6) {
+            0 => Number::ratio(1, 2),
+            1 => Number::from_int(2),
+            2 => Number::ratio(3, 2),
+            3 => Number::ratio(1, 4),
+            _ => Number::ONE,
+        };
+        return Primitive::Line(Line {
+            vertices: [a, b],
+            rule: LineRule::Parallelogram,
+            width,
+            last_pixel: LastPixel::Include,
+            parameter: LineParameter::Major,
+            interpolation: Interpolation::Perspective,
+        });
+    }
+    let mut vertices: [Vertex; 3] = paths(rng, canvas, 3)
+        .into_iter()
+        .map(|p| path_vertex(rng, p))
+        .collect::<Vec<_>>()
+        .try_into()
+        .expect("three paths");
+    if rng.chance(1, 2) {
+        vertices.swap(1, 2);
+    }
+    vertices.rotate_left(rng.below(3) as usize);
+    Primitive::Triangle(Triangle {
+        vertices,
+        interpolation: Interpolation::Perspective,
+    })
+}
+
+/// `effects.motion_blur`: every pattern, N from 1 to 64 (M·N at most 64
+/// with M spatial samples, which keeps the instant-by-instant check of a
+/// failure cheap), the whole shutter or a part of it in 2^-16 steps.
+fn motion_blur(rng: &mut Rng, spatial: u32) -> MotionBlur {
+    let one = TIME_ONE;
+    let samples = (*rng.pick(&[1, 2, 3, 4, 5, 8, 16, 16, 32, 64]))
+        .min(64 / spatial.max(1))
+        .max(1);
+    let shutter = match rng.below(8) {
+        0..=3 => [0, one],
+        4 => {
+            let a = rng.below(4) as u32;
+            let b = rng.range(i64::from(a) + 1, 5) as u32;
+            [a * one / 4, b * one / 4]
+        }
+        5 => *rng.pick(&[[0, one / 2], [one / 2, one]]),
+        _ => {
+            let open = rng.below(u64::from(one)) as u32;
+            let close = rng.range(i64::from(open) + 1, i64::from(one) + 1) as u32;
+            [open, close]
+        }
+    };
+    let seed = match rng.below(4) {
+        0 => 0,
+        1 => rng.next_u64() >> 1,
+        _ => rng.below(1000),
+    };
+    MotionBlur {
+        shutter,
+        samples,
+        pattern: *rng.pick(&TimePattern::ALL),
+        seed,
+    }
+}
+
+/// `effects.antialias` for a moving scene: every pattern, 1 to 4 samples.
+fn motion_antialias(rng: &mut Rng) -> Antialias {
+    let pattern = *rng.pick(&Pattern::ALL);
+    let counts: &[u32] = match pattern {
+        Pattern::Standard => &[1, 2, 4],
+        Pattern::Grid | Pattern::Stratified => &[1, 4],
+        Pattern::Random | Pattern::NRooks => &[1, 2, 3, 4],
+    };
+    let samples = *rng.pick(counts);
+    debug_assert!(pattern.check_count(samples).is_ok());
+    Antialias {
+        samples,
+        pattern,
+        seed: if pattern.is_seeded() {
+            rng.below(1000)
+        } else {
+            0
+        },
+        adaptive: rng.chance(1, 3),
+        position_bits: if rng.chance(2, 3) {
+            8
+        } else {
+            rng.range(4, 17) as u32
+        },
+    }
+}
+
+/// One to three moving primitives (sometimes a triangle moving with the
+/// first across a shared edge), sometimes a static one of any kind, on a
+/// small canvas: the oracle certifies each spatial sample of each moving
+/// primitive (about 10 µs each), so a case stays within a few
+/// milliseconds.
+fn motion_scene(rng: &mut Rng) -> Scene {
+    let antialias = rng.chance(1, 4);
+    let sides: &[u32] = if antialias {
+        &[2, 4, 6, 8]
+    } else {
+        &[3, 4, 6, 8, 12, 16]
+    };
+    let canvas = Canvas {
+        width: *rng.pick(sides),
+        height: *rng.pick(sides),
+    };
+    let mut primitives: Vec<Primitive> = (0..rng.range(1, 4))
+        .map(|_| moving_primitive(rng, canvas))
+        .collect();
+    if let Some(Primitive::Triangle(t)) = primitives.first() {
+        if rng.chance(1, 4) {
+            // The other side of a moving edge, the same paths: each sample
+            // on it belongs to one of the two at every instant.
+            let k = rng.below(3) as usize;
+            let (a, b) = (t.vertices[k].clone(), t.vertices[(k + 1) % 3].clone());
+            let path = paths(rng, canvas, 1).remove(0);
+            let c = path_vertex(rng, path);
+            primitives.push(Primitive::Triangle(Triangle {
+                vertices: [b, a, c],
+                interpolation: Interpolation::Perspective,
+            }));
+        }
+    }
+    let mut polygons = false;
+    if rng.chance(1, 3) {
+        let still = match rng.below(4) {
+            0 if !antialias => {
+                polygons = true;
+                Primitive::Polygon(polygon(rng, canvas))
+            }
+            1 => {
+                let mut point = || position(rng, canvas);
+                let vertices = [point(), point()];
+                let rule = if antialias {
+                    LineRule::Parallelogram
+                } else {
+                    *rng.pick(&LineRule::ALL)
+                };
+                Primitive::Line(Line {
+                    vertices,
+                    rule,
+                    width: if rule.is_wide() {
+                        Number::from_int(2)
+                    } else {
+                        Number::ONE
+                    },
+                    last_pixel: LastPixel::Include,
+                    parameter: LineParameter::Major,
+                    interpolation: Interpolation::Perspective,
+                })
+            }
+            _ => plain_triangle(rng, canvas),
+        };
+        let at = rng.below(primitives.len() as u64 + 1) as usize;
+        primitives.insert(at, still);
+    }
+    let bits = match rng.below(6) {
+        0..=2 => 8,
+        3 => 4,
+        _ => rng.below(u64::from(MAX_SUBPIXEL_BITS) + 1) as u32,
+    };
+    let rules = Rules {
+        subpixel_bits: Some(bits),
+        fill_rule: if polygons {
+            *rng.pick(&FillRule::CONSISTENT)
+        } else {
+            *rng.pick(&FillRule::ALL)
+        },
+        cull: *rng.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
+    };
+    let none = Values {
+        attributes: 0,
+        depth: false,
+        w: false,
+    };
+    let mut scene = scene_of(canvas, rules, primitives, &none);
+    let spatial = if antialias {
+        let a = motion_antialias(rng);
+        let m = a.samples;
+        scene.effects.antialias = Some(a);
+        m
+    } else {
+        1
+    };
+    scene.effects.motion_blur = Some(motion_blur(rng, spatial));
+    scene
+}
+
 // Meshes, after the strategies of tests/properties.rs.
 
 type Exact2 = [RBig; 2];
@@ -906,15 +1399,14 @@ fn valid(scene: &Scene) -> Result<(), String> {
             return Err("attribute count".to_owned());
         }
     }
-    // Polygons and antialiasing have rules of their own (contours of at
-    // least 3 vertices, sample counts per pattern, no `all-edges` for
-    // polygons, no midpoint lines under antialiasing): the scene must read
-    // back from its case file, so that a shrunk counterexample is a case.
-    let polygons = scene
-        .primitives
-        .iter()
-        .any(|p| matches!(p, Primitive::Polygon(_)));
-    if polygons || scene.effects.antialias.is_some() {
+    // Polygons, antialiasing and motion have rules of their own (contours
+    // of at least 3 vertices, sample counts per pattern, no `all-edges` for
+    // polygons, no midpoint lines under antialiasing, only triangles and
+    // parallelogram lines move, no values and no sample expectations in a
+    // moving scene): the scene must read back from its case file, so that
+    // a shrunk counterexample is a case.
+    let motion = scene.effects.motion_blur.is_some() || scene.vertices().any(|v| v.to.is_some());
+    if scene.has_polygons() || scene.effects.antialias.is_some() || motion {
         let mut named = scene.clone();
         named.name = "fuzz".to_owned();
         named.description = "fuzz".to_owned();
@@ -944,18 +1436,23 @@ pub enum Kind {
     /// coverage error bounds, a resolve that is not the box resolve of the
     /// candidate's own mask (§14.3).
     Antialias,
+    /// Time coverage of a moving scene against the exact values: the RMS
+    /// over moving pixels, the largest error, values that are not numbers
+    /// (§15.4).
+    Time,
     /// Depth or an attribute beyond its bound (§6.3).
     Interpolation,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 7] = [
+    pub const ALL: [Kind; 8] = [
         Kind::Error,
         Kind::Holes,
         Kind::Overdraw,
         Kind::Lines,
         Kind::Coverage,
         Kind::Antialias,
+        Kind::Time,
         Kind::Interpolation,
     ];
 
@@ -967,6 +1464,7 @@ impl Kind {
             Kind::Lines => "lines",
             Kind::Coverage => "coverage",
             Kind::Antialias => "antialias",
+            Kind::Time => "time",
             Kind::Interpolation => "interpolation",
         }
     }
@@ -982,6 +1480,9 @@ impl Kind {
             Kind::Coverage => "covers exactly the reference's samples, with the same owners",
             Kind::Antialias => {
                 "resolves full pixels to exactly 1, empty ones to 0, within the coverage bounds"
+            }
+            Kind::Time => {
+                "estimates each pixel's time coverage within the time-coverage bounds, as the sample method with the case's own instants does"
             }
             Kind::Interpolation => "interpolates depth and attributes within the bound",
         }
@@ -1020,6 +1521,7 @@ impl Failure {
             Kind::Lines => &["lines:"],
             Kind::Coverage => &["coverage:"],
             Kind::Antialias => &["antialias:"],
+            Kind::Time => &["time:"],
             Kind::Interpolation => &["depth:", "attribute "],
         };
         let found: Vec<String> = self
@@ -1074,8 +1576,9 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
     // The exact N-sample method (the reference's mask, box-resolved) must
     // meet the case's coverage bounds: with few samples no sampler meets
     // piglit's RMS bound on some scenes, and such a scene says nothing
-    // about the candidate.
-    if scene.effects.antialias.is_some() {
+    // about the candidate. (A moving scene is judged on time coverage
+    // only; its fairness is checked below, when a candidate fails it.)
+    if scene.effects.antialias.is_some() && reference.time.is_none() {
         let mut exact = reference.frame.clone();
         exact.resolve();
         let m = crate::metrics::measure_with_areas(
@@ -1110,7 +1613,14 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
             focus: Vec::new(),
         }),
         (Verdict::Fail(reasons), Some(m), Some(frame)) => {
-            Outcome::Fail(classify(scene, &reference, &frame, &m, reasons))
+            let failure = classify(scene, &reference, &frame, &m, reasons);
+            let broken_values = m.time.as_ref().is_some_and(|t| t.invalid_values > 0);
+            if failure.kinds.contains(&Kind::Time) && !broken_values {
+                if let Err(why) = fair_time(scene, &reference) {
+                    return Outcome::Invalid(why);
+                }
+            }
+            Outcome::Fail(failure)
         }
         (Verdict::Fail(reasons), ..) => Outcome::Fail(Failure {
             kinds: vec![Kind::Error],
@@ -1121,10 +1631,22 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
 }
 
 /// The reference's frame, and the mesh interior for a mesh case (refused
-/// when the scene is no longer a mesh).
+/// when the scene is no longer a mesh); for a scene in which something
+/// moves, the certified time coverage as `run` computes it (refused when
+/// the oracle fails or breaks a pin of the case).
 fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
     let started = Instant::now();
     let plan = Plan::for_scene(scene);
+    if plan.motion.is_some() {
+        let run = suite::run_reference(scene);
+        match &run.time {
+            Some(Err(why)) => return Err(why.clone()),
+            Some(Ok(check)) if !check.broken_promises.is_empty() => {
+                return Err(check.broken_promises.join("; "))
+            }
+            _ => return Ok(run),
+        }
+    }
     let frame = reference::render(scene, &plan);
     let interior = if scene.expect.watertight {
         mesh_geometry(scene)?;
@@ -1272,6 +1794,11 @@ fn classify(
             focus.push((Kind::Antialias, pixels));
         }
     }
+    if let Some(t) = &m.time {
+        if !crate::metrics::time::failures(t).is_empty() {
+            focus.push((Kind::Time, time_focus(scene, r, candidate, t)));
+        }
+    }
     if m.channels.iter().any(|ch| !ch.within_bounds()) {
         let mut pixels = Vec::new();
         let exact = r.depth.iter().chain(&r.attributes);
@@ -1298,6 +1825,175 @@ fn classify(
         reasons,
         focus,
     }
+}
+
+/// The pixels whose time coverage is off by more than a bound allows
+/// (more than the RMS bound, or than the largest error allowed), the
+/// worst first; the worst pixel alone when no single one is. Each as its
+/// first sample slot (p · M for M spatial samples), as the shrinker crops.
+fn time_focus(
+    scene: &Scene,
+    reference: &Frame,
+    candidate: &Frame,
+    t: &crate::metrics::TimeMetrics,
+) -> Vec<usize> {
+    // A value that is not a number has an infinite error here.
+    let errors = crate::metrics::time::signed_errors(reference, candidate);
+    let allowed = [t.allowed_rms, t.allowed_error]
+        .into_iter()
+        .flatten()
+        .fold(f64::INFINITY, f64::min);
+    let mut pixels: Vec<usize> = (0..errors.len())
+        .filter(|&p| errors[p].abs() > allowed)
+        .collect();
+    // Largest error first; equal ones in pixel order.
+    pixels.sort_by(|&a, &b| errors[b].abs().total_cmp(&errors[a].abs()).then(a.cmp(&b)));
+    if pixels.is_empty() {
+        let [x, y] = t.worst_pixel;
+        pixels.push((y * reference.width + x) as usize);
+    }
+    let per_pixel = samples_per_pixel(scene);
+    pixels.into_iter().map(|p| p * per_pixel).collect()
+}
+
+/// Whether a moving scene is a fair test of its time bounds: the sample
+/// method of SPEC.md §15.3 with the case's own instants
+/// ([`sampled_time`]) meets them. The default RMS bound is statistical
+/// (about twice what independent instants give on average), so on a
+/// scene with few moving pixels an honest sampler can break it, and such
+/// a scene says nothing about a candidate; `Err` says why it is refused.
+/// Like the antialiasing check in [`evaluate`], which refuses a scene the
+/// exact N-sample method fails.
+fn fair_time(scene: &Scene, reference: &ReferenceRun) -> Result<(), String> {
+    use crate::metrics::time;
+    let whole = match &reference.time {
+        Some(Ok(check)) => Some(check.whole.as_slice()),
+        _ => None,
+    };
+    let Canvas { width, height } = scene.canvas;
+    let sampled = Frame::time_only(width, height, sampled_time(scene, &reference.plan));
+    let m = time::measure(&reference.frame, &sampled, whole, time::bounds(scene))
+        .ok_or("the reference has no time coverage for a moving scene")?;
+    let broken = time::failures(&m);
+    if broken.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "the sample method with the case's own instants breaks the time bounds: {}",
+            broken.join("; ")
+        ))
+    }
+}
+
+/// Each pixel's time coverage as SPEC.md §15.3's sample method estimates
+/// it with the case's own instants (each pixel's u from its seed), every
+/// test decided by the static reference at its exact instant: what every
+/// conforming sampler returns (production does, test by test:
+/// tests/motion_production.rs). Static primitives cover a sample at every
+/// instant or at none. Moving ones are tested only at the pixels of their
+/// swept box (elsewhere they cover nothing at any instant), each test a
+/// one-pixel scene whose centre is the sample: the primitives at the
+/// instant, moved there exactly (a translation keeps every decision).
+///
+/// # Panics
+/// When the plan has no `motion` or the scene no `subpixel_bits`.
+fn sampled_time(scene: &Scene, plan: &Plan) -> Vec<f64> {
+    let blur = &plan.motion.as_ref().expect("a moving scene").blur;
+    let bits = scene
+        .rules
+        .subpixel_bits
+        .expect("a moving scene has subpixel_bits");
+    let Canvas { width, height } = scene.canvas;
+    let half = ratio(1, 2);
+    let offsets: Vec<Point> = match &plan.antialias {
+        Some(a) => {
+            let unit = RBig::from(UBig::ONE << a.position_bits as usize);
+            a.offsets
+                .iter()
+                .map(|o| o.map(|c| RBig::from(c) / &unit))
+                .collect()
+        }
+        None => vec![[half.clone(), half.clone()]],
+    };
+    let (m, n) = (offsets.len(), blur.samples as usize);
+    let mut still = scene.clone();
+    still.primitives.retain(|p| !p.moves());
+    still.effects.motion_blur = None;
+    let fixed = if still.primitives.is_empty() {
+        vec![0u16; scene.canvas.pixel_count() * m]
+    } else {
+        reference::coverage_under(&still, scene.rules.fill_rule)
+    };
+    let mut totals: Vec<u64> = fixed
+        .chunks(m)
+        .map(|c| c.iter().map(|&k| u64::from(k)).sum::<u64>() * n as u64)
+        .collect();
+    // The moving primitives alone on one pixel; each vertex's snapped
+    // position at open and its displacement to close.
+    let mut one = scene.clone();
+    one.primitives.retain(Primitive::moves);
+    one.canvas = Canvas {
+        width: 1,
+        height: 1,
+    };
+    one.rules.subpixel_bits = None;
+    one.effects = Effects::default();
+    one.expect = Expect::default();
+    let ends: Vec<[Point; 2]> = one
+        .vertices()
+        .map(|v| {
+            let open = [&v.x, &v.y].map(|c| c.snapped(bits).as_rbig().clone());
+            let close = v.end().map(|c| c.snapped(bits).as_rbig().clone());
+            let d = minus(&close, &open);
+            [open, d]
+        })
+        .collect();
+    // The swept box, widened by a line's width and a pixel: a sample
+    // outside it is never covered.
+    let margin = one
+        .primitives
+        .iter()
+        .map(|p| match p {
+            Primitive::Line(l) => l.width.to_f64_lossy(),
+            _ => 0.0,
+        })
+        .fold(0.0, f64::max)
+        + 1.0;
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for [open, d] in &ends {
+        for axis in 0..2 {
+            for c in [open[axis].clone(), &open[axis] + &d[axis]] {
+                let f = c.to_f64().value();
+                lo[axis] = lo[axis].min(f);
+                hi[axis] = hi[axis].max(f);
+            }
+        }
+    }
+    let span = |axis: usize, size: u32| {
+        let clamp = |v: f64| v.clamp(0.0, f64::from(size)) as u32;
+        clamp((lo[axis] - margin).floor())..clamp((hi[axis] + margin).ceil())
+    };
+    let unit_time = RBig::from(UBig::ONE << 32);
+    for y in span(1, height) {
+        for x in span(0, width) {
+            let p = (y * width + x) as usize;
+            let us = blur.pixel_times(p as u64, m as u32);
+            for (j, &u) in us.iter().enumerate() {
+                let tau = RBig::from(blur.instant(u)) / &unit_time;
+                let o = &offsets[j / n];
+                let shift = [&half - RBig::from(x) - &o[0], &half - RBig::from(y) - &o[1]];
+                let vertices = one.primitives.iter_mut().flat_map(|q| q.vertices_mut());
+                for (v, [open, d]) in vertices.zip(&ends) {
+                    v.x = Number::from_rbig(&open[0] + &tau * &d[0] + &shift[0]);
+                    v.y = Number::from_rbig(&open[1] + &tau * &d[1] + &shift[1]);
+                    v.to = None;
+                }
+                totals[p] += u64::from(reference::coverage_under(&one, scene.rules.fill_rule)[0]);
+            }
+        }
+    }
+    let tests = (m * n) as f64;
+    totals.into_iter().map(|t| t as f64 / tests).collect()
 }
 
 /// Pixels of midpoint lines in steps where the line has more than one.
@@ -1378,9 +2074,12 @@ pub fn shrink(scene: &Scene, failure: Failure, kind: Kind, candidate: &dyn Raste
         progress |= s.trim();
         progress |= s.simplify_state();
         progress |= s.simplify_antialias();
+        progress |= s.simplify_motion();
+        progress |= s.freeze_vertices();
         progress |= s.remove_contours_and_vertices();
         progress |= s.move_shared_vertices();
         progress |= s.move_vertices();
+        progress |= s.move_ends();
         progress |= s.simplify_values();
         // Coarser snapping is tried once nothing else helps: by then the
         // vertices are as simple as they get, and often on the grid already.
@@ -1522,7 +2221,9 @@ impl Shrinker<'_> {
     }
 
     /// The canvas `[x0, x0 + w) × [y0, y0 + h)` of the current scene, with
-    /// everything translated by (−x0, −y0).
+    /// everything translated by (−x0, −y0): a moving vertex's `from` and
+    /// `to` together, so that its path keeps its shape (and, moved by whole
+    /// pixels, its snapping).
     fn cropped(&self, x0: u32, y0: u32, w: u32, h: u32) -> Scene {
         let mut scene = self.best.clone();
         let (dx, dy) = (Number::from_int(x0.into()), Number::from_int(y0.into()));
@@ -1530,6 +2231,10 @@ impl Shrinker<'_> {
             for v in p.vertices_mut() {
                 v.x = &v.x - &dx;
                 v.y = &v.y - &dy;
+                if let Some(to) = v.to.as_deref_mut() {
+                    to[0] = &to[0] - &dx;
+                    to[1] = &to[1] - &dy;
+                }
             }
         }
         scene.canvas = Canvas {
@@ -1539,12 +2244,23 @@ impl Shrinker<'_> {
         scene
     }
 
-    /// Crops to the failing samples and a margin around them.
+    /// Crops to the failing samples and a margin around them. A time
+    /// failure is a mean over the moving pixels, spread over the primitives'
+    /// paths: when the box of all the pixels it names does not do, the
+    /// worst pixel's neighbourhood is tried alone.
     fn crop(&mut self) -> bool {
-        let focus = self.failure.focus(self.kind);
+        let focus = self.failure.focus(self.kind).to_vec();
         if focus.is_empty() {
             return false;
         }
+        if self.crop_to(&focus) {
+            return true;
+        }
+        self.kind == Kind::Time && focus.len() > 1 && self.crop_to(&focus[..1])
+    }
+
+    /// Crops to the box of `focus` (sample slots) and a margin around it.
+    fn crop_to(&mut self, focus: &[usize]) -> bool {
         let Canvas { width, height } = self.best.canvas;
         let w = width as usize;
         let n = samples_per_pixel(&self.best);
@@ -1692,12 +2408,17 @@ impl Shrinker<'_> {
             return false;
         };
         let mut edits: Vec<Edit> = vec![Box::new(|s| s.effects.antialias.take().is_some())];
+        // Each edit changes the current best only toward the simplest
+        // (fewer samples; standard, else grid), so no two undo each other.
         for n in [1, 2, 3, 4, 8, 9, 16, 64] {
             if n < aa.samples && aa.pattern.check_count(n).is_ok() {
                 edits.push(Box::new(move |s| {
                     s.effects.antialias.as_mut().is_some_and(|a| {
-                        a.samples = n;
-                        true
+                        let fewer = n < a.samples && a.pattern.check_count(n).is_ok();
+                        if fewer {
+                            a.samples = n;
+                        }
+                        fewer
                     })
                 }));
             }
@@ -1706,9 +2427,14 @@ impl Shrinker<'_> {
             if aa.pattern != pattern && pattern.check_count(aa.samples).is_ok() {
                 edits.push(Box::new(move |s| {
                     s.effects.antialias.as_mut().is_some_and(|a| {
-                        a.pattern = pattern;
-                        a.seed = 0;
-                        true
+                        let simpler = a.pattern != pattern
+                            && a.pattern != Pattern::Standard
+                            && pattern.check_count(a.samples).is_ok();
+                        if simpler {
+                            a.pattern = pattern;
+                            a.seed = 0;
+                        }
+                        simpler
                     })
                 }));
             }
@@ -1731,6 +2457,79 @@ impl Shrinker<'_> {
                 .is_some_and(|a| std::mem::replace(&mut a.seed, 0) != 0)
         }));
         self.try_each(edits)
+    }
+
+    /// Makes `effects.motion_blur` simpler: fewer time samples (smallest
+    /// first), the whole shutter, the `stratified` pattern, seed 0. Each
+    /// edit moves the current best only toward those, so the measure
+    /// (N, then how far each field is from its simplest) falls.
+    fn simplify_motion(&mut self) -> bool {
+        let Some(blur) = self.best.effects.motion_blur.clone() else {
+            return false;
+        };
+        let mut edits: Vec<Edit> = Vec::new();
+        for n in [1, 2, 4, 8, 16, 32] {
+            if n < blur.samples {
+                edits.push(Box::new(move |s| {
+                    s.effects.motion_blur.as_mut().is_some_and(|b| {
+                        let fewer = n < b.samples;
+                        if fewer {
+                            b.samples = n;
+                        }
+                        fewer
+                    })
+                }));
+            }
+        }
+        edits.push(Box::new(|s| {
+            s.effects
+                .motion_blur
+                .as_mut()
+                .is_some_and(|b| std::mem::replace(&mut b.shutter, [0, TIME_ONE]) != [0, TIME_ONE])
+        }));
+        edits.push(Box::new(|s| {
+            s.effects.motion_blur.as_mut().is_some_and(|b| {
+                std::mem::replace(&mut b.pattern, TimePattern::Stratified)
+                    != TimePattern::Stratified
+            })
+        }));
+        edits.push(Box::new(|s| {
+            s.effects
+                .motion_blur
+                .as_mut()
+                .is_some_and(|b| std::mem::replace(&mut b.seed, 0) != 0)
+        }));
+        self.try_each(edits)
+    }
+
+    /// Makes moving vertices static, keeping `from` as the position: each
+    /// primitive's all at once, then one at a time. Fewer paths each time.
+    fn freeze_vertices(&mut self) -> bool {
+        let mut progress = false;
+        for i in 0..self.best.primitives.len() {
+            let paths = |s: &Scene| {
+                s.primitives[i]
+                    .vertices()
+                    .iter()
+                    .filter(|v| v.to.is_some())
+                    .count()
+            };
+            if paths(&self.best) > 1 {
+                let mut scene = self.best.clone();
+                for v in scene.primitives[i].vertices_mut() {
+                    v.to = None;
+                }
+                progress |= self.try_scene(scene);
+            }
+            for j in 0..self.best.primitives[i].vertices().len() {
+                if self.best.primitives[i].vertices()[j].to.is_some() {
+                    let mut scene = self.best.clone();
+                    scene.primitives[i].vertices_mut()[j].to = None;
+                    progress |= self.try_scene(scene);
+                }
+            }
+        }
+        progress
     }
 
     /// Removes whole contours of polygons, then single vertices of contours
@@ -1920,25 +2719,93 @@ impl Shrinker<'_> {
         progress
     }
 
-    /// Moves each vertex on its own.
+    /// Moves each vertex on its own. A moving vertex's whole path is
+    /// moved first (its `to` by as much as its `from`, which keeps the
+    /// velocity) when that makes `to` no less simple, then its `from` alone.
     fn move_vertices(&mut self) -> bool {
         let mut progress = false;
         for i in 0..self.best.primitives.len() {
             for j in 0..self.best.primitives[i].vertices().len() {
                 let vertices = self.best.primitives[i].vertices();
                 let position = [vertices[j].x.clone(), vertices[j].y.clone()];
+                let end = vertices[j].to.as_deref().cloned();
                 let partners: Vec<[Number; 2]> = (0..vertices.len())
                     .filter(|&k| k != j)
                     .map(|k| [vertices[k].x.clone(), vertices[k].y.clone()])
                     .collect();
                 for c in self.position_candidates(&position, &partners) {
-                    let mut scene = self.best.clone();
-                    let v = &mut scene.primitives[i].vertices_mut()[j];
-                    [v.x, v.y] = c;
-                    if self.try_scene(scene) {
+                    let mut tries = Vec::new();
+                    if let Some([tx, ty]) = &end {
+                        let to = [tx + &(&c[0] - &position[0]), ty + &(&c[1] - &position[1])];
+                        if self.position_key(&to[0], &to[1]) <= self.position_key(tx, ty) {
+                            tries.push(Some(to));
+                        }
+                    }
+                    tries.push(None);
+                    let mut moved = false;
+                    for to in tries {
+                        let mut scene = self.best.clone();
+                        let v = &mut scene.primitives[i].vertices_mut()[j];
+                        [v.x, v.y] = c.clone();
+                        if let (Some(to), Some(end)) = (to, v.to.as_deref_mut()) {
+                            *end = to;
+                        }
+                        if self.try_scene(scene) {
+                            moved = true;
+                            break;
+                        }
+                    }
+                    if moved {
                         progress = true;
                         break;
                     }
+                }
+            }
+        }
+        progress
+    }
+
+    /// Moves the ends of paths (`to`) to simpler values: every vertex with
+    /// the same path together (a moving edge shared by two triangles stays
+    /// shared), the candidates as for positions, with the path's start
+    /// among the partners (halfway to it is a shorter path).
+    fn move_ends(&mut self) -> bool {
+        let mut progress = false;
+        let mut paths: Vec<[[Number; 2]; 2]> = Vec::new();
+        for v in self.best.vertices() {
+            if let Some(to) = v.to.as_deref() {
+                let path = [[v.x.clone(), v.y.clone()], to.clone()];
+                if !paths.contains(&path) {
+                    paths.push(path);
+                }
+            }
+        }
+        for [from, to] in paths {
+            let on = |v: &Vertex| v.x == from[0] && v.y == from[1] && v.to.as_deref() == Some(&to);
+            let mut partners = vec![from.clone()];
+            for p in &self.best.primitives {
+                if p.vertices().iter().any(on) {
+                    for v in p.vertices().iter().filter(|v| !on(v)) {
+                        let [x, y] = v.end();
+                        let q = [x.clone(), y.clone()];
+                        if !partners.contains(&q) {
+                            partners.push(q);
+                        }
+                    }
+                }
+            }
+            for c in self.position_candidates(&to, &partners) {
+                let mut scene = self.best.clone();
+                for p in &mut scene.primitives {
+                    for v in p.vertices_mut() {
+                        if on(v) {
+                            v.to = Some(Box::new(c.clone()));
+                        }
+                    }
+                }
+                if self.try_scene(scene) {
+                    progress = true;
+                    break;
                 }
             }
         }
@@ -1995,9 +2862,7 @@ impl Shrinker<'_> {
     fn reduce_bits(&mut self) -> bool {
         let bits = self.best.rules.subpixel_bits;
         let on_grid = |b: Option<u32>| {
-            self.best.vertices().all(|v| {
-                b.is_none_or(|b| &snap(&v.x, b) == v.x.as_rbig() && &snap(&v.y, b) == v.y.as_rbig())
-            })
+            coordinates(&self.best).all(|c| b.is_none_or(|b| &snap(c, b) == c.as_rbig()))
         };
         if bits.is_some() && on_grid(bits) {
             return false;
@@ -2022,18 +2887,23 @@ impl Shrinker<'_> {
         let default = Rules::default().subpixel_bits;
         let bits = self.best.rules.subpixel_bits;
         let on = |b: Option<u32>, v: &Number| b.is_none_or(|b| &snap(v, b) == v.as_rbig());
-        if bits == default
-            || !self
-                .best
-                .vertices()
-                .all(|v| [&v.x, &v.y].iter().all(|c| on(bits, c) && on(default, c)))
-        {
+        if bits == default || !coordinates(&self.best).all(|c| on(bits, c) && on(default, c)) {
             return;
         }
         let mut scene = self.best.clone();
         scene.rules.subpixel_bits = default;
         self.try_scene(scene);
     }
+}
+
+/// Every coordinate of every vertex: its position (`from`) and, for a
+/// moving vertex, its `to`.
+fn coordinates(scene: &Scene) -> impl Iterator<Item = &Number> {
+    scene.vertices().flat_map(|v| {
+        [&v.x, &v.y]
+            .into_iter()
+            .chain(v.to.iter().flat_map(|to| to.iter()))
+    })
 }
 
 /// Removes contour `c` of a polygon of several contours.
@@ -2077,12 +2947,23 @@ fn json_string(s: &str) -> String {
     serde_json::to_string(s).expect("a string serializes")
 }
 
+fn position_json(x: &Number, y: &Number) -> String {
+    format!("[{}, {}]", json_number(x), json_number(y))
+}
+
 fn vertex_json(scene: &Scene, v: &Vertex) -> String {
-    let position = format!("[{}, {}]", json_number(&v.x), json_number(&v.y));
-    if !scene.has_depth && v.w == Number::ONE && v.attributes.is_empty() {
+    let position = position_json(&v.x, &v.y);
+    if !scene.has_depth && v.w == Number::ONE && v.attributes.is_empty() && v.to.is_none() {
         return position;
     }
-    let mut fields = vec![format!("\"position\": {position}")];
+    let mut fields = match v.to.as_deref() {
+        // A moving vertex (or one written with from = to, which is static).
+        Some([x, y]) => vec![
+            format!("\"from\": {position}"),
+            format!("\"to\": {}", position_json(x, y)),
+        ],
+        None => vec![format!("\"position\": {position}")],
+    };
     if scene.has_depth {
         fields.push(format!("\"z\": {}", json_number(&v.z)));
     }
@@ -2179,16 +3060,54 @@ pub fn case_json(scene: &Scene) -> String {
     if let Some(a) = &e.area {
         expect.push(format!("\"area\": \"{}\"", a.to_exact_string()));
     }
-    let effects = scene.effects.antialias.as_ref().map_or(String::new(), |a| {
-        format!(
-            "  \"effects\": {{ \"antialias\": {{ \"samples\": {}, \"pattern\": \"{}\", \"seed\": {}, \"adaptive\": {}, \"position_bits\": {} }} }},\n",
+    if let Some(x) = e.max_time_error {
+        expect.push(format!("\"max_time_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_time_rms {
+        expect.push(format!("\"max_time_rms\": {x:e}"));
+    }
+    if !e.time_coverage.is_empty() {
+        let pins: Vec<String> = e
+            .time_coverage
+            .iter()
+            .map(|pin| {
+                format!(
+                    "{{ \"pixel\": [{}, {}], \"value\": {} }}",
+                    pin.pixel[0],
+                    pin.pixel[1],
+                    json_number(&pin.value)
+                )
+            })
+            .collect();
+        expect.push(format!("\"time_coverage\": [{}]", pins.join(", ")));
+    }
+    let mut effects = Vec::new();
+    if let Some(a) = &scene.effects.antialias {
+        effects.push(format!(
+            "\"antialias\": {{ \"samples\": {}, \"pattern\": \"{}\", \"seed\": {}, \"adaptive\": {}, \"position_bits\": {} }}",
             a.samples,
             a.pattern.name(),
             a.seed,
             a.adaptive,
             a.position_bits
-        )
-    });
+        ));
+    }
+    if let Some(b) = &scene.effects.motion_blur {
+        let [open, close] = b
+            .shutter
+            .map(|t| json_number(&Number::ratio(t.into(), TIME_ONE.into())));
+        effects.push(format!(
+            "\"motion_blur\": {{ \"shutter\": [{open}, {close}], \"samples\": {}, \"pattern\": \"{}\", \"seed\": {} }}",
+            b.samples,
+            b.pattern.name(),
+            b.seed
+        ));
+    }
+    let effects = if effects.is_empty() {
+        String::new()
+    } else {
+        format!("  \"effects\": {{ {} }},\n", effects.join(", "))
+    };
     format!(
         "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n{effects}  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
         json_string(&scene.name),
@@ -2275,10 +3194,29 @@ fn describe_size(scene: &Scene) -> String {
         }
     }
     let antialias = scene.effects.antialias.as_ref().map_or(String::new(), |a| {
-        format!(" at {} {} samples per pixel", a.samples, a.pattern.name())
+        let s = if a.samples == 1 { "" } else { "s" };
+        format!(" at {} {} sample{s} per pixel", a.samples, a.pattern.name())
     });
+    let moving = scene.primitives.iter().filter(|p| p.moves()).count();
+    let motion = match &scene.effects.motion_blur {
+        Some(b) if moving > 0 => {
+            let shutter = if b.shutter == [0, TIME_ONE] {
+                String::new()
+            } else {
+                let [open, close] = b.shutter.map(|t| Number::ratio(t.into(), TIME_ONE.into()));
+                format!(" over the shutter [{open}, {close}]")
+            };
+            let s = if b.samples == 1 { "" } else { "s" };
+            format!(
+                ", {moving} moving, with {} {} time sample{s}{shutter}",
+                b.samples,
+                b.pattern.name()
+            )
+        }
+        _ => String::new(),
+    };
     format!(
-        "{} on a {}×{} canvas{antialias}",
+        "{} on a {}×{} canvas{antialias}{motion}",
         parts.join(" and "),
         scene.canvas.width,
         scene.canvas.height
@@ -2316,6 +3254,33 @@ fn finished_case(
         kind.promise(),
     );
     let plan = Plan::for_scene(&scene);
+    if plan.motion.is_some() {
+        // Judged on time coverage only: pin the reference's time coverage
+        // of the first pixel the failure shows, exact when the oracle's
+        // bound is 0 (the nearest f64 otherwise, well within the pin's
+        // tolerance of bound + 10^-12).
+        let per_pixel = samples_per_pixel(&scene);
+        let p = shrunk
+            .failure
+            .focus(kind)
+            .first()
+            .map_or(0, |i| i / per_pixel);
+        let certified = reference::motion::time_coverage(&scene, &plan);
+        if let Some(c) = certified.get(p) {
+            let value = if c.bound == RBig::ZERO {
+                num(&c.value)
+            } else {
+                let nearest = reference::area::to_f64_nearest(&c.value);
+                Number::from_decimal(&format!("{nearest}")).expect("an f64 is a decimal")
+            };
+            let width = scene.canvas.width as usize;
+            scene.expect.time_coverage = vec![TimePin {
+                pixel: [(p % width) as u32, (p / width) as u32],
+                value,
+            }];
+        }
+        return scene;
+    }
     scene.expect.samples_covered = Some(reference::render(&scene, &plan).covered_samples());
     if scene.effects.antialias.is_some() {
         let total = reference::exact_areas(&scene)
@@ -2496,6 +3461,128 @@ mod tests {
         assert_eq!(fills.len(), 2);
         assert_eq!(patterns.len(), Pattern::ALL.len());
         assert!(adaptive && lines);
+    }
+
+    #[test]
+    fn motion_family_reads_back_and_varies() {
+        let (mut patterns, mut culls, mut shutters) = (Vec::new(), Vec::new(), 0);
+        let (mut lines, mut antialiased, mut still, mut frozen_written) = (0, 0, 0, 0);
+        let (mut counts, mut moving) = (Vec::new(), 0);
+        for i in 0..300 {
+            let (family, scene) = generate(5, i, Some(Family::Motion));
+            assert_eq!(family, Family::Motion);
+            let text = case_json(&scene);
+            let back = crate::scene::parse_case(&text, "t", &Default::default())
+                .unwrap_or_else(|e| panic!("{e}\n{text}"));
+            assert_eq!(case_json(&back), text);
+            let blur = scene.effects.motion_blur.as_ref().expect("motion blur");
+            let spatial = scene.effects.antialias.as_ref().map_or(1, |a| a.samples);
+            assert!(spatial * blur.samples <= 64, "{text}");
+            assert!(
+                scene.canvas.pixel_count() * spatial as usize <= 256,
+                "{text}"
+            );
+            for (name, list) in [
+                (blur.pattern.name(), &mut patterns),
+                (scene.rules.cull.name(), &mut culls),
+            ] {
+                if !list.contains(&name) {
+                    list.push(name);
+                }
+            }
+            if !counts.contains(&blur.samples) {
+                counts.push(blur.samples);
+            }
+            shutters += usize::from(blur.shutter != [0, TIME_ONE]);
+            antialiased += usize::from(scene.effects.antialias.is_some());
+            lines += scene
+                .primitives
+                .iter()
+                .filter(|p| p.moves() && matches!(p, Primitive::Line(_)))
+                .count();
+            still += scene.primitives.iter().filter(|p| !p.moves()).count();
+            frozen_written += scene
+                .vertices()
+                .filter(|v| v.to.is_some() && !v.moves())
+                .count();
+            moving += usize::from(scene.moves());
+        }
+        assert!(moving > 290, "{moving}");
+        assert_eq!(patterns.len(), TimePattern::ALL.len());
+        assert_eq!(culls.len(), 3);
+        assert!(counts.contains(&1) && counts.contains(&64), "{counts:?}");
+        assert!(
+            shutters > 30 && antialiased > 30 && lines > 30,
+            "{shutters} {antialiased} {lines}"
+        );
+        assert!(
+            still > 30 && frozen_written > 10,
+            "{still} {frozen_written}"
+        );
+    }
+
+    /// The fairness check's sampler (the static reference at each of the
+    /// case's own instants) is production's frame, value for value: two
+    /// independent readings of SPEC.md §15.3. Other instants (another
+    /// seed) give other values.
+    #[test]
+    fn sampled_time_is_productions_frame() {
+        use crate::production::Production;
+        let mut differ = 0;
+        for i in 0..40 {
+            let (_, scene) = generate(9, i, Some(Family::Motion));
+            let plan = Plan::for_scene(&scene);
+            if plan.motion.is_none() {
+                continue;
+            }
+            let sampled = sampled_time(&scene, &plan);
+            let frame = Production
+                .rasterize(&scene, &plan)
+                .expect("production draws it");
+            assert_eq!(
+                frame.time.as_deref(),
+                Some(sampled.as_slice()),
+                "{}",
+                case_json(&scene)
+            );
+            // The same with every pixel's instants taken from its
+            // neighbour's seed: a sampler with the wrong instants.
+            let mut other = scene.clone();
+            if let Some(b) = other.effects.motion_blur.as_mut() {
+                b.seed ^= 1;
+            }
+            differ += usize::from(sampled_time(&other, &Plan::for_scene(&other)) != sampled);
+        }
+        assert!(differ > 10, "{differ}");
+    }
+
+    /// Where few pixels move, the default time RMS bound can fail an
+    /// honest sampler: production fails `run` on such a scene, and without
+    /// the fairness check the search would blame it. It is skipped instead.
+    #[test]
+    fn unfair_moving_scenes_are_skipped_not_blamed() {
+        use crate::production::Production;
+        let mut skipped = 0;
+        for i in 0..100 {
+            let (_, scene) = generate(1, i, Some(Family::Motion));
+            let Outcome::Invalid(why) = evaluate(&scene, &Production) else {
+                continue;
+            };
+            if !why.contains("the sample method with the case's own instants") {
+                continue;
+            }
+            skipped += 1;
+            let reference = suite::run_reference(&scene);
+            let run = suite::run_candidate(&scene, &reference, &Production);
+            let Verdict::Fail(reasons) = run.verdict else {
+                panic!("production passes a scene refused as unfair: {why}");
+            };
+            assert!(
+                reasons.iter().all(|r| r.starts_with("time: ")),
+                "{reasons:?}"
+            );
+        }
+        assert!(skipped > 0);
     }
 
     #[test]

@@ -125,12 +125,13 @@ struct FuzzArgs {
     /// Folder for the shrunk case files.
     #[arg(long, value_name = "DIR", default_value = rastercheck::fuzz::default_out().to_str())]
     out: PathBuf,
-    /// Only this family: triangles, lines, meshes, polygons or antialias
-    /// (default: each in turn).
+    /// Only this family: triangles, lines, meshes, polygons, antialias or
+    /// motion (default: each in turn).
     #[arg(long)]
     family: Option<String>,
     /// Only failures of this check count: coverage, holes, overdraw,
-    /// watertight (holes or overdraw), lines, interpolation or error.
+    /// watertight (holes or overdraw), lines, antialias, time,
+    /// interpolation or error.
     #[arg(long)]
     check: Option<String>,
     /// Keep searching until this many failures are shrunk and written.
@@ -974,7 +975,11 @@ fn fuzz(args: FuzzArgs) -> u8 {
         None => Vec::new(),
         Some((_, Some(kinds))) => kinds,
         Some((c, None)) => {
-            eprintln!("error: unknown check {c:?}; known: coverage, holes, overdraw, watertight, lines, interpolation, error");
+            let known: Vec<&str> = fuzz::Kind::ALL.iter().map(|k| k.name()).collect();
+            eprintln!(
+                "error: unknown check {c:?}; known: {}, watertight",
+                known.join(", ")
+            );
             return BAD_INPUT;
         }
     };

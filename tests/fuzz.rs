@@ -2,11 +2,14 @@
 //!
 //! - `parse_case` is fed arbitrary strings, random JSON (extreme numbers,
 //!   non-finite strings, deep nesting, case-shaped objects with random
-//!   values) and mutations of the real case files under `cases/` (byte
-//!   flips, truncations, duplicated keys, swapped types, extreme numbers).
-//!   It must never panic, and every error must name a location: a JSON path
+//!   values: triangles, lines and polygons, moving vertices, antialiasing
+//!   and motion blur, time expectations) and mutations of the real case
+//!   files under `cases/`, the moving ones included (byte flips,
+//!   truncations, duplicated keys, swapped types, extreme numbers). It must
+//!   never panic, and every error must name a location: a JSON path
 //!   (`$...`) or `line L column C`. Cases that read are drawn by the
-//!   reference and production, which must not panic either.
+//!   reference and production, which must not panic either (moving scenes
+//!   too, when small enough for the certified oracle to stay fast).
 //! - The binary runs a folder of mutated case files and must exit 0, 1 or
 //!   2, never panic, and report every file.
 //!
@@ -27,7 +30,7 @@ use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
 use rastercheck::reference;
-use rastercheck::scene::{parse_case, Limits};
+use rastercheck::scene::{parse_case, Limits, Scene};
 use serde_json::Value;
 
 fn fuzz_cases() -> u32 {
@@ -80,6 +83,24 @@ fn names_a_location(location: &str) -> bool {
         if l.parse::<u64>().is_ok() && c.parse::<u64>().is_ok())
 }
 
+thread_local! {
+    /// What [`check`] drew on this thread: scenes, and scenes in which
+    /// something moves.
+    static DRAWN: std::cell::Cell<[u64; 2]> = const { std::cell::Cell::new([0, 0]) };
+}
+
+/// Whether a moving scene is too much work for a property test: the
+/// oracle certifies each spatial sample of each moving primitive (about
+/// 10 µs each), and production tests each at N instants.
+fn too_slow(scene: &Scene, plan: &Plan) -> bool {
+    let Some(motion) = &plan.motion else {
+        return false;
+    };
+    let moving = motion.moving.iter().filter(|m| **m).count() as u64;
+    let samples = scene.canvas.pixel_count() as u64 * u64::from(plan.samples_per_pixel) * moving;
+    samples > 4096 || samples * u64::from(motion.blur.samples) > 1 << 20
+}
+
 /// Reads `text`; asserts the reader neither panics nor returns an error
 /// without a location; draws what reads (on small canvases) with the
 /// reference and production, which must not panic.
@@ -104,6 +125,13 @@ fn check(text: &str) -> Result<(), TestCaseError> {
         }
         Ok(scene) => {
             let plan = Plan::for_scene(&scene);
+            if too_slow(&scene, &plan) {
+                return Ok(());
+            }
+            DRAWN.with(|d| {
+                let [all, moving] = d.get();
+                d.set([all + 1, moving + u64::from(plan.motion.is_some())]);
+            });
             let drawn = catch_unwind(AssertUnwindSafe(|| reference::render(&scene, &plan)));
             prop_assert!(drawn.is_ok(), "the reference panicked on {:?}", text);
             let drawn = catch_unwind(AssertUnwindSafe(|| Production.rasterize(&scene, &plan)));
@@ -145,7 +173,9 @@ fn string_text() -> impl Strategy<Value = String> {
             "0/0", "1/-0", "3/-4", "1.5/2", "1/2/3", "/", "", " ", "1e3/7", "1e1001/3",
             "top-left", "bottom-right", "top-right", "bottom-left", "all-edges", "none", "cw",
             "ccw", "perspective", "linear", "flat", "midpoint", "diamond-exit", "rectangle",
-            "parallelogram", "include", "exclude", "major", "projected",
+            "parallelogram", "include", "exclude", "major", "projected", "nonzero", "even-odd",
+            "grid", "standard", "stratified", "random", "n-rooks", "stratified-shuffled",
+            "jittered-xy-t", "box",
         ]).prop_map(|s| serde_json::to_string(s).unwrap()),
         1 => (number_text(), number_text()).prop_map(|(a, b)| format!("\"{a}/{b}\"")),
         1 => number_text().prop_map(|n| format!("\"{n}\"")),
@@ -183,6 +213,22 @@ const KEYS: &[&str] = &[
     "samples_covered",
     "max_abs_error",
     "max_ulp_error",
+    "from",
+    "to",
+    "polygon",
+    "contours",
+    "fill",
+    "samples",
+    "pattern",
+    "seed",
+    "adaptive",
+    "position_bits",
+    "shutter",
+    "max_time_error",
+    "max_time_rms",
+    "time_coverage",
+    "pixel",
+    "value",
     "// comment",
     "//",
     "nmae",
@@ -218,69 +264,308 @@ fn json_text() -> impl Strategy<Value = String> {
     })
 }
 
-/// A case-shaped object whose values are plausible or random JSON, so the
-/// reader gets past its first checks.
-fn case_shaped() -> impl Strategy<Value = String> {
-    let value = || {
-        prop_oneof![
-            4 => (0u32..17).prop_map(|n| n.to_string()),
-            3 => number_text(),
-            1 => string_text(),
-            1 => json_text(),
-        ]
-    };
-    let vertex = move || {
-        prop_oneof![
-            2 => (value(), value()).prop_map(|(x, y)| format!("[{x},{y}]")),
-            2 => (value(), value(), value(), value(), prop::collection::vec(value(), 0..4)).prop_map(
-                |(x, y, z, w, a)| format!(
-                    r#"{{"position":[{x},{y}],"z":{z},"w":{w},"attributes":[{}]}}"#,
-                    a.join(",")
-                )
-            ),
-            1 => json_text(),
-        ]
-    };
-    let primitive = move || {
-        prop_oneof![
-            2 => (prop::collection::vec(vertex(), 0..5), string_text()).prop_map(|(v, i)| {
-                format!(r#"{{"triangle":[{}],"interpolation":{i}}}"#, v.join(","))
-            }),
-            2 => (prop::collection::vec(vertex(), 0..4), string_text(), value(), string_text(), string_text())
-                .prop_map(|(v, rule, width, last, parameter)| {
-                    format!(
-                        r#"{{"line":[{}],"rule":{rule},"width":{width},"last_pixel":{last},"parameter":{parameter}}}"#,
-                        v.join(",")
-                    )
-                }),
-            1 => json_text(),
-        ]
-    };
-    (
-        string_text(),
-        (value(), value()),
-        (value(), string_text(), string_text()),
-        prop::collection::vec(primitive(), 0..5),
-        (value(), value(), value(), value(), value()),
-        any::<u8>(),
+/// A value that is plausible for a count or a coordinate, or any JSON.
+fn any_value() -> BoxedStrategy<String> {
+    prop_oneof![
+        4 => (0u32..17).prop_map(|n| n.to_string()),
+        3 => number_text(),
+        1 => string_text(),
+        1 => json_text(),
+    ]
+    .boxed()
+}
+
+/// `good` nearly always, else any value: fields that read more often than
+/// not, so that the reader's later checks (and the rasterizers) are
+/// reached with the bad values still in the mix.
+fn mostly(good: impl Strategy<Value = String> + 'static) -> BoxedStrategy<String> {
+    prop_oneof![30 => good, 1 => any_value()].boxed()
+}
+
+/// One of `names`, JSON-quoted, or now and then any string.
+fn name_of(names: &'static [&'static str]) -> BoxedStrategy<String> {
+    prop_oneof![
+        10 => prop::sample::select(names).prop_map(|n| serde_json::to_string(n).unwrap()),
+        1 => string_text(),
+    ]
+    .boxed()
+}
+
+/// One of `texts` as they are (JSON already).
+fn one_of(texts: &'static [&'static str]) -> BoxedStrategy<String> {
+    prop::sample::select(texts).prop_map(str::to_owned).boxed()
+}
+
+/// `"key":value` with probability `p`.
+fn field(
+    key: &'static str,
+    value: impl Strategy<Value = String> + 'static,
+    p: f64,
+) -> BoxedStrategy<Option<String>> {
+    prop::option::weighted(
+        p,
+        value.prop_map(move |v| format!("{}:{v}", serde_json::to_string(key).unwrap())),
     )
-        .prop_map(|(name, (w, h), (bits, fill, cull), primitives, expect, drop)| {
-            let mut fields = vec![
-                format!(r#""name":{name}"#),
-                format!(r#""canvas":{{"width":{w},"height":{h}}}"#),
-                format!(r#""rules":{{"subpixel_bits":{bits},"fill_rule":{fill},"cull":{cull}}}"#),
-                format!(r#""primitives":[{}]"#, primitives.join(",")),
-                format!(
-                    r#""expect":{{"max_mismatched_samples":{},"watertight":{},"samples_covered":{},"max_abs_error":{},"max_ulp_error":{}}}"#,
-                    expect.0, expect.1, expect.2, expect.3, expect.4
-                ),
-            ];
-            // Leave out one field now and then.
-            if drop < 60 {
-                fields.remove(usize::from(drop) % fields.len());
-            }
-            format!("{{{}}}", fields.join(","))
+    .boxed()
+}
+
+/// An object of the fields that are present.
+fn object(fields: Vec<BoxedStrategy<Option<String>>>) -> BoxedStrategy<String> {
+    fields
+        .prop_map(|f| {
+            format!(
+                "{{{}}}",
+                f.into_iter().flatten().collect::<Vec<_>>().join(",")
+            )
         })
+        .boxed()
+}
+
+fn list(
+    item: impl Strategy<Value = String> + 'static,
+    size: std::ops::Range<usize>,
+) -> BoxedStrategy<String> {
+    prop::collection::vec(item, size)
+        .prop_map(|v| format!("[{}]", v.join(",")))
+        .boxed()
+}
+
+/// A coordinate near a tiny canvas (half pixels and fractions: ties), or
+/// any value.
+fn coordinate() -> BoxedStrategy<String> {
+    prop_oneof![
+        20 => (-8i32..24).prop_map(|n| (f64::from(n) / 2.0).to_string()),
+        4 => (-40i64..40, 1i64..9).prop_map(|(a, b)| format!("\"{a}/{b}\"")),
+        1 => any_value(),
+    ]
+    .boxed()
+}
+
+fn point() -> BoxedStrategy<String> {
+    mostly((coordinate(), coordinate()).prop_map(|(x, y)| format!("[{x},{y}]")))
+}
+
+/// A vertex: a position, a moving vertex (`from` and `to`, now and then
+/// with a field that may not go with them), an object with `position`,
+/// `z`, `w` and `attributes`, half a moving vertex, or any JSON.
+fn vertex() -> BoxedStrategy<String> {
+    prop_oneof![
+        10 => point(),
+        10 => object(vec![
+            field("from", point(), 0.99),
+            field("to", point(), 0.99),
+            field("position", point(), 0.02),
+            field("z", any_value(), 0.02),
+            field("w", any_value(), 0.02),
+            field("attributes", list(any_value(), 0..3), 0.02),
+        ]),
+        2 => object(vec![
+            field("position", point(), 0.95),
+            field("z", any_value(), 0.3),
+            field("w", any_value(), 0.3),
+            field("attributes", list(any_value(), 0..4), 0.3),
+        ]),
+        1 => json_text(),
+    ]
+    .boxed()
+}
+
+/// A vertex that mostly stays put (polygons cannot move).
+fn still_vertex() -> BoxedStrategy<String> {
+    prop_oneof![20 => point(), 1 => vertex()].boxed()
+}
+
+const FILL_RULES: &[&str] = &[
+    "top-left",
+    "top-right",
+    "bottom-left",
+    "bottom-right",
+    "all-edges",
+];
+const CULLS: &[&str] = &["none", "cw", "ccw"];
+const LINE_RULES: &[&str] = &[
+    "parallelogram",
+    "parallelogram",
+    "parallelogram",
+    "midpoint",
+    "diamond-exit",
+    "rectangle",
+];
+const POLYGON_FILLS: &[&str] = &["nonzero", "even-odd"];
+const AA_PATTERNS: &[&str] = &["grid", "standard", "stratified", "random", "n-rooks"];
+const TIME_PATTERNS: &[&str] = &[
+    "random",
+    "stratified",
+    "stratified-shuffled",
+    "jittered-xy-t",
+];
+
+fn primitive() -> BoxedStrategy<String> {
+    let corners = || prop_oneof![20 => list(vertex(), 3..4), 1 => list(vertex(), 0..6)];
+    let ends = || prop_oneof![20 => list(vertex(), 2..3), 1 => list(vertex(), 0..4)];
+    let contour = || prop_oneof![10 => list(still_vertex(), 3..7), 1 => list(still_vertex(), 0..4)];
+    prop_oneof![
+        12 => object(vec![
+            field("triangle", corners(), 0.98),
+            field("interpolation", name_of(&["perspective", "linear", "flat"]), 0.1),
+        ]),
+        8 => object(vec![
+            field("line", ends(), 0.98),
+            field("rule", name_of(LINE_RULES), 0.9),
+            field("width", mostly(one_of(&["1", "0.5", "2", "1.5", "\"1/4\"", "\"1/3\"", "0", "-1"])), 0.3),
+            field("last_pixel", name_of(&["include", "exclude"]), 0.1),
+            field("parameter", name_of(&["major", "projected"]), 0.1),
+        ]),
+        2 => object(vec![
+            field("polygon", contour(), 0.98),
+            field("fill", name_of(POLYGON_FILLS), 0.5),
+        ]),
+        2 => object(vec![
+            field("contours", prop_oneof![10 => list(contour(), 1..3), 1 => list(contour(), 0..4)], 0.98),
+            field("fill", name_of(POLYGON_FILLS), 0.5),
+        ]),
+        1 => json_text(),
+    ]
+    .boxed()
+}
+
+/// `effects`: `antialias` (samples, pattern, seed, adaptive, resolve,
+/// position bits) and `motion_blur` (shutter, samples, pattern, seed),
+/// each field present or not, good or bad.
+fn effects() -> BoxedStrategy<String> {
+    let antialias = object(vec![
+        field(
+            "samples",
+            mostly(one_of(&["1", "2", "3", "4", "4", "9", "0", "257"])),
+            0.95,
+        ),
+        field("pattern", name_of(AA_PATTERNS), 0.7),
+        field(
+            "seed",
+            mostly((0u64..1000).prop_map(|n| n.to_string())),
+            0.3,
+        ),
+        field("adaptive", mostly(one_of(&["true", "false"])), 0.3),
+        field("resolve", name_of(&["box"]), 0.1),
+        field(
+            "position_bits",
+            mostly((3u32..18).prop_map(|n| n.to_string())),
+            0.3,
+        ),
+    ]);
+    let shutter = prop_oneof![
+        8 => one_of(&[
+            "[0,1]", "[0,0.5]", "[\"1/4\",\"3/4\"]", "[0.5,1]", "[\"1/65536\",1]",
+            "[0,\"1/65536\"]", "[0.25,0.375]",
+        ]),
+        1 => one_of(&[
+            "[1,0]", "[0.5,0.5]", "[\"1/3\",1]", "[0]", "[0,1,1]", "[-1,1]", "[0,2]", "{}",
+            "[\"1/131072\",1]",
+        ]),
+        1 => (any_value(), any_value()).prop_map(|(a, b)| format!("[{a},{b}]")),
+    ];
+    let motion_blur = object(vec![
+        field("shutter", shutter, 0.5),
+        field(
+            "samples",
+            mostly(one_of(&["1", "2", "3", "4", "8", "16", "0", "1025"])),
+            0.95,
+        ),
+        field("pattern", name_of(TIME_PATTERNS), 0.7),
+        field(
+            "seed",
+            mostly(prop_oneof![
+                4 => (0u64..1000).prop_map(|n| n.to_string()),
+                1 => any::<u64>().prop_map(|n| n.to_string()),
+                1 => Just("-1".to_owned()),
+            ]),
+            0.5,
+        ),
+    ]);
+    object(vec![
+        field("antialias", antialias, 0.25),
+        field("motion_blur", motion_blur, 0.9),
+    ])
+}
+
+/// `expect`: the sample expectations (which a moving scene refuses) now
+/// and then, and the time ones: bounds and pins of pixels.
+fn expect() -> BoxedStrategy<String> {
+    let pin = object(vec![
+        field(
+            "pixel",
+            mostly((0u32..5, 0u32..5).prop_map(|(x, y)| format!("[{x},{y}]"))),
+            0.95,
+        ),
+        field(
+            "value",
+            mostly(one_of(&["0", "0.5", "1", "\"1/3\"", "2", "-0.5"])),
+            0.95,
+        ),
+    ]);
+    object(vec![
+        field("max_mismatched_samples", any_value(), 0.03),
+        field("watertight", mostly(one_of(&["true", "false"])), 0.03),
+        field("samples_covered", any_value(), 0.03),
+        field("max_abs_error", any_value(), 0.03),
+        field("max_ulp_error", any_value(), 0.03),
+        field("max_coverage_error", any_value(), 0.03),
+        field("area", any_value(), 0.03),
+        field(
+            "max_time_error",
+            mostly(one_of(&["0.5", "1", "0.25", "0", "-1"])),
+            0.3,
+        ),
+        field(
+            "max_time_rms",
+            mostly(one_of(&["0.5", "0.2", "1", "0"])),
+            0.3,
+        ),
+        field("time_coverage", list(pin, 0..3), 0.3),
+    ])
+}
+
+/// A case-shaped object whose values are plausible or random JSON, so the
+/// reader gets past its first checks: tiny canvases (the drawn cases stay
+/// fast), triangles, lines and polygons whose vertices may move, effects
+/// and expectations, every field sometimes missing or wrong.
+fn case_shaped() -> impl Strategy<Value = String> {
+    let side = || mostly((1u32..7).prop_map(|n| n.to_string()));
+    let rules = object(vec![
+        field(
+            "subpixel_bits",
+            mostly(
+                prop_oneof![6 => (0u32..17).prop_map(|n| n.to_string()), 1 => Just("null".to_owned())],
+            ),
+            0.95,
+        ),
+        field("fill_rule", name_of(FILL_RULES), 0.8),
+        field("cull", name_of(CULLS), 0.6),
+    ]);
+    object(vec![
+        field(
+            "name",
+            prop_oneof![8 => Just("\"shaped\"".to_owned()), 1 => string_text()],
+            0.99,
+        ),
+        field("description", string_text(), 0.1),
+        field(
+            "canvas",
+            object(vec![
+                field("width", side(), 0.99),
+                field("height", side(), 0.99),
+            ]),
+            0.99,
+        ),
+        field("rules", rules, 0.95),
+        field(
+            "primitives",
+            prop_oneof![10 => list(primitive(), 1..4), 1 => list(primitive(), 0..6)],
+            0.99,
+        ),
+        field("effects", effects(), 0.9),
+        field("expect", expect(), 0.6),
+    ])
 }
 
 /// Nesting far beyond serde_json's recursion limit, bare or inside a case.
@@ -521,7 +806,11 @@ fn mutated_case(texts: Vec<String>) -> impl Strategy<Value = String> {
 /// shrinking proptest's recursive JSON strategy nests deeply (the reader
 /// itself stops at serde_json's recursion limit of 128 and is fine on the
 /// default stack, which `deep_nesting` checks).
-fn run<S: Strategy<Value = String>>(name: &str, strategy: impl FnOnce() -> S + Send + 'static) {
+/// Returns how many read cases were drawn, and how many of those move.
+fn run<S: Strategy<Value = String>>(
+    name: &str,
+    strategy: impl FnOnce() -> S + Send + 'static,
+) -> [u64; 2] {
     let name = name.to_owned();
     std::thread::Builder::new()
         .stack_size(256 << 20)
@@ -531,10 +820,11 @@ fn run<S: Strategy<Value = String>>(name: &str, strategy: impl FnOnce() -> S + S
             if let Err(e) = result {
                 panic!("{name}: {e}");
             }
+            DRAWN.with(|d| d.get())
         })
         .unwrap()
         .join()
-        .unwrap();
+        .unwrap()
 }
 
 #[test]
@@ -551,14 +841,28 @@ fn the_reader_survives_arbitrary_strings() {
 
 #[test]
 fn the_reader_survives_random_json() {
-    run("random JSON", || {
-        prop_oneof![json_text(), case_shaped(), deep_nesting()]
-    });
+    let [drawn, moving] = run(
+        "random JSON",
+        || prop_oneof![1 => json_text(), 2 => case_shaped(), 1 => deep_nesting()],
+    );
+    eprintln!("random JSON: {drawn} cases drawn, {moving} of them moving");
+    // Case-shaped input reaches the rasterizers, moving scenes included
+    // (about 1 in 25 case-shaped inputs reads; 2 in 3 of those move).
+    if fuzz_cases() >= 1000 {
+        assert!(moving >= 3, "{drawn} drawn, {moving} moving");
+    }
 }
 
 #[test]
 fn the_reader_survives_mutated_case_files() {
-    run("mutated case files", || mutated_case(case_texts()));
+    let texts = case_texts();
+    let moving_files = texts.iter().filter(|t| t.contains("\"from\"")).count();
+    assert!(moving_files >= 20, "the motion cases are among them");
+    let [drawn, moving] = run("mutated case files", || mutated_case(texts));
+    eprintln!("mutated case files: {drawn} cases drawn, {moving} of them moving");
+    if fuzz_cases() >= 1000 {
+        assert!(moving >= 3, "{drawn} drawn, {moving} moving");
+    }
 }
 
 // --- The binary --------------------------------------------------------------

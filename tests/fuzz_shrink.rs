@@ -1,9 +1,11 @@
 //! `rastercheck fuzz`: counterexample search and shrinking, through the real
 //! binary. A closed-edge rasterizer (the mutant, and euc) is found to
 //! overdraw a mesh, the failure is shrunk to a case of at most three
-//! triangles that `rastercheck run` reproduces (and production passes); the
-//! production rasterizer survives the search; and a seed always writes the
-//! same file.
+//! triangles that `rastercheck run` reproduces (and production passes);
+//! likewise a wrong resolve, flipped ties on polygons, and the two motion
+//! mutants on moving scenes (a `time:` failure on a case of one or two
+//! primitives); the production rasterizer survives the search, moving
+//! scenes included; and a seed always writes the same file.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -277,4 +279,60 @@ fn flipped_ties_on_polygons_shrink_to_a_small_polygon_case() {
     let scene = parse_case(&case, "shrunk", &Limits::default()).unwrap();
     let vertices: usize = scene.primitives.iter().map(|p| p.vertices().len()).sum();
     assert!(vertices <= 8, "{case}");
+}
+
+/// Fuzzes moving scenes on a motion mutant and checks the shrunk case
+/// beyond what [`finds_and_shrinks`] does: it still moves, keeps its
+/// `effects.motion_blur`, sits on a canvas of at most 4×4 pixels (the
+/// search starts from canvases up to 16×16; today every shrink ends on
+/// 1×1 with one primitive) and pins the reference's time coverage of the
+/// pixel it fails at.
+fn motion_mutant_shrinks(mutant: &str) {
+    let case = finds_and_shrinks(mutant, "motion", "1", 2, "time: ");
+    let scene = parse_case(&case, "shrunk", &Limits::default()).unwrap();
+    assert!(scene.moves(), "{case}");
+    let blur = scene
+        .effects
+        .motion_blur
+        .as_ref()
+        .expect("motion blur kept");
+    assert!(blur.samples <= 16, "{case}");
+    assert!(
+        scene.canvas.width <= 4 && scene.canvas.height <= 4,
+        "not cropped to 4×4 or less:\n{case}"
+    );
+    assert_eq!(scene.expect.time_coverage.len(), 1, "{case}");
+}
+
+#[test]
+fn drawing_at_shutter_open_shrinks_to_a_small_moving_case() {
+    motion_mutant_shrinks("mutant:motion-at-open");
+}
+
+#[test]
+fn half_a_shutter_shrinks_to_a_small_moving_case() {
+    motion_mutant_shrinks("mutant:motion-half-shutter");
+}
+
+#[test]
+fn production_survives_the_motion_search() {
+    let dir = scratch("production-motion");
+    let out = rastercheck(&[
+        "fuzz",
+        "-r",
+        "production",
+        "--family",
+        "motion",
+        "--cases",
+        "60",
+        "--seed",
+        "3",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{log}");
+    assert!(log.contains("60 cases, "), "{log}");
+    assert!(log.contains(" 0 failed and shrunk"), "{log}");
+    assert!(!dir.exists(), "nothing is written when nothing fails");
 }
