@@ -698,7 +698,7 @@ pub fn marginal_name(driver: &str) -> String {
 pub fn marginal_per_item(m: &Measured) -> Option<f64> {
     let full = m.per_item?.as_secs_f64();
     let empty = m.empty_frame?.as_secs_f64() / m.timed_items.max(1) as f64;
-    (full > empty).then(|| full - empty)
+    (full > empty).then_some(full - empty)
 }
 
 /// The machine's parallel ceiling during a run: a perfectly parallel
