@@ -18,6 +18,11 @@ use rastercheck::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
 use rastercheck::runner::{self, CaseOutcome, Problem, Selection};
 use rastercheck::suite::{self, GoldenStatus, Verdict};
 
+/// The system allocator, counting only while `bench` measures a method's
+/// peak heap (one relaxed atomic load per allocation otherwise).
+#[global_allocator]
+static ALLOCATOR: rastercheck::bench::memory::Counting = rastercheck::bench::memory::Counting;
+
 #[derive(Parser)]
 #[command(
     name = "rastercheck",
@@ -1126,7 +1131,13 @@ fn bench(quick: bool, out: PathBuf) -> u8 {
             let error = m
                 .errors
                 .map_or("—".to_owned(), |(e, of)| format!("{e}/{of}"));
-            println!("  {:<12} {time:>14} per item, error {error}", m.method);
+            let heap = m
+                .peak_heap
+                .map_or("—".to_owned(), bench::memory::bytes_text);
+            println!(
+                "  {:<12} {time:>14} per item, error {error}, peak heap {heap}",
+                m.method
+            );
         }
     }
     for t in &report.targets {

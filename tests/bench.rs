@@ -1,13 +1,30 @@
 //! `rastercheck bench --quick`: writes BENCH.md and bench.svg with every
-//! section and method. Never asserts on timing, only that numbers are there,
-//! that exact methods have no errors and that seeded errors (motion blur's)
-//! fall as they should; and the bench's exact time coverage under
-//! translation against the reference.
+//! section and method. Never asserts on timing, only that numbers are there
+//! (peak heap too), that exact methods have no errors and that seeded errors
+//! (motion blur's) fall as they should; the bench's exact time coverage
+//! under translation against the reference; and the peak-heap probe against
+//! allocations of known size.
 
 use std::path::PathBuf;
 use std::process::Command;
 
+use rastercheck::bench::memory;
 use rastercheck::scene::Scene;
+
+/// The binary's counting allocator, so that the probe can be tested here.
+#[global_allocator]
+static ALLOCATOR: memory::Counting = memory::Counting;
+
+/// The peak heap cell of a table row: the column after the error.
+fn heap_of(line: &str) -> String {
+    line.split(" | ").nth(6).unwrap_or("").to_owned()
+}
+
+fn has_bytes(cell: &str) -> bool {
+    [" B", " KiB", " MiB", " GiB"]
+        .iter()
+        .any(|unit| cell.ends_with(unit))
+}
 
 fn row<'a>(md: &'a str, section: &str, method: &str) -> &'a str {
     let start = md
@@ -69,6 +86,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
                 "no time in {line}"
             );
             assert!(line.contains(" of "), "no error count in {line}");
+            assert!(has_bytes(&heap_of(line)), "no peak heap in {line}");
             if ["production", "production-tiled", "naive", "reference"].contains(&method.as_str()) {
                 assert!(
                     line.contains("| 0 of "),
@@ -84,6 +102,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
     for method in ["production", "dda-f32", "dda-f64", "midpoint-plain"] {
         let line = row(&md, "### lines", method);
         assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        assert!(has_bytes(&heap_of(line)), "no peak heap in {line}");
         assert!(
             svg.contains(&format!(">{method} lines<")),
             "{method} not in the chart"
@@ -114,6 +133,11 @@ fn quick_bench_writes_the_report_and_the_chart() {
             .unwrap_or_else(|| panic!("no time error in {line}"))
     };
     let stratified = [4, 16, 64].map(|n| rms_of(&format!("production {n}× stratified")));
+    assert!(has_bytes(&heap_of(row(
+        &md,
+        motion,
+        "production 64× stratified"
+    ))));
     assert!(
         stratified[0] > stratified[1] && stratified[1] > stratified[2],
         "{stratified:?}"
@@ -154,6 +178,7 @@ fn quick_bench_writes_the_report_and_the_chart() {
     ] {
         let line = row(&md, aa, method);
         assert!(line.contains(" µs |") || line.contains(" ns |") || line.contains(" ms |"));
+        assert!(has_bytes(&heap_of(line)), "no peak heap in {line}");
         assert!(
             svg.contains(&format!(">{method} AA<")),
             "{method} not in the chart"
@@ -187,6 +212,70 @@ fn quick_bench_writes_the_report_and_the_chart() {
             .find(|l| l.contains(&name))
             .unwrap_or_else(|| panic!("no target {name:?}:\n{md}"));
         assert!(line.contains("| met |"), "{line}");
+    }
+    // Peak heap: a column in every table, measured (the binary counts), and
+    // said how.
+    assert_eq!(
+        md.matches("| peak heap | note |").count(),
+        md.matches("\n### ").count(),
+        "a table without the peak heap column:\n{md}"
+    );
+    assert!(md.contains("- peak heap: each method run once more, outside every timing"));
+    assert!(md.contains("- Peak heap: each method is run once more after its timings"));
+    assert!(!md.contains("not measured (no counting allocator"));
+    // Production's fixed per-frame cost, and the machine's parallel ceiling
+    // beside the tiled target.
+    assert!(row(&md, "### triangles, L=10", "production").contains("per frame on an empty canvas"));
+    let targets = &md[md.find("## Performance targets").unwrap()..];
+    let tiled = targets
+        .lines()
+        .find(|l| l.contains("production-tiled ≥ 1.7× production"))
+        .unwrap();
+    assert!(
+        tiled.contains("the machine gave 2 threads ") && tiled.contains("× during this run"),
+        "{tiled}"
+    );
+    // llvmpipe single-threaded: rows and targets where a driver is built
+    // in, else one target saying how to get them.
+    let drivers: Vec<&str> = rastercheck::bench::DRIVERS
+        .iter()
+        .map(|(name, _)| *name)
+        .filter(|name| {
+            cfg!(feature = "lavapipe") && *name == "lavapipe"
+                || cfg!(feature = "gl") && *name == "gl"
+        })
+        .collect();
+    if drivers.is_empty() {
+        let line = targets
+            .lines()
+            .find(|l| l.contains("production ≥ 3× llvmpipe single-threaded"))
+            .unwrap_or_else(|| panic!("no llvmpipe target:\n{md}"));
+        assert!(
+            line.contains("| not measured |") && line.contains("--features lavapipe"),
+            "{line}"
+        );
+    } else {
+        assert!(md.contains("LP_NUM_THREADS=1"), "{md}");
+    }
+    for driver in drivers {
+        for (section, short) in [
+            ("### triangles, L=10", "L=10"),
+            ("### triangles, L=50", "L=50"),
+        ] {
+            assert!(row(&md, section, driver).contains("LP_NUM_THREADS=1"));
+            let marginal = row(&md, section, &rastercheck::bench::marginal_name(driver));
+            assert!(marginal.contains(" of "), "{marginal}");
+            let name = format!("production ≥ 3× llvmpipe single-threaded (`{driver}`, {short})");
+            let line = targets
+                .lines()
+                .find(|l| l.contains(&name))
+                .unwrap_or_else(|| panic!("no target {name:?}:\n{md}"));
+            assert!(
+                line.contains("× the whole call")
+                    && (line.contains("| met |") || line.contains("| not met |")),
+                "{line}"
+            );
+        }
     }
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     assert!(svg.contains(">exact<") && svg.contains("time per item") && svg.contains("error ("));
@@ -283,4 +372,45 @@ fn translation_time_coverage_is_the_reference_over_the_shutter() {
         caught += riemann_disagreements(&s, &wrong);
     }
     assert!(caught > 0, "time-reversed values went unnoticed");
+}
+
+/// The probe reports the most heap held at once above the call's start, on
+/// any thread, the returned value included: two 1 MiB buffers one after the
+/// other read 1 MiB (a total of allocations, the plausible slip, reads 2),
+/// two at once 2 MiB, and freeing what existed before reads about 0, not a
+/// negative or a wrapped number. Other tests allocate on their own threads
+/// meanwhile, hence the slack.
+#[test]
+fn peak_heap_is_the_most_held_at_once() {
+    use std::hint::black_box;
+    const MIB: u64 = 1 << 20;
+    const SLACK: u64 = 256 << 10;
+    let near = |got: Option<u64>, want: u64| {
+        let got = got.expect("the counting allocator is installed");
+        assert!(got.abs_diff(want) <= SLACK, "{got} bytes, not about {want}");
+    };
+    assert!(memory::installed());
+    let buffer = || black_box(vec![1u8; MIB as usize]);
+    near(memory::peak(|| buffer().len()).1, MIB);
+    near(
+        memory::peak(|| {
+            for _ in 0..2 {
+                black_box(buffer());
+            }
+        })
+        .1,
+        MIB,
+    );
+    near(memory::peak(|| buffer().len() + buffer().len()).1, 2 * MIB);
+    near(
+        memory::peak(|| std::thread::scope(|s| s.spawn(|| buffer().len()).join().unwrap())).1,
+        MIB,
+    );
+    let (kept, returned) = memory::peak(buffer);
+    near(returned, MIB);
+    near(memory::peak(move || drop(kept)).1, 0);
+    // A probe inside another is not measured; the outer one still is.
+    let (inner, outer) = memory::peak(|| memory::peak(|| buffer().len()).1);
+    assert_eq!(inner, None);
+    near(outer, MIB);
 }
