@@ -106,7 +106,9 @@ impl Frame {
             coverage: vec![0; n],
             last: vec![0; n],
             depth: depth.then(|| vec![0.0; n]),
-            attributes: vec![vec![0.0; n]; attributes],
+            // Not `vec![vec![0.0; n]; attributes]`: its template channel
+            // is allocated even when there are no attributes.
+            attributes: (0..attributes).map(|_| vec![0.0; n]).collect(),
             resolved: None,
             time: None,
             sample_tests: None,
