@@ -20,7 +20,7 @@ use traverse::Sink;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Number, Primitive, Scene, Triangle};
+use crate::scene::{LastPixel, LineRule, Number, Primitive, Scene, Triangle};
 
 /// A production method that is a rasterizer of its own (a polygon fill, an
 /// antialiasing method), by its command-line name.
@@ -95,6 +95,12 @@ pub(crate) fn draw_frame(
         .map(|plan| Samples { plan, sampling });
     let format = format_for(scene, samples.as_ref())?;
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+    if samples.is_none() && !plan.interpolates() {
+        if let Some(lines) = coverage_midpoint_lines(scene, format, &keep) {
+            line::midpoint_lines(&lines, format, scene.canvas, &mut frame);
+            return Ok(frame);
+        }
+    }
     if format.fits_i64() {
         draw::<i64>(scene, plan, format, samples.as_ref(), &keep, &mut frame)?;
     } else {
@@ -104,6 +110,33 @@ pub(crate) fn draw_frame(
         frame.resolve();
     }
     Ok(frame)
+}
+
+/// The primitives `keep` selects, when every one is a `midpoint` line:
+/// drawn coverage only, they go band by band ([`line::midpoint_lines`]).
+fn coverage_midpoint_lines(
+    scene: &Scene,
+    format: Format,
+    keep: &impl Fn(usize) -> bool,
+) -> Option<Vec<(usize, line::Geometry, LastPixel)>> {
+    let mut lines = Vec::new();
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        if !keep(index) {
+            continue;
+        }
+        let Primitive::Line(l) = primitive else {
+            return None;
+        };
+        if l.rule != LineRule::Midpoint {
+            return None;
+        }
+        let ends = l
+            .vertices
+            .each_ref()
+            .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]);
+        lines.push((index, line::Geometry::new(ends), l.last_pixel));
+    }
+    Some(lines)
 }
 
 /// The fixed-point format production draws `scene` in: the snapping grid
