@@ -120,6 +120,21 @@ pub struct Measured {
 }
 
 impl Measured {
+    /// A method that could not run on a workload, and why.
+    fn not_run(method: &str, why: String) -> Measured {
+        Measured {
+            method: method.to_owned(),
+            per_item: None,
+            timed_items: 0,
+            errors: None,
+            coverage_error: None,
+            exact: false,
+            peak_heap: None,
+            empty_frame: None,
+            note: why,
+        }
+    }
+
     /// The error as a fraction, for the chart: wrong samples over covered
     /// ones, or the RMS coverage error of an antialiasing method.
     pub fn error_fraction(&self) -> Option<f64> {
@@ -894,15 +909,8 @@ fn measure_triangles(
                 },
             },
             Err(why) => Measured {
-                method: name.clone(),
-                per_item: None,
-                timed_items: 0,
-                errors: None,
-                coverage_error: None,
                 exact: is_exact(name),
-                peak_heap: None,
-                empty_frame: None,
-                note: why,
+                ..Measured::not_run(name, why)
             },
         };
         let marginal = is_driver(name)
@@ -1228,17 +1236,7 @@ fn measure_antialias(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
                 empty_frame: None,
                 note: String::new(),
             },
-            Err(why) => Measured {
-                method: m.name.clone(),
-                per_item: None,
-                timed_items: 0,
-                errors: None,
-                coverage_error: None,
-                exact: false,
-                peak_heap: None,
-                empty_frame: None,
-                note: why,
-            },
+            Err(why) => Measured::not_run(&m.name, why),
         })
         .collect();
     notes.push(format!(
@@ -1551,17 +1549,7 @@ fn measure_motion(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
                         note,
                     }
                 }
-                Err(why) => Measured {
-                    method: name.clone(),
-                    per_item: None,
-                    timed_items: 0,
-                    errors: None,
-                    coverage_error: None,
-                    exact: false,
-                    peak_heap: None,
-                    empty_frame: None,
-                    note: why,
-                },
+                Err(why) => Measured::not_run(name, why),
             },
         )
         .collect();
