@@ -10,32 +10,33 @@
 //! - [`scene`]: the model every rasterizer shares: exact numbers, rules,
 //!   primitives; read from JSON with errors that name the file and path.
 //! - [`plan`]: the stages a scene needs, and nothing more.
-//! - [`reference`]: the exact oracle. [`production`]: the fast fixed-point
-//!   rasterizer. [`mutants`]: production with one deliberate bug each.
+//! - The rasterizers, behind one trait ([`rasterizer`]): [`reference`], the
+//!   exact oracle; [`production`], the fast fixed-point rasterizer (with its
+//!   foils and mutants); [`adapters`], third-party rasterizers.
 //! - [`frame`]: what every rasterizer returns.
-//! - [`metrics`]: coverage, watertightness and interpolation error.
-//! - [`suite`]: discovery and running; [`golden`] and [`report`]: outputs;
-//!   [`baseline`]: recorded metrics that later runs must not get worse than.
+//! - [`metrics`]: coverage, watertightness, interpolation, antialiasing and
+//!   time-coverage error, and the verdicts.
+//! - [`harness`]: finding and running cases, golden files, baselines, the
+//!   conformance matrix.
+//! - [`report`]: report.json and everything written from it.
+//! - On top: [`explore`] (fuzz, probe) and [`bench`].
+//!
+//! [`deadline`] is the per-case time limit that the long loops of every
+//! stage poll.
 
 pub mod adapters;
-pub mod baseline;
 pub mod bench;
 pub mod deadline;
+pub mod explore;
 pub mod frame;
-pub mod fuzz;
-pub mod golden;
-pub mod matrix;
+pub mod harness;
 pub mod metrics;
-pub mod mutants;
 pub mod plan;
-pub mod probe;
 pub mod production;
 pub mod rasterizer;
 pub mod reference;
 pub mod report;
-pub mod runner;
 pub mod scene;
-pub mod suite;
 
 pub use frame::Frame;
 pub use plan::Plan;

@@ -6,17 +6,17 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
-use rastercheck::baseline::{Baseline, Observed, SelectionInfo};
-use rastercheck::golden;
+use rastercheck::harness::baseline::{Baseline, Observed, SelectionInfo};
+use rastercheck::harness::golden;
 use rastercheck::report::png;
 use rastercheck::scene::Limits;
 use std::io::IsTerminal;
 
+use rastercheck::harness::runner::{self, CaseOutcome, Problem, Selection};
+use rastercheck::harness::suite::{self, GoldenStatus, Verdict};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::report;
 use rastercheck::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
-use rastercheck::runner::{self, CaseOutcome, Problem, Selection};
-use rastercheck::suite::{self, GoldenStatus, Verdict};
 
 /// The system allocator, counting only while `bench` measures a method's
 /// peak heap (one relaxed atomic load per allocation otherwise).
@@ -128,7 +128,7 @@ struct FuzzArgs {
     #[arg(long)]
     seed: Option<u64>,
     /// Folder for the shrunk case files.
-    #[arg(long, value_name = "DIR", default_value = rastercheck::fuzz::default_out().to_str())]
+    #[arg(long, value_name = "DIR", default_value = rastercheck::explore::fuzz::default_out().to_str())]
     out: PathBuf,
     /// Only this family: triangles, lines, meshes, polygons, antialias or
     /// motion (default: each in turn).
@@ -340,13 +340,14 @@ fn discover(paths: Vec<PathBuf>) -> (suite::Discovery, bool) {
 
 fn run(args: RunArgs) -> u8 {
     let limits = args.limits.limits();
-    let (declared, names) = match rastercheck::probe::for_run(&args.profile, &args.rasterizers) {
-        Ok(found) => found,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return BAD_INPUT;
-        }
-    };
+    let (declared, names) =
+        match rastercheck::explore::probe::for_run(&args.profile, &args.rasterizers) {
+            Ok(found) => found,
+            Err(e) => {
+                eprintln!("error: {e}");
+                return BAD_INPUT;
+            }
+        };
     for d in &declared {
         println!("{}", d.note());
     }
@@ -417,7 +418,7 @@ fn run(args: RunArgs) -> u8 {
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
-    let mut outcomes = rastercheck::probe::run_all_with_profiles(
+    let mut outcomes = rastercheck::explore::probe::run_all_with_profiles(
         &files,
         &limits,
         &mut candidates,
@@ -955,7 +956,7 @@ fn baseline_check(
 }
 
 fn fuzz(args: FuzzArgs) -> u8 {
-    use rastercheck::fuzz;
+    use rastercheck::explore::fuzz;
     let Some(candidate) = suite::rasterizer(&args.rasterizer) else {
         eprintln!("error: {}", unknown_rasterizer(&args.rasterizer));
         return BAD_INPUT;
@@ -968,7 +969,7 @@ fn fuzz(args: FuzzArgs) -> u8 {
         None => None,
         Some((_, Some(family))) => Some(family),
         Some((f, None)) => {
-            let known: Vec<&str> = rastercheck::fuzz::Family::ALL
+            let known: Vec<&str> = rastercheck::explore::fuzz::Family::ALL
                 .iter()
                 .map(|f| f.name())
                 .collect();
@@ -1044,7 +1045,7 @@ fn fuzz(args: FuzzArgs) -> u8 {
 }
 
 fn matrix(args: MatrixArgs) -> u8 {
-    use rastercheck::matrix;
+    use rastercheck::harness::matrix;
     let names = if args.rasterizers.is_empty() {
         matrix::default_rows()
     } else {
@@ -1092,7 +1093,7 @@ fn probe(name: &str, out: Option<PathBuf>) -> u8 {
         eprintln!("error: {}", unknown_rasterizer(name));
         return BAD_INPUT;
     };
-    let profile = match rastercheck::probe::probe(candidate.as_ref()) {
+    let profile = match rastercheck::explore::probe::probe(candidate.as_ref()) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");

@@ -8,9 +8,9 @@
 
 use std::path::{Path, PathBuf};
 
+use rastercheck::harness::suite::{self, CandidateRun, Verdict};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{FillRule, Limits, Scene};
-use rastercheck::suite::{self, CandidateRun, Verdict};
 
 fn case(id: &str) -> Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -2,7 +2,7 @@
 //! supersampling bit for bit, without a sample mask: random triangle scenes
 //! under every pattern, sample count, fill rule and snapping.
 
-use rastercheck::fuzz::Rng;
+use rastercheck::explore::fuzz::Rng;
 use rastercheck::plan::Plan;
 use rastercheck::production::antialias::resolve::AdaptiveResolve;
 use rastercheck::production::Production;

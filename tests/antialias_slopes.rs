@@ -29,11 +29,11 @@ mod common;
 
 use common::Rng;
 use rastercheck::frame::Frame;
+use rastercheck::harness::suite::{self, Verdict};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::reference;
 use rastercheck::scene::{parse_case, Antialias, Limits, Pattern, Scene};
-use rastercheck::suite::{self, Verdict};
 
 /// Pixels per side: 256 edges per scene.
 const SIDE: u32 = 16;
@@ -163,7 +163,8 @@ struct Measured {
 }
 
 fn measure(regions: &[Vec<(u64, u64)>], pattern: Pattern, seeds: u64) -> Measured {
-    let production = rastercheck::suite::rasterizer("production").expect("production exists");
+    let production =
+        rastercheck::harness::suite::rasterizer("production").expect("production exists");
     let mut reference_rms = Vec::new();
     let mut production_rms = Some(Vec::new());
     for &n in &COUNTS {

@@ -15,9 +15,9 @@
 use std::path::{Path, PathBuf};
 
 use libtest_mimic::{Arguments, Failed, Trial};
+use rastercheck::harness::suite::{self, CaseFile, GoldenStatus, Verdict};
 use rastercheck::production::Production;
 use rastercheck::scene::Limits;
-use rastercheck::suite::{self, CaseFile, GoldenStatus, Verdict};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

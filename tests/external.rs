@@ -667,7 +667,7 @@ fn a_response_may_name_an_exr_file_with_golden_channels() {
     let reference = rastercheck::reference::render(&scene, &plan);
     let dir = scratch("exr");
     let path = dir.join("frame.exr");
-    rastercheck::golden::write(&reference, &path).unwrap();
+    rastercheck::harness::golden::write(&reference, &path).unwrap();
     let response = json!({"exr": path.display().to_string()});
     let frame = external::frame_from_response(&response, &scene, &plan).unwrap();
     assert_eq!(frame.coverage, reference.coverage);

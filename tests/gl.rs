@@ -10,8 +10,8 @@ use std::path::Path;
 use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
+use rastercheck::harness::suite::{self, CandidateRun, Verdict};
 use rastercheck::scene::{FillRule, Scene};
-use rastercheck::suite::{self, CandidateRun, Verdict};
 
 /// Whether llvmpipe is here; prints why not once per test.
 fn available() -> bool {

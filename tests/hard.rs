@@ -15,10 +15,10 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
+use rastercheck::harness::suite::{self, Verdict};
 use rastercheck::production::foils::{FloatF32, FloatF64};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::Limits;
-use rastercheck::suite::{self, Verdict};
 
 /// Hard cases on which `float-f32` departs from the reference.
 const F32_FAILS: &[&str] = &[

@@ -8,10 +8,10 @@ use std::path::Path;
 
 use rastercheck::adapters::lavapipe::{self, Lavapipe, STANDARD_4X};
 use rastercheck::frame::Frame;
+use rastercheck::harness::suite::{self, CandidateRun, Verdict};
 use rastercheck::plan::{Plan, SamplePlan};
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::Scene;
-use rastercheck::suite::{self, CandidateRun, Verdict};
 
 /// Whether lavapipe is here; prints why not once per test.
 fn available() -> bool {

@@ -16,7 +16,7 @@ fn the_matrix_has_every_default_row_and_findings() {
     let shown = text(&out);
     assert_eq!(out.status.code(), Some(0), "{shown}");
     assert!(shown.contains("| rasterizer | triangles ("), "{shown}");
-    for row in rastercheck::matrix::default_rows() {
+    for row in rastercheck::harness::matrix::default_rows() {
         let line = shown
             .lines()
             .find(|l| l.starts_with(&format!("| `{row}`")))
@@ -122,7 +122,10 @@ fn write_readme_replaces_only_the_marked_block() {
         block.contains(&format!("rastercheck {}", env!("CARGO_PKG_VERSION"))),
         "{block}"
     );
-    assert!(block.contains(&rastercheck::matrix::today()), "{block}");
+    assert!(
+        block.contains(&rastercheck::harness::matrix::today()),
+        "{block}"
+    );
     assert!(block.contains("| `mutant:flipped-ties` |"), "{block}");
     assert!(
         block.contains("gives 8 tie samples to the other triangle"),

@@ -11,16 +11,16 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use rastercheck::baseline::{Baseline, Change, Observed, SelectionInfo};
 use rastercheck::frame::Frame;
-use rastercheck::mutants::{Mutant, Mutation};
+use rastercheck::harness::baseline::{Baseline, Change, Observed, SelectionInfo};
+use rastercheck::harness::runner::{CaseOutcome, Selection};
+use rastercheck::harness::suite::{self, CaseFile, GoldenStatus};
 use rastercheck::plan::Plan;
+use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
 use rastercheck::report::{self, png};
-use rastercheck::runner::{CaseOutcome, Selection};
 use rastercheck::scene::{Limits, Scene};
-use rastercheck::suite::{self, CaseFile, GoldenStatus};
 use sliding::{Given, Slide};
 
 fn sampler(slide: &Slide) -> Box<dyn Rasterizer + '_> {

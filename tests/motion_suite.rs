@@ -17,11 +17,11 @@ use std::path::{Path, PathBuf};
 
 use dashu_ratio::RBig;
 
-use rastercheck::mutants::{Mutant, Mutation};
+use rastercheck::harness::suite::{self, Verdict};
 use rastercheck::plan::Plan;
+use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::reference::motion;
 use rastercheck::scene::Scene;
-use rastercheck::suite::{self, Verdict};
 use sliding::{Given, Slide, ONE};
 
 /// Sliding squares of every kind the hand computation covers: integer and

@@ -10,10 +10,10 @@ mod sliding;
 use dashu_ratio::RBig;
 
 use rastercheck::frame::Frame;
+use rastercheck::harness::suite::{self, CandidateRun, ReferenceRun, Verdict};
 use rastercheck::plan::Plan;
 use rastercheck::reference::motion::Certified;
 use rastercheck::scene::Scene;
-use rastercheck::suite::{self, CandidateRun, ReferenceRun, Verdict};
 use sliding::{Given, Slide};
 
 fn reference(slide: &Slide) -> (Scene, ReferenceRun) {
@@ -242,7 +242,7 @@ fn a_broken_oracle_is_reported_on_every_candidate() {
     let path = std::env::temp_dir()
         .join(format!("rastercheck-motion-{}", std::process::id()))
         .join("broken.exr");
-    let err = rastercheck::golden::write(&r.frame, &path).unwrap_err();
+    let err = rastercheck::harness::golden::write(&r.frame, &path).unwrap_err();
     assert!(err.contains("not a number"), "{err}");
     assert!(!path.exists());
 

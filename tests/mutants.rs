@@ -2,12 +2,12 @@
 //! next to the production rasterizer passing the same case.
 
 use rastercheck::frame::Frame;
-use rastercheck::mutants::{Mutant, Mutation};
+use rastercheck::harness::suite::{self, CandidateRun, Verdict};
 use rastercheck::plan::Plan;
+use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{parse_case, Limits, Number, Scene};
-use rastercheck::suite::{self, CandidateRun, Verdict};
 
 fn scene(json: &str) -> Scene {
     parse_case(json, "inline.json", &Limits::default()).expect("valid inline case")
@@ -230,15 +230,18 @@ fn golden_check_catches_a_changed_oracle() {
     let reference = suite::run_reference(&s);
     let dir = std::env::temp_dir().join(format!("rastercheck-golden-{}", std::process::id()));
     let path = dir.join("case.exr");
-    rastercheck::golden::write(&reference.frame, &path).unwrap();
-    assert_eq!(rastercheck::golden::check(&reference.frame, &path), Ok(()));
+    rastercheck::harness::golden::write(&reference.frame, &path).unwrap();
+    assert_eq!(
+        rastercheck::harness::golden::check(&reference.frame, &path),
+        Ok(())
+    );
 
     // One attribute value one f32 ulp off, as a changed rounding would give.
     let mut changed = reference.frame.clone();
     let i = changed.last.iter().position(|&p| p != 0).unwrap();
     let v = changed.attributes[0][i] as f32;
     changed.attributes[0][i] = f64::from(f32::from_bits(v.to_bits() + 1));
-    let err = rastercheck::golden::check(&changed, &path).unwrap_err();
+    let err = rastercheck::harness::golden::check(&changed, &path).unwrap_err();
     assert!(
         err.contains("channel attribute.0: 1 samples differ"),
         "{err}"
@@ -247,7 +250,7 @@ fn golden_check_catches_a_changed_oracle() {
     // One sample handed to no primitive.
     let mut changed = reference.frame.clone();
     changed.coverage[i] = 0;
-    let err = rastercheck::golden::check(&changed, &path).unwrap_err();
+    let err = rastercheck::harness::golden::check(&changed, &path).unwrap_err();
     assert!(err.contains("channel coverage"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
@@ -940,7 +943,7 @@ fn an_accumulation_buffer_over_the_whole_shutter_is_not_caught() {
             let (s, reference) = slide_reference(&slide);
             let midpoints = |_: &Scene, _: &Plan| {
                 let instants: Vec<Number> = (0..16).map(|k| Number::ratio(2 * k + 1, 32)).collect();
-                rastercheck::mutants::accumulate(&s, &instants).unwrap()
+                rastercheck::production::mutants::accumulate(&s, &instants).unwrap()
             };
             let r = suite::run_candidate(&s, &reference, &Given("accumulation", midpoints));
             let t = time_metrics(&r);

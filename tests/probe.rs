@@ -6,8 +6,8 @@ mod common;
 use common::{rastercheck, text};
 use std::path::{Path, PathBuf};
 
-use rastercheck::probe::{self, Profile};
-use rastercheck::suite;
+use rastercheck::explore::probe::{self, Profile};
+use rastercheck::harness::suite;
 
 fn probe_of(name: &str) -> Profile {
     let r = suite::rasterizer(name).unwrap_or_else(|| panic!("no rasterizer {name}"));

@@ -774,7 +774,7 @@ fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Sce
             if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
                 return None;
             }
-            let triangles = rastercheck::fuzz::ear_clip(&placed_points, signs[0])?;
+            let triangles = rastercheck::explore::fuzz::ear_clip(&placed_points, signs[0])?;
             (points, triangles)
         }
     };

@@ -2,8 +2,8 @@
 //! triangles, lines of every rule and polygons, with depth, attributes and
 //! antialiasing, on canvases several bands tall.
 
+use rastercheck::explore::fuzz::Rng;
 use rastercheck::frame::Frame;
-use rastercheck::fuzz::Rng;
 use rastercheck::plan::Plan;
 use rastercheck::production::tiled::{Tiled, BAND};
 use rastercheck::production::Production;

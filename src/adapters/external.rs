@@ -26,7 +26,7 @@ use std::time::{Duration, Instant};
 use serde_json::{json, Value};
 
 use crate::frame::Frame;
-use crate::golden;
+use crate::harness::golden;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};

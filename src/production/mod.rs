@@ -7,6 +7,7 @@ pub mod fixed;
 pub mod foils;
 pub mod line;
 pub mod motion;
+pub mod mutants;
 pub mod polygon;
 pub mod setup;
 pub mod tiled;

@@ -45,8 +45,8 @@ use super::json::{CaseEntry, ChannelEntry, MetricsEntry, Report, ResultEntry, Ti
 use super::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
 use super::{escape, MAX_PICTURED};
 use crate::frame::Frame;
+use crate::harness::runner::CaseOutcome;
 use crate::metrics::{coverage::comparable, SampleDiff};
-use crate::runner::CaseOutcome;
 use crate::scene::Scene;
 
 /// Case files longer than this are linked but not embedded.

@@ -6,10 +6,10 @@
 
 use serde::Serialize;
 
+use crate::harness::runner::{CaseOutcome, Problem, Tally};
+use crate::harness::suite::{GoldenStatus, Verdict};
 use crate::metrics::Metrics;
-use crate::runner::{CaseOutcome, Problem, Tally};
 use crate::scene::Scene;
-use crate::suite::{GoldenStatus, Verdict};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
@@ -389,7 +389,7 @@ fn millis(d: std::time::Duration) -> f64 {
 
 impl CaseEntry {
     /// A case that has not run (yet).
-    pub fn not_run(file: &crate::suite::CaseFile) -> CaseEntry {
+    pub fn not_run(file: &crate::harness::suite::CaseFile) -> CaseEntry {
         CaseEntry {
             id: file.id.clone(),
             path: file.path.display().to_string(),

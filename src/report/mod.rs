@@ -29,8 +29,8 @@ use std::path::{Path, PathBuf};
 
 use json::Report;
 
-use crate::runner::CaseOutcome;
-use crate::suite::Verdict;
+use crate::harness::runner::CaseOutcome;
+use crate::harness::suite::Verdict;
 
 /// Results that get pictures, at most: the page must stay loadable.
 pub const MAX_PICTURED: usize = 200;

@@ -7,9 +7,9 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 use rastercheck::frame::Frame;
+use rastercheck::harness::suite::{self, CandidateRun};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{parse_case, Limits, Scene};
-use rastercheck::suite::{self, CandidateRun};
 
 /// A bundled case by id (`triangles/fan_16_center`).
 pub fn case(id: &str) -> Scene {

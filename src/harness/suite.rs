@@ -9,11 +9,11 @@ use dashu_ratio::RBig;
 
 use crate::deadline;
 use crate::frame::Frame;
-use crate::golden;
+use crate::harness::golden;
 use crate::metrics::{self, AreaClass, Metrics};
-use crate::mutants::{Mutant, Mutation};
 use crate::plan::Plan;
 use crate::production::foils::{DdaF32, DdaF64, FloatF32, FloatF64};
+use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference::motion::Certified;

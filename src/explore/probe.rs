@@ -54,12 +54,12 @@ use serde::Serialize;
 use serde_json::{json, Value};
 
 use crate::frame::Frame;
+use crate::harness::runner::{self, CaseOutcome};
+use crate::harness::suite::{self, CaseFile, Verdict};
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::reference;
-use crate::runner::{self, CaseOutcome};
 use crate::scene::{parse_case, FillRule, Limits, Scene};
-use crate::suite::{self, CaseFile, Verdict};
 
 pub const SCHEMA: &str = "rastercheck-profile/1";
 

@@ -11,8 +11,8 @@ use std::time::{Duration, Instant};
 
 pub mod memory;
 
+use crate::explore::fuzz::Rng;
 use crate::frame::Frame;
-use crate::fuzz::Rng;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::time::limits::TIME_ONE;
@@ -560,7 +560,7 @@ pub fn triangle_methods() -> Vec<(String, Box<dyn Rasterizer>)> {
         names.push("gl");
     }
     for name in names {
-        if let Some(r) = crate::suite::rasterizer(name) {
+        if let Some(r) = crate::harness::suite::rasterizer(name) {
             out.push((name.to_owned(), r));
         }
     }
@@ -994,7 +994,7 @@ fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload {
         .iter()
         .map(|&n| match n {
             "midpoint-plain" => Box::new(PlainMidpoint),
-            n => crate::suite::rasterizer(n).expect("a built-in rasterizer"),
+            n => crate::harness::suite::rasterizer(n).expect("a built-in rasterizer"),
         })
         .collect();
     let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
@@ -1134,7 +1134,7 @@ fn aa_methods(counts: &[u32]) -> Vec<AaMethod> {
         rasterizer: Box::new(crate::production::antialias::resolve::AdaptiveResolve),
     });
     for name in ["adaptive-refine", "area-f32", "tiny-skia", "vello-cpu"] {
-        if let Some(r) = crate::suite::rasterizer(name) {
+        if let Some(r) = crate::harness::suite::rasterizer(name) {
             out.push(AaMethod {
                 name: format!("{name} (16× standard case)"),
                 antialias: Some(with(16, Pattern::Standard, false)),
@@ -1948,7 +1948,7 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
         quick: options.quick,
         machine,
         cores,
-        date: crate::matrix::today(),
+        date: crate::harness::matrix::today(),
         version: env!("CARGO_PKG_VERSION").to_owned(),
         repetitions: sizes.repetitions,
         workloads,

@@ -11,11 +11,11 @@ use std::collections::BTreeSet;
 use std::path::Path;
 
 use crate::frame::Frame;
+use crate::harness::runner::{self, CaseOutcome};
+use crate::harness::suite::{self, CaseFile, Verdict};
 use crate::plan::Plan;
 use crate::rasterizer::{RasterError, Rasterizer};
-use crate::runner::{self, CaseOutcome};
 use crate::scene::{parse_case, FillRule, Limits, Primitive};
-use crate::suite::{self, CaseFile, Verdict};
 
 pub const BEGIN: &str = "<!-- matrix:begin -->";
 pub const END: &str = "<!-- matrix:end -->";

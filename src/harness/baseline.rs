@@ -70,9 +70,9 @@ use std::path::Path;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
+use crate::harness::runner::{CaseOutcome, Selection};
+use crate::harness::suite::{CandidateRun, CaseFile};
 use crate::metrics::Metrics;
-use crate::runner::{CaseOutcome, Selection};
-use crate::suite::{CandidateRun, CaseFile};
 
 pub const SCHEMA: &str = "rastercheck-baseline/1";
 

@@ -12,9 +12,9 @@ use std::time::Duration;
 use rayon::prelude::*;
 
 use crate::deadline;
+use crate::harness::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
 use crate::rasterizer::Rasterizer;
 use crate::scene::{Limits, Scene};
-use crate::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
 
 /// Which of the discovered cases to run.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

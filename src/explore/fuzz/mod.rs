@@ -64,6 +64,7 @@ use dashu_int::UBig;
 use dashu_ratio::RBig;
 
 use crate::frame::Frame;
+use crate::harness::suite::{self, ReferenceRun, Verdict};
 use crate::metrics::{Metrics, SampleDiff};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
@@ -75,7 +76,6 @@ use crate::scene::{
     Limits, Line, LineParameter, LineRule, MotionBlur, Number, Pattern, Polygon, PolygonFill,
     Primitive, Rules, Scene, TimePattern, TimePin, Triangle, Vertex,
 };
-use crate::suite::{self, ReferenceRun, Verdict};
 
 /// Most candidate evaluations one shrink may spend.
 pub const SHRINK_BUDGET: u64 = 20_000;

@@ -1,0 +1,16 @@
+//! The harness: from case files on disk to one outcome per case.
+//!
+//! - [`suite`]: finding case files, reading them, running one case through
+//!   the reference and the candidates, and judging the golden file.
+//! - [`runner`]: many cases at once: selection, parallel execution, limits,
+//!   outcomes in a fixed order.
+//! - [`golden`]: the blessed reference outputs (EXR) and their comparison.
+//! - [`baseline`]: recorded metrics that later runs must not get worse than.
+//! - [`matrix`]: every case through several rasterizers, as a conformance
+//!   matrix with findings.
+
+pub mod baseline;
+pub mod golden;
+pub mod matrix;
+pub mod runner;
+pub mod suite;
