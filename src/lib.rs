@@ -26,6 +26,7 @@
 
 pub mod adapters;
 pub mod bench;
+pub mod commands;
 pub mod deadline;
 pub mod explore;
 pub mod frame;

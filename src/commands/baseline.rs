@@ -1,0 +1,292 @@
+//! `rastercheck baseline save|check`: record a run's accuracy metrics per
+//! case and rasterizer, or hold a later run to them (exit 1 when a metric
+//! gets worse).
+
+use std::path::PathBuf;
+
+use clap::{Args, Subcommand};
+
+use super::{default_paths, discover, rasterizers_named, unknown_rasterizer, Exit, LimitArgs};
+use crate::harness::baseline::{Baseline, Observed, SelectionInfo};
+use crate::harness::runner::{self, Selection};
+use crate::harness::suite;
+
+#[derive(Subcommand)]
+pub enum BaselineCommand {
+    /// Run the cases and write their metrics to FILE (schema
+    /// rastercheck-baseline/1, with its tolerances).
+    Save {
+        /// The baseline file to write.
+        file: PathBuf,
+        /// Case files or folders (default: cases).
+        paths: Vec<PathBuf>,
+        /// Rasterizer to record; repeat for several (default: production).
+        #[arg(long = "rasterizer", short = 'r')]
+        rasterizers: Vec<String>,
+        #[command(flatten)]
+        select: BaselineSelectArgs,
+    },
+    /// Re-run the cases and rasterizers of FILE and compare: exit 1 on a
+    /// regression, 0 when there are only improvements or none.
+    Check {
+        /// The baseline file to compare with.
+        file: PathBuf,
+        /// Case files or folders (default: the paths the baseline was
+        /// saved from).
+        paths: Vec<PathBuf>,
+        /// Rasterizer to check (default: every one in FILE). NAME=RECORDED
+        /// runs NAME and holds it to the results recorded for RECORDED.
+        #[arg(long = "rasterizer", short = 'r', value_name = "NAME[=RECORDED]")]
+        rasterizers: Vec<String>,
+        #[command(flatten)]
+        select: BaselineSelectArgs,
+    },
+}
+
+#[derive(Args)]
+pub struct BaselineSelectArgs {
+    /// Only cases whose id matches this glob, as for `run` (check: default
+    /// the baseline's).
+    #[arg(long)]
+    pub filter: Option<String>,
+    /// Only cases of this family (check: default the baseline's).
+    #[arg(long)]
+    pub family: Option<String>,
+    /// Worker threads (default: one per core). Results do not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// Discovers and selects the cases of a baseline run; `Err` is bad input
+/// already reported.
+fn baseline_cases(
+    paths: Vec<PathBuf>,
+    selection: &Selection,
+    allow_empty: bool,
+) -> Result<Vec<suite::CaseFile>, ()> {
+    let (found, bad) = discover(paths);
+    if bad {
+        return Err(());
+    }
+    let files = selection.apply(found.cases);
+    if files.is_empty() && !allow_empty {
+        eprintln!("error: no case files found that match the selection");
+        return Err(());
+    }
+    Ok(files)
+}
+
+/// `rastercheck baseline save|check`.
+pub fn baseline(command: BaselineCommand) -> Exit {
+    match command {
+        BaselineCommand::Save {
+            file,
+            paths,
+            rasterizers,
+            select,
+        } => baseline_save(file, paths, rasterizers, select),
+        BaselineCommand::Check {
+            file,
+            paths,
+            rasterizers,
+            select,
+        } => baseline_check(file, paths, rasterizers, select),
+    }
+}
+
+fn baseline_save(
+    file: PathBuf,
+    paths: Vec<PathBuf>,
+    names: Vec<String>,
+    select: BaselineSelectArgs,
+) -> Exit {
+    let mut names = if names.is_empty() {
+        vec!["production".to_owned()]
+    } else {
+        names
+    };
+    names.sort();
+    names.dedup();
+    let candidates = match rasterizers_named(&names) {
+        Ok(candidates) => candidates,
+        Err(exit) => return exit,
+    };
+    let paths = default_paths(paths);
+    let info = SelectionInfo {
+        paths: paths.iter().map(|p| p.display().to_string()).collect(),
+        filter: select.filter.clone(),
+        family: select.family.clone(),
+    };
+    let Ok(files) = baseline_cases(paths, &info.selection(), false) else {
+        return Exit::BadInput;
+    };
+    let outcomes = runner::run_all(
+        &files,
+        &select.limits.limits(),
+        &candidates,
+        &PathBuf::from("."),
+        select.threads,
+        &|_| {},
+    );
+    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
+    let observed = Observed::from_outcomes(&outcomes, &names, &foils);
+    if !observed.problems.is_empty() {
+        for (case, why) in &observed.problems {
+            eprintln!("error: {case}: {why}");
+        }
+        eprintln!(
+            "error: {} not written: every case must run to be recorded",
+            file.display()
+        );
+        return Exit::BadInput;
+    }
+    let baseline = Baseline::new(std::env::args().skip(1).collect(), info, &observed);
+    if let Err(e) = baseline.save(&file) {
+        eprintln!("error: writing the baseline: {e}");
+        return Exit::BadInput;
+    }
+    println!(
+        "baseline: recorded {} results ({} cases × {}) in {}",
+        baseline.results.len(),
+        files.len(),
+        names.join(", "),
+        file.display()
+    );
+    Exit::Pass
+}
+
+fn baseline_check(
+    file: PathBuf,
+    paths: Vec<PathBuf>,
+    names: Vec<String>,
+    select: BaselineSelectArgs,
+) -> Exit {
+    let baseline = match Baseline::load(&file) {
+        Ok(b) => b,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    };
+    let shown = file.display();
+    // (name to run, name recorded under)
+    let mut pairs: Vec<(String, String)> = if names.is_empty() {
+        baseline
+            .rasterizers
+            .iter()
+            .map(|n| (n.clone(), n.clone()))
+            .collect()
+    } else {
+        names
+            .iter()
+            .map(|n| match n.split_once('=') {
+                Some((run, recorded)) => (run.trim().to_owned(), recorded.trim().to_owned()),
+                None => (n.clone(), n.clone()),
+            })
+            .collect()
+    };
+    pairs.sort_by(|a, b| a.1.cmp(&b.1));
+    if let Some(w) = pairs.windows(2).find(|w| w[0].1 == w[1].1) {
+        eprintln!(
+            "error: {} and {} are both held to {:?}; give each recorded rasterizer once",
+            w[0].0, w[1].0, w[0].1
+        );
+        return Exit::BadInput;
+    }
+    let mut candidates = Vec::new();
+    for (run, recorded) in &pairs {
+        if !baseline.rasterizers.contains(recorded) {
+            eprintln!(
+                "error: {shown}: no results recorded for rasterizer {recorded:?} (it records: {}); save a baseline for it, or hold it to a recorded one with -r {run}={}",
+                baseline.rasterizers.join(", "),
+                baseline.rasterizers.first().map_or("RECORDED", String::as_str)
+            );
+            return Exit::BadInput;
+        }
+        match suite::rasterizer(run) {
+            Some(r) => candidates.push(r),
+            None if names.is_empty() => {
+                eprintln!(
+                    "error: {shown}: the baseline records {}",
+                    unknown_rasterizer(run)
+                );
+                return Exit::BadInput;
+            }
+            None => {
+                eprintln!("error: {}", unknown_rasterizer(run));
+                return Exit::BadInput;
+            }
+        }
+    }
+    let paths = if paths.is_empty() {
+        baseline.selection.paths.iter().map(PathBuf::from).collect()
+    } else {
+        paths
+    };
+    let selection = Selection {
+        filter: select.filter.clone().or(baseline.selection.filter.clone()),
+        family: select.family.clone().or(baseline.selection.family.clone()),
+        shard: None,
+    };
+    let Ok(files) = baseline_cases(paths, &selection, true) else {
+        return Exit::BadInput;
+    };
+    let outcomes = runner::run_all(
+        &files,
+        &select.limits.limits(),
+        &candidates,
+        &PathBuf::from("."),
+        select.threads,
+        &|_| {},
+    );
+    let recorded: Vec<String> = pairs.iter().map(|p| p.1.clone()).collect();
+    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
+    let observed = Observed::from_outcomes(&outcomes, &recorded, &foils);
+    let comparison = baseline.compare(&observed, &recorded, &selection);
+    let shown_as = |recorded: &str| {
+        pairs
+            .iter()
+            .find(|p| p.1 == recorded)
+            .map_or(recorded.to_owned(), |(run, recorded)| {
+                if run == recorded {
+                    run.clone()
+                } else {
+                    format!("{run} (as {recorded})")
+                }
+            })
+    };
+    for finding in &comparison.findings {
+        let mut f = finding.clone();
+        f.rasterizer = shown_as(&f.rasterizer);
+        println!("{f}");
+    }
+    for (case, rasterizer) in &comparison.new {
+        println!(
+            "NEW         {case}  {}  not in the baseline",
+            shown_as(rasterizer)
+        );
+    }
+    if baseline.tool.version != env!("CARGO_PKG_VERSION") {
+        println!(
+            "note: {shown} was saved by rastercheck {}; this is {}",
+            baseline.tool.version,
+            env!("CARGO_PKG_VERSION")
+        );
+    }
+    println!("{}", comparison.summary());
+    if comparison.improvements() > 0 && comparison.regressions() == 0 {
+        println!("note: save the baseline again to hold future runs to the improvements");
+    }
+    if !observed.problems.is_empty() {
+        for (case, why) in &observed.problems {
+            eprintln!("error: {case}: {why}");
+        }
+        Exit::BadInput
+    } else if comparison.regressions() > 0 {
+        Exit::Fail
+    } else {
+        Exit::Pass
+    }
+}

@@ -1,0 +1,102 @@
+//! The commands: each `rastercheck` subcommand as a library function, so
+//! that the binary, the tests and any other front end run the same code.
+//!
+//! `src/main.rs` only parses the command line (the argument types live here,
+//! derived with clap) and turns an [`Exit`] into the process's exit code.
+//! Each command reads cases (harness), runs rasterizers, and writes what the
+//! user sees: console lines here, files through [`crate::report`].
+
+use std::path::PathBuf;
+
+use crate::harness::suite;
+use crate::rasterizer::Rasterizer;
+
+pub mod baseline;
+pub mod bench;
+pub mod bless;
+pub mod console;
+pub mod fuzz;
+pub mod limits;
+pub mod matrix;
+pub mod probe;
+pub mod run;
+pub mod show;
+
+pub use limits::LimitArgs;
+
+/// How a command ended, as SPEC.md §9 maps it to an exit code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Exit {
+    /// 0: everything judged passes.
+    Pass,
+    /// 1: something failed.
+    Fail,
+    /// 2: bad input or bad usage, or a case over a resource limit.
+    BadInput,
+}
+
+impl Exit {
+    /// The process exit code.
+    pub fn code(self) -> u8 {
+        match self {
+            Exit::Pass => 0,
+            Exit::Fail => 1,
+            Exit::BadInput => 2,
+        }
+    }
+}
+
+/// The case paths given, or `cases` when none is.
+pub(crate) fn default_paths(paths: Vec<PathBuf>) -> Vec<PathBuf> {
+    if paths.is_empty() {
+        vec![PathBuf::from("cases")]
+    } else {
+        paths
+    }
+}
+
+/// Discovers cases, printing what was skipped and what could not be found;
+/// the flag says whether something could not be found.
+pub(crate) fn discover(paths: Vec<PathBuf>) -> (suite::Discovery, bool) {
+    let found = suite::discover(&default_paths(paths));
+    for dir in &found.skipped {
+        println!(
+            "note: skipping {} (negative tests; name it explicitly to check it)",
+            dir.display()
+        );
+    }
+    for error in &found.errors {
+        eprintln!("error: {error}");
+    }
+    let bad = !found.errors.is_empty();
+    (found, bad)
+}
+
+/// The error for a name that is no rasterizer, listing the known ones.
+pub(crate) fn unknown_rasterizer(name: &str) -> String {
+    format!(
+        "unknown rasterizer {name:?}; known: {}",
+        suite::rasterizer_names().join(", ")
+    )
+}
+
+/// The named rasterizer; `Err` (already printed) when there is none.
+pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> {
+    suite::rasterizer(name).ok_or_else(|| {
+        eprintln!("error: {}", unknown_rasterizer(name));
+        Exit::BadInput
+    })
+}
+
+/// The named rasterizers; `Err` (already printed) on an unknown name.
+pub(crate) fn rasterizers_named(names: &[String]) -> Result<Vec<Box<dyn Rasterizer>>, Exit> {
+    names.iter().map(|name| rasterizer_named(name)).collect()
+}
+
+/// `rastercheck rasterizers`: the names `--rasterizer` accepts.
+pub fn list_rasterizers() -> Exit {
+    for name in suite::rasterizer_names() {
+        println!("{name}");
+    }
+    Exit::Pass
+}

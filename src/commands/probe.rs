@@ -1,0 +1,46 @@
+//! `rastercheck probe`: find a rasterizer's conventions from its frames and
+//! write them as a profile for `run --profile`.
+
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::{rasterizer_named, Exit};
+
+/// The arguments of `probe`.
+#[derive(Args)]
+pub struct ProbeArgs {
+    /// The rasterizer to probe.
+    #[arg(long = "rasterizer", short = 'r')]
+    pub rasterizer: String,
+    /// Write the profile (schema rastercheck-profile/1) to this file.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+}
+
+/// `rastercheck probe`: a rasterizer's conventions, printed and optionally
+/// written as a profile.
+pub fn probe(args: ProbeArgs) -> Exit {
+    let ProbeArgs { rasterizer, out } = args;
+    let name = rasterizer.as_str();
+    let candidate = match rasterizer_named(name) {
+        Ok(candidate) => candidate,
+        Err(exit) => return exit,
+    };
+    let profile = match crate::explore::probe::probe(candidate.as_ref()) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::Fail;
+        }
+    };
+    print!("{}", profile.describe());
+    if let Some(file) = out {
+        if let Err(e) = std::fs::write(&file, profile.to_json()) {
+            eprintln!("error: {}: {e}", file.display());
+            return Exit::BadInput;
+        }
+        println!("wrote {}", file.display());
+    }
+    Exit::Pass
+}

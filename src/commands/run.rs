@@ -1,0 +1,210 @@
+//! `rastercheck run`: the main job. Cases are selected and run (harness),
+//! each outcome printed as it is judged (console), totals printed, and the
+//! report folder written (report).
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::console::{print_outcome, Progress};
+use super::{discover, rasterizers_named, Exit, LimitArgs};
+use crate::harness::runner::{self, Problem, Selection};
+use crate::report;
+use crate::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
+
+#[derive(Args)]
+pub struct RunArgs {
+    /// Case files or folders (default: cases). Folders named `invalid`
+    /// are skipped unless named directly.
+    pub paths: Vec<PathBuf>,
+    /// Rasterizer to check; repeat for several (default: production).
+    /// `rastercheck rasterizers` lists them.
+    #[arg(long = "rasterizer", short = 'r')]
+    pub rasterizers: Vec<String>,
+    /// Print only failures and the summary, and no progress bar.
+    #[arg(long, short = 'q')]
+    pub quiet: bool,
+    /// Write report.json, junit.xml, summary.md, index.html, images and
+    /// error maps into this folder.
+    #[arg(long, value_name = "DIR")]
+    pub report: Option<PathBuf>,
+    /// Only cases whose id matches this glob (`*` within a segment, `**`
+    /// across segments): --filter 'triangles/fan_*'.
+    #[arg(long)]
+    pub filter: Option<String>,
+    /// Only cases of this family (the first segment of the id).
+    #[arg(long)]
+    pub family: Option<String>,
+    /// Run the i-th of n shards (1-based): every n-th selected case.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// Worker threads (default: one per core). Results do not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// A profile written by `probe`: its rasterizer is judged under the
+    /// fill rule it declares instead of each case's (only the fill rule
+    /// is overridden). Repeat for several rasterizers.
+    #[arg(long, value_name = "FILE")]
+    pub profile: Vec<PathBuf>,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// `rastercheck run`: every selected case through the reference and the
+/// candidates, one line each, a summary, and the report folder.
+pub fn run(args: RunArgs) -> Exit {
+    let limits = args.limits.limits();
+    let (declared, names) = match crate::explore::probe::for_run(&args.profile, &args.rasterizers) {
+        Ok(found) => found,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    };
+    for d in &declared {
+        println!("{}", d.note());
+    }
+    let mut candidates = match rasterizers_named(&names) {
+        Ok(candidates) => candidates,
+        Err(exit) => return exit,
+    };
+    let shard = match args
+        .shard
+        .as_deref()
+        .map(Selection::parse_shard)
+        .transpose()
+    {
+        Ok(shard) => shard,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    };
+    let selection = Selection {
+        filter: args.filter.clone(),
+        family: args.family.clone(),
+        shard,
+    };
+    let (found, mut bad_input) = discover(args.paths.clone());
+    let files = selection.apply(found.cases);
+    if files.is_empty() {
+        eprintln!(
+            "error: no case files found{}",
+            if selection == Selection::default() {
+                ""
+            } else {
+                " that match the selection"
+            }
+        );
+        return Exit::BadInput;
+    }
+    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
+    let mut report = Report::new(
+        std::env::args().skip(1).collect(),
+        candidates
+            .iter()
+            .map(|c| RasterizerInfo {
+                name: c.name().to_owned(),
+                foil: c.is_foil(),
+            })
+            .collect(),
+        LimitsInfo::of(&limits),
+    );
+    report.cases = files.iter().map(CaseEntry::not_run).collect();
+    if let Some(dir) = &args.report {
+        // Written first, so that a run that is killed still leaves a report
+        // that lists what did not run.
+        if let Err(e) = report::write_json(dir, &mut report) {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    }
+
+    let progress = Progress::new(files.len(), args.quiet);
+    let root = PathBuf::from(".");
+    let mut outcomes = crate::explore::probe::run_all_with_profiles(
+        &files,
+        &limits,
+        &mut candidates,
+        &declared,
+        &root,
+        args.threads,
+        &|_| progress.tick(),
+    );
+    progress.finish();
+    runner::reject_duplicate_names(&mut outcomes);
+
+    let colour = std::io::stdout().is_terminal();
+    let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    for outcome in &outcomes {
+        print_outcome(outcome, &candidates, args.quiet, colour, width);
+        bad_input |= outcome
+            .problem
+            .as_ref()
+            .is_some_and(Problem::is_input_error);
+    }
+    report.cases = outcomes
+        .iter()
+        .map(|o| CaseEntry::from_outcome(o, &foils))
+        .collect();
+    report.complete = true;
+    report.tally();
+    let t = report.totals.clone();
+    let failed = t.reference_failed > 0
+        || t.golden.differing > 0
+        || t.verdicts.iter().any(|v| v.tally.fail + v.tally.error > 0);
+    println!();
+    println!(
+        "{} case files, {} unreadable{}",
+        t.cases,
+        t.unreadable,
+        if t.limit_exceeded > 0 {
+            format!(", {} over the time limit", t.limit_exceeded)
+        } else {
+            String::new()
+        }
+    );
+    for (candidate, v) in candidates.iter().zip(&t.verdicts) {
+        let x = &v.tally;
+        if candidate.is_foil() {
+            println!(
+                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors",
+                v.rasterizer, x.pass, x.foil, x.unsupported, x.error
+            );
+        } else {
+            println!(
+                "{}: {} passed, {} failed, {} unsupported, {} errors",
+                v.rasterizer, x.pass, x.fail, x.unsupported, x.error
+            );
+        }
+    }
+    let g = &t.golden;
+    println!(
+        "golden files: {} match, {} differ, {} missing{}",
+        g.matching,
+        g.differing,
+        g.missing,
+        if g.missing > 0 {
+            " (rastercheck bless writes them)"
+        } else {
+            ""
+        }
+    );
+    if let Some(dir) = &args.report {
+        match report::write_all(dir, &mut report, &outcomes) {
+            Ok(written) => println!("report: {} ({} files)", dir.display(), written.len()),
+            Err(e) => {
+                eprintln!("error: writing the report: {e}");
+                return Exit::BadInput;
+            }
+        }
+    }
+    if bad_input {
+        Exit::BadInput
+    } else if failed {
+        Exit::Fail
+    } else {
+        Exit::Pass
+    }
+}
