@@ -10,6 +10,7 @@ use super::{default_paths, discover, rasterizers_named, unknown_rasterizer, Exit
 use crate::harness::baseline::{Baseline, Observed, SelectionInfo};
 use crate::harness::runner::{self, Selection};
 use crate::harness::suite;
+use crate::rasterizer::Rasterizer;
 
 #[derive(Subcommand)]
 pub enum BaselineCommand {
@@ -78,6 +79,26 @@ fn baseline_cases(
     Ok(files)
 }
 
+/// Runs the cases and observes each candidate's metrics, recorded under
+/// `names` (one per candidate, in order).
+fn observe(
+    files: &[suite::CaseFile],
+    candidates: &[Box<dyn Rasterizer>],
+    names: &[String],
+    select: &BaselineSelectArgs,
+) -> Observed {
+    let outcomes = runner::run_all(
+        files,
+        &select.limits.limits(),
+        candidates,
+        &PathBuf::from("."),
+        select.threads,
+        &|_| {},
+    );
+    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
+    Observed::from_outcomes(&outcomes, names, &foils)
+}
+
 /// `rastercheck baseline save|check`.
 pub fn baseline(command: BaselineCommand) -> Exit {
     match command {
@@ -122,16 +143,7 @@ fn baseline_save(
     let Ok(files) = baseline_cases(paths, &info.selection(), false) else {
         return Exit::BadInput;
     };
-    let outcomes = runner::run_all(
-        &files,
-        &select.limits.limits(),
-        &candidates,
-        &PathBuf::from("."),
-        select.threads,
-        &|_| {},
-    );
-    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
-    let observed = Observed::from_outcomes(&outcomes, &names, &foils);
+    let observed = observe(&files, &candidates, &names, &select);
     if !observed.problems.is_empty() {
         for (case, why) in &observed.problems {
             eprintln!("error: {case}: {why}");
@@ -233,17 +245,8 @@ fn baseline_check(
     let Ok(files) = baseline_cases(paths, &selection, true) else {
         return Exit::BadInput;
     };
-    let outcomes = runner::run_all(
-        &files,
-        &select.limits.limits(),
-        &candidates,
-        &PathBuf::from("."),
-        select.threads,
-        &|_| {},
-    );
     let recorded: Vec<String> = pairs.iter().map(|p| p.1.clone()).collect();
-    let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
-    let observed = Observed::from_outcomes(&outcomes, &recorded, &foils);
+    let observed = observe(&files, &candidates, &recorded, &select);
     let comparison = baseline.compare(&observed, &recorded, &selection);
     let shown_as = |recorded: &str| {
         pairs
