@@ -8,6 +8,20 @@ use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, LastPixel, LineRule, Number, Primitive, Scene};
 
+/// What the foils take: coverage on the snapping grid, no attributes,
+/// depth, polygons or effects; triangles for the naive floor only.
+fn coverage_only(triangles: bool) -> Capabilities {
+    Capabilities {
+        triangles,
+        ideal_geometry: false,
+        attributes: false,
+        depth: false,
+        polygons: false,
+        antialias: false,
+        motion_blur: false,
+    }
+}
+
 // --- The naive floor --------------------------------------------------------
 
 /// The floor every real rasterizer should beat: for each triangle, every
@@ -23,15 +37,7 @@ impl Rasterizer for NaiveBbox {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: false,
-            attributes: false,
-            depth: false,
-            polygons: false,
-            antialias: false,
-            motion_blur: false,
-        }
+        coverage_only(true)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -110,15 +116,7 @@ impl Rasterizer for PlainMidpoint {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: false,
-            ideal_geometry: false,
-            attributes: false,
-            depth: false,
-            polygons: false,
-            antialias: false,
-            motion_blur: false,
-        }
+        coverage_only(false)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
