@@ -16,6 +16,7 @@
 //! (with `text.rs`), all from the result model in `model.rs`. Peak heap is
 //! `memory.rs`'s counting allocator.
 
+use std::path::Path;
 use std::time::Instant;
 
 mod antialias;
@@ -57,6 +58,47 @@ use motion::measure_motion;
 use sizes::Sizes;
 use targets::targets;
 use triangles::measure_triangles;
+
+/// Whether BENCH.md can be written at `out`, and bench.svg beside it,
+/// checked before a run rather than after its minutes of measuring: the
+/// folder must exist and take a new file (one is created there and removed
+/// at once), and either file that exists already must open for writing
+/// (opened to append, left as it is). `Err` says why not, naming the path.
+pub fn check_out_path(out: &Path) -> Result<(), String> {
+    let dir = match out.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(format!(
+            "{}: no such folder (create it before the run)",
+            dir.display()
+        ));
+    }
+    if out.is_dir() {
+        return Err(format!(
+            "{}: a folder; name the file to write, e.g. {}",
+            out.display(),
+            out.join("BENCH.md").display()
+        ));
+    }
+    let probe = dir.join(format!(".rastercheck-bench-{}.tmp", std::process::id()));
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&probe)
+        .map_err(|e| format!("{}: cannot write a file there: {e}", dir.display()))?;
+    std::fs::remove_file(&probe).map_err(|e| format!("{}: {e}", probe.display()))?;
+    for file in [out.to_path_buf(), out.with_file_name("bench.svg")] {
+        if file.exists() {
+            std::fs::OpenOptions::new()
+                .append(true)
+                .open(&file)
+                .map_err(|e| format!("{}: cannot write it: {e}", file.display()))?;
+        }
+    }
+    Ok(())
+}
 
 /// How big a run is.
 #[derive(Clone, Copy, Debug)]
@@ -118,3 +160,31 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
     }
 }
 
+#[cfg(test)]
+mod tests {
+    use super::check_out_path;
+    use std::path::Path;
+
+    #[test]
+    fn out_path_in_a_missing_folder_is_refused_before_the_run() {
+        let out = std::env::temp_dir().join("rastercheck-no-such-folder-7f3a/BENCH.md");
+        let why = check_out_path(&out).unwrap_err();
+        assert!(why.contains("no such folder"), "{why}");
+    }
+
+    #[test]
+    fn out_path_in_a_writable_folder_passes_and_leaves_nothing() {
+        let dir = std::env::temp_dir().join(format!("rastercheck-out-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        assert_eq!(check_out_path(&dir.join("BENCH.md")), Ok(()));
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+        let why = check_out_path(&dir).unwrap_err();
+        assert!(why.contains("a folder"), "{why}");
+        std::fs::remove_dir(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_bare_file_name_is_checked_in_the_current_folder() {
+        assert_eq!(check_out_path(Path::new("BENCH.md")), Ok(()));
+    }
+}
