@@ -23,6 +23,10 @@ pub struct BenchArgs {
 /// chart.
 pub fn bench(args: BenchArgs) -> Exit {
     let BenchArgs { quick, out } = args;
+    if let Err(e) = bench::check_out_path(&out) {
+        eprintln!("error: {}: {e}", out.display());
+        return Exit::BadInput;
+    }
     let report = bench::run(bench::Options { quick }, &mut |line| {
         println!("bench: {line}")
     });
