@@ -109,6 +109,12 @@ impl Values {
         v.attributes = (0..self.attributes).map(|_| value(rng)).collect();
         v
     }
+
+    /// A vertex at a random point of `canvas` ([`xy`]), with its values.
+    pub(super) fn random_vertex(&self, rng: &mut Rng, canvas: Canvas) -> Vertex {
+        let (x, y) = xy(rng, canvas);
+        self.vertex(rng, x, y)
+    }
 }
 
 pub(super) fn any_interpolation(rng: &mut Rng) -> Interpolation {

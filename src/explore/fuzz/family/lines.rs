@@ -1,7 +1,7 @@
 //! The `lines` family: one to three lines of every rule, widths for the
 //! wide rules, both `last_pixel`s, some in strips.
 
-use super::common::{any_interpolation, any_rules, canvas, scene_of, xy, Values};
+use super::common::{any_interpolation, any_rules, canvas, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::{LastPixel, Line, LineParameter, LineRule, Number, Primitive, Scene};
 
@@ -10,10 +10,7 @@ pub(super) fn line_scene(rng: &mut Rng) -> Scene {
     let values = Values::any(rng);
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 4) {
-        let point = |rng: &mut Rng| {
-            let (x, y) = xy(rng, canvas);
-            values.vertex(rng, x, y)
-        };
+        let point = |rng: &mut Rng| values.random_vertex(rng, canvas);
         let start = match primitives.last() {
             // A strip: this line starts where the last one ended.
             Some(Primitive::Line(l)) if rng.chance(1, 2) => {

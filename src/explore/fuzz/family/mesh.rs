@@ -66,6 +66,25 @@ fn angles(rng: &mut Rng, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The points at `angles` around `c`, each at the distance `radius` draws,
+/// on the 1/`den` grid.
+fn around(
+    rng: &mut Rng,
+    c: [f64; 2],
+    angles: &[f64],
+    den: i64,
+    radius: impl Fn(&mut Rng) -> f64,
+) -> Vec<[Number; 2]> {
+    angles
+        .iter()
+        .map(|&a| {
+            let r = radius(rng);
+            let (s, co) = sin_cos(a);
+            [to_number(c[0] + r * co, den), to_number(c[1] + r * s, den)]
+        })
+        .collect()
+}
+
 fn exact_centre(c: [f64; 2], den: i64) -> [Number; 2] {
     // A sample centre stays exact whatever the denominator.
     c.map(|v| {
@@ -84,11 +103,9 @@ fn fan(rng: &mut Rng, canvas: Canvas) -> Shape {
     let scale = radius_scale(rng);
     let den = denominator(rng);
     let mut points = vec![exact_centre(c, den)];
-    for a in angles {
-        let r = rng.uniform(0.5, 1.5) * scale;
-        let (s, co) = sin_cos(a);
-        points.push([to_number(c[0] + r * co, den), to_number(c[1] + r * s, den)]);
-    }
+    points.extend(around(rng, c, &angles, den, |rng| {
+        rng.uniform(0.5, 1.5) * scale
+    }));
     let triangles = (1..=n).map(|k| [0, k, k % n + 1]).collect();
     Shape::Triangles(points, triangles)
 }
@@ -99,16 +116,7 @@ fn convex_polygon(rng: &mut Rng, canvas: Canvas) -> Shape {
     let angles = angles(rng, n);
     let scale = radius_scale(rng);
     let den = denominator(rng);
-    let points = angles
-        .iter()
-        .map(|&a| {
-            let (s, co) = sin_cos(a);
-            [
-                to_number(c[0] + scale * co, den),
-                to_number(c[1] + scale * s, den),
-            ]
-        })
-        .collect();
+    let points = around(rng, c, &angles, den, |_| scale);
     let triangles = (1..n - 1).map(|k| [0, k, k + 1]).collect();
     Shape::Triangles(points, triangles)
 }
@@ -119,17 +127,9 @@ fn star_polygon(rng: &mut Rng, canvas: Canvas) -> Shape {
     let angles = angles(rng, n);
     let scale = radius_scale(rng);
     let den = denominator(rng);
-    let points = angles
-        .iter()
-        .map(|&a| {
-            let r = rng.uniform(0.3, 1.5) * scale;
-            let (s, co) = sin_cos(a);
-            [
-                to_number(centre[0] + r * co, den),
-                to_number(centre[1] + r * s, den),
-            ]
-        })
-        .collect();
+    let points = around(rng, centre, &angles, den, |rng| {
+        rng.uniform(0.3, 1.5) * scale
+    });
     Shape::Star { centre, points }
 }
 
@@ -215,6 +215,26 @@ pub fn ear_clip(points: &[[RBig; 2]], sign: Ordering) -> Option<Vec<[usize; 3]>>
     Some(triangles)
 }
 
+/// Ear clipping of a polygon star-shaped around `centre`, its `points`
+/// already placed on the case's grid: `None` when the placed polygon no
+/// longer turns one way around the centre (rounded to 1/65536), seen edge by
+/// edge (snapping folded it over), else [`ear_clip`] in that winding.
+pub fn ear_clip_star(centre: [f64; 2], points: &[[RBig; 2]]) -> Option<Vec<[usize; 3]>> {
+    let c = centre.map(|v| {
+        Number::ratio((v * 65536.0).round() as i64, 65536)
+            .as_rbig()
+            .clone()
+    });
+    let n = points.len();
+    let signs: Vec<_> = (0..n)
+        .map(|k| orient(&c, &points[k], &points[(k + 1) % n]))
+        .collect();
+    if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+        return None;
+    }
+    ear_clip(points, signs[0])
+}
+
 /// A mesh scene, or `None` when snapping folded a triangle over (the shape
 /// is then no longer a mesh).
 pub(super) fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
@@ -231,19 +251,7 @@ pub(super) fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
         Shape::Triangles(points, triangles) => (points, triangles),
         Shape::Star { centre, points } => {
             let placed_points: Vec<Point> = points.iter().map(at).collect();
-            let c = centre.map(|v| {
-                Number::ratio((v * 65536.0).round() as i64, 65536)
-                    .as_rbig()
-                    .clone()
-            });
-            let n = placed_points.len();
-            let signs: Vec<_> = (0..n)
-                .map(|k| orient(&c, &placed_points[k], &placed_points[(k + 1) % n]))
-                .collect();
-            if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
-                return None;
-            }
-            let triangles = ear_clip(&placed_points, signs[0])?;
+            let triangles = ear_clip_star(centre, &placed_points)?;
             (points, triangles)
         }
     };

@@ -1,7 +1,7 @@
 //! The `triangles` family: one to four random triangles, some sharing an
 //! edge with the one before.
 
-use super::common::{any_interpolation, any_rules, canvas, scene_of, xy, Values};
+use super::common::{any_interpolation, any_rules, canvas, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::{Primitive, Scene, Triangle};
 
@@ -10,10 +10,7 @@ pub(super) fn triangle_scene(rng: &mut Rng) -> Scene {
     let values = Values::any(rng);
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 5) {
-        let point = |rng: &mut Rng| {
-            let (x, y) = xy(rng, canvas);
-            values.vertex(rng, x, y)
-        };
+        let point = |rng: &mut Rng| values.random_vertex(rng, canvas);
         let vertices = match primitives.last() {
             // The other side of an edge of the previous triangle: every
             // sample on it must go to exactly one of the two.
