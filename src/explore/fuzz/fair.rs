@@ -9,7 +9,7 @@ use super::geometry::{minus, ratio, Point};
 use crate::frame::Frame;
 use crate::harness::suite::ReferenceRun;
 use crate::plan::Plan;
-use crate::reference::{self};
+use crate::reference;
 use crate::scene::{Canvas, Effects, Expect, Number, Primitive, Scene};
 
 /// Whether a moving scene is a fair test of its time bounds: the sample

@@ -16,7 +16,7 @@ use crate::harness::suite::{self, ReferenceRun, Verdict};
 use crate::metrics::{Metrics, SampleDiff};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
-use crate::reference::{self};
+use crate::reference;
 use crate::scene::{FillRule, LineRule, Primitive, Scene};
 
 /// Which check a candidate fails, in the order a scene failing several is

@@ -15,7 +15,7 @@ use super::rng::Rng;
 use super::shrink::{shrink, Shrunk};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
-use crate::reference::{self};
+use crate::reference;
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{Number, Primitive, Scene, TimePin};
 
