@@ -36,9 +36,9 @@ pub struct Shrunk {
 }
 
 /// One proposed change to a scene; `false` when it would change nothing.
-pub(super) type Edit = Box<dyn Fn(&mut Scene) -> bool>;
+type Edit = Box<dyn Fn(&mut Scene) -> bool>;
 
-pub(super) struct Shrinker<'a> {
+struct Shrinker<'a> {
     candidate: &'a dyn Rasterizer,
     kind: Kind,
     best: Scene,
@@ -96,7 +96,7 @@ pub fn shrink(scene: &Scene, failure: Failure, kind: Kind, candidate: &dyn Raste
 /// `[lo, hi]`, then closer to `centre`. Every accepted move makes some key
 /// smaller, and keys of bounded denominator are well-ordered, so shrinking
 /// ends.
-pub(super) fn key(v: &Number, lo: &Number, hi: &Number, centre: &Number) -> (UBig, Number, Number) {
+fn key(v: &Number, lo: &Number, hi: &Number, centre: &Number) -> (UBig, Number, Number) {
     let outside = if v < lo {
         lo - v
     } else if v > hi {
@@ -110,7 +110,7 @@ pub(super) fn key(v: &Number, lo: &Number, hi: &Number, centre: &Number) -> (UBi
 /// Simpler values to try for `v`, in order: integers in `[lo, hi]` nearest
 /// `v` first, coarser dyadic roundings of `v`, and `v` pulled halfway in
 /// from far outside `[lo, hi]`.
-pub(super) fn simpler(v: &Number, lo: i64, hi: i64, finest: u32) -> Vec<Number> {
+fn simpler(v: &Number, lo: i64, hi: i64, finest: u32) -> Vec<Number> {
     let mut out: Vec<Number> = Vec::new();
     let f = v.to_f64_lossy();
     let mut ints: Vec<i64> = (lo..=hi).collect();
@@ -147,7 +147,7 @@ pub(super) fn simpler(v: &Number, lo: i64, hi: i64, finest: u32) -> Vec<Number> 
 
 /// Every coordinate of every vertex: its position (`from`) and, for a
 /// moving vertex, its `to`.
-pub(super) fn coordinates(scene: &Scene) -> impl Iterator<Item = &Number> {
+fn coordinates(scene: &Scene) -> impl Iterator<Item = &Number> {
     scene.vertices().flat_map(|v| {
         [&v.x, &v.y]
             .into_iter()
