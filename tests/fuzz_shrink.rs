@@ -43,28 +43,63 @@ fn written(dir: &Path) -> PathBuf {
     files.into_iter().next().unwrap()
 }
 
+/// Runs `rastercheck fuzz -r rasterizer` with `args`, writing into a fresh
+/// folder named after `name`: the folder and what the run printed.
+fn fuzz(rasterizer: &str, args: &[&str], name: &str) -> (PathBuf, Output) {
+    let dir = scratch(name);
+    let mut all = vec!["fuzz", "-r", rasterizer];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--out", dir.to_str().unwrap()]);
+    let out = rastercheck(&all);
+    (dir, out)
+}
+
+/// [`fuzz`], which must fail (exit 1) and write one case file. Returns the
+/// folder, the log and the file.
+fn fuzz_writes_one(rasterizer: &str, args: &[&str], name: &str) -> (PathBuf, String, PathBuf) {
+    let (dir, out) = fuzz(rasterizer, args, name);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{log}");
+    let path = written(&dir);
+    (dir, log, path)
+}
+
+/// [`fuzz`] on production with `args`: all `cases` pass, nothing is
+/// written.
+fn production_survives(args: &[&str], cases: &str, name: &str) {
+    let mut all = vec!["--cases", cases];
+    all.extend_from_slice(args);
+    let (dir, out) = fuzz("production", &all, name);
+    let log = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{log}");
+    assert!(log.contains(&format!("{cases} cases, ")), "{log}");
+    assert!(log.contains(" 0 failed and shrunk"), "{log}");
+    assert!(!dir.exists(), "nothing is written when nothing fails");
+}
+
+/// `run` fails the shrunk `case` at `path` for `rasterizer` (its log is
+/// returned) and passes it for production.
+fn reproduced(path: &Path, rasterizer: &str, case: &str) -> String {
+    let again = rastercheck(&["run", path.to_str().unwrap(), "-r", rasterizer]);
+    let again_log = text(&again);
+    assert_eq!(again.status.code(), Some(1), "{again_log}\n{case}");
+    let production = rastercheck(&["run", path.to_str().unwrap(), "-r", "production"]);
+    assert_eq!(
+        production.status.code(),
+        Some(0),
+        "{}\n{case}",
+        text(&production)
+    );
+    again_log
+}
+
 /// Fuzzes meshes on `rasterizer`, and checks the shrunk case: a watertight
 /// mesh of at most three triangles that `run` fails for `rasterizer` on
 /// watertightness and passes for production.
 fn finds_and_shrinks_overdraw(rasterizer: &str, name: &str) {
-    let dir = scratch(name);
-    let out = rastercheck(&[
-        "fuzz",
-        "-r",
-        rasterizer,
-        "--family",
-        "meshes",
-        "--seed",
-        "1",
-        "--cases",
-        "200",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{log}");
+    let args = ["--family", "meshes", "--seed", "1", "--cases", "200"];
+    let (dir, log, path) = fuzz_writes_one(rasterizer, &args, name);
     assert!(log.contains("seed 1"), "{log}");
-    let path = written(&dir);
     assert!(log.contains(&path.display().to_string()), "{log}");
 
     let case = std::fs::read_to_string(&path).unwrap();
@@ -81,20 +116,11 @@ fn finds_and_shrinks_overdraw(rasterizer: &str, name: &str) {
     assert!(scene.description.contains("seed 1"), "{case}");
     assert!(scene.description.contains("originally"), "{case}");
 
-    let again = rastercheck(&["run", path.to_str().unwrap(), "-r", rasterizer]);
-    let again_log = text(&again);
-    assert_eq!(again.status.code(), Some(1), "{again_log}\n{case}");
+    let again_log = reproduced(&path, rasterizer, &case);
     assert!(again_log.contains("watertight: "), "{again_log}");
     assert!(
         again_log.contains("overdrawn samples") || again_log.contains(" holes and "),
         "{again_log}"
-    );
-    let production = rastercheck(&["run", path.to_str().unwrap(), "-r", "production"]);
-    assert_eq!(
-        production.status.code(),
-        Some(0),
-        "{}\n{case}",
-        text(&production)
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -111,26 +137,7 @@ fn euc_overdraw_shrinks_to_three_triangles_or_fewer() {
 
 #[test]
 fn production_survives_the_search() {
-    let dir = scratch("production");
-    let out = rastercheck(&[
-        "fuzz",
-        "-r",
-        "production",
-        "--cases",
-        "200",
-        "--seed",
-        "7",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
-    assert!(text(&out).contains("200 cases, "), "{}", text(&out));
-    assert!(
-        text(&out).contains(" 0 failed and shrunk"),
-        "{}",
-        text(&out)
-    );
-    assert!(!dir.exists(), "nothing is written when nothing fails");
+    production_survives(&["--seed", "7"], "200", "production");
 }
 
 #[test]
@@ -138,20 +145,9 @@ fn the_same_seed_writes_the_same_file() {
     let runs: Vec<(String, Vec<u8>)> = ["a", "b"]
         .iter()
         .map(|run| {
-            let dir = scratch(&format!("determinism-{run}"));
-            let out = rastercheck(&[
-                "fuzz",
-                "-r",
-                "mutant:flipped-ties",
-                "--seed",
-                "12345",
-                "--cases",
-                "100",
-                "--out",
-                dir.to_str().unwrap(),
-            ]);
-            assert_eq!(out.status.code(), Some(1), "{}", text(&out));
-            let path = written(&dir);
+            let args = ["--seed", "12345", "--cases", "100"];
+            let name = format!("determinism-{run}");
+            let (dir, _, path) = fuzz_writes_one("mutant:flipped-ties", &args, &name);
             let name = path.file_name().unwrap().to_string_lossy().into_owned();
             let bytes = std::fs::read(&path).unwrap();
             let _ = std::fs::remove_dir_all(&dir);
@@ -178,33 +174,11 @@ fn bad_input_exits_2() {
 fn check_selects_the_kind_to_shrink() {
     // euc fails single triangles on coverage first; asking for
     // watertightness skips those until a mesh overdraws.
-    let dir = scratch("check");
-    let out = rastercheck(&[
-        "fuzz",
-        "-r",
-        "euc",
-        "--check",
-        "watertight",
-        "--seed",
-        "2",
-        "--cases",
-        "300",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{log}");
-    let path = written(&dir);
+    let args = ["--check", "watertight", "--seed", "2", "--cases", "300"];
+    let (dir, _, path) = fuzz_writes_one("euc", &args, "check");
+    let name = path.file_name().unwrap().to_string_lossy().into_owned();
     assert!(
-        path.file_name()
-            .unwrap()
-            .to_string_lossy()
-            .contains("overdraw")
-            || path
-                .file_name()
-                .unwrap()
-                .to_string_lossy()
-                .contains("holes"),
+        name.contains("overdraw") || name.contains("holes"),
         "{path:?}"
     );
     let _ = std::fs::remove_dir_all(&dir);
@@ -221,40 +195,17 @@ fn finds_and_shrinks(
     most: usize,
     reason: &str,
 ) -> String {
-    let dir = scratch(&format!("{family}-{}", rasterizer.replace(':', "-")));
-    let out = rastercheck(&[
-        "fuzz",
-        "-r",
-        rasterizer,
-        "--family",
-        family,
-        "--seed",
-        seed,
-        "--cases",
-        "100",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{log}");
-    let path = written(&dir);
+    let args = ["--family", family, "--seed", seed, "--cases", "100"];
+    let name = format!("{family}-{}", rasterizer.replace(':', "-"));
+    let (dir, _, path) = fuzz_writes_one(rasterizer, &args, &name);
     let case = std::fs::read_to_string(&path).unwrap();
     let scene = parse_case(&case, "shrunk", &Limits::default()).expect("a valid case");
     assert!(
         (1..=most).contains(&scene.primitives.len()),
         "not shrunk to {most} primitives or fewer:\n{case}"
     );
-    let again = rastercheck(&["run", path.to_str().unwrap(), "-r", rasterizer]);
-    let again_log = text(&again);
-    assert_eq!(again.status.code(), Some(1), "{again_log}\n{case}");
+    let again_log = reproduced(&path, rasterizer, &case);
     assert!(again_log.contains(reason), "{again_log}\n{case}");
-    let production = rastercheck(&["run", path.to_str().unwrap(), "-r", "production"]);
-    assert_eq!(
-        production.status.code(),
-        Some(0),
-        "{}\n{case}",
-        text(&production)
-    );
     let _ = std::fs::remove_dir_all(&dir);
     case
 }
@@ -316,23 +267,9 @@ fn half_a_shutter_shrinks_to_a_small_moving_case() {
 
 #[test]
 fn production_survives_the_motion_search() {
-    let dir = scratch("production-motion");
-    let out = rastercheck(&[
-        "fuzz",
-        "-r",
-        "production",
-        "--family",
-        "motion",
-        "--cases",
+    production_survives(
+        &["--family", "motion", "--seed", "3"],
         "60",
-        "--seed",
-        "3",
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(0), "{log}");
-    assert!(log.contains("60 cases, "), "{log}");
-    assert!(log.contains(" 0 failed and shrunk"), "{log}");
-    assert!(!dir.exists(), "nothing is written when nothing fails");
+        "production-motion",
+    );
 }

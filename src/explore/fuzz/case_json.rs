@@ -1,0 +1,237 @@
+//! A scene as a case file (SPEC.md §1), every number exact, and whether a
+//! scene can be one (`valid`: within SPEC.md's limits and, for polygons,
+//! antialiasing and motion, reading back from its own file). Writing only:
+//! reading is [`crate::scene::parse_case`].
+
+use crate::scene::rules::limits::{COORD_LIMIT, W_LIMIT};
+use crate::scene::time::limits::TIME_ONE;
+use crate::scene::{
+    parse_case, Interpolation, LastPixel, Limits, LineParameter, LineRule, Number, Primitive,
+    Scene, Vertex,
+};
+
+/// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
+pub(super) fn valid(scene: &Scene) -> Result<(), String> {
+    let side = 1..=crate::scene::rules::limits::MAX_CANVAS_SIDE;
+    if !side.contains(&scene.canvas.width) || !side.contains(&scene.canvas.height) {
+        return Err("canvas side out of range".to_owned());
+    }
+    if scene.primitives.is_empty() {
+        return Err("no primitives".to_owned());
+    }
+    let limit = Number::from_int(COORD_LIMIT);
+    let (w_lo, w_hi) = (Number::ratio(1, W_LIMIT), Number::from_int(W_LIMIT));
+    for v in scene.vertices() {
+        if v.x.abs() > limit || v.y.abs() > limit {
+            return Err("coordinate out of range".to_owned());
+        }
+        if v.w < w_lo || v.w > w_hi {
+            return Err("w out of range".to_owned());
+        }
+        if v.attributes.len() != scene.attribute_count {
+            return Err("attribute count".to_owned());
+        }
+    }
+    // Polygons, antialiasing and motion have rules of their own (contours
+    // of at least 3 vertices, sample counts per pattern, no `all-edges` for
+    // polygons, no midpoint lines under antialiasing, only triangles and
+    // parallelogram lines move, no values and no sample expectations in a
+    // moving scene): the scene must read back from its case file, so that
+    // a shrunk counterexample is a case.
+    let motion = scene.effects.motion_blur.is_some() || scene.vertices().any(|v| v.to.is_some());
+    if scene.has_polygons() || scene.effects.antialias.is_some() || motion {
+        let mut named = scene.clone();
+        named.name = "fuzz".to_owned();
+        named.description = "fuzz".to_owned();
+        parse_case(&case_json(&named), "fuzz", &Limits::default())
+            .map_err(|e| format!("not a valid case: {}", e.message))?;
+    }
+    Ok(())
+}
+
+fn json_number(n: &Number) -> String {
+    let s = n.to_exact_string();
+    if s.contains('/') {
+        format!("\"{s}\"")
+    } else {
+        s
+    }
+}
+
+fn json_string(s: &str) -> String {
+    serde_json::to_string(s).expect("a string serializes")
+}
+
+fn position_json(x: &Number, y: &Number) -> String {
+    format!("[{}, {}]", json_number(x), json_number(y))
+}
+
+fn vertex_json(scene: &Scene, v: &Vertex) -> String {
+    let position = position_json(&v.x, &v.y);
+    if !scene.has_depth && v.w == Number::ONE && v.attributes.is_empty() && v.to.is_none() {
+        return position;
+    }
+    let mut fields = match v.to.as_deref() {
+        // A moving vertex (or one written with from = to, which is static).
+        Some([x, y]) => vec![
+            format!("\"from\": {position}"),
+            format!("\"to\": {}", position_json(x, y)),
+        ],
+        None => vec![format!("\"position\": {position}")],
+    };
+    if scene.has_depth {
+        fields.push(format!("\"z\": {}", json_number(&v.z)));
+    }
+    if v.w != Number::ONE {
+        fields.push(format!("\"w\": {}", json_number(&v.w)));
+    }
+    if !v.attributes.is_empty() {
+        let values: Vec<String> = v.attributes.iter().map(json_number).collect();
+        fields.push(format!("\"attributes\": [{}]", values.join(", ")));
+    }
+    format!("{{ {} }}", fields.join(", "))
+}
+
+fn primitive_json(scene: &Scene, p: &Primitive) -> String {
+    let vertices: Vec<String> = p.vertices().iter().map(|v| vertex_json(scene, v)).collect();
+    let mut fields = match p {
+        Primitive::Triangle(_) => vec![format!("\"triangle\": [{}]", vertices.join(", "))],
+        Primitive::Polygon(polygon) => {
+            let contours: Vec<String> = polygon
+                .contours()
+                .map(|c| {
+                    let vs: Vec<String> = c.iter().map(|v| vertex_json(scene, v)).collect();
+                    format!("[{}]", vs.join(", "))
+                })
+                .collect();
+            vec![
+                format!("\"contours\": [{}]", contours.join(", ")),
+                format!("\"fill\": \"{}\"", polygon.fill.name()),
+            ]
+        }
+        Primitive::Line(l) => {
+            let mut f = vec![
+                format!("\"line\": [{}]", vertices.join(", ")),
+                format!("\"rule\": \"{}\"", l.rule.name()),
+            ];
+            if l.rule.is_wide() && l.width != Number::ONE {
+                f.push(format!("\"width\": {}", json_number(&l.width)));
+            }
+            if l.rule == LineRule::Midpoint && l.last_pixel == LastPixel::Exclude {
+                f.push("\"last_pixel\": \"exclude\"".to_owned());
+            }
+            if l.parameter == LineParameter::Projected {
+                f.push("\"parameter\": \"projected\"".to_owned());
+            }
+            f
+        }
+    };
+    if !matches!(p, Primitive::Polygon(_)) && p.interpolation() != Interpolation::Perspective {
+        fields.push(format!(
+            "\"interpolation\": \"{}\"",
+            p.interpolation().name()
+        ));
+    }
+    format!("{{ {} }}", fields.join(", "))
+}
+
+/// A scene as a case file (SPEC.md §1), every number exact.
+pub fn case_json(scene: &Scene) -> String {
+    let bits = scene
+        .rules
+        .subpixel_bits
+        .map_or("null".to_owned(), |b| b.to_string());
+    let primitives: Vec<String> = scene
+        .primitives
+        .iter()
+        .map(|p| format!("    {}", primitive_json(scene, p)))
+        .collect();
+    let e = &scene.expect;
+    let mut expect = Vec::new();
+    if e.max_mismatched_samples != 0 {
+        expect.push(format!(
+            "\"max_mismatched_samples\": {}",
+            e.max_mismatched_samples
+        ));
+    }
+    if e.watertight {
+        expect.push("\"watertight\": true".to_owned());
+    }
+    if let Some(n) = e.samples_covered {
+        expect.push(format!("\"samples_covered\": {n}"));
+    }
+    if let Some(x) = e.max_abs_error {
+        expect.push(format!("\"max_abs_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_ulp_error {
+        expect.push(format!("\"max_ulp_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_coverage_error {
+        expect.push(format!("\"max_coverage_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_coverage_rms {
+        expect.push(format!("\"max_coverage_rms\": {x:e}"));
+    }
+    if let Some(a) = &e.area {
+        expect.push(format!("\"area\": \"{}\"", a.to_exact_string()));
+    }
+    if let Some(x) = e.max_time_error {
+        expect.push(format!("\"max_time_error\": {x:e}"));
+    }
+    if let Some(x) = e.max_time_rms {
+        expect.push(format!("\"max_time_rms\": {x:e}"));
+    }
+    if !e.time_coverage.is_empty() {
+        let pins: Vec<String> = e
+            .time_coverage
+            .iter()
+            .map(|pin| {
+                format!(
+                    "{{ \"pixel\": [{}, {}], \"value\": {} }}",
+                    pin.pixel[0],
+                    pin.pixel[1],
+                    json_number(&pin.value)
+                )
+            })
+            .collect();
+        expect.push(format!("\"time_coverage\": [{}]", pins.join(", ")));
+    }
+    let mut effects = Vec::new();
+    if let Some(a) = &scene.effects.antialias {
+        effects.push(format!(
+            "\"antialias\": {{ \"samples\": {}, \"pattern\": \"{}\", \"seed\": {}, \"adaptive\": {}, \"position_bits\": {} }}",
+            a.samples,
+            a.pattern.name(),
+            a.seed,
+            a.adaptive,
+            a.position_bits
+        ));
+    }
+    if let Some(b) = &scene.effects.motion_blur {
+        let [open, close] = b
+            .shutter
+            .map(|t| json_number(&Number::ratio(t.into(), TIME_ONE.into())));
+        effects.push(format!(
+            "\"motion_blur\": {{ \"shutter\": [{open}, {close}], \"samples\": {}, \"pattern\": \"{}\", \"seed\": {} }}",
+            b.samples,
+            b.pattern.name(),
+            b.seed
+        ));
+    }
+    let effects = if effects.is_empty() {
+        String::new()
+    } else {
+        format!("  \"effects\": {{ {} }},\n", effects.join(", "))
+    };
+    format!(
+        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n{effects}  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
+        json_string(&scene.name),
+        json_string(&scene.description),
+        scene.canvas.width,
+        scene.canvas.height,
+        scene.rules.fill_rule.name(),
+        scene.rules.cull.name(),
+        primitives.join(",\n"),
+        expect.join(", "),
+    )
+}
