@@ -545,28 +545,18 @@ impl Reader<'_> {
             }
             None => [0, mb::TIME_ONE],
         };
-        let (v, samples_path) = fields.require("samples")?;
-        let samples = count(v, &samples_path, u64::MAX >> 1)?;
-        if samples == 0 || samples > u64::from(mb::MAX_SAMPLES) {
-            return fail(
-                &samples_path,
-                format!("samples {samples} is outside [1, {}]", mb::MAX_SAMPLES),
-            );
-        }
-        let pattern = match fields.get("pattern") {
-            Some((v, p)) => {
-                let names: Vec<&str> = TimePattern::ALL.iter().map(|p| p.name()).collect();
-                named(v, &p, TimePattern::from_name, &names)?
-            }
-            None => TimePattern::Stratified,
-        };
-        let seed = match fields.get("seed") {
-            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
-            None => 0,
-        };
+        let (samples, _) = sample_count(&fields, mb::MAX_SAMPLES)?;
+        let names: Vec<&str> = TimePattern::ALL.iter().map(|p| p.name()).collect();
+        let pattern = pattern(
+            &fields,
+            TimePattern::from_name,
+            &names,
+            TimePattern::Stratified,
+        )?;
+        let seed = seed(&fields)?;
         Ok(MotionBlur {
             shutter,
-            samples: samples as u32,
+            samples,
             pattern,
             seed,
         })
@@ -586,29 +576,13 @@ impl Reader<'_> {
                 "position_bits",
             ],
         )?;
-        let (v, samples_path) = fields.require("samples")?;
-        let samples = count(v, &samples_path, u64::MAX >> 1)?;
-        if samples == 0 || samples > u64::from(aa::MAX_SAMPLES) {
-            return fail(
-                &samples_path,
-                format!("samples {samples} is outside [1, {}]", aa::MAX_SAMPLES),
-            );
-        }
-        let samples = samples as u32;
-        let pattern = match fields.get("pattern") {
-            Some((v, p)) => {
-                let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
-                named(v, &p, Pattern::from_name, &names)?
-            }
-            None => Pattern::Standard,
-        };
+        let (samples, samples_path) = sample_count(&fields, aa::MAX_SAMPLES)?;
+        let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
+        let pattern = pattern(&fields, Pattern::from_name, &names, Pattern::Standard)?;
         if let Err(why) = pattern.check_count(samples) {
             return fail(&samples_path, why);
         }
-        let seed = match fields.get("seed") {
-            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
-            None => 0,
-        };
+        let seed = seed(&fields)?;
         let adaptive = match fields.get("adaptive") {
             Some((v, p)) => boolean(v, &p)?,
             None => false,
@@ -731,6 +705,41 @@ impl Reader<'_> {
             expect.area = Some(area);
         }
         Ok(expect)
+    }
+}
+
+/// `samples` of a sampling effect (antialiasing, motion blur): a count in
+/// [1, `max`], and its path.
+fn sample_count(fields: &Fields, max: u32) -> Result<(u32, Path)> {
+    let (v, samples_path) = fields.require("samples")?;
+    let samples = count(v, &samples_path, u64::MAX >> 1)?;
+    if samples == 0 || samples > u64::from(max) {
+        return fail(
+            &samples_path,
+            format!("samples {samples} is outside [1, {max}]"),
+        );
+    }
+    Ok((samples as u32, samples_path))
+}
+
+/// `pattern` of a sampling effect: one of `names`, or `default`.
+fn pattern<T>(
+    fields: &Fields,
+    parse: fn(&str) -> Option<T>,
+    names: &[&str],
+    default: T,
+) -> Result<T> {
+    match fields.get("pattern") {
+        Some((v, p)) => named(v, &p, parse, names),
+        None => Ok(default),
+    }
+}
+
+/// `seed` of a sampling effect; 0 when absent.
+fn seed(fields: &Fields) -> Result<u64> {
+    match fields.get("seed") {
+        Some((v, p)) => count(v, &p, u64::MAX >> 1),
+        None => Ok(0),
     }
 }
 
