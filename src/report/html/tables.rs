@@ -5,8 +5,9 @@
 
 use std::fmt::Write as _;
 
+use crate::metrics::time::TimeMetrics;
 use crate::report::escape;
-use crate::report::json::{ChannelEntry, MetricsEntry, ResultEntry, TimeEntry};
+use crate::report::json::{ChannelEntry, MetricsEntry, ResultEntry};
 
 pub(super) fn badge(class: &str, text: &str) -> String {
     format!(
@@ -200,7 +201,7 @@ pub(super) fn metrics_tables(m: &MetricsEntry) -> String {
 }
 
 /// The time metrics of a moving scene (SPEC.md §15.4).
-pub(super) fn time_table(t: &TimeEntry) -> String {
+pub(super) fn time_table(t: &TimeMetrics) -> String {
     let bound = |b: Option<f64>| b.map_or("—".to_owned(), |b| format!("{b:.3e}"));
     let mut rows = vec![
         (
@@ -232,7 +233,12 @@ pub(super) fn time_table(t: &TimeEntry) -> String {
     if let Some(s) = &t.sample_tests {
         rows.push((
             "sample tests: covered / all",
-            format!("{} / {} ({:.1}%)", s.covered, s.tests, s.efficiency * 100.0),
+            format!(
+                "{} / {} ({:.1}%)",
+                s.covered,
+                s.tests,
+                s.efficiency() * 100.0
+            ),
         ));
     }
     let mut html = String::from("<table><tr><th colspan=\"2\">time coverage − exact</th></tr>");
