@@ -121,15 +121,7 @@ pub(super) fn metrics_tables(m: &MetricsEntry) -> String {
     }
     // A moving scene has no samples: its table is the time table alone.
     if m.time.is_none() {
-        html.push_str("<table><tr><th colspan=\"2\">coverage</th></tr>");
-        for (name, value) in rows {
-            let _ = write!(
-                html,
-                "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
-                escape(&value)
-            );
-        }
-        html.push_str("</table>");
+        html.push_str(&name_value_table("coverage", &rows));
     }
     if let Some(a) = &m.antialias {
         let bound = |b: Option<f64>| b.map_or("—".to_owned(), |b| format!("{b:.3e}"));
@@ -166,15 +158,7 @@ pub(super) fn metrics_tables(m: &MetricsEntry) -> String {
             ),
             ("not a finite number ≥ 0", a.invalid_values.to_string()),
         ];
-        html.push_str("<table><tr><th colspan=\"2\">resolved coverage − exact area</th></tr>");
-        for (name, value) in rows {
-            let _ = write!(
-                html,
-                "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
-                escape(&value)
-            );
-        }
-        html.push_str("</table>");
+        html.push_str(&name_value_table("resolved coverage − exact area", &rows));
     }
     if let Some(t) = &m.time {
         html.push_str(&time_table(t));
@@ -241,12 +225,18 @@ pub(super) fn time_table(t: &TimeMetrics) -> String {
             ),
         ));
     }
-    let mut html = String::from("<table><tr><th colspan=\"2\">time coverage − exact</th></tr>");
+    name_value_table("time coverage − exact", &rows)
+}
+
+/// A two-column table under one heading: a metric's name, and its value
+/// (escaped) right-aligned.
+fn name_value_table(heading: &str, rows: &[(&str, String)]) -> String {
+    let mut html = format!("<table><tr><th colspan=\"2\">{heading}</th></tr>");
     for (name, value) in rows {
         let _ = write!(
             html,
             "<tr><td>{name}</td><td class=\"n\">{}</td></tr>",
-            escape(&value)
+            escape(value)
         );
     }
     html.push_str("</table>");
