@@ -22,6 +22,8 @@
 //! rounded area, which is 0 or 1 exactly when the area is, except for an
 //! area within 2^-54 of 1.
 
+use serde::Serialize;
+
 use crate::frame::Frame;
 
 /// What the exact area of a pixel is.
@@ -57,7 +59,9 @@ pub fn default_rms_bound(samples: u32) -> f64 {
     0.333 * 0.62f64.powf(f64::from(samples.max(1)).log2())
 }
 
-#[derive(Clone, Debug, PartialEq)]
+/// Also `report.json`'s `metrics.antialias` (SPEC.md §10): the fields not
+/// skipped, in this order, the bounds only when there are some.
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct AntialiasMetrics {
     /// The candidate's samples per pixel; 0 for an area method.
     pub samples: u32,
@@ -82,6 +86,7 @@ pub struct AntialiasMetrics {
     /// Of those, the pixels the candidate does not resolve exactly.
     pub piglit_violations: u64,
     /// The first violation (x, y), when there is one.
+    #[serde(skip)]
     pub first_violation: Option<[u32; 2]>,
     /// Pixels whose resolved value is not the box resolve of the
     /// candidate's own samples (always 0 without a mask).
@@ -91,10 +96,14 @@ pub struct AntialiasMetrics {
     pub invalid_values: u64,
     /// Pixels of nonzero resolved value in the reference and the candidate
     /// (reported only: a sample method may rightly miss a sliver whole).
+    #[serde(skip)]
     pub reference_pixels: u64,
+    #[serde(skip)]
     pub candidate_pixels: u64,
     /// The bounds this case holds the candidate to.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_error: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_rms: Option<f64>,
 }
 

@@ -21,6 +21,9 @@
 //! Not here: the case's pins on the oracle (`expect.time_coverage`), which
 //! are checked once per case in exact rationals by the suite.
 
+use serde::ser::{SerializeStruct, Serializer};
+use serde::Serialize;
+
 use crate::frame::{Frame, SampleTests};
 use crate::scene::Scene;
 
@@ -47,7 +50,10 @@ pub fn bounds(scene: &Scene) -> (Option<f64>, Option<f64>) {
     (scene.expect.max_time_error, Some(rms))
 }
 
-#[derive(Clone, Debug, PartialEq)]
+/// Also `report.json`'s `metrics.time` (SPEC.md §10): the fields not
+/// skipped, in this order, the sample tests and the bounds only when there
+/// are some.
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TimeMetrics {
     pub pixels: u64,
     /// Pixels whose exact time coverage is not a whole number, or whose
@@ -70,15 +76,22 @@ pub struct TimeMetrics {
     /// Pixels whose value is not a number, infinite or negative, and the
     /// first of them.
     pub invalid_values: u64,
+    #[serde(skip)]
     pub first_invalid: Option<[u32; 2]>,
     /// Pixels of nonzero time coverage in the reference and the candidate
     /// (reported only: a sampler may rightly miss a fast sliver whole).
     pub reference_pixels: u64,
     pub candidate_pixels: u64,
     /// What the candidate spent on its time loop, when it counts it.
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "serialize_sample_tests"
+    )]
     pub sample_tests: Option<SampleTests>,
     /// The bounds this case holds the candidate to.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_error: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_rms: Option<f64>,
 }
 
@@ -96,6 +109,21 @@ impl TimeMetrics {
     pub fn efficiency(&self) -> Option<f64> {
         self.sample_tests.map(|t| t.efficiency())
     }
+}
+
+/// A method's sample tests as `report.json` writes them: `tests`,
+/// `covered`, and `efficiency` (covered / tests, the cost measure of
+/// stochastic rasterization).
+fn serialize_sample_tests<S: Serializer>(
+    tests: &Option<SampleTests>,
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    let t = tests.expect("skipped when there are none");
+    let mut entry = s.serialize_struct("SampleTests", 3)?;
+    entry.serialize_field("tests", &t.tests)?;
+    entry.serialize_field("covered", &t.covered)?;
+    entry.serialize_field("efficiency", &t.efficiency())?;
+    entry.end()
 }
 
 /// The signed error per pixel, candidate − reference time coverage (a NaN

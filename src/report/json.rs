@@ -8,6 +8,8 @@ use serde::Serialize;
 
 use crate::harness::runner::{CaseOutcome, Problem, Tally};
 use crate::harness::suite::{GoldenStatus, Verdict};
+use crate::metrics::antialias::AntialiasMetrics;
+use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
 use crate::scene::Scene;
 
@@ -172,75 +174,15 @@ pub struct MetricsEntry {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines: Option<LinesEntry>,
     pub channels: Vec<ChannelEntry>,
-    /// Antialiased cases only (SPEC.md §14.3).
+    /// Antialiased cases only: resolved coverage against the exact area,
+    /// per pixel (SPEC.md §14.3), as the metric records it.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub antialias: Option<AntialiasEntry>,
-    /// Scenes in which something moves only (SPEC.md §15.4).
+    pub antialias: Option<AntialiasMetrics>,
+    /// Scenes in which something moves only: time coverage against the
+    /// exact time coverage, per pixel (SPEC.md §15.4), as the metric
+    /// records it.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub time: Option<TimeEntry>,
-}
-
-/// Time coverage against the exact time coverage, per pixel (SPEC.md
-/// §15.4).
-#[derive(Clone, Debug, Serialize)]
-pub struct TimeEntry {
-    pub pixels: u64,
-    /// Pixels whose exact value is not a whole number, or whose candidate
-    /// value differs from it.
-    pub moving_pixels: u64,
-    /// Largest |candidate − exact|, the pixel [x, y] where it is, and the
-    /// two values there.
-    pub max_error: f64,
-    pub worst_pixel: [u32; 2],
-    pub worst_candidate: f64,
-    pub worst_exact: f64,
-    pub rms_moving: f64,
-    pub rms_all: f64,
-    pub bias_moving: f64,
-    /// Pixels of NaN, an infinity or a negative value.
-    pub invalid_values: u64,
-    pub reference_pixels: u64,
-    pub candidate_pixels: u64,
-    /// For a candidate that counts its sample tests.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub sample_tests: Option<SampleTestsEntry>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub allowed_error: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub allowed_rms: Option<f64>,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct SampleTestsEntry {
-    pub tests: u64,
-    pub covered: u64,
-    /// covered / tests: the cost measure of stochastic rasterization.
-    pub efficiency: f64,
-}
-
-/// Resolved coverage against the exact area, per pixel (SPEC.md §14.3).
-#[derive(Clone, Debug, Serialize)]
-pub struct AntialiasEntry {
-    /// The candidate's samples per pixel; 0 for an area method.
-    pub samples: u32,
-    pub pixels: u64,
-    pub edge_pixels: u64,
-    /// Largest |resolved − exact area|, and the pixel [x, y] where it is.
-    pub max_error: f64,
-    pub worst_pixel: [u32; 2],
-    pub rms_edge: f64,
-    pub rms_all: f64,
-    pub bias_edge: f64,
-    pub full_pixels: u64,
-    pub empty_pixels: u64,
-    pub piglit_violations: u64,
-    pub resolve_mismatches: u64,
-    /// Pixels resolved to NaN, an infinity or a negative value.
-    pub invalid_values: u64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub allowed_error: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub allowed_rms: Option<f64>,
+    pub time: Option<TimeMetrics>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -314,44 +256,8 @@ impl MetricsEntry {
                     allowed_ulp: ch.allowed_ulp,
                 })
                 .collect(),
-            antialias: m.antialias.as_ref().map(|a| AntialiasEntry {
-                samples: a.samples,
-                pixels: a.pixels,
-                edge_pixels: a.edge_pixels,
-                max_error: a.max_error,
-                worst_pixel: a.worst_pixel,
-                rms_edge: a.rms_edge,
-                rms_all: a.rms_all,
-                bias_edge: a.bias_edge,
-                full_pixels: a.full_pixels,
-                empty_pixels: a.empty_pixels,
-                piglit_violations: a.piglit_violations,
-                resolve_mismatches: a.resolve_mismatches,
-                invalid_values: a.invalid_values,
-                allowed_error: a.allowed_error,
-                allowed_rms: a.allowed_rms,
-            }),
-            time: m.time.as_ref().map(|t| TimeEntry {
-                pixels: t.pixels,
-                moving_pixels: t.moving_pixels,
-                max_error: t.max_error,
-                worst_pixel: t.worst_pixel,
-                worst_candidate: t.worst_candidate,
-                worst_exact: t.worst_exact,
-                rms_moving: t.rms_moving,
-                rms_all: t.rms_all,
-                bias_moving: t.bias_moving,
-                invalid_values: t.invalid_values,
-                reference_pixels: t.reference_pixels,
-                candidate_pixels: t.candidate_pixels,
-                sample_tests: t.sample_tests.map(|s| SampleTestsEntry {
-                    tests: s.tests,
-                    covered: s.covered,
-                    efficiency: s.efficiency(),
-                }),
-                allowed_error: t.allowed_error,
-                allowed_rms: t.allowed_rms,
-            }),
+            antialias: m.antialias.clone(),
+            time: m.time.clone(),
         }
     }
 }

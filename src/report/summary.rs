@@ -137,7 +137,7 @@ fn time_errors(report: &Report) -> String {
             let efficiency = t
                 .sample_tests
                 .as_ref()
-                .map_or("—".to_owned(), |s| format!("{:.1}%", s.efficiency * 100.0));
+                .map_or("—".to_owned(), |s| format!("{:.1}%", s.efficiency() * 100.0));
             let [x, y] = t.worst_pixel;
             Some((
                 t.rms_moving / t.allowed_rms.unwrap_or(1.0),

@@ -25,15 +25,15 @@ pub enum FillRule {
     AllEdges,
 }
 
-impl FillRule {
-    pub const ALL: [FillRule; 5] = [
-        FillRule::TopLeft,
-        FillRule::BottomRight,
-        FillRule::TopRight,
-        FillRule::BottomLeft,
-        FillRule::AllEdges,
-    ];
+case_names!(FillRule {
+    TopLeft => "top-left",
+    BottomRight => "bottom-right",
+    TopRight => "top-right",
+    BottomLeft => "bottom-left",
+    AllEdges => "all-edges",
+});
 
+impl FillRule {
     /// The four rules that each assign every shared-edge sample to exactly
     /// one triangle. A sample every one of them puts inside a mesh lies in
     /// the mesh's interior (SPEC.md, "Watertightness").
@@ -43,20 +43,6 @@ impl FillRule {
         FillRule::TopRight,
         FillRule::BottomLeft,
     ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            FillRule::TopLeft => "top-left",
-            FillRule::BottomRight => "bottom-right",
-            FillRule::TopRight => "top-right",
-            FillRule::BottomLeft => "bottom-left",
-            FillRule::AllEdges => "all-edges",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<FillRule> {
-        FillRule::ALL.into_iter().find(|r| r.name() == name)
-    }
 
     /// Whether horizontal edges with the triangle below them own their samples.
     pub fn owns_top(self) -> bool {
@@ -118,21 +104,11 @@ pub enum Cull {
     CounterClockwise,
 }
 
-impl Cull {
-    pub fn name(self) -> &'static str {
-        match self {
-            Cull::None => "none",
-            Cull::Clockwise => "cw",
-            Cull::CounterClockwise => "ccw",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Cull> {
-        [Cull::None, Cull::Clockwise, Cull::CounterClockwise]
-            .into_iter()
-            .find(|c| c.name() == name)
-    }
-}
+case_names!(Cull {
+    None => "none",
+    Clockwise => "cw",
+    CounterClockwise => "ccw",
+});
 
 /// Which points a polygon fills, from their winding number: the number of
 /// times the contours wind around the point, counting direction.
@@ -144,20 +120,12 @@ pub enum PolygonFill {
     NonZero,
 }
 
+case_names!(PolygonFill {
+    EvenOdd => "even-odd",
+    NonZero => "nonzero",
+});
+
 impl PolygonFill {
-    pub fn name(self) -> &'static str {
-        match self {
-            PolygonFill::EvenOdd => "even-odd",
-            PolygonFill::NonZero => "nonzero",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<PolygonFill> {
-        [PolygonFill::EvenOdd, PolygonFill::NonZero]
-            .into_iter()
-            .find(|f| f.name() == name)
-    }
-
     /// Whether a point of winding number `winding` is filled.
     pub fn fills(self, winding: i64) -> bool {
         match self {
@@ -178,25 +146,11 @@ pub enum Interpolation {
     Flat,
 }
 
-impl Interpolation {
-    pub fn name(self) -> &'static str {
-        match self {
-            Interpolation::Perspective => "perspective",
-            Interpolation::Linear => "linear",
-            Interpolation::Flat => "flat",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Interpolation> {
-        [
-            Interpolation::Perspective,
-            Interpolation::Linear,
-            Interpolation::Flat,
-        ]
-        .into_iter()
-        .find(|i| i.name() == name)
-    }
-}
+case_names!(Interpolation {
+    Perspective => "perspective",
+    Linear => "linear",
+    Flat => "flat",
+});
 
 /// How a line decides which pixels it lights (SPEC.md §4).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -215,27 +169,14 @@ pub enum LineRule {
     Parallelogram,
 }
 
+case_names!(LineRule {
+    Midpoint => "midpoint",
+    DiamondExit => "diamond-exit",
+    Rectangle => "rectangle",
+    Parallelogram => "parallelogram",
+});
+
 impl LineRule {
-    pub const ALL: [LineRule; 4] = [
-        LineRule::Midpoint,
-        LineRule::DiamondExit,
-        LineRule::Rectangle,
-        LineRule::Parallelogram,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            LineRule::Midpoint => "midpoint",
-            LineRule::DiamondExit => "diamond-exit",
-            LineRule::Rectangle => "rectangle",
-            LineRule::Parallelogram => "parallelogram",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<LineRule> {
-        LineRule::ALL.into_iter().find(|r| r.name() == name)
-    }
-
     /// Whether the rule takes a `width`.
     pub fn is_wide(self) -> bool {
         matches!(self, LineRule::Rectangle | LineRule::Parallelogram)

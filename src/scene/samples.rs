@@ -26,29 +26,15 @@ pub enum Pattern {
     NRooks,
 }
 
+case_names!(Pattern {
+    Grid => "grid",
+    Standard => "standard",
+    Stratified => "stratified",
+    Random => "random",
+    NRooks => "n-rooks",
+});
+
 impl Pattern {
-    pub const ALL: [Pattern; 5] = [
-        Pattern::Grid,
-        Pattern::Standard,
-        Pattern::Stratified,
-        Pattern::Random,
-        Pattern::NRooks,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            Pattern::Grid => "grid",
-            Pattern::Standard => "standard",
-            Pattern::Stratified => "stratified",
-            Pattern::Random => "random",
-            Pattern::NRooks => "n-rooks",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Pattern> {
-        Pattern::ALL.into_iter().find(|p| p.name() == name)
-    }
-
     /// Whether the seed changes the positions.
     pub fn is_seeded(self) -> bool {
         matches!(

@@ -25,27 +25,12 @@ pub enum TimePattern {
     StratifiedShuffled,
 }
 
-impl TimePattern {
-    pub const ALL: [TimePattern; 4] = [
-        TimePattern::Random,
-        TimePattern::Stratified,
-        TimePattern::JitteredXyT,
-        TimePattern::StratifiedShuffled,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            TimePattern::Random => "random",
-            TimePattern::Stratified => "stratified",
-            TimePattern::JitteredXyT => "jittered-xy-t",
-            TimePattern::StratifiedShuffled => "stratified-shuffled",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<TimePattern> {
-        TimePattern::ALL.into_iter().find(|p| p.name() == name)
-    }
-}
+case_names!(TimePattern {
+    Random => "random",
+    Stratified => "stratified",
+    JitteredXyT => "jittered-xy-t",
+    StratifiedShuffled => "stratified-shuffled",
+});
 
 /// Bounds on `effects.motion_blur`.
 pub mod limits {

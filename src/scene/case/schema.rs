@@ -1,283 +1,34 @@
-//! Reading a case file into a [`Scene`], with errors that name the file and
-//! the JSON path of the offending value.
+//! The schema of a case file: the walk that maps each section and field of
+//! the format (name, canvas, rules, primitives and their vertices, effects,
+//! expect) onto the scene model, with each field's defaults.
 //!
-//! The file is parsed into a `serde_json::Value` (with `arbitrary_precision`,
-//! so every number keeps the text it was written as) and then walked by hand.
-//! Walking by hand, rather than deriving `Deserialize`, is what lets every
-//! error carry its JSON path, suggest the field that was meant, and read
-//! numbers exactly.
+//! A value is checked where it is read, so its error names its path; the
+//! range helper and the checks across fields, run once the scene is
+//! assembled, are `validate.rs`'s.
 
-use std::fmt;
+use serde_json::Value;
 
-use serde_json::{Map, Value};
-
-use super::number::Number;
-use super::rules::{
+use crate::scene::number::Number;
+use crate::scene::rules::{
     limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
 };
-use super::samples::{Antialias, Pattern};
-use super::time::{MotionBlur, TimePattern};
-use super::{Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, TimePin, Triangle, Vertex};
+use crate::scene::samples::{Antialias, Pattern};
+use crate::scene::time::{MotionBlur, TimePattern};
+use crate::scene::{
+    Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, TimePin, Triangle, Vertex,
+};
 
-/// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Limits {
-    pub max_canvas_pixels: u64,
-    pub max_primitives: usize,
-    /// Sample points per case: pixels × spatial samples × time samples
-    /// (the last only when something moves). It bounds the frames'
-    /// memory and the work of each primitive.
-    pub max_samples: u64,
-    /// Wall time each rasterizer (the reference, then each candidate) may
-    /// spend on one case; `None` for no limit. Not a property of the file:
-    /// the reader ignores it, the runner enforces it ([`crate::deadline`]).
-    pub case_timeout: Option<std::time::Duration>,
-}
+use super::json::{array, boolean, count, fail, kind, named, number, string, Fields, Path, Result};
+use super::validate::within;
+use super::Limits;
 
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_canvas_pixels: limits::DEFAULT_MAX_CANVAS_PIXELS,
-            max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
-            max_samples: limits::DEFAULT_MAX_SAMPLES,
-            case_timeout: Some(limits::DEFAULT_CASE_TIMEOUT),
-        }
-    }
-}
-
-/// A case that cannot be read: where, and why.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CaseError {
-    /// The case file, as given to the loader.
-    pub file: String,
-    /// JSON path of the offending value (`$.primitives[2].triangle[0]`), or
-    /// `line L column C` for a syntax error.
-    pub location: String,
-    pub message: String,
-}
-
-impl fmt::Display for CaseError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}: {}", self.file, self.location, self.message)
-    }
-}
-
-impl std::error::Error for CaseError {}
-
-/// Reads the text of one case file. `file` names it in errors.
-pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, CaseError> {
-    let value: Value = serde_json::from_str(text).map_err(|e| CaseError {
-        file: file.to_owned(),
-        location: format!("line {} column {}", e.line(), e.column()),
-        message: format!("invalid JSON: {}", strip_position(&e.to_string())),
-    })?;
-    let reader = Reader { limits };
-    reader.scene(&value).map_err(|(path, message)| CaseError {
-        file: file.to_owned(),
-        location: path.to_string(),
-        message,
-    })
-}
-
-fn strip_position(message: &str) -> &str {
-    message.find(" at line ").map_or(message, |i| &message[..i])
-}
-
-/// A JSON path under construction, e.g. `$.primitives[3].triangle[1]`.
-#[derive(Clone, Debug)]
-struct Path(String);
-
-impl Path {
-    fn root() -> Path {
-        Path("$".to_owned())
-    }
-    fn key(&self, key: &str) -> Path {
-        Path(format!("{}.{key}", self.0))
-    }
-    fn index(&self, i: usize) -> Path {
-        Path(format!("{}[{i}]", self.0))
-    }
-}
-
-impl fmt::Display for Path {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-type Fail = (Path, String);
-type Result<T, E = Fail> = std::result::Result<T, E>;
-
-fn fail<T>(path: &Path, message: impl Into<String>) -> Result<T> {
-    Err((path.clone(), message.into()))
-}
-
-fn kind(value: &Value) -> &'static str {
-    match value {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
-
-/// An object's fields, checked against the names a section allows.
-struct Fields<'a> {
-    map: &'a Map<String, Value>,
-    path: Path,
-}
-
-impl<'a> Fields<'a> {
-    fn new(value: &'a Value, path: &Path, allowed: &[&str]) -> Result<Fields<'a>> {
-        let Value::Object(map) = value else {
-            return fail(path, format!("expected an object, found {}", kind(value)));
-        };
-        for key in map.keys() {
-            if key.starts_with("//") || allowed.contains(&key.as_str()) {
-                continue;
-            }
-            let hint = match closest(key, allowed) {
-                Some(name) => format!("; did you mean \"{name}\"?"),
-                None => format!("; expected one of {}", allowed.join(", ")),
-            };
-            return fail(&path.key(key), format!("unknown field \"{key}\"{hint}"));
-        }
-        Ok(Fields {
-            map,
-            path: path.clone(),
-        })
-    }
-
-    fn get(&self, key: &str) -> Option<(&'a Value, Path)> {
-        self.map.get(key).map(|v| (v, self.path.key(key)))
-    }
-
-    fn require(&self, key: &str) -> Result<(&'a Value, Path)> {
-        self.get(key)
-            .ok_or_else(|| (self.path.clone(), format!("missing field \"{key}\"")))
-    }
-}
-
-/// The allowed name nearest to `key`, if it is plausibly a misspelling.
-fn closest<'n>(key: &str, allowed: &[&'n str]) -> Option<&'n str> {
-    allowed
-        .iter()
-        .map(|name| (edit_distance(key, name), *name))
-        .filter(|(d, name)| *d <= 2.max(name.len() / 3))
-        .min()
-        .map(|(_, name)| name)
-}
-
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let above = row[j + 1];
-            row[j + 1] = (above + 1)
-                .min(row[j] + 1)
-                .min(diagonal + usize::from(ca != *cb));
-            diagonal = above;
-        }
-    }
-    row[b.len()]
-}
-
-fn string<'v>(value: &'v Value, path: &Path) -> Result<&'v str> {
-    value.as_str().ok_or_else(|| {
-        (
-            path.clone(),
-            format!("expected a string, found {}", kind(value)),
-        )
-    })
-}
-
-fn array<'v>(value: &'v Value, path: &Path) -> Result<&'v Vec<Value>> {
-    value.as_array().ok_or_else(|| {
-        (
-            path.clone(),
-            format!("expected an array, found {}", kind(value)),
-        )
-    })
-}
-
-fn boolean(value: &Value, path: &Path) -> Result<bool> {
-    value.as_bool().ok_or_else(|| {
-        (
-            path.clone(),
-            format!("expected true or false, found {}", kind(value)),
-        )
-    })
-}
-
-/// An exact number: a JSON number read as its decimal text, or a string
-/// holding a fraction or decimal.
-fn number(value: &Value, path: &Path) -> Result<Number> {
-    let parsed = match value {
-        Value::Number(n) => Number::from_decimal(n.as_str()),
-        Value::String(s) => Number::from_string(s),
-        other => {
-            return fail(
-                path,
-                format!(
-                    "expected a number or a fraction string, found {}",
-                    kind(other)
-                ),
-            )
-        }
-    };
-    parsed.map_err(|e| (path.clone(), e.to_string()))
-}
-
-/// A non-negative integer no larger than `max`.
-fn count(value: &Value, path: &Path, max: u64) -> Result<u64> {
-    let n = number(value, path)?;
-    if !n.is_integer() || n < Number::ZERO {
-        return fail(path, format!("expected a whole number ≥ 0, found {n}"));
-    }
-    if n > Number::from_int(max as i64) {
-        return fail(path, format!("{n} is larger than the limit {max}"));
-    }
-    Ok(n.numerator()
-        .to_string()
-        .parse()
-        .expect("a bounded integer"))
-}
-
-fn within(n: &Number, path: &Path, low: &Number, high: &Number, what: &str) -> Result<()> {
-    if n < low || n > high {
-        return fail(
-            path,
-            format!("{what} {n} is outside the documented range [{low}, {high}]"),
-        );
-    }
-    Ok(())
-}
-
-fn named<T>(value: &Value, path: &Path, parse: fn(&str) -> Option<T>, names: &[&str]) -> Result<T> {
-    let s = string(value, path)?;
-    parse(s).ok_or_else(|| {
-        let hint = match closest(s, names) {
-            Some(name) => format!("; did you mean \"{name}\"?"),
-            None => String::new(),
-        };
-        (
-            path.clone(),
-            format!("\"{s}\" is not one of {}{hint}", names.join(", ")),
-        )
-    })
-}
-
-struct Reader<'a> {
-    limits: &'a Limits,
+/// The walk over one case file's JSON, under the run's limits.
+pub(super) struct Reader<'a> {
+    pub(super) limits: &'a Limits,
 }
 
 impl Reader<'_> {
-    fn scene(&self, value: &Value) -> Result<Scene> {
+    pub(super) fn scene(&self, value: &Value) -> Result<Scene> {
         let root = Path::root();
         let fields = Fields::new(
             value,
@@ -340,184 +91,6 @@ impl Reader<'_> {
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
         Ok(scene)
-    }
-
-    /// Pixels × spatial samples × time samples within `max_samples`; time
-    /// samples count only when something moves (otherwise no time loop
-    /// runs, SPEC.md §15.1).
-    fn check_samples(&self, scene: &Scene) -> Result<()> {
-        let pixels = u64::from(scene.canvas.width) * u64::from(scene.canvas.height);
-        let spatial = scene.effects.antialias.as_ref().map_or(1, |a| a.samples);
-        let time = match &scene.effects.motion_blur {
-            Some(blur) if scene.moves() => blur.samples,
-            _ => 1,
-        };
-        // At most 2^28 · 2^8 · 2^10: no overflow.
-        let total = pixels * u64::from(spatial) * u64::from(time);
-        if total <= self.limits.max_samples {
-            return Ok(());
-        }
-        let effects = Path::root().key("effects");
-        let (path, factors) = match (spatial, time) {
-            (1, 1) => (Path::root().key("canvas"), String::new()),
-            (s, 1) => (
-                effects.key("antialias").key("samples"),
-                format!(" × {s} samples"),
-            ),
-            (1, t) => (
-                effects.key("motion_blur").key("samples"),
-                format!(" × {t} time samples"),
-            ),
-            (s, t) => (
-                effects.key("motion_blur").key("samples"),
-                format!(" × {s} samples × {t} time samples"),
-            ),
-        };
-        fail(
-            &path,
-            format!(
-                "{pixels} pixels{factors} = {total} sample points exceed the limit of {} (raise it with --max-samples)",
-                self.limits.max_samples
-            ),
-        )
-    }
-
-    /// Rules, primitives, effects and expectations that are each valid
-    /// alone but not together.
-    fn check_combinations(&self, scene: &Scene, fields: &Fields) -> Result<()> {
-        let primitives_path = Path::root().key("primitives");
-        if scene.rules.fill_rule == FillRule::AllEdges {
-            if let Some(i) = scene
-                .primitives
-                .iter()
-                .position(|p| matches!(p, Primitive::Polygon(_)))
-            {
-                return fail(
-                    &primitives_path.index(i),
-                    "a polygon needs one of the four consistent tie rules (top-left, top-right, bottom-left, bottom-right), not all-edges",
-                );
-            }
-        }
-        let antialias = scene.effects.antialias.is_some();
-        if antialias {
-            for (i, primitive) in scene.primitives.iter().enumerate() {
-                let Primitive::Line(line) = primitive else {
-                    continue;
-                };
-                let why = match line.rule {
-                    LineRule::Midpoint | LineRule::DiamondExit => format!(
-                        "a {} line chooses whole pixels and has no samples; antialiasing samples triangles, polygons and parallelogram lines",
-                        line.rule.name()
-                    ),
-                    LineRule::Rectangle => "a rectangle line has irrational corners, so its exact area coverage is not a rational number; antialias parallelogram lines".to_owned(),
-                    LineRule::Parallelogram => continue,
-                };
-                return fail(&primitives_path.index(i), why);
-            }
-        }
-        self.check_motion(scene, fields)?;
-        if !antialias {
-            let e = &scene.expect;
-            let given = [
-                ("max_coverage_error", e.max_coverage_error.is_some()),
-                ("max_coverage_rms", e.max_coverage_rms.is_some()),
-                ("area", e.area.is_some()),
-            ];
-            if let (Some((key, _)), Some((_, expect_path))) =
-                (given.iter().find(|(_, g)| *g), fields.get("expect"))
-            {
-                return fail(
-                    &expect_path.key(key),
-                    format!(
-                        "{key} measures antialiased coverage; the case needs effects.antialias"
-                    ),
-                );
-            }
-        }
-        Ok(())
-    }
-
-    /// Moving primitives need `effects.motion_blur`, move only as triangles
-    /// and parallelogram lines, and carry positions only; time expectations
-    /// need something that moves (SPEC.md §15).
-    fn check_motion(&self, scene: &Scene, fields: &Fields) -> Result<()> {
-        let primitives_path = Path::root().key("primitives");
-        let moving = scene.primitives.iter().position(Primitive::moves);
-        if let Some(i) = moving {
-            let path = primitives_path.index(i);
-            let primitive = &scene.primitives[i];
-            if scene.effects.motion_blur.is_none() {
-                return fail(
-                    &path,
-                    "this primitive moves (a vertex gives from and to), so the case needs effects.motion_blur",
-                );
-            }
-            for (i, primitive) in scene.primitives.iter().enumerate() {
-                if !primitive.moves() {
-                    continue;
-                }
-                let why = match primitive {
-                    Primitive::Polygon(_) => "a polygon cannot move in this version of rastercheck; move triangles or parallelogram lines",
-                    Primitive::Line(line) if line.rule != LineRule::Parallelogram => "only parallelogram lines can move in this version of rastercheck (a midpoint or diamond-exit line chooses whole pixels at each instant, and a rectangle's corners are irrational)",
-                    _ => continue,
-                };
-                return fail(&primitives_path.index(i), why);
-            }
-            let valued = scene.has_depth
-                || scene.attribute_count > 0
-                || scene.vertices().any(|v| v.w != Number::ONE);
-            if valued {
-                return fail(
-                    &path.key(primitive.kind()),
-                    "a scene in which something moves is judged on time coverage only: z, w and attributes are not supported with motion in this version of rastercheck",
-                );
-            }
-            if let (Some(key), Some((_, expect_path))) = (
-                scene.expect.sample_expectations().first(),
-                fields.get("expect"),
-            ) {
-                return fail(
-                    &expect_path.key(key),
-                    format!("expect.{key} measures samples; a scene in which something moves is judged on time coverage only (max_time_error, max_time_rms, time_coverage)"),
-                );
-            }
-            if scene.rules.subpixel_bits.is_none() {
-                return fail(
-                    &Path::root().key("rules").key("subpixel_bits"),
-                    "moving vertices snap at shutter open and close: a moving scene needs subpixel_bits",
-                );
-            }
-        }
-        let e = &scene.expect;
-        let given = [
-            ("max_time_error", e.max_time_error.is_some()),
-            ("max_time_rms", e.max_time_rms.is_some()),
-            ("time_coverage", !e.time_coverage.is_empty()),
-        ];
-        if let (Some((key, _)), Some((_, expect_path))) =
-            (given.iter().find(|(_, g)| *g), fields.get("expect"))
-        {
-            if moving.is_none() {
-                return fail(
-                    &expect_path.key(key),
-                    format!("{key} measures time coverage; the case needs a primitive that moves and effects.motion_blur"),
-                );
-            }
-        }
-        for (i, pin) in e.time_coverage.iter().enumerate() {
-            let [x, y] = pin.pixel;
-            if x >= scene.canvas.width || y >= scene.canvas.height {
-                let path = fields.get("expect").map_or(Path::root(), |(_, p)| p);
-                return fail(
-                    &path.key("time_coverage").index(i).key("pixel"),
-                    format!(
-                        "pixel ({x}, {y}) is outside the {}×{} canvas",
-                        scene.canvas.width, scene.canvas.height
-                    ),
-                );
-            }
-        }
-        Ok(())
     }
 
     fn canvas(&self, value: &Value, path: &Path) -> Result<Canvas> {
@@ -941,7 +514,7 @@ impl Reader<'_> {
     }
 
     fn motion_blur(&self, value: &Value, path: &Path) -> Result<MotionBlur> {
-        use super::time::limits as mb;
+        use crate::scene::time::limits as mb;
         let fields = Fields::new(value, path, &["shutter", "samples", "pattern", "seed"])?;
         let shutter = match fields.get("shutter") {
             Some((v, p)) => {
@@ -972,35 +545,25 @@ impl Reader<'_> {
             }
             None => [0, mb::TIME_ONE],
         };
-        let (v, samples_path) = fields.require("samples")?;
-        let samples = count(v, &samples_path, u64::MAX >> 1)?;
-        if samples == 0 || samples > u64::from(mb::MAX_SAMPLES) {
-            return fail(
-                &samples_path,
-                format!("samples {samples} is outside [1, {}]", mb::MAX_SAMPLES),
-            );
-        }
-        let pattern = match fields.get("pattern") {
-            Some((v, p)) => {
-                let names: Vec<&str> = TimePattern::ALL.iter().map(|p| p.name()).collect();
-                named(v, &p, TimePattern::from_name, &names)?
-            }
-            None => TimePattern::Stratified,
-        };
-        let seed = match fields.get("seed") {
-            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
-            None => 0,
-        };
+        let (samples, _) = sample_count(&fields, mb::MAX_SAMPLES)?;
+        let names: Vec<&str> = TimePattern::ALL.iter().map(|p| p.name()).collect();
+        let pattern = pattern(
+            &fields,
+            TimePattern::from_name,
+            &names,
+            TimePattern::Stratified,
+        )?;
+        let seed = seed(&fields)?;
         Ok(MotionBlur {
             shutter,
-            samples: samples as u32,
+            samples,
             pattern,
             seed,
         })
     }
 
     fn antialias(&self, value: &Value, path: &Path) -> Result<Antialias> {
-        use super::samples::limits as aa;
+        use crate::scene::samples::limits as aa;
         let fields = Fields::new(
             value,
             path,
@@ -1013,29 +576,13 @@ impl Reader<'_> {
                 "position_bits",
             ],
         )?;
-        let (v, samples_path) = fields.require("samples")?;
-        let samples = count(v, &samples_path, u64::MAX >> 1)?;
-        if samples == 0 || samples > u64::from(aa::MAX_SAMPLES) {
-            return fail(
-                &samples_path,
-                format!("samples {samples} is outside [1, {}]", aa::MAX_SAMPLES),
-            );
-        }
-        let samples = samples as u32;
-        let pattern = match fields.get("pattern") {
-            Some((v, p)) => {
-                let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
-                named(v, &p, Pattern::from_name, &names)?
-            }
-            None => Pattern::Standard,
-        };
+        let (samples, samples_path) = sample_count(&fields, aa::MAX_SAMPLES)?;
+        let names: Vec<&str> = Pattern::ALL.iter().map(|p| p.name()).collect();
+        let pattern = pattern(&fields, Pattern::from_name, &names, Pattern::Standard)?;
         if let Err(why) = pattern.check_count(samples) {
             return fail(&samples_path, why);
         }
-        let seed = match fields.get("seed") {
-            Some((v, p)) => count(v, &p, u64::MAX >> 1)?,
-            None => 0,
-        };
+        let seed = seed(&fields)?;
         let adaptive = match fields.get("adaptive") {
             Some((v, p)) => boolean(v, &p)?,
             None => false,
@@ -1159,26 +706,40 @@ impl Reader<'_> {
         }
         Ok(expect)
     }
+}
 
-    /// Every vertex of a case carries the same number of attributes, so that
-    /// every pixel of the frame has the same channels.
-    fn check_attribute_counts(&self, scene: &Scene, path: &Path) -> Result<()> {
-        for (i, primitive) in scene.primitives.iter().enumerate() {
-            let kind = primitive.kind();
-            for (j, v) in primitive.vertices().iter().enumerate() {
-                if v.attributes.len() != scene.attribute_count {
-                    return fail(
-                        &path.index(i).key(kind).index(j).key("attributes"),
-                        format!(
-                            "this vertex has {} attributes but the first vertex of the case has {}; every vertex carries the same number",
-                            v.attributes.len(),
-                            scene.attribute_count
-                        ),
-                    );
-                }
-            }
-        }
-        Ok(())
+/// `samples` of a sampling effect (antialiasing, motion blur): a count in
+/// [1, `max`], and its path.
+fn sample_count(fields: &Fields, max: u32) -> Result<(u32, Path)> {
+    let (v, samples_path) = fields.require("samples")?;
+    let samples = count(v, &samples_path, u64::MAX >> 1)?;
+    if samples == 0 || samples > u64::from(max) {
+        return fail(
+            &samples_path,
+            format!("samples {samples} is outside [1, {max}]"),
+        );
+    }
+    Ok((samples as u32, samples_path))
+}
+
+/// `pattern` of a sampling effect: one of `names`, or `default`.
+fn pattern<T>(
+    fields: &Fields,
+    parse: fn(&str) -> Option<T>,
+    names: &[&str],
+    default: T,
+) -> Result<T> {
+    match fields.get("pattern") {
+        Some((v, p)) => named(v, &p, parse, names),
+        None => Ok(default),
+    }
+}
+
+/// `seed` of a sampling effect; 0 when absent.
+fn seed(fields: &Fields) -> Result<u64> {
+    match fields.get("seed") {
+        Some((v, p)) => count(v, &p, u64::MAX >> 1),
+        None => Ok(0),
     }
 }
 
@@ -1190,59 +751,4 @@ fn mentions_depth(primitive: &Value) -> bool {
             .and_then(Value::as_array)
             .is_some_and(|vs| vs.iter().any(|v| v.get("z").is_some()))
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn parse(text: &str) -> std::result::Result<Scene, CaseError> {
-        parse_case(text, "test.json", &Limits::default())
-    }
-
-    const MINIMAL: &str = r#"{"name": "t", "canvas": {"width": 4, "height": 4},
-        "primitives": [{"triangle": [[0, 0], [4, 0], [0, "4/3"]]}]}"#;
-
-    #[test]
-    fn minimal_case_reads_with_defaults() {
-        let scene = parse(MINIMAL).unwrap();
-        assert_eq!(scene.rules, Rules::default());
-        assert_eq!(scene.attribute_count, 0);
-        assert!(!scene.has_depth);
-        let (_, t) = scene.triangles().next().unwrap();
-        assert_eq!(t.vertices[2].y, Number::ratio(4, 3));
-    }
-
-    #[test]
-    fn errors_name_the_json_path() {
-        let e = parse(
-            r#"{"name": "t", "canvas": {"width": 4, "height": 4},
-            "primitives": [{"triangle": [[0, 0], [4, 0], [0, 40000]]}]}"#,
-        )
-        .unwrap_err();
-        assert_eq!(e.location, "$.primitives[0].triangle[2][1]");
-        assert!(e.message.contains("outside the documented range"), "{e}");
-    }
-
-    #[test]
-    fn unknown_fields_suggest_the_right_one() {
-        let e = parse(r#"{"name": "t", "canvas": {"width": 4, "hieght": 4}, "primitives": []}"#)
-            .unwrap_err();
-        assert_eq!(e.location, "$.canvas.hieght");
-        assert!(e.message.contains("did you mean \"height\""), "{e}");
-    }
-
-    #[test]
-    fn syntax_errors_give_line_and_column() {
-        let e = parse("{\"name\": \"t\",\n \"canvas\": }").unwrap_err();
-        assert_eq!(e.location, "line 2 column 12");
-    }
-
-    #[test]
-    fn numbers_are_read_exactly() {
-        let text = MINIMAL.replace("\"4/3\"", "0.1");
-        let scene = parse(&text).unwrap();
-        let (_, t) = scene.triangles().next().unwrap();
-        assert_eq!(t.vertices[2].y, Number::ratio(1, 10));
-    }
 }

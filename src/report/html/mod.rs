@@ -1,0 +1,338 @@
+//! `index.html`: one self-contained page for people. Inline CSS, every
+//! picture embedded as a base64 `data:` URI, no script but a one-line check
+//! that the pictures decoded (it writes `data-images="decoded/total"` on the
+//! body, which the browser test reads).
+//!
+//! The page: a header with the command, the totals per rasterizer and the
+//! golden files; one section per family (first segment of the case id) with
+//! a table of cases × rasterizers; and cards for what deserves a look, at
+//! most `MAX_PICTURED` of them, the worst first:
+//!
+//! 1. failures and errors, unreadable cases, broken references, golden
+//!    files that differ;
+//! 2. a foil's departures;
+//! 3. passing results with a nonzero interpolation error (their heat maps).
+//!
+//! A result card shows the reference, the candidate and the difference mask
+//! (the PNGs `write_pictures` wrote, colour key in `png.rs`), the reasons,
+//! every metric, one heat map per interpolated channel (|candidate − exact|
+//! per pixel on a viridis scale from 0 to the channel's largest error), its
+//! files, and the case file (linked relative to the report folder, and
+//! embedded).
+//!
+//! An antialiased case's card shows its resolved coverage instead (drawn
+//! from the frames, for passes too): the exact area and the candidate's
+//! resolved value in grey, the signed error (red too much, blue too
+//! little), and for a candidate whose samples differ every sample as a dot
+//! coloured by how it differs (colour keys in `png.rs`). Passing antialiased results
+//! with any coverage error get a card like passes with interpolation error.
+//! With several samples per pixel a heat map shows each pixel's largest
+//! error over its samples.
+//!
+//! A scene in which something moves (SPEC.md §15.4) is shown the same way
+//! by its time coverage: the exact time coverage and the candidate's in
+//! grey, and the signed error, with the time metrics (and the sample test
+//! efficiency of a method that counts it). Passing results with any time
+//! error get a card too.
+//!
+//! The page is built in four rooms: this file (the page: header, totals,
+//! family tables, where the cards go), `cards.rs` (which results get a card,
+//! and the case and result cards), `tables.rs` (table cells and metrics
+//! tables) and `pictures.rs` (coverage pictures, heat maps, difference
+//! lists, PNG data URIs).
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::json::Report;
+use super::{escape, MAX_PICTURED};
+use crate::frame::Frame;
+use crate::harness::runner::CaseOutcome;
+
+mod cards;
+mod pictures;
+mod tables;
+
+pub use cards::relative_url;
+use cards::{anchor, cards, case_card, result_card, Card, Kind, ResultView};
+pub use pictures::base64;
+use tables::{badge, cell, shorten};
+
+const STYLE: &str = r#"
+:root { --fg:#1d2330; --muted:#667085; --line:#d9dee7; --bg:#f6f7f9; --card:#fff;
+  --pass:#1a7f37; --fail:#c62828; --foil:#8250df; --unsupported:#9a6700; --error:#b42318; }
+* { box-sizing: border-box; }
+body { margin:0; font:14px/1.45 system-ui,-apple-system,"Segoe UI",Roboto,sans-serif; color:var(--fg); background:var(--bg); }
+main { max-width:1760px; margin:0 auto; padding:20px 28px 60px; }
+h1 { font-size:24px; margin:0 0 4px; } h2 { font-size:20px; margin:32px 0 10px; border-bottom:2px solid var(--line); padding-bottom:4px; }
+h3 { font-size:16px; margin:0; } h4 { font-size:13px; margin:14px 0 6px; text-transform:uppercase; letter-spacing:.04em; color:var(--muted); }
+code, pre { font:12.5px/1.4 ui-monospace,SFMono-Regular,Menlo,Consolas,monospace; }
+pre { background:#f1f3f6; border:1px solid var(--line); border-radius:6px; padding:8px 10px; overflow:auto; max-height:420px; white-space:pre-wrap; word-break:break-word; }
+a { color:#0b62c4; text-decoration:none; } a:hover { text-decoration:underline; }
+.muted { color:var(--muted); }
+.banner { background:#fff4e5; border:1px solid #f0b35a; border-radius:6px; padding:8px 12px; margin:10px 0; }
+.summary { display:flex; flex-wrap:wrap; gap:16px; align-items:flex-start; margin-top:14px; }
+.panel { background:var(--card); border:1px solid var(--line); border-radius:8px; padding:12px 14px; }
+table { border-collapse:collapse; background:var(--card); }
+th, td { border:1px solid var(--line); padding:4px 8px; text-align:left; vertical-align:top; }
+th { background:#eef1f5; font-weight:600; }
+td.n, th.n { text-align:right; font-variant-numeric:tabular-nums; }
+table.cases { width:100%; } table.cases td { font-size:13px; }
+table.cases td.id { font-family:ui-monospace,Menlo,Consolas,monospace; font-size:12.5px; white-space:nowrap; }
+.badge { display:inline-block; min-width:44px; text-align:center; font-size:11px; font-weight:700; letter-spacing:.03em; color:#fff; border-radius:4px; padding:1px 6px; margin-right:6px; }
+.pass { background:var(--pass); } .fail { background:var(--fail); } .foil { background:var(--foil); }
+.unsupported { background:var(--unsupported); } .error, .unreadable, .reference-failed, .limit-exceeded, .differ { background:var(--error); }
+.not-run, .missing { background:#8c959f; } .match { background:var(--pass); }
+.metric { color:var(--muted); font-size:12px; }
+.card { background:var(--card); border:1px solid var(--line); border-left:5px solid var(--line); border-radius:8px; padding:14px 16px; margin:16px 0; }
+.card.k-fail, .card.k-error, .card.k-problem { border-left-color:var(--fail); }
+.card.k-foil { border-left-color:var(--foil); } .card.k-pass { border-left-color:var(--pass); }
+.card header { display:flex; flex-wrap:wrap; align-items:baseline; gap:8px 12px; }
+.card header .id { font-family:ui-monospace,Menlo,Consolas,monospace; font-size:15px; font-weight:600; }
+.reasons { margin:8px 0; padding-left:20px; color:#7a1c1c; }
+.pictures { display:flex; gap:14px; padding-bottom:6px; align-items:flex-start; }
+.pictures figure { flex:0 1 auto; min-width:0; }
+.pictures.stack { flex-direction:column; overflow-x:auto; }
+.pictures.stack figure { flex:none; } .pictures.stack img { max-width:none; }
+.pictures.tall { max-height:640px; overflow-y:auto; } .pictures.tall figure { flex:none; }
+.pictures.heat { flex-wrap:wrap; }
+figure { margin:0; } figcaption { font-size:12px; color:var(--muted); margin-top:3px; }
+figure img { display:block; image-rendering:pixelated; border:1px solid #000; max-width:100%; height:auto; }
+.key { display:flex; flex-wrap:wrap; gap:4px 14px; font-size:12px; margin:8px 0 2px; color:var(--fg); }
+.key span { white-space:nowrap; } .key i { display:inline-block; width:12px; height:12px; border:1px solid #555; vertical-align:-2px; margin-right:4px; }
+.metrics { display:flex; flex-wrap:wrap; gap:14px; align-items:flex-start; }
+.ramp { display:inline-block; width:140px; height:12px; border:1px solid #555; vertical-align:-2px; margin:0 4px; }
+details { margin-top:8px; } summary { cursor:pointer; color:#0b62c4; }
+.files { font-size:12px; }
+"#;
+
+/// After load, counts the pictures that decoded.
+const SCRIPT: &str = r#"window.addEventListener('load', function () {
+  var imgs = document.images, ok = 0;
+  for (var i = 0; i < imgs.length; i++) { if (imgs[i].complete && imgs[i].naturalWidth > 0) ok++; }
+  document.body.dataset.images = ok + '/' + imgs.length;
+});"#;
+
+fn shell_quote(arg: &str) -> String {
+    if !arg.is_empty()
+        && arg
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./:=+,@%".contains(c))
+    {
+        arg.to_owned()
+    } else {
+        format!("'{}'", arg.replace('\'', "'\\''"))
+    }
+}
+
+/// The whole page. `dir` is the report folder (links are relative to it);
+/// `outcomes` are in the order of `report.cases`.
+pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
+    let t = &report.totals;
+    let mut html = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>rastercheck report</title>\n<style>");
+    html.push_str(STYLE);
+    html.push_str("</style>\n<script>");
+    html.push_str(SCRIPT);
+    html.push_str("</script></head>\n<body><main>\n");
+
+    // Header.
+    let _ = write!(
+        html,
+        "<h1>rastercheck report</h1><div class=\"muted\">{} {} · schema {}</div>",
+        report.tool.name, report.tool.version, report.schema
+    );
+    if !report.complete {
+        let _ = write!(
+            html,
+            "<div class=\"banner\">The run did not finish: {} cases did not run.</div>",
+            t.not_run
+        );
+    }
+    let command: Vec<String> = report.command.iter().map(|a| shell_quote(a)).collect();
+    let _ = write!(
+        html,
+        "<p>Command: <code>rastercheck {}</code></p>",
+        escape(&command.join(" "))
+    );
+    html.push_str("<div class=\"summary\"><table><tr><th>rasterizer</th><th class=\"n\">pass</th><th class=\"n\">fail</th><th class=\"n\">foil departures</th><th class=\"n\">unsupported</th><th class=\"n\">error</th></tr>");
+    for (v, info) in t.verdicts.iter().zip(&report.rasterizers) {
+        let x = &v.tally;
+        let _ = write!(
+            html,
+            "<tr><td><b>{}</b>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            escape(&v.rasterizer),
+            if info.foil { " <span class=\"muted\">(foil)</span>" } else { "" },
+            x.pass,
+            x.fail,
+            x.foil,
+            x.unsupported,
+            x.error
+        );
+    }
+    html.push_str("</table>");
+    let g = &t.golden;
+    let _ = write!(
+        html,
+        "<div class=\"panel\"><b>{}</b> case files · {} unreadable · {} reference failures · {} over the time limit · {} not run<br>golden files: {} match, {} differ, {} missing</div></div>",
+        t.cases, t.unreadable, t.reference_failed, t.limit_exceeded, t.not_run, g.matching, g.differing, g.missing
+    );
+
+    // Cards: chosen over the whole run, the most important first.
+    let all = cards(report);
+    let shown: Vec<Card> = all.iter().copied().take(MAX_PICTURED).collect();
+    if all.len() > shown.len() {
+        let left: Vec<String> = [
+            (Kind::Problem, "failures and problems"),
+            (Kind::Departure, "foil departures"),
+            (
+                Kind::Interpolation,
+                "error maps of passing results (interpolation, antialiasing, time coverage)",
+            ),
+        ]
+        .iter()
+        .filter_map(|(kind, name)| {
+            let n = all[shown.len()..]
+                .iter()
+                .filter(|c| c.kind == *kind)
+                .count();
+            (n > 0).then(|| format!("{n} {name}"))
+        })
+        .collect();
+        let _ = write!(
+            html,
+            "<div class=\"banner\">{} of {} cards shown (at most {MAX_PICTURED}); left out: {}. report.json has every result.</div>",
+            shown.len(),
+            all.len(),
+            left.join(", ")
+        );
+    }
+    let carded = |case: usize, result: Option<usize>| {
+        shown.iter().any(|c| c.case == case && c.result == result)
+    };
+
+    // Families, in order of first appearance.
+    let mut families: Vec<&str> = Vec::new();
+    for case in &report.cases {
+        if !families.contains(&case.family.as_str()) {
+            families.push(&case.family);
+        }
+    }
+    html.push_str("<p>Families: ");
+    let nav: Vec<String> = families
+        .iter()
+        .map(|f| {
+            let n = report.cases.iter().filter(|c| c.family == *f).count();
+            format!(
+                "<a href=\"#family-{}\">{}</a> ({n})",
+                escape(&slug(f)),
+                escape(f)
+            )
+        })
+        .collect();
+    html.push_str(&nav.join(" · "));
+    html.push_str("</p>\n");
+
+    for family in &families {
+        let members: Vec<usize> = (0..report.cases.len())
+            .filter(|&c| report.cases[c].family == *family)
+            .collect();
+        let _ = write!(
+            html,
+            "<section class=\"family\" id=\"family-{}\"><h2>{} <span class=\"muted\">({} case{})</span></h2>",
+            escape(&slug(family)),
+            escape(family),
+            members.len(),
+            if members.len() == 1 { "" } else { "s" }
+        );
+        html.push_str("<table class=\"cases\"><tr><th>case</th><th>golden</th>");
+        for r in &report.rasterizers {
+            let _ = write!(html, "<th>{}</th>", escape(&r.name));
+        }
+        html.push_str("</tr>\n");
+        for &c in &members {
+            let case = &report.cases[c];
+            let id_cell = if carded(c, None) {
+                format!(
+                    "<a href=\"#{}\">{}</a>",
+                    anchor(case, None),
+                    escape(&case.id)
+                )
+            } else {
+                escape(&case.id)
+            };
+            let _ = write!(html, "<tr><td class=\"id\">{id_cell}</td><td>");
+            if let Some(golden) = case.golden {
+                html.push_str(&badge(golden, golden));
+            }
+            html.push_str("</td>");
+            if case.status != "ran" {
+                let why = case.error.as_deref().unwrap_or("");
+                let _ = write!(
+                    html,
+                    "<td colspan=\"{}\">{}<span class=\"metric\">{}</span></td>",
+                    report.rasterizers.len().max(1),
+                    badge(case.status, case.status),
+                    escape(&shorten(why, 160))
+                );
+            } else {
+                for (r, result) in case.results.iter().enumerate() {
+                    let link = carded(c, Some(r)).then(|| anchor(case, Some(result)));
+                    let _ = write!(html, "<td>{}</td>", cell(result, link.as_deref()));
+                }
+            }
+            html.push_str("</tr>\n");
+        }
+        html.push_str("</table>\n");
+
+        // This family's cards, worst first.
+        for card in shown.iter().filter(|card| members.contains(&card.case)) {
+            let case = &report.cases[card.case];
+            let outcome = outcomes.get(card.case).filter(|o| o.file.id == case.id);
+            match card.result {
+                None => html.push_str(&case_card(dir, case)),
+                Some(r) => {
+                    let result = &case.results[r];
+                    let view = ResultView {
+                        case,
+                        result,
+                        scene: outcome.and_then(|o| o.scene.as_ref()),
+                        reference: outcome.and_then(|o| o.reference.as_ref()).map(|r| &r.frame),
+                        candidate: outcome
+                            .and_then(|o| o.candidates.get(r))
+                            .and_then(|run| run.frame.as_ref())
+                            .filter(|f| {
+                                outcome
+                                    .and_then(|o| o.reference.as_ref())
+                                    .is_some_and(|r| same_shape(&r.frame, f))
+                            }),
+                    };
+                    html.push_str(&result_card(dir, &view));
+                }
+            }
+            html.push('\n');
+        }
+        html.push_str("</section>\n");
+    }
+    html.push_str("</main></body></html>\n");
+    html
+}
+
+/// Whether a candidate's frame can be pictured beside the reference's: the
+/// same samples, or resolved or time coverage of the same canvas.
+fn same_shape(reference: &Frame, candidate: &Frame) -> bool {
+    if reference.time.is_some() || candidate.time.is_some() {
+        let time = |f: &Frame| f.time.as_ref().map(Vec::len);
+        return time(candidate) == time(reference);
+    }
+    let resolved = |f: &Frame| f.resolved.as_ref().map(Vec::len);
+    reference.sample_count() == candidate.sample_count() && candidate.samples == reference.samples
+        || candidate.samples == 0
+            && resolved(candidate).is_some()
+            && resolved(candidate) == resolved(reference)
+}
+
+fn slug(text: &str) -> String {
+    text.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
