@@ -12,6 +12,9 @@ macro_rules! case_names {
             /// Every value, in the documented order.
             pub const ALL: [$ty; [$($name),+].len()] = [$($ty::$variant),+];
 
+            /// Every value's word, in the same order (for error messages).
+            pub const NAMES: [&'static str; [$($name),+].len()] = [$($name),+];
+
             /// The word a case file uses for this value.
             pub fn name(self) -> &'static str {
                 match self {

@@ -152,7 +152,7 @@ impl Reader<'_> {
             rules.fill_rule = named(v, &p, FillRule::from_name, &names)?;
         }
         if let Some((v, p)) = fields.get("cull") {
-            rules.cull = named(v, &p, Cull::from_name, &["none", "cw", "ccw"])?;
+            rules.cull = named(v, &p, Cull::from_name, &Cull::NAMES)?;
         }
         Ok(rules)
     }
@@ -213,7 +213,7 @@ impl Reader<'_> {
                 v,
                 &p,
                 Interpolation::from_name,
-                &["perspective", "linear", "flat"],
+                &Interpolation::NAMES,
             ),
             None => Ok(Interpolation::Perspective),
         }
@@ -247,7 +247,7 @@ impl Reader<'_> {
                 v,
                 &p,
                 LineRule::from_name,
-                &["midpoint", "rectangle", "parallelogram"],
+                &LineRule::NAMES,
             )?,
             None => LineRule::Midpoint,
         };
@@ -369,7 +369,7 @@ impl Reader<'_> {
             contour_ends.push(vertices.len());
         }
         let fill = match fields.get("fill") {
-            Some((v, p)) => named(v, &p, PolygonFill::from_name, &["nonzero", "even-odd"])?,
+            Some((v, p)) => named(v, &p, PolygonFill::from_name, &PolygonFill::NAMES)?,
             None => PolygonFill::NonZero,
         };
         Ok(Primitive::Polygon(Polygon {
