@@ -24,7 +24,7 @@ A16 = {"samples": 16, "pattern": "standard"}
 def aa_case(name, description, width, height, prims, aa=A16, bits=8, fill_rule="top-left",
             area=None, full_pixels=None, single=False, same_as=None, checks=()):
     """Registers a polygon or antialiasing hard case (prims are
-    gen_aa_cases primitives). Claims, asserted by main(): `area` the exact
+    casegen.antialias primitives). Claims, asserted by aa_evaluate(): `area` the exact
     total area (a Fraction, computed independently of the checker's slabs),
     `full_pixels` how many pixels have area exactly 1, `single` that no
     sample is covered twice, `same_as` a list of primitives that must cover

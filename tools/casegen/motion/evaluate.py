@@ -17,7 +17,7 @@ from casegen.motion.quadratic import Surd
 OUT_DIR = os.path.join(ROOT, "cases", "motion")
 
 # ---------------------------------------------------------------------------
-# Cases.
+# The case registry.
 
 CASES = []
 

@@ -8,8 +8,9 @@ from fractions import Fraction as F
 
 from casegen.samples import MASK64, SplitMix64, offsets
 
-# Spatial offsets (section 14.2) come from casegen/samples.py (gen_aa_cases.py's port of the
-# patterns, with its SplitMix64); the instants (section 15.3) are written here.
+# Spatial offsets (section 14.2) come from casegen/samples.py (the port of the patterns that
+# the antialiasing checker uses, with its SplitMix64); the instants (section 15.3) are written
+# here.
 
 TIME_BITS = 16
 TIME_ONE = 1 << TIME_BITS

@@ -12,6 +12,7 @@ from casegen.motion.predicates import convex_main, line_alt, line_main, quad_alt
 from casegen.motion.quadratic import (ZERO, Surd, between, const, padd, pcross, psub, roots_in,
                                       surd_cmp)
 
+# ---------------------------------------------------------------------------
 # Primitives.
 
 def snap(q, bits):
