@@ -2,7 +2,8 @@
 
 A case file's numbers are exact (SPEC.md section 1.1): integers and
 terminating decimals are written as JSON numbers, other rationals as
-"p/q" strings. Shared by gen_cases.py and gen_line_cases.py.
+"p/q" strings. Shared by every generator; it writes values, not whole
+case files (casefile.py does that).
 """
 
 import json
