@@ -21,13 +21,17 @@ README_TOP = [
                                "multiple of 2^-bits, ties to even; null keeps coordinates exact."),
     ("// rules.fill_rule", "top-left (default), bottom-right, top-right, bottom-left or all-edges: "
                            "which edges own the samples lying exactly on them."),
-    ("// rules.cull", "none (default), cw or ccw: discard triangles by their winding on screen "
-                      "(y down; (0,0) (1,0) (0,1) is clockwise)."),
-    ("// primitives", "non-empty array drawn in order; each is {\"triangle\": [3 vertices], "
-                      "\"interpolation\": ...}. A vertex is either [x, y] or {\"position\": [x, y], "
-                      "\"z\": depth (default 0, screen-space linear), \"w\": clip w in [1e-6, 1e6] "
-                      "(default 1), \"attributes\": up to 16 numbers (default [], same count on every "
-                      "vertex)}."),
+    ("// rules.cull", "none (default), cw or ccw: discard triangles by their winding on screen (y "
+                      "down; (0,0) (1,0) (0,1) is clockwise); lines and polygons are never culled."),
+    ("// primitives", "non-empty array (at most 100000) drawn in order; each is a triangle "
+                      "{\"triangle\": [3 vertices], \"interpolation\": ...}, a line {\"line\": [2 vertices], "
+                      "\"rule\", \"width\", \"last_pixel\", \"parameter\", \"interpolation\"} (SPEC.md section "
+                      "4) or a polygon {\"polygon\": [[x, y], ...]} or {\"contours\": [[[x, y], ...], "
+                      "...]} with \"fill\" (SPEC.md section 14.1). A vertex is either [x, y] or "
+                      "{\"position\": [x, y], \"z\": depth (default 0, screen-space linear), \"w\": clip w "
+                      "in [1e-6, 1e6] (default 1), \"attributes\": up to 16 numbers (default [], same "
+                      "count on every vertex)}; a moving vertex gives from and to instead of position "
+                      "(see effects); a polygon's vertices are [x, y] only."),
     ("// interpolation", "perspective (default), linear (screen space) or flat (the first vertex's "
                          "values)."),
     ("// numbers", "exact: a JSON number is the decimal it spells (0.1 is 1/10); a string holds a "
@@ -48,9 +52,14 @@ README_TOP = [
                    "max_time_error, max_time_rms; SPEC.md section 15.4); with nothing moving, "
                    "motion_blur changes nothing."),
     ("// expect", "max_mismatched_samples (default 0), watertight (default false: no holes, no "
-                  "overdraw), samples_covered (the exact count the reference must cover), "
-                  "max_abs_error (default 2^-16 * max(1, largest vertex magnitude)) and "
-                  "max_ulp_error (none) bound interpolation error."),
+                  "overdraw), samples_covered (the exact count of distinct samples the reference "
+                  "covers), max_abs_error (default 2^-16 * max(1, largest vertex magnitude)) and "
+                  "max_ulp_error (none) bound interpolation error. Antialiased cases may add "
+                  "max_coverage_error, max_coverage_rms and area (the exact area of the primitives "
+                  "inside the canvas, culled triangles counting 0; SPEC.md section 14.3). A scene "
+                  "in which something moves is judged on time coverage only: max_time_error, "
+                  "max_time_rms and time_coverage (SPEC.md section 15.4), and none of the sample "
+                  "expectations."),
 ]
 
 
