@@ -6,7 +6,7 @@
 //! flows through the files in this order:
 //!
 //! 1. [`Production::rasterize`]: a plan with motion goes to the time loop
-//!    (`motion.rs`), which tests the moving primitives itself and draws the
+//!    (`motion/`), which tests the moving primitives itself and draws the
 //!    static ones from step 2 on ([`draw_frame`]).
 //! 2. [`draw_frame`]: the fixed-point format (`fixed.rs`, [`format_for`]),
 //!    every coordinate placed in it ([`place`]).
