@@ -1,6 +1,32 @@
 //! The production rasterizer: fixed point, integer coverage decisions,
 //! f32 interpolation. It imports the scene model and the output types, and
 //! never the reference.
+//!
+//! This file is the dispatcher, a scene to each primitive's path. A scene
+//! flows through the files in this order:
+//!
+//! 1. [`Production::rasterize`]: a plan with motion goes to the time loop
+//!    (`motion/`), which tests the moving primitives itself and draws the
+//!    static ones from step 2 on ([`draw_frame`]).
+//! 2. [`draw_frame`]: the fixed-point format (`fixed.rs`, [`format_for`]),
+//!    every coordinate placed in it ([`place`]).
+//! 3. A coverage-only scene of `midpoint` lines goes whole to
+//!    `line/bands.rs`. Any other goes primitive by primitive, in scene
+//!    order, through [`draw_primitive`] to its path:
+//!    - a triangle: `triangle.rs`, then `setup.rs` (edge equations, tie
+//!      bias, bounding box, interpolation set-up), then `traverse.rs` (8×8
+//!      blocks, pixel centres) or `antialias/` (samples at the plan's
+//!      offsets);
+//!    - a line: `line/` (one file per rule; a parallelogram's two triangles
+//!      go through `setup.rs` and `traverse.rs` or `antialias/` too);
+//!    - a polygon: `polygon/` (scanline fill).
+//! 4. An antialiased frame is resolved (`Frame::resolve`).
+//!
+//! The methods measured on their own reuse that path: `tiled.rs` (bands
+//! drawn in parallel through [`draw_primitive`]), `antialias/`
+//! (`adaptive-refine`, `adaptive-resolve`, `area-f32`), `polygon/`'s other
+//! fills, `foils/` (float DDA and float edge functions) and `mutants.rs`
+//! (one deliberate bug each).
 
 pub mod antialias;
 pub mod fixed;
@@ -12,16 +38,15 @@ pub mod polygon;
 pub mod setup;
 pub mod tiled;
 pub mod traverse;
+mod triangle;
 
 use antialias::{Samples, Sampling};
 use fixed::{EdgeInt, Fixed, Format};
-use setup::{Footprint, Shading, TriangleSetup};
-use traverse::Sink;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{LastPixel, LineRule, Number, Primitive, Scene, Triangle};
+use crate::scene::{LastPixel, LineRule, Number, Primitive, Scene};
 
 /// A production method that is a rasterizer of its own (a polygon fill, an
 /// antialiasing method), by its command-line name.
@@ -253,7 +278,7 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
     match &scene.primitives[index] {
         Primitive::Triangle(triangle) => {
             let sampled = samples.zip(offsets);
-            draw_triangle::<E>(
+            triangle::draw::<E>(
                 scene,
                 plan,
                 format,
@@ -287,80 +312,4 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
         }
     }
     Ok(())
-}
-
-/// Draws one triangle whose vertices are already in `format` as primitive
-/// `index`: its pixel centres, or, `sampled`, its samples at the offsets
-/// given in `format`.
-#[allow(clippy::too_many_arguments)]
-fn draw_triangle<E: EdgeInt>(
-    scene: &Scene,
-    plan: &Plan,
-    format: Format,
-    sampled: Option<(&Samples, &[[i64; 2]])>,
-    index: usize,
-    triangle: &Triangle,
-    positions: [[Fixed; 2]; 3],
-    canvas: crate::scene::Canvas,
-    frame: &mut Frame,
-) {
-    let footprint = match sampled {
-        Some(_) => Footprint::Squares,
-        None => Footprint::Centres,
-    };
-    let Some(setup) = setup::setup_in::<E>(
-        positions,
-        triangle,
-        format,
-        scene.rules.fill_rule,
-        scene.rules.cull,
-        canvas,
-        plan,
-        |_, _| None,
-        footprint,
-    ) else {
-        return;
-    };
-    match sampled {
-        Some((samples, offsets)) => {
-            antialias::write_triangle(&setup, format, offsets, samples.sampling, index, frame)
-        }
-        None => {
-            let mut sink = FrameSink {
-                frame,
-                index,
-                setup: &setup,
-            };
-            traverse::traverse(&setup, &mut sink);
-        }
-    }
-}
-
-/// Writes covered pixels, and their interpolated values, into a frame.
-struct FrameSink<'a, E> {
-    frame: &'a mut Frame,
-    index: usize,
-    setup: &'a TriangleSetup<E>,
-}
-
-impl<E: EdgeInt> Sink for FrameSink<'_, E> {
-    fn span(&mut self, y: i64, x0: i64, x1: i64) {
-        let width = self.frame.width as usize;
-        let row = y as usize * width;
-        for x in x0..x1 {
-            self.frame.hit(row + x as usize, self.index);
-        }
-        if matches!(self.setup.shading, Shading::None) {
-            return;
-        }
-        // The exact edge values at the span's first pixel, bias removed,
-        // then stepped pixel by pixel.
-        let mut e = self.setup.edges.map(|edge| edge.at(x0, y) - edge.bias);
-        for x in x0..x1 {
-            self.setup.shading.write(self.frame, row + x as usize, e);
-            for (value, edge) in e.iter_mut().zip(&self.setup.edges) {
-                *value = *value + edge.step_x;
-            }
-        }
-    }
 }

@@ -105,35 +105,6 @@ pub fn setup<E: EdgeInt>(
     canvas: Canvas,
     plan: &Plan,
 ) -> Option<TriangleSetup<E>> {
-    setup_with_ownership(
-        positions,
-        triangle,
-        format,
-        rule,
-        cull,
-        canvas,
-        plan,
-        |_, _| None,
-    )
-}
-
-/// [`setup`], with a hook for the one caller that needs to decide an edge's
-/// ownership itself: a wide line split into two triangles gives the samples
-/// on their shared diagonal to exactly one of them whatever the fill rule
-/// (`all-edges` included). `ownership(a, b)` is asked about each edge a→b
-/// as traversed clockwise on screen; `None` keeps the fill rule's answer
-/// ([`edge_owned`]).
-#[allow(clippy::too_many_arguments)]
-pub fn setup_with_ownership<E: EdgeInt>(
-    positions: [[Fixed; 2]; 3],
-    triangle: &Triangle,
-    format: Format,
-    rule: FillRule,
-    cull: Cull,
-    canvas: Canvas,
-    plan: &Plan,
-    ownership: impl Fn([Fixed; 2], [Fixed; 2]) -> Option<bool>,
-) -> Option<TriangleSetup<E>> {
     setup_in(
         positions,
         triangle,
@@ -142,12 +113,17 @@ pub fn setup_with_ownership<E: EdgeInt>(
         cull,
         canvas,
         plan,
-        ownership,
+        |_, _| None,
         Footprint::Centres,
     )
 }
 
-/// [`setup_with_ownership`] over the pixels of `footprint`.
+/// [`setup`] over the pixels of `footprint`, with a hook for the one caller
+/// that needs to decide an edge's ownership itself: a wide line split into
+/// two triangles gives the samples on their shared diagonal to exactly one
+/// of them whatever the fill rule (`all-edges` included). `ownership(a, b)`
+/// is asked about each edge a→b as traversed clockwise on screen; `None`
+/// keeps the fill rule's answer ([`edge_owned`]).
 #[allow(clippy::too_many_arguments)]
 pub fn setup_in<E: EdgeInt>(
     positions: [[Fixed; 2]; 3],

@@ -2,6 +2,11 @@
 //! pixel tested at its N instants against each moving primitive, each test
 //! decided exactly in fixed point.
 //!
+//! This file is the time loop: which samples and instants each moving
+//! primitive is tested at, and the frame they add up to. One test at one
+//! instant is `exact.rs`'s; the fast road for coarse triangles is
+//! `fast.rs`.
+//!
 //! Every instant of §15.3 is τ = t/2^32 for an integer t ≤ 2^32. A vertex at
 //! τ is (1 − τ)·A + τ·B, A and B its positions snapped at shutter open and
 //! close by production's own snapping ([`super::place`]), so 2^32 times it,
@@ -36,245 +41,23 @@
 //! other rules (the case reader refuses them, SPEC.md §15.1), and values
 //! (a moving scene has no depth or attributes).
 
-use std::cmp::Ordering;
+mod exact;
+mod fast;
+
 use std::ops::Range;
 
 use rayon::prelude::*;
 
+use exact::{edge_owned, sub, triangle_covers, Point, TIME_BITS};
+use fast::{Fast, Quadratic, FAST_MAX_FRAC_BITS};
+
 use super::antialias::{Samples, Sampling};
-use super::fixed::{Fixed, Format, MAX_FRAC_BITS};
-use super::{draw_frame, format_for, place, setup};
+use super::fixed::{Format, MAX_FRAC_BITS};
+use super::{draw_frame, format_for, place};
 use crate::frame::{Frame, SampleTests};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::rules::limits;
 use crate::scene::{Canvas, Cull, FillRule, LineRule, MotionBlur, Primitive, Scene, Vertex};
-
-/// Fraction bits of an instant: τ = t/2^TIME_BITS. The shutter's ends are
-/// multiples of 2^-16 and an instant adds (close − open)·u/2^16 with u below
-/// 2^16 (`MotionBlur::instant`).
-const TIME_BITS: u32 = 2 * crate::scene::time::limits::TIME_BITS;
-
-/// Bits of any difference a test takes, in pixels. A vertex lies within
-/// 2^15 px of the origin at both ends of the shutter, so at every instant;
-/// a parallelogram's corner at most width/2 ≤ 2^9 px further; a sample on
-/// the canvas within 2^14 px. Two such points are less than 2^17 px apart.
-const DIFF_PX_BITS: u32 = 17;
-const _: () = assert!(2 * (limits::COORD_LIMIT + limits::MAX_LINE_WIDTH / 2) <= 1 << DIFF_PX_BITS);
-const _: () = assert!((limits::MAX_CANVAS_SIDE as i64) <= limits::COORD_LIMIT);
-
-/// Bits of such a difference in units of 2^-(f+32) px, f ≤ MAX_FRAC_BITS:
-/// 66, held in i128 with room (and so are the positions themselves).
-const DIFF_BITS: u32 = DIFF_PX_BITS + MAX_FRAC_BITS + TIME_BITS;
-const _: () = assert!(DIFF_BITS <= 126);
-
-// A product of two differences needs 2·DIFF_BITS = 132 bits at the finest
-// format: it fits i128 (below 2^127) only when f ≤ 14 (2(17 + f + 32) ≤ 126).
-// A cross product's sign is the comparison of its two products, so no
-// difference of products is ever formed: each product is taken in i128
-// where `checked_mul` says it fits, in 256 bits otherwise, and every format
-// of the case reader is drawn.
-const _: () = assert!(2 * DIFF_BITS < 255);
-
-/// A point: 2^32 times a position at an instant, in units of 2^-(f+32) px,
-/// or on the fast path ([`Fast`]) a position in units of 2^-f px.
-type Point = [i128; 2];
-
-#[inline]
-fn sub(a: Point, b: Point) -> Point {
-    [a[0] - b[0], a[1] - b[1]]
-}
-
-/// a·b exactly, as the high (signed) and low halves of its 256-bit two's
-/// complement form: the pairs compare as the products do.
-fn wide_product(a: i128, b: i128) -> (i128, u128) {
-    const LOW: u128 = u64::MAX as u128;
-    let (x, y) = (a.unsigned_abs(), b.unsigned_abs());
-    let (x1, x0) = (x >> 64, x & LOW);
-    let (y1, y0) = (y >> 64, y & LOW);
-    let (p00, p01, p10, p11) = (x0 * y0, x0 * y1, x1 * y0, x1 * y1);
-    let mid = (p00 >> 64) + (p01 & LOW) + (p10 & LOW);
-    let low = (p00 & LOW) | (mid << 64);
-    // |a|, |b| ≤ 2^127, so |a·b| ≤ 2^254 and the high half is below 2^127.
-    let high = (p11 + (p01 >> 64) + (p10 >> 64) + (mid >> 64)) as i128;
-    match ((a < 0) != (b < 0), low) {
-        (false, _) => (high, low),
-        // −(h·2^128 + l) = (−h − 1)·2^128 + (2^128 − l) for l > 0.
-        (true, 0) => (-high, 0),
-        (true, _) => (-high - 1, low.wrapping_neg()),
-    }
-}
-
-/// The sign of the cross product u × v = u.x·v.y − u.y·v.x, as the
-/// comparison of its two products.
-#[inline]
-fn cross_sign(u: Point, v: Point) -> Ordering {
-    match (u[0].checked_mul(v[1]), u[1].checked_mul(v[0])) {
-        (Some(p), Some(q)) => p.cmp(&q),
-        _ => wide_product(u[0], v[1]).cmp(&wide_product(u[1], v[0])),
-    }
-}
-
-/// Whether the edge a→b of a clockwise triangle owns the samples on it:
-/// production's own rule, which reads only the signs of the edge's
-/// direction.
-fn edge_owned(a: Point, b: Point, rule: FillRule) -> bool {
-    let sign = |k: usize| Fixed((b[k] - a[k]).signum() as i64);
-    setup::edge_owned([Fixed(0), Fixed(0)], [sign(0), sign(1)], rule)
-}
-
-/// Whether the triangle `p` (one instant's vertices, in the case's order)
-/// covers the sample `q`, as the static setup decides: nothing at zero area
-/// or when the winding is culled; then, walked clockwise, every edge's
-/// cross product with the sample is positive, or zero on an edge that
-/// `owned(a, b)` gives the sample.
-#[inline]
-fn triangle_covers(
-    p: [Point; 3],
-    q: Point,
-    cull: Cull,
-    owned: impl Fn(Point, Point) -> bool,
-) -> bool {
-    let clockwise = match cross_sign(sub(p[1], p[0]), sub(p[2], p[0])) {
-        Ordering::Equal => return false,
-        o => o == Ordering::Greater,
-    };
-    match cull {
-        Cull::Clockwise if clockwise => return false,
-        Cull::CounterClockwise if !clockwise => return false,
-        _ => {}
-    }
-    let order = if clockwise { p } else { [p[0], p[2], p[1]] };
-    (0..3).all(|i| {
-        let (a, b) = (order[i], order[(i + 1) % 3]);
-        match cross_sign(sub(b, a), sub(q, a)) {
-            Ordering::Greater => true,
-            Ordering::Equal => owned(a, b),
-            Ordering::Less => false,
-        }
-    })
-}
-
-/// The finest format whose triangles take the fast test ([`Quadratic`]).
-///
-/// At format f a vertex lies within 2^15 px of the origin and a sample on
-/// the canvas in [0, 2^14] px, so in units of 2^-f an edge D or a vertex to
-/// a sample R is below 2^(16+f) per axis, a velocity V below 2^(16+f) and a
-/// difference of velocities W below 2^(17+f); a cross product |u × w| is at
-/// most 2·|u|·|w|. An edge function's coefficients (below) are then under
-/// 2^(33+2f), 2^(35+2f) and 2^(34+2f), twice the area's under 2^(33+2f),
-/// 2^(35+2f) and 2^(35+2f), and with t ≤ 2^32 each scaled value
-/// 2^64·q0 + 2^32·t·q1 + t²·q2 is below 2^(64+2f)·(2^33 + 2^35 + 2^35),
-/// under 2^(100+2f): in i128 for f ≤ 13.
-const FAST_MAX_FRAC_BITS: u32 = 13;
-const _: () = assert!(100 + 2 * FAST_MAX_FRAC_BITS <= 126);
-const _: () = assert!(limits::COORD_LIMIT == 1 << 15 && limits::MAX_CANVAS_SIDE <= 1 << 14);
-
-/// q(τ) = q0 + q1·τ + q2·τ², held as its coefficients: an edge function at
-/// one sample, or twice a triangle's area, as a vertex moves linearly. Its
-/// sign at τ = t/2^32 is that of 2^64·q(τ) = 2^32·(2^32·q0 + t·q1) + t²·q2,
-/// an exact integer.
-#[derive(Clone, Copy, Debug)]
-struct Quadratic([i128; 3]);
-
-impl Quadratic {
-    #[inline]
-    fn sign_at(&self, t: i128, t2: i128) -> Ordering {
-        let [q0, q1, q2] = self.0;
-        ((((q0 << TIME_BITS) + t * q1) << TIME_BITS) + t2 * q2).cmp(&0)
-    }
-}
-
-/// The cross product u × w in i128 (the fast path's small values).
-#[inline]
-fn cross(u: Point, w: Point) -> i128 {
-    u[0] * w[1] - u[1] * w[0]
-}
-
-/// A moving triangle in a format of at most [`FAST_MAX_FRAC_BITS`]: each
-/// edge function at a sample is a [`Quadratic`] in τ whose τ² coefficient
-/// does not depend on the sample, so a sample's three quadratics are set up
-/// once for its N instants, and a test evaluates them.
-#[derive(Clone, Debug)]
-struct Fast {
-    /// Each vertex at τ = 0 (units of 2^-f) and its motion to τ = 1.
-    a: [Point; 3],
-    v: [Point; 3],
-    /// Twice the area, and its sign when that never changes (the area is
-    /// then constant: a translation, say).
-    area: Quadratic,
-    fixed: Option<Ordering>,
-    /// −W × V of each edge i → i + 1 (vertices in the case's order).
-    c2: [i128; 3],
-    cull: Cull,
-}
-
-impl Fast {
-    fn new(ends: [[[i64; 2]; 2]; 3], cull: Cull) -> Fast {
-        let a = ends.map(|[a, _]| a.map(i128::from));
-        let v = ends.map(|[a, b]| [0, 1].map(|k| i128::from(b[k]) - i128::from(a[k])));
-        let (d1, d2) = (sub(a[1], a[0]), sub(a[2], a[0]));
-        let (w1, w2) = (sub(v[1], v[0]), sub(v[2], v[0]));
-        let area = Quadratic([cross(d1, d2), cross(d1, w2) + cross(w1, d2), cross(w1, w2)]);
-        let fixed = (area.0[1] == 0 && area.0[2] == 0).then(|| area.0[0].cmp(&0));
-        let c2 = [0, 1, 2].map(|i| -cross(sub(v[(i + 1) % 3], v[i]), v[i]));
-        Fast {
-            a,
-            v,
-            area,
-            fixed,
-            c2,
-            cull,
-        }
-    }
-
-    /// The edge functions i → i + 1 at the sample q (units of 2^-f):
-    /// (D + τW) × (R − τV) = D × R + τ·(W × R − D × V) − τ²·(W × V), with
-    /// D and W the edge and its motion, R = q − a_i and V = v_i.
-    fn edges_at(&self, q: Point) -> [Quadratic; 3] {
-        [0, 1, 2].map(|i| {
-            let j = (i + 1) % 3;
-            let (d, w) = (sub(self.a[j], self.a[i]), sub(self.v[j], self.v[i]));
-            let r = sub(q, self.a[i]);
-            Quadratic([cross(d, r), cross(w, r) - cross(d, self.v[i]), self.c2[i]])
-        })
-    }
-
-    /// [`triangle_covers`] from the quadratics: the winding at τ (zero
-    /// area covers nothing; the cull), then each edge walked clockwise, an
-    /// edge of a counter-clockwise triangle reversed (its function negated,
-    /// its direction turned round).
-    #[inline]
-    fn covers(&self, edges: &[Quadratic; 3], t: i128, rule: FillRule) -> bool {
-        let t2 = t * t;
-        let clockwise = match self.fixed.unwrap_or_else(|| self.area.sign_at(t, t2)) {
-            Ordering::Equal => return false,
-            o => o == Ordering::Greater,
-        };
-        match self.cull {
-            Cull::Clockwise if clockwise => return false,
-            Cull::CounterClockwise if !clockwise => return false,
-            _ => {}
-        }
-        (0..3).all(|i| {
-            let sign = edges[i].sign_at(t, t2);
-            match if clockwise { sign } else { sign.reverse() } {
-                Ordering::Greater => true,
-                Ordering::Less => false,
-                Ordering::Equal => {
-                    // 2^32 times the edge's direction at τ, walked clockwise.
-                    let j = (i + 1) % 3;
-                    let d = [0, 1].map(|k| {
-                        ((self.a[j][k] - self.a[i][k]) << TIME_BITS)
-                            + t * (self.v[j][k] - self.v[i][k])
-                    });
-                    let d = if clockwise { d } else { d.map(|c| -c) };
-                    edge_owned([0, 0], d, rule)
-                }
-            }
-        })
-    }
-}
 
 /// A moving primitive's vertices: 2^32 times each at shutter open of the
 /// case (τ = 0), and its motion to τ = 1, B − A; at instant t the vertex is
@@ -722,123 +505,5 @@ impl Sampler {
         let mut frame = Frame::time_only(width, height, time);
         frame.sample_tests = Some(tests);
         frame
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn wide_products_order_as_the_products() {
-        let values = [
-            0i128,
-            1,
-            -1,
-            3,
-            -7,
-            1 << 63,
-            -(1 << 64) + 5,
-            (1 << 100) + 12345,
-            -(1 << 110),
-            i128::MAX,
-            i128::MIN + 1,
-            i128::MIN,
-        ];
-        for &a in &values {
-            for &b in &values {
-                if let Some(p) = a.checked_mul(b) {
-                    let low = p as u128;
-                    let high = if p < 0 { -1 } else { 0 };
-                    assert_eq!(wide_product(a, b), (high, low), "{a}·{b}");
-                }
-                for &c in &values {
-                    for &d in &values {
-                        let want = match (a.checked_mul(b), c.checked_mul(d)) {
-                            (Some(p), Some(q)) => p.cmp(&q),
-                            _ => continue,
-                        };
-                        assert_eq!(wide_product(a, b).cmp(&wide_product(c, d)), want);
-                    }
-                }
-            }
-        }
-        // Beyond i128: 2^127 · 2^127 = 2^254, and its negation.
-        assert_eq!(wide_product(i128::MIN, i128::MIN), (1 << 126, 0));
-        // 2^127·(2^127 − 1) = (2^126 − 1)·2^128 + 2^127, negated.
-        assert_eq!(wide_product(i128::MIN, i128::MAX), (-(1 << 126), 1 << 127));
-        assert!(wide_product(1 << 100, 1 << 30) > wide_product((1 << 100) - 1, 1 << 30));
-        assert!(wide_product(-(1 << 100), 1 << 30) < wide_product(-(1 << 100) + 1, 1 << 30));
-    }
-
-    /// The fast path's bound, tried at its corners: at FAST_MAX_FRAC_BITS,
-    /// vertices at the coordinate limits moving from one limit to the
-    /// other, samples at the canvas's corners and t up to 2^32, every
-    /// intermediate of every quadratic's evaluation is computed with
-    /// checked arithmetic and fits.
-    #[test]
-    fn fast_quadratics_fit_at_their_finest_format() {
-        let f = FAST_MAX_FRAC_BITS;
-        let limit = limits::COORD_LIMIT << f;
-        let side = i64::from(limits::MAX_CANVAS_SIDE) << f;
-        let corners = [-limit, limit];
-        let checked = |q: &Quadratic, t: i128| -> Option<i128> {
-            let [q0, q1, q2] = q.0;
-            let inner = q0
-                .checked_mul(1 << TIME_BITS)?
-                .checked_add(t.checked_mul(q1)?)?;
-            inner
-                .checked_mul(1 << TIME_BITS)?
-                .checked_add((t * t).checked_mul(q2)?)
-        };
-        let mut tried = 0;
-        for bits in 0..1u32 << 12 {
-            let c = |k: u32| corners[(bits >> k & 1) as usize];
-            let ends = [0, 4, 8].map(|k| [[c(k), c(k + 1)], [c(k + 2), c(k + 3)]]);
-            let fast = Fast::new(ends, Cull::None);
-            for q in [[0, 0], [side, 0], [0, side], [side, side]] {
-                let edges = fast.edges_at(q.map(i128::from));
-                for t in [0, 1 << 31, (1 << 32) - 1, 1 << 32] {
-                    for quadratic in edges.iter().chain([&fast.area]) {
-                        assert!(checked(quadratic, t).is_some(), "{ends:?} {q:?} {t}");
-                        tried += 1;
-                    }
-                }
-            }
-        }
-        assert_eq!(tried, 4096 * 4 * 4 * 4);
-    }
-
-    /// The sign of a cross product beyond i128 (at 16 subpixel bits and
-    /// coordinates near the limit) agrees with an exact big-integer one.
-    #[test]
-    fn cross_signs_beyond_i128_are_exact() {
-        use dashu_int::IBig;
-        let mut state = 0x1234_5678_9abc_def0u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
-        let bound = 1i128 << DIFF_BITS;
-        let mut wide = 0;
-        for round in 0..20_000 {
-            let mut draw = || {
-                let r = (i128::from(next()) << 64 | i128::from(next())).rem_euclid(2 * bound);
-                r - bound
-            };
-            let mut u = [draw(), draw()];
-            let v = [draw(), draw()];
-            if round % 3 == 0 {
-                // Parallel, or nearly: the two products tie or differ by little.
-                u = [v[0] * 3 / 5, v[1] * 3 / 5 + i128::from(round % 2)];
-            }
-            let big = |a: i128| IBig::from(a);
-            let exact = (big(u[0]) * big(v[1]) - big(u[1]) * big(v[0])).cmp(&IBig::ZERO);
-            assert_eq!(cross_sign(u, v), exact, "{u:?} × {v:?}");
-            wide += usize::from(u[0].checked_mul(v[1]).is_none());
-        }
-        assert!(wide > 1000, "{wide} products beyond i128");
     }
 }

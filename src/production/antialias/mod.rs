@@ -419,45 +419,20 @@ impl Rasterizer for AdaptiveRefine {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{
-        Antialias, Canvas, Effects, Expect, FillRule, Interpolation, Number, Pattern, Primitive,
-        Rules, Triangle, Vertex,
-    };
+    use crate::scene::FillRule;
 
     /// A scene of one triangle with integer vertices under 16× standard
     /// sampling, whose sample 12 lies on its pixel's left border.
     fn scene(rule: FillRule, xs: [i64; 3], ys: [i64; 3]) -> Scene {
-        let vertices =
-            [0, 1, 2].map(|i| Vertex::at(Number::from_int(xs[i]), Number::from_int(ys[i])));
-        Scene {
-            name: "tie".to_owned(),
-            description: String::new(),
-            canvas: Canvas {
-                width: 10,
-                height: 8,
-            },
-            rules: Rules {
-                fill_rule: rule,
-                ..Rules::default()
-            },
-            primitives: vec![Primitive::Triangle(Triangle {
-                vertices,
-                interpolation: Interpolation::Linear,
-            })],
-            effects: Effects {
-                antialias: Some(Antialias {
-                    samples: 16,
-                    pattern: Pattern::Standard,
-                    seed: 0,
-                    adaptive: false,
-                    position_bits: 8,
-                }),
-                motion_blur: None,
-            },
-            expect: Expect::default(),
-            attribute_count: 0,
-            has_depth: false,
-        }
+        let [a, b, c] = [0, 1, 2].map(|i| format!("[{}, {}]", xs[i], ys[i]));
+        let text = format!(
+            r#"{{"name": "tie", "canvas": {{"width": 10, "height": 8}},
+                "rules": {{"fill_rule": "{}"}},
+                "primitives": [{{"triangle": [{a}, {b}, {c}]}}],
+                "effects": {{"antialias": {{"samples": 16, "pattern": "standard"}}}}}}"#,
+            rule.name()
+        );
+        crate::scene::parse_case(&text, "tie.json", &crate::scene::Limits::default()).unwrap()
     }
 
     fn frame(scene: &Scene, sampling: Sampling) -> Frame {
