@@ -139,7 +139,7 @@ pub(super) fn targets(
             target: "lines: production midpoint ≥ 1.3× a plain midpoint loop".to_owned(),
             measured: shown(r),
             met: r.map(|r| r >= 1.3),
-            note: format!("the plain loop (bench.rs `PlainMidpoint`) steps the same exact rule pixel by pixel, bounds-checking and writing each pixel; production draws coverage-only midpoint scenes whose frame exceeds 4 MiB band by band (768 KiB bands, rows padded against 4K aliasing) with resumable walkers, x-major lines in row runs, and smaller frames line by line (production/line.rs `midpoint_lines`){scale}"),
+            note: format!("the plain loop (bench/foils.rs `PlainMidpoint`) steps the same exact rule pixel by pixel, bounds-checking and writing each pixel; production draws coverage-only midpoint scenes whose frame exceeds 4 MiB band by band (768 KiB bands, rows padded against 4K aliasing) with resumable walkers, x-major lines in row runs, and smaller frames line by line (production/line/bands.rs `midpoint_lines`){scale}"),
         });
     }
     // The tiled method on the largest triangle workload measured.
