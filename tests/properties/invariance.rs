@@ -2,7 +2,7 @@
 //! nothing but what they must, in the reference and in production.
 
 use crate::strategies::{
-    any_bits, any_cull, any_interpolation, coord, fill_rule, map_vertices, production, scene_of,
+    any_bits, any_cull, coord, fill_rule, map_vertices, production, scene_of, triangle_or_line,
     valued_vertex,
 };
 use proptest::prelude::*;
@@ -11,10 +11,7 @@ use rastercheck::metrics;
 use rastercheck::plan::Plan;
 use rastercheck::reference::{self};
 use rastercheck::scene::rules::limits::COORD_LIMIT;
-use rastercheck::scene::{
-    Cull, Interpolation, LastPixel, Line, LineParameter, LineRule, Number, Primitive, Rules, Scene,
-    Triangle,
-};
+use rastercheck::scene::{Cull, Interpolation, Number, Primitive, Rules, Scene, Triangle};
 
 /// Asserts production's interpolated values are within SPEC.md §6.3's bound.
 fn assert_values_within_bound(
@@ -94,29 +91,16 @@ const TSIZE: u32 = 32;
 fn near_primitive() -> impl Strategy<Value = Primitive> {
     let c = || coord(-8, i64::from(TSIZE) + 8, COORD_LIMIT - 64);
     let v = move || valued_vertex((c(), c()), 1);
-    prop_oneof![
-        3 => ([v(), v(), v()], any_interpolation()).prop_map(|(vertices, interpolation)| {
-            Primitive::Triangle(Triangle { vertices, interpolation })
-        }),
-        1 => (
-            [v(), v()],
-            prop::sample::select(LineRule::ALL.to_vec()),
-            prop::sample::select(vec![Number::ONE, Number::from_int(3), Number::ratio(5, 2), Number::ratio(3, 4)]),
-            prop::sample::select(vec![LastPixel::Include, LastPixel::Exclude]),
-            prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
-            any_interpolation(),
-        )
-            .prop_map(|(vertices, rule, width, last_pixel, parameter, interpolation)| {
-                Primitive::Line(Line {
-                    vertices,
-                    rule,
-                    width: if rule.is_wide() { width } else { Number::ONE },
-                    last_pixel: if rule == LineRule::Midpoint { last_pixel } else { LastPixel::Include },
-                    parameter,
-                    interpolation,
-                })
-            }),
-    ]
+    triangle_or_line(
+        v,
+        prop::sample::select(vec![
+            Number::ONE,
+            Number::from_int(3),
+            Number::ratio(5, 2),
+            Number::ratio(3, 4),
+        ]),
+        3,
+    )
 }
 
 fn near_scene(triangles_only: bool) -> impl Strategy<Value = Scene> {

@@ -2,16 +2,14 @@
 //! panic and agree.
 
 use crate::strategies::{
-    any_bits, any_cull, any_interpolation, coord, fill_rule, production, scene_of, valued_vertex,
+    any_bits, any_cull, coord, fill_rule, production, scene_of, triangle_or_line, valued_vertex,
 };
 use proptest::prelude::*;
 use rastercheck::metrics;
 use rastercheck::plan::Plan;
 use rastercheck::reference::{self};
 use rastercheck::scene::rules::limits::COORD_LIMIT;
-use rastercheck::scene::{
-    LastPixel, Line, LineParameter, LineRule, Number, Primitive, Rules, Scene, Triangle,
-};
+use rastercheck::scene::{Number, Primitive, Rules, Scene};
 
 // --- The documented range --------------------------------------------------
 
@@ -46,29 +44,7 @@ fn line_width() -> impl Strategy<Value = Number> {
 
 fn extreme_primitive(attributes: usize) -> impl Strategy<Value = Primitive> {
     let v = move || valued_vertex((extreme_coord(), extreme_coord()), attributes);
-    prop_oneof![
-        2 => ([v(), v(), v()], any_interpolation()).prop_map(|(vertices, interpolation)| {
-            Primitive::Triangle(Triangle { vertices, interpolation })
-        }),
-        1 => (
-            [v(), v()],
-            prop::sample::select(LineRule::ALL.to_vec()),
-            line_width(),
-            prop::sample::select(vec![LastPixel::Include, LastPixel::Exclude]),
-            prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
-            any_interpolation(),
-        )
-            .prop_map(|(vertices, rule, width, last_pixel, parameter, interpolation)| {
-                Primitive::Line(Line {
-                    vertices,
-                    rule,
-                    width: if rule.is_wide() { width } else { Number::ONE },
-                    last_pixel: if rule == LineRule::Midpoint { last_pixel } else { LastPixel::Include },
-                    parameter,
-                    interpolation,
-                })
-            }),
-    ]
+    triangle_or_line(v, line_width(), 2)
 }
 
 fn extreme_scene() -> impl Strategy<Value = Scene> {

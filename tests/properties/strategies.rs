@@ -12,7 +12,8 @@ use rastercheck::rasterizer::{RasterError, Rasterizer};
 use rastercheck::reference::exact;
 use rastercheck::scene::rules::limits::{VALUE_LIMIT, W_LIMIT};
 use rastercheck::scene::{
-    Canvas, Cull, Effects, Expect, FillRule, Interpolation, Number, Primitive, Rules, Scene, Vertex,
+    Canvas, Cull, Effects, Expect, FillRule, Interpolation, LastPixel, Line, LineParameter,
+    LineRule, Number, Primitive, Rules, Scene, Triangle, Vertex,
 };
 
 pub fn fill_rule() -> impl Strategy<Value = FillRule> {
@@ -164,4 +165,41 @@ pub fn placed(n: &Number, bits: Option<u32>) -> RBig {
 pub fn orient(a: &Exact2, b: &Exact2, c: &Exact2) -> std::cmp::Ordering {
     let v = (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0]);
     v.cmp(&RBig::ZERO)
+}
+
+/// A triangle (weight `triangles`) or a line (weight 1) of any rule, last
+/// pixel and parameter, with vertices from `v` and, if the rule is wide, a
+/// width from `width`.
+pub fn triangle_or_line<V, W>(
+    v: impl Fn() -> V,
+    width: W,
+    triangles: u32,
+) -> impl Strategy<Value = Primitive>
+where
+    V: Strategy<Value = Vertex> + 'static,
+    W: Strategy<Value = Number> + 'static,
+{
+    prop_oneof![
+        triangles => ([v(), v(), v()], any_interpolation()).prop_map(|(vertices, interpolation)| {
+            Primitive::Triangle(Triangle { vertices, interpolation })
+        }),
+        1 => (
+            [v(), v()],
+            prop::sample::select(LineRule::ALL.to_vec()),
+            width,
+            prop::sample::select(vec![LastPixel::Include, LastPixel::Exclude]),
+            prop::sample::select(vec![LineParameter::Major, LineParameter::Projected]),
+            any_interpolation(),
+        )
+            .prop_map(|(vertices, rule, width, last_pixel, parameter, interpolation)| {
+                Primitive::Line(Line {
+                    vertices,
+                    rule,
+                    width: if rule.is_wide() { width } else { Number::ONE },
+                    last_pixel: if rule == LineRule::Midpoint { last_pixel } else { LastPixel::Include },
+                    parameter,
+                    interpolation,
+                })
+            }),
+    ]
 }
