@@ -174,13 +174,7 @@ fn bless_writes_golden_files_that_run_then_checks() {
 #[test]
 fn show_writes_three_decodable_pngs() {
     let dir = workspace("show", &[("cases/pair.json", TIE_PAIR)]);
-    let (_, pictures) = show_failing(
-        &dir,
-        "pair",
-        "mutant:flipped-ties",
-        "mutant-flipped-ties",
-        &[".png", ".diff.png"],
-    );
+    let (_, pictures) = show_failing(&dir, "pair", "mutant:flipped-ties", &[".png", ".diff.png"]);
     for (name, img) in pictures {
         // 8 pixels magnified 32 times, the most auto-scaling gives.
         assert_eq!(img.width(), 256, "{name}");
@@ -483,7 +477,6 @@ fn show_pictures_an_antialiased_case_by_its_resolved_coverage() {
         &dir,
         "aa_pair",
         "mutant:shifted-samples",
-        "mutant-shifted-samples",
         &[".png", ".diff.png", ".samples.png"],
     );
     for (name, img) in pictures {

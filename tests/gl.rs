@@ -37,7 +37,7 @@ mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_refuses_lines_and_unsnapped, record_every_triangle_case, square_of, INTERPOLATION,
-    TIE_CASES,
+    TIE_CASES, WINDING_CASES,
 };
 use common::{case, report};
 
@@ -137,16 +137,8 @@ fn culling_follows_the_on_screen_winding() {
     if !available() {
         return;
     }
-    for id in [
-        "triangles/winding_cw_cull_cw",
-        "triangles/winding_cw_cull_ccw",
-        "triangles/winding_ccw_cull_cw",
-        "triangles/winding_ccw_cull_ccw",
-        "triangles/cull_cw_mixed_windings",
-        "triangles/cull_ccw_mixed_windings",
-        "triangles/sliver_cull_cw",
-        "triangles/sliver_cull_ccw",
-    ] {
+    let slivers = ["triangles/sliver_cull_cw", "triangles/sliver_cull_ccw"];
+    for id in [WINDING_CASES, &slivers].concat() {
         let mut scene = case(id);
         scene.rules.fill_rule = FillRule::BottomLeft;
         let (reference, run) = run(&scene);

@@ -31,7 +31,7 @@ mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_refuses_lines_and_unsnapped, bundled_ids, record_every_triangle_case, square_of,
-    INTERPOLATION, TIE_CASES,
+    INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
@@ -105,14 +105,7 @@ fn culling_follows_the_on_screen_winding() {
     if !available() {
         return;
     }
-    for id in [
-        "triangles/winding_cw_cull_cw",
-        "triangles/winding_cw_cull_ccw",
-        "triangles/winding_ccw_cull_cw",
-        "triangles/winding_ccw_cull_ccw",
-        "triangles/cull_cw_mixed_windings",
-        "triangles/cull_ccw_mixed_windings",
-    ] {
+    for id in WINDING_CASES {
         let scene = case(id);
         let (reference, run) = run(&scene);
         assert_eq!(

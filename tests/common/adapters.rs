@@ -30,6 +30,17 @@ pub const TIE_CASES: &[&str] = &[
     "triangles/shared_edge_fractions_offgrid",
 ];
 
+/// Winding cases under each cull: culled triangles draw nothing, kept ones
+/// match.
+pub const WINDING_CASES: &[&str] = &[
+    "triangles/winding_cw_cull_cw",
+    "triangles/winding_cw_cull_ccw",
+    "triangles/winding_ccw_cull_cw",
+    "triangles/winding_ccw_cull_ccw",
+    "triangles/cull_cw_mixed_windings",
+    "triangles/cull_ccw_mixed_windings",
+];
+
 /// Interpolation cases: depth, linear, flat, perspective with a wide range
 /// of w.
 pub const INTERPOLATION: &[&str] = &[

@@ -101,15 +101,16 @@ pub fn bless_elsewhere(dir: &Path, name: &str, id: &str, json: &str) {
 
 /// `show` of `cases/{id}.json` in `dir` against `rasterizer`, into
 /// `dir/shown`: it fails (exit 1) and panics nowhere. The printed text, and
-/// the pictures `reference.png` and `{stem}{suffix}` for each of `suffixes`,
-/// decoded, with their names.
+/// the pictures `reference.png` and `{stem}{suffix}` for each of `suffixes`
+/// (the stem is the rasterizer's name with `:` as `-`), decoded, with their
+/// names.
 pub fn show_failing(
     dir: &Path,
     id: &str,
     rasterizer: &str,
-    stem: &str,
     suffixes: &[&str],
 ) -> (String, Vec<(String, image::DynamicImage)>) {
+    let stem = rasterizer.replace(':', "-");
     let case = format!("cases/{id}.json");
     let out = rastercheck(dir, &["show", &case, "--out", "shown", "-r", rasterizer]);
     let t = text(&out);
