@@ -5,7 +5,7 @@ use crate::shapes::{
     assert_same, draw_direct, exact, polygon_of, random_scene, scene_of, Rng, BITS, SHAPES, SIZE,
 };
 use rastercheck::plan::Plan;
-use rastercheck::production::polygon::{self};
+use rastercheck::production::polygon;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
 use rastercheck::reference;

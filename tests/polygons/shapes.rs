@@ -6,7 +6,7 @@ use dashu_int::ops::BitTest;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::production::fixed::Format;
-use rastercheck::production::polygon::{self};
+use rastercheck::production::polygon;
 use rastercheck::rasterizer::RasterError;
 use rastercheck::reference;
 use rastercheck::scene::samples::SplitMix64;

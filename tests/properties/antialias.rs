@@ -7,7 +7,7 @@ use dashu_ratio::RBig;
 use proptest::prelude::*;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{Antialias, Pattern, Polygon, PolygonFill};
 use rastercheck::scene::{

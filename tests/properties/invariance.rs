@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use rastercheck::frame::Frame;
 use rastercheck::metrics;
 use rastercheck::plan::Plan;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{Cull, Interpolation, Number, Primitive, Rules, Scene, Triangle};
 

@@ -8,7 +8,7 @@ use rastercheck::metrics;
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::{
     Canvas, Effects, Expect, Interpolation, LastPixel, Line, LineParameter, LineRule, Number,
     Primitive, Rules, Scene, Vertex,

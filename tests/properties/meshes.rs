@@ -5,7 +5,7 @@ use crate::strategies::{any_bits, coord, orient, placed, production, scene_of, E
 use proptest::prelude::*;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::{
     Cull, FillRule, Interpolation, Number, Primitive, Rules, Scene, Triangle, Vertex,
 };

@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::Scene;
 use rastercheck::scene::{parse_case, Limits};
 

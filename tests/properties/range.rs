@@ -7,7 +7,7 @@ use crate::strategies::{
 use proptest::prelude::*;
 use rastercheck::metrics;
 use rastercheck::plan::Plan;
-use rastercheck::reference::{self};
+use rastercheck::reference;
 use rastercheck::scene::rules::limits::COORD_LIMIT;
 use rastercheck::scene::{Number, Primitive, Rules, Scene};
 

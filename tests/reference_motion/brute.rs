@@ -5,8 +5,8 @@
 use crate::scenes::r;
 use dashu_ratio::RBig;
 use rastercheck::plan::Plan;
+use rastercheck::reference;
 use rastercheck::reference::motion::{self, Certified, Mutation};
-use rastercheck::reference::{self};
 use rastercheck::scene::{Number, Primitive, Scene};
 
 /// The spatial samples of a pixel, as offsets in pixels from its corner.

@@ -11,8 +11,8 @@ use crate::random::{random_setup, turned, Rng};
 use crate::scenes::{line, moving, r, still, triangle, Move, Setup};
 use dashu_ratio::RBig;
 use rastercheck::plan::Plan;
+use rastercheck::reference;
 use rastercheck::reference::motion::{self, Certified, Mutation};
-use rastercheck::reference::{self};
 use rastercheck::scene::samples::SplitMix64;
 use rastercheck::scene::{Cull, FillRule, Scene};
 
