@@ -47,6 +47,21 @@ fn watertight(run: &CandidateRun) -> (u64, u64) {
     (w.holes, w.overdraw)
 }
 
+/// `name` on `scene`, which it fails.
+fn assert_fails(scene: &Scene, name: &str) -> CandidateRun {
+    let r = run(scene, name);
+    assert!(matches!(r.verdict, Verdict::Fail(_)));
+    r
+}
+
+/// `name` fails `triangles/shared_edge_diagonal` with these (missing,
+/// extra, wrong owner) and (holes, overdraw).
+fn assert_shared_diagonal(name: &str, mismatched: (u64, u64, u64), holes_overdraw: (u64, u64)) {
+    let r = assert_fails(&case("triangles/shared_edge_diagonal"), name);
+    assert_eq!(mismatches(&r), mismatched, "{}", suite::describe(&r));
+    assert_eq!(watertight(&r), holes_overdraw);
+}
+
 fn assert_pass(id: &str, scene: &Scene, name: &str) {
     let r = run(scene, name);
     assert_eq!(
@@ -85,10 +100,7 @@ mod tiny_skia {
         // Two triangles share the square's diagonal; its 8 samples belong to
         // the upper-right triangle under top-left, to the lower-left one
         // under tiny-skia's bottom-right rule. Nothing is lost or doubled.
-        let r = run(&case("triangles/shared_edge_diagonal"), "tiny-skia");
-        assert!(matches!(r.verdict, Verdict::Fail(_)));
-        assert_eq!(mismatches(&r), (0, 0, 8), "{}", suite::describe(&r));
-        assert_eq!(watertight(&r), (0, 0));
+        assert_shared_diagonal("tiny-skia", (0, 0, 8), (0, 0));
     }
 
     #[test]
@@ -98,8 +110,7 @@ mod tiny_skia {
         // rim, with no hole and no sample drawn twice.
         let id = "triangles/fan_16_square_ring";
         let mut scene = case(id);
-        let r = run(&scene, "tiny-skia");
-        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        let r = assert_fails(&scene, "tiny-skia");
         assert_eq!(watertight(&r), (0, 0), "{}", suite::describe(&r));
         let (missing, extra, wrong_owner) = mismatches(&r);
         assert!(missing > 0 && extra > 0 && wrong_owner > 0);
@@ -119,8 +130,7 @@ mod tiny_skia {
         // case fails under bottom-right too.
         let mut scene = case("triangles/fan_16_center");
         scene.rules.fill_rule = FillRule::BottomRight;
-        let r = run(&scene, "tiny-skia");
-        assert!(matches!(r.verdict, Verdict::Fail(_)));
+        let r = assert_fails(&scene, "tiny-skia");
         assert_eq!(watertight(&r), (0, 1), "{}", suite::describe(&r));
         let frame = r.frame.as_ref().unwrap();
         assert_eq!(frame.coverage[frame.index(8, 8)], 7);
@@ -166,10 +176,7 @@ mod euc {
     #[test]
     fn draws_shared_edges_twice() {
         // Closed edges: the 8 diagonal samples are covered by both triangles.
-        let r = run(&case("triangles/shared_edge_diagonal"), "euc");
-        assert!(matches!(r.verdict, Verdict::Fail(_)));
-        assert_eq!(mismatches(&r), (0, 8, 0), "{}", suite::describe(&r));
-        assert_eq!(watertight(&r), (0, 8));
+        assert_shared_diagonal("euc", (0, 8, 0), (0, 8));
     }
 
     #[test]

@@ -2,30 +2,17 @@
 //! errors recorded and held, regressions injected and caught, a worse
 //! rasterizer held to production's baseline, bad baseline files refused.
 
+mod common;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
+use common::cli::{rastercheck as rastercheck_in, read_json as read, text};
 use serde_json::Value;
-
-fn rastercheck_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
 
 /// Runs in the repository, on its bundled cases.
 fn rastercheck(args: &[&str]) -> Output {
     rastercheck_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
 }
 
 fn code(out: &Output) -> i32 {
@@ -34,17 +21,7 @@ fn code(out: &Output) -> i32 {
 
 /// A fresh scratch folder.
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!(
-        "rastercheck-baseline-{name}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn read(path: &Path) -> Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+    common::cli::scratch(&format!("baseline-{name}"))
 }
 
 fn write(path: &Path, value: &Value) {
@@ -141,18 +118,46 @@ fn saving_is_deterministic_whatever_the_thread_count() {
     assert_eq!(a, b);
 }
 
-#[test]
-fn a_count_made_better_than_reality_is_caught_as_a_regression() {
-    let dir = scratch("count");
+/// A baseline made better than reality, checked.
+struct Zeroed {
+    file: PathBuf,
+    baseline: Value,
+    case: String,
+    value: f64,
+    text: String,
+}
+
+/// Saves the DDA foil's baseline in scratch folder `name`, records its
+/// first nonzero `metric` as 0 (better than reality) and checks it, which
+/// fails (exit 1).
+fn check_zeroed(name: &str, metric: &str) -> Zeroed {
+    let dir = scratch(name);
     let file = save_dda(&dir);
     let mut b = read(&file);
-    let (k, case, value) = first_nonzero(&b, "dda-f32", "coverage.mismatched");
-    b["results"][k]["metrics"]["coverage.mismatched"] = 0.into();
+    let (k, case, value) = first_nonzero(&b, "dda-f32", metric);
+    b["results"][k]["metrics"][metric] = 0.into();
     write(&file, &b);
 
     let out = rastercheck(&["baseline", "check", file.to_str().unwrap()]);
     let t = text(&out);
     assert_eq!(code(&out), 1, "{t}");
+    Zeroed {
+        file,
+        baseline: b,
+        case,
+        value,
+        text: t,
+    }
+}
+
+#[test]
+fn a_count_made_better_than_reality_is_caught_as_a_regression() {
+    let Zeroed {
+        case,
+        value,
+        text: t,
+        ..
+    } = check_zeroed("count", "coverage.mismatched");
     let expected = format!("REGRESSION  {case}  dda-f32  coverage.mismatched  0 → {value}");
     assert!(t.contains(&expected), "{expected:?} in\n{t}");
     assert!(
@@ -163,16 +168,13 @@ fn a_count_made_better_than_reality_is_caught_as_a_regression() {
 
 #[test]
 fn an_interpolation_error_made_better_than_reality_is_caught() {
-    let dir = scratch("error");
-    let file = save_dda(&dir);
-    let mut b = read(&file);
-    let (k, case, _) = first_nonzero(&b, "dda-f32", "depth.max_abs");
-    b["results"][k]["metrics"]["depth.max_abs"] = 0.into();
-    write(&file, &b);
-
-    let out = rastercheck(&["baseline", "check", file.to_str().unwrap()]);
-    let t = text(&out);
-    assert_eq!(code(&out), 1, "{t}");
+    let Zeroed {
+        file,
+        baseline: mut b,
+        case,
+        text: t,
+        ..
+    } = check_zeroed("error", "depth.max_abs");
     assert!(
         t.contains(&format!("REGRESSION  {case}  dda-f32  depth.max_abs  0 → ")),
         "{t}"

@@ -2,21 +2,11 @@
 
 mod common;
 
-use common::{rastercheck, text};
-use std::path::{Path, PathBuf};
-use std::process::Output;
-
-/// A fresh folder with a `cases/` tree holding the given files.
-fn workspace(name: &str, files: &[(&str, &str)]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rastercheck-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    for (path, content) in files {
-        let path = dir.join(path);
-        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        std::fs::write(path, content).unwrap();
-    }
-    dir
-}
+use common::cli::{
+    assert_no_panic, bless_cases, bless_elsewhere, rastercheck, read_json, report_ids, run_cases,
+    show_failing, text, workspace,
+};
+use std::path::PathBuf;
 
 const TIE_PAIR: &str = r#"{
   "name": "diagonal_pair", "canvas": {"width": 8, "height": 8},
@@ -30,10 +20,6 @@ const TIE_PAIR: &str = r#"{
 const SINGLE: &str = r#"{"name": "single", "canvas": {"width": 4, "height": 4},
   "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]}]}"#;
 
-fn assert_no_panic(out: &Output) {
-    assert!(!text(out).contains("panicked"), "{}", text(out));
-}
-
 #[test]
 fn passing_cases_exit_0_with_a_line_each_and_a_summary() {
     let dir = workspace(
@@ -43,9 +29,7 @@ fn passing_cases_exit_0_with_a_line_each_and_a_summary() {
             ("cases/a/single.json", SINGLE),
         ],
     );
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(0), "{t}");
+    let t = run_cases(&dir, &[], 0);
     assert!(t.contains("PASS  a/pair"), "{t}");
     assert!(t.contains("PASS  a/single"), "{t}");
     assert!(t.contains("production: 2 passed, 0 failed"), "{t}");
@@ -54,19 +38,7 @@ fn passing_cases_exit_0_with_a_line_each_and_a_summary() {
 #[test]
 fn a_failing_rasterizer_exits_1_and_says_why() {
     let dir = workspace("fail", &[("cases/pair.json", TIE_PAIR)]);
-    let out = rastercheck(
-        &dir,
-        &[
-            "run",
-            "cases",
-            "-r",
-            "production",
-            "-r",
-            "mutant:flipped-ties",
-        ],
-    );
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
+    let t = run_cases(&dir, &["-r", "production", "-r", "mutant:flipped-ties"], 1);
     assert!(t.contains("FAIL  pair  mutant:flipped-ties"), "{t}");
     assert!(t.contains("8 wrong owner"), "{t}");
     assert!(t.contains("production: 1 passed"), "{t}");
@@ -132,20 +104,8 @@ fn one_bad_case_does_not_stop_the_others() {
             ("cases/c.json", TIE_PAIR),
         ],
     );
-    let out = rastercheck(
-        &dir,
-        &[
-            "run",
-            "cases",
-            "-r",
-            "production",
-            "-r",
-            "mutant:flipped-ties",
-        ],
-    );
-    let t = text(&out);
     // Bad input wins over a failure, and both good cases still ran.
-    assert_eq!(out.status.code(), Some(2), "{t}");
+    let t = run_cases(&dir, &["-r", "production", "-r", "mutant:flipped-ties"], 2);
     assert!(t.contains("BAD   b"), "{t}");
     assert!(t.contains("PASS  a  production"), "{t}");
     assert!(t.contains("PASS  c  production"), "{t}");
@@ -188,8 +148,7 @@ fn usage_errors_exit_2() {
 #[test]
 fn bless_writes_golden_files_that_run_then_checks() {
     let dir = workspace("bless", &[("cases/pair.json", TIE_PAIR)]);
-    let out = rastercheck(&dir, &["bless", "cases"]);
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    bless_cases(&dir);
     assert!(dir.join("reference/pair.exr").is_file());
     let out = rastercheck(&dir, &["run", "cases"]);
     assert!(
@@ -199,22 +158,13 @@ fn bless_writes_golden_files_that_run_then_checks() {
     );
 
     // A golden file from another case no longer matches: the run fails.
-    let other = workspace(
+    bless_elsewhere(
+        &dir,
         "bless-other",
-        &[(
-            "cases/pair.json",
-            &TIE_PAIR.replace("[8, 0], [8, 8]", "[8, 0], [8, 7]"),
-        )],
+        "pair",
+        &TIE_PAIR.replace("[8, 0], [8, 8]", "[8, 0], [8, 7]"),
     );
-    assert_eq!(rastercheck(&other, &["bless"]).status.code(), Some(0));
-    std::fs::copy(
-        other.join("reference/pair.exr"),
-        dir.join("reference/pair.exr"),
-    )
-    .unwrap();
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
+    let t = run_cases(&dir, &[], 1);
     assert!(
         t.contains("GOLDEN pair  the reference no longer reproduces its golden file"),
         "{t}"
@@ -224,26 +174,8 @@ fn bless_writes_golden_files_that_run_then_checks() {
 #[test]
 fn show_writes_three_decodable_pngs() {
     let dir = workspace("show", &[("cases/pair.json", TIE_PAIR)]);
-    let out = rastercheck(
-        &dir,
-        &[
-            "show",
-            "cases/pair.json",
-            "--out",
-            "shown",
-            "-r",
-            "mutant:flipped-ties",
-        ],
-    );
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
-    for name in [
-        "reference.png",
-        "mutant-flipped-ties.png",
-        "mutant-flipped-ties.diff.png",
-    ] {
-        let img =
-            image::open(dir.join("shown").join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let (_, pictures) = show_failing(&dir, "pair", "mutant:flipped-ties", &[".png", ".diff.png"]);
+    for (name, img) in pictures {
         // 8 pixels magnified 32 times, the most auto-scaling gives.
         assert_eq!(img.width(), 256, "{name}");
     }
@@ -281,7 +213,7 @@ fn bundled_cases() -> PathBuf {
 #[test]
 fn results_do_not_depend_on_the_thread_count() {
     let root = bundled_cases();
-    let out = std::env::temp_dir().join(format!("rastercheck-threads-{}", std::process::id()));
+    let out = common::cli::scratch("threads");
     let mut reports = Vec::new();
     for threads in ["1", "2", "5"] {
         let dir = out.join(threads);
@@ -321,21 +253,10 @@ fn results_do_not_depend_on_the_thread_count() {
     std::fs::remove_dir_all(out).ok();
 }
 
-fn report_ids(dir: &Path) -> Vec<String> {
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
-    report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| c["id"].as_str().unwrap().to_owned())
-        .collect()
-}
-
 #[test]
 fn the_union_of_the_shards_is_the_whole_suite_each_case_once() {
     let root = bundled_cases();
-    let out = std::env::temp_dir().join(format!("rastercheck-shards-{}", std::process::id()));
+    let out = common::cli::scratch("shards");
     let whole_dir = out.join("whole");
     assert_eq!(
         rastercheck(
@@ -384,7 +305,7 @@ fn the_union_of_the_shards_is_the_whole_suite_each_case_once() {
 #[test]
 fn filter_and_family_select_cases() {
     let root = bundled_cases();
-    let out = std::env::temp_dir().join(format!("rastercheck-select-{}", std::process::id()));
+    let out = common::cli::scratch("select");
     let run = rastercheck(
         &root,
         &[
@@ -434,9 +355,7 @@ fn a_report_is_written_even_when_cases_are_bad_and_says_which() {
         ],
     );
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("rep/report.json")).unwrap())
-            .unwrap();
+    let report = read_json(&dir.join("rep/report.json"));
     assert_eq!(report["complete"], true);
     assert_eq!(report["totals"]["unreadable"], 1);
     let b = &report["cases"][1];
@@ -480,9 +399,7 @@ fn duplicate_case_names_are_bad_input_naming_both_files() {
             ("cases/c.json", TIE_PAIR),
         ],
     );
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(2), "{t}");
+    let t = run_cases(&dir, &[], 2);
     assert!(
         t.contains(
             "BAD   b  cases/b.json: $.name: the case name \"single\" is also used by cases/a.json"
@@ -523,32 +440,20 @@ const AA_PAIR: &str = r#"{"name": "aa_pair", "canvas": {"width": 8, "height": 8}
 #[test]
 fn antialiased_golden_files_bless_run_and_catch_a_changed_area() {
     let dir = workspace("bless-aa", &[("cases/aa_pair.json", AA_PAIR)]);
-    let out = rastercheck(&dir, &["bless", "cases"]);
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(0), "{t}");
+    bless_cases(&dir);
+    let t = run_cases(&dir, &[], 0);
     assert!(t.contains("golden files: 1 match, 0 differ"), "{t}");
     assert!(t.contains("aa max err"), "{t}");
 
     // A golden file of the same case moved by a quarter pixel: the samples
     // and the resolved areas differ, and the run says where.
-    let other = workspace(
+    bless_elsewhere(
+        &dir,
         "bless-aa-other",
-        &[(
-            "cases/aa_pair.json",
-            &AA_PAIR.replace("[1, 7]", "[1.25, 7]"),
-        )],
+        "aa_pair",
+        &AA_PAIR.replace("[1, 7]", "[1.25, 7]"),
     );
-    assert_eq!(rastercheck(&other, &["bless"]).status.code(), Some(0));
-    std::fs::copy(
-        other.join("reference/aa_pair.exr"),
-        dir.join("reference/aa_pair.exr"),
-    )
-    .unwrap();
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
+    let t = run_cases(&dir, &[], 1);
     assert!(t.contains("GOLDEN aa_pair"), "{t}");
     assert!(t.contains("resolved.f64"), "{t}");
 
@@ -558,9 +463,7 @@ fn antialiased_golden_files_bless_run_and_catch_a_changed_area() {
         AA_PAIR.replace("1407/32", "44"),
     )
     .unwrap();
-    let out = rastercheck(&dir, &["run", "cases"]);
-    let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
+    let t = run_cases(&dir, &[], 1);
     assert!(
         t.contains("reference: its pixel areas sum to 1407/32"),
         "{t}"
@@ -570,28 +473,13 @@ fn antialiased_golden_files_bless_run_and_catch_a_changed_area() {
 #[test]
 fn show_pictures_an_antialiased_case_by_its_resolved_coverage() {
     let dir = workspace("show-aa", &[("cases/aa_pair.json", AA_PAIR)]);
-    let out = rastercheck(
+    let (_, pictures) = show_failing(
         &dir,
-        &[
-            "show",
-            "cases/aa_pair.json",
-            "--out",
-            "shown",
-            "-r",
-            "mutant:shifted-samples",
-        ],
+        "aa_pair",
+        "mutant:shifted-samples",
+        &[".png", ".diff.png", ".samples.png"],
     );
-    let t = text(&out);
-    assert_no_panic(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
-    for name in [
-        "reference.png",
-        "mutant-shifted-samples.png",
-        "mutant-shifted-samples.diff.png",
-        "mutant-shifted-samples.samples.png",
-    ] {
-        let img = image::open(dir.join("shown").join(name))
-            .unwrap_or_else(|e| panic!("{name}: {e}\n{t}"));
+    for (name, img) in pictures {
         assert!(img.width() >= 256, "{name}");
     }
     // Pixel (0, 0) holds a sliver of the quadrilateral: a dark grey, not
@@ -658,9 +546,7 @@ fn a_case_over_the_time_limit_is_an_error_and_the_others_still_run() {
         "{t}"
     );
     assert_no_panic(&out);
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("report/report.json")).unwrap())
-            .unwrap();
+    let report = read_json(&dir.join("report/report.json"));
     let slow = &report["cases"][1];
     assert_eq!(slow["status"], "limit-exceeded", "{slow}");
     assert_eq!(report["totals"]["limit_exceeded"], 1);

@@ -3,10 +3,12 @@
 //! print garbage or do not exist, each an ERROR for its case only, with no
 //! process left behind.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use common::cli::{rastercheck_env as rastercheck, text};
 use rastercheck::adapters::external::{self, External};
 use rastercheck::{parse_case, Limits, Plan, RasterError, Rasterizer};
 use serde_json::json;
@@ -15,23 +17,6 @@ const EXAMPLE: &str = "examples/python_rasterizer.py";
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn rastercheck(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Output {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
-    command.args(args).current_dir(dir);
-    for (k, v) in env {
-        command.env(k, v);
-    }
-    command.output().expect("the binary runs")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
 }
 
 /// The output line of one case and rasterizer.
@@ -55,13 +40,7 @@ fn count_before(line: &str, word: &str) -> u64 {
 
 /// A fresh folder for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!(
-        "rastercheck-external-{name}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::cli::scratch(&format!("external-{name}"))
 }
 
 /// A case no sample of which lies on an edge: every rasterizer that gets

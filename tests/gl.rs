@@ -34,29 +34,21 @@ fn available() -> bool {
 }
 
 mod common;
-use common::{case, inline, report};
+use common::adapters::{
+    assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
+    assert_refuses_lines_and_unsnapped, record_every_triangle_case, square_of, INTERPOLATION,
+    TIE_CASES, WINDING_CASES,
+};
+use common::{case, report};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
 }
 
-/// Tie cases (samples exactly on edges, shared edges, fan centres) written
-/// for top-left. Mesa's GL, read back y down, is bottom-left: held to that
+/// Tie cases beyond `TIE_CASES` (samples exactly on edges, shared edges, fan
+/// centres), written for top-left. With `TIE_CASES`: Mesa's GL, read back y down, is bottom-left: held to that
 /// rule, llvmpipe must match the reference exactly, sample for sample.
-const TIE_CASES: &[&str] = &[
-    "triangles/fill_rule_top_left",
-    "triangles/fan_16_center",
-    "triangles/fan_16_center_ccw",
-    "triangles/fan_16_center_snap_tie",
-    "triangles/fan_16_square_ring",
-    "triangles/fan_64_center",
-    "triangles/shared_edge_diagonal",
-    "triangles/shared_edge_antidiagonal",
-    "triangles/shared_edge_horizontal",
-    "triangles/shared_edge_vertical",
-    "triangles/shared_edge_steep",
-    "triangles/shared_edge_mixed_windings",
-    "triangles/shared_edge_fractions_offgrid",
+const MORE_TIE_CASES: &[&str] = &[
     "triangles/quad_grid_rot0",
     "triangles/quad_grid_rot30",
     "triangles/quad_grid_rot45",
@@ -71,20 +63,23 @@ fn matches_the_reference_under_bottom_left() {
     if !available() {
         return;
     }
-    let mut failures = Vec::new();
-    for id in TIE_CASES {
-        let mut scene = case(id);
-        scene.rules.fill_rule = FillRule::BottomLeft;
-        let (reference, run) = run(&scene);
-        let m = run.metrics.as_ref().expect("gl drew a frame");
-        let line = report(id, &reference, &run);
-        eprintln!("{line}");
-        let c = &m.coverage;
-        if (c.missing, c.extra, c.wrong_owner) != (0, 0, 0) {
-            failures.push(line);
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_each(
+        &[TIE_CASES, MORE_TIE_CASES].concat(),
+        &Gl,
+        bottom_left,
+        |_, run, line, failures| {
+            let m = run.metrics.as_ref().expect("gl drew a frame");
+            let c = &m.coverage;
+            if (c.missing, c.extra, c.wrong_owner) != (0, 0, 0) {
+                failures.push(line.to_owned());
+            }
+        },
+    );
+}
+
+/// Holds a case to Mesa's GL rule, read back y down.
+fn bottom_left(scene: &mut Scene) {
+    scene.rules.fill_rule = FillRule::BottomLeft;
 }
 
 /// The bundled fill-rule cases: bottom-left passes; top-left fails with
@@ -112,72 +107,26 @@ fn its_tie_rule_is_bottom_left() {
     // top-left and bottom-left agree on every slanted edge and differ on
     // that row's 8 samples, which change hands.
     let pair = |rule: &str| {
-        inline(&format!(
-            r#"{{"name": "pair", "canvas": {{"width": 8, "height": 8}},
-                "rules": {{"fill_rule": "{rule}"}},
-                "primitives": [
-                  {{"triangle": [[0, 0], [8, 0], [8, 4.5]]}},
-                  {{"triangle": [[0, 0], [8, 4.5], [0, 4.5]]}},
-                  {{"triangle": [[0, 4.5], [8, 4.5], [8, 8]]}},
-                  {{"triangle": [[0, 4.5], [8, 8], [0, 8]]}}],
-                "expect": {{"watertight": true, "samples_covered": 64}}}}"#
-        ))
+        square_of(
+            rule,
+            r#"{"triangle": [[0, 0], [8, 0], [8, 4.5]]},
+               {"triangle": [[0, 0], [8, 4.5], [0, 4.5]]},
+               {"triangle": [[0, 4.5], [8, 4.5], [8, 8]]},
+               {"triangle": [[0, 4.5], [8, 8], [0, 8]]}"#,
+        )
     };
-    let (_, r) = run(&pair("bottom-left"));
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
-    let (_, r) = run(&pair("top-left"));
-    let m = r.metrics.as_ref().unwrap();
-    assert_eq!(
-        (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),
-        (8, 0, 0),
-        "{}",
-        suite::describe(&r)
-    );
+    assert_eight_ties_change_hands(&Gl, pair, "bottom-left", "top-left");
 }
 
-/// Interpolation cases (depth, linear, flat, perspective with a wide range
-/// of w), held to bottom-left: coverage exact, errors within the default
-/// bound.
-const INTERPOLATION: &[&str] = &[
-    "triangles/interp_depth_z",
-    "triangles/interp_depth_perspective_w",
-    "triangles/interp_flat",
-    "triangles/interp_linear",
-    "triangles/interp_mixed_modes",
-    "triangles/interp_perspective_extreme",
-    "triangles/interp_perspective_fan",
-    "triangles/interp_perspective_w_range",
-];
-
+/// The interpolation cases (depth, linear, flat, perspective with a wide
+/// range of w), held to bottom-left: coverage exact, errors within the
+/// default bound.
 #[test]
 fn interpolation_is_within_the_bound() {
     if !available() {
         return;
     }
-    let mut failures = Vec::new();
-    for id in INTERPOLATION {
-        let mut scene = case(id);
-        scene.rules.fill_rule = FillRule::BottomLeft;
-        let (reference, run) = run(&scene);
-        let line = report(id, &reference, &run);
-        eprintln!("{line}");
-        let m = run.metrics.as_ref().expect("gl drew a frame");
-        assert!(!m.channels.is_empty(), "{id}: no channel was compared");
-        for c in &m.channels {
-            assert!(c.samples > 0, "{id}: {} compared on no sample", c.channel);
-            eprintln!(
-                "        {}: max {:.3e} ({:.1} ulp), rms {:.3e}, bound {:.3e}",
-                c.channel, c.max_abs, c.max_ulp, c.rms, c.allowed_abs
-            );
-            if !c.within_bounds() {
-                failures.push(format!("{id}: {} max {:e}", c.channel, c.max_abs));
-            }
-        }
-        if run.verdict != Verdict::Pass {
-            failures.push(line);
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_interpolation_within_the_bound(INTERPOLATION, &Gl, "gl", bottom_left);
 }
 
 /// Culling follows the case's on-screen winding through GL's y-up window
@@ -188,16 +137,8 @@ fn culling_follows_the_on_screen_winding() {
     if !available() {
         return;
     }
-    for id in [
-        "triangles/winding_cw_cull_cw",
-        "triangles/winding_cw_cull_ccw",
-        "triangles/winding_ccw_cull_cw",
-        "triangles/winding_ccw_cull_ccw",
-        "triangles/cull_cw_mixed_windings",
-        "triangles/cull_ccw_mixed_windings",
-        "triangles/sliver_cull_cw",
-        "triangles/sliver_cull_ccw",
-    ] {
+    let slivers = ["triangles/sliver_cull_cw", "triangles/sliver_cull_ccw"];
+    for id in [WINDING_CASES, &slivers].concat() {
         let mut scene = case(id);
         scene.rules.fill_rule = FillRule::BottomLeft;
         let (reference, run) = run(&scene);
@@ -219,13 +160,7 @@ fn refuses_what_it_cannot_express() {
     if !available() {
         return;
     }
-    let line = inline(
-        r#"{"name": "l", "canvas": {"width": 8, "height": 8},
-            "primitives": [{"line": [[0.5, 0.5], [7.5, 3.5]]}]}"#,
-    );
-    assert!(matches!(run(&line).1.verdict, Verdict::Unsupported(_)));
-    let scene = case("triangles/unsnapped_dyadic_edges");
-    assert!(matches!(run(&scene).1.verdict, Verdict::Unsupported(_)));
+    assert_refuses_lines_and_unsnapped(&Gl);
     let scene = case("triangles/fill_rule_top_left");
     let reference = suite::run_reference(&scene);
     let r = suite::run_candidate(&scene, &reference, &gl::Softpipe);
@@ -242,25 +177,7 @@ fn every_triangle_case_for_the_record() {
     if !available() {
         return;
     }
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles");
-    let mut ids: Vec<String> = std::fs::read_dir(&dir)
-        .unwrap()
-        .filter_map(|e| {
-            let name = e.ok()?.file_name().into_string().ok()?;
-            Some(format!("triangles/{}", name.strip_suffix(".json")?))
-        })
-        .collect();
-    ids.sort();
-    let mut errors = Vec::new();
-    for id in &ids {
-        let scene = case(id);
-        let (reference, run) = run(&scene);
-        eprintln!("{}", report(id, &reference, &run));
-        if let Verdict::Error(why) = &run.verdict {
-            errors.push(format!("{id}: {why}"));
-        }
-    }
-    assert!(errors.is_empty(), "gl broke: {}", errors.join("\n"));
+    record_every_triangle_case(&Gl, "gl");
 }
 
 /// softpipe, in a process of its own (the CLI, `GALLIUM_DRIVER` unset so

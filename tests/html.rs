@@ -6,11 +6,14 @@
 //! Without Chromium the browser half is skipped with a message on stderr
 //! (`.ci/run` installs it); the file checks still run.
 
+mod common;
+
 use std::fs::File;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use common::cli::exr_channel;
 use serde_json::Value;
 
 const ROOT: &str = env!("CARGO_MANIFEST_DIR");
@@ -179,17 +182,7 @@ fn check_exr(dir: &Path, report: &Value) -> usize {
                     (w * samples, h),
                     "{file}"
                 );
-                let channel = |name: &str| -> Vec<f32> {
-                    layer
-                        .channel_data
-                        .list
-                        .iter()
-                        .find(|c| c.name.to_string() == name)
-                        .unwrap_or_else(|| panic!("{file} has no channel {name}"))
-                        .sample_data
-                        .values_as_f32()
-                        .collect()
-                };
+                let channel = |name: &str| exr_channel(layer, name, file);
                 let coverage = channel("coverage.error");
                 let moved = coverage.iter().filter(|&&v| v != 0.0).count() as u64;
                 let c = &m["coverage"];

@@ -28,28 +28,21 @@ fn available() -> bool {
 }
 
 mod common;
+use common::adapters::{
+    assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
+    assert_refuses_lines_and_unsnapped, bundled_ids, record_every_triangle_case, square_of,
+    INTERPOLATION, TIE_CASES, WINDING_CASES,
+};
 use common::{case, inline, mismatched_samples, report, sample_name};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Lavapipe)
 }
 
-/// Top-left cases with samples exactly on edges, shared edges and fan
-/// centres: lavapipe's own rule is top-left, so it must match exactly.
-const TOP_LEFT_TIES: &[&str] = &[
-    "triangles/fill_rule_top_left",
-    "triangles/fan_16_center",
-    "triangles/fan_16_center_ccw",
-    "triangles/fan_16_center_snap_tie",
-    "triangles/fan_16_square_ring",
-    "triangles/fan_64_center",
-    "triangles/shared_edge_diagonal",
-    "triangles/shared_edge_antidiagonal",
-    "triangles/shared_edge_horizontal",
-    "triangles/shared_edge_vertical",
-    "triangles/shared_edge_steep",
-    "triangles/shared_edge_mixed_windings",
-    "triangles/shared_edge_fractions_offgrid",
+/// Top-left cases beyond `TIE_CASES`, with samples exactly on edges, shared
+/// edges and fan centres: lavapipe's own rule is top-left, so it must match
+/// all of them exactly.
+const MORE_TIE_CASES: &[&str] = &[
     "triangles/quad_grid_rot30",
     "triangles/pinwheel_axis_shift1_b8",
     "triangles/snap_tie_half_subpixel_b8",
@@ -61,65 +54,31 @@ fn matches_the_reference_on_top_left_tie_cases() {
     if !available() {
         return;
     }
-    let mut failures = Vec::new();
-    for id in TOP_LEFT_TIES {
-        let scene = case(id);
-        let (reference, run) = run(&scene);
-        let line = report(id, &reference, &run);
-        eprintln!("{line}");
-        let m = run.metrics.as_ref().expect("lavapipe drew a frame");
-        assert!(
-            m.coverage.candidate_covered > 0,
-            "{id}: lavapipe drew nothing"
-        );
-        if run.verdict != Verdict::Pass {
-            failures.push(line);
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_each(
+        &[TIE_CASES, MORE_TIE_CASES].concat(),
+        &Lavapipe,
+        |_| {},
+        |id, run, line, failures| {
+            let m = run.metrics.as_ref().expect("lavapipe drew a frame");
+            assert!(
+                m.coverage.candidate_covered > 0,
+                "{id}: lavapipe drew nothing"
+            );
+            if run.verdict != Verdict::Pass {
+                failures.push(line.to_owned());
+            }
+        },
+    );
 }
 
-/// Interpolation cases: depth, linear, flat, perspective with a wide range
-/// of w; errors within the default bound (2^-16 of the largest value).
-const INTERPOLATION: &[&str] = &[
-    "triangles/interp_depth_z",
-    "triangles/interp_depth_perspective_w",
-    "triangles/interp_flat",
-    "triangles/interp_linear",
-    "triangles/interp_mixed_modes",
-    "triangles/interp_perspective_extreme",
-    "triangles/interp_perspective_fan",
-    "triangles/interp_perspective_w_range",
-];
-
+/// The interpolation cases (depth, linear, flat, perspective with a wide
+/// range of w): errors within the default bound (2^-16 of the largest value).
 #[test]
 fn interpolation_is_within_the_bound() {
     if !available() {
         return;
     }
-    let mut failures = Vec::new();
-    for id in INTERPOLATION {
-        let scene = case(id);
-        let (reference, run) = run(&scene);
-        let line = report(id, &reference, &run);
-        eprintln!("{line}");
-        let m = run.metrics.as_ref().expect("lavapipe drew a frame");
-        assert!(!m.channels.is_empty(), "{id}: no channel was compared");
-        for c in &m.channels {
-            assert!(c.samples > 0, "{id}: {} compared on no sample", c.channel);
-            eprintln!(
-                "        {}: max {:.3e} ({:.1} ulp), rms {:.3e}, bound {:.3e}",
-                c.channel, c.max_abs, c.max_ulp, c.rms, c.allowed_abs
-            );
-            if !c.within_bounds() {
-                failures.push(format!("{id}: {} max {:e}", c.channel, c.max_abs));
-            }
-        }
-        if run.verdict != Verdict::Pass {
-            failures.push(line);
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_interpolation_within_the_bound(INTERPOLATION, &Lavapipe, "lavapipe", |_| {});
 }
 
 /// lavapipe is top-left whatever the case says: under bottom-right it gives
@@ -130,30 +89,13 @@ fn its_tie_rule_is_top_left_not_the_cases() {
         return;
     }
     let pair = |rule: &str| {
-        inline(&format!(
-            r#"{{"name": "pair", "canvas": {{"width": 8, "height": 8}},
-                "rules": {{"fill_rule": "{rule}"}},
-                "primitives": [
-                  {{"triangle": [[0, 0], [8, 0], [8, 8]]}},
-                  {{"triangle": [[0, 0], [8, 8], [0, 8]]}}],
-                "expect": {{"watertight": true, "samples_covered": 64}}}}"#
-        ))
+        square_of(
+            rule,
+            r#"{"triangle": [[0, 0], [8, 0], [8, 8]]},
+               {"triangle": [[0, 0], [8, 8], [0, 8]]}"#,
+        )
     };
-    let (_, top_left) = run(&pair("top-left"));
-    assert_eq!(
-        top_left.verdict,
-        Verdict::Pass,
-        "{}",
-        suite::describe(&top_left)
-    );
-    let (_, bottom_right) = run(&pair("bottom-right"));
-    let m = bottom_right.metrics.as_ref().unwrap();
-    assert_eq!(
-        (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),
-        (8, 0, 0),
-        "{}",
-        suite::describe(&bottom_right)
-    );
+    assert_eight_ties_change_hands(&Lavapipe, pair, "top-left", "bottom-right");
 }
 
 /// Culling follows the case's on-screen winding (y down), through the y
@@ -163,14 +105,7 @@ fn culling_follows_the_on_screen_winding() {
     if !available() {
         return;
     }
-    for id in [
-        "triangles/winding_cw_cull_cw",
-        "triangles/winding_cw_cull_ccw",
-        "triangles/winding_ccw_cull_cw",
-        "triangles/winding_ccw_cull_ccw",
-        "triangles/cull_cw_mixed_windings",
-        "triangles/cull_ccw_mixed_windings",
-    ] {
+    for id in WINDING_CASES {
         let scene = case(id);
         let (reference, run) = run(&scene);
         assert_eq!(
@@ -231,13 +166,7 @@ fn refuses_what_it_cannot_express() {
     if !available() {
         return;
     }
-    let line = inline(
-        r#"{"name": "l", "canvas": {"width": 8, "height": 8},
-            "primitives": [{"line": [[0.5, 0.5], [7.5, 3.5]]}]}"#,
-    );
-    assert!(matches!(run(&line).1.verdict, Verdict::Unsupported(_)));
-    let scene = case("triangles/unsnapped_dyadic_edges");
-    assert!(matches!(run(&scene).1.verdict, Verdict::Unsupported(_)));
+    assert_refuses_lines_and_unsnapped(&Lavapipe);
 }
 
 /// Every triangle case once, for the record: the verdicts, with the
@@ -247,25 +176,7 @@ fn every_triangle_case_for_the_record() {
     if !available() {
         return;
     }
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles");
-    let mut ids: Vec<String> = std::fs::read_dir(&dir)
-        .unwrap()
-        .filter_map(|e| {
-            let name = e.ok()?.file_name().into_string().ok()?;
-            Some(format!("triangles/{}", name.strip_suffix(".json")?))
-        })
-        .collect();
-    ids.sort();
-    let mut errors = Vec::new();
-    for id in &ids {
-        let scene = case(id);
-        let (reference, run) = run(&scene);
-        eprintln!("{}", report(id, &reference, &run));
-        if let Verdict::Error(why) = &run.verdict {
-            errors.push(format!("{id}: {why}"));
-        }
-    }
-    assert!(errors.is_empty(), "lavapipe broke: {}", errors.join("\n"));
+    record_every_triangle_case(&Lavapipe, "lavapipe");
 }
 
 #[test]
@@ -278,17 +189,9 @@ fn is_listed_by_name() {
 /// The bundled standard 4× antialiasing cases (`cases/antialias/*standard4*`,
 /// the probe among them, and `count_standard_4`), sorted.
 fn standard_4x_cases() -> Vec<String> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/antialias");
-    let mut ids: Vec<String> = std::fs::read_dir(&dir)
-        .unwrap()
-        .filter_map(|e| {
-            let name = e.ok()?.file_name().into_string().ok()?;
-            let stem = name.strip_suffix(".json")?;
-            (stem.contains("standard4") || stem.ends_with("standard_4"))
-                .then(|| format!("antialias/{stem}"))
-        })
-        .collect();
-    ids.sort();
+    let ids = bundled_ids("antialias", |stem| {
+        stem.contains("standard4") || stem.ends_with("standard_4")
+    });
     assert!(ids.contains(&"antialias/probe_standard4".to_owned()));
     ids
 }

@@ -4,7 +4,7 @@
 mod common;
 
 use common::{rastercheck, text};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -82,17 +82,11 @@ fn a_rasterizer_that_cannot_start_is_a_row_that_says_why() {
     assert_eq!(unknown.status.code(), Some(2), "{}", text(&unknown));
 }
 
-#[test]
-fn write_readme_replaces_only_the_marked_block() {
-    let dir = std::env::temp_dir().join(format!("rastercheck-matrix-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let readme = dir.join("README.md");
-    let before = "# title\n\nintro\n\n<!-- matrix:begin -->\nold table\n<!-- matrix:end -->\n\n## Adding a case\ntail\n";
-    std::fs::write(&readme, before).unwrap();
-    let case = root().join("cases/triangles/shared_edge_diagonal.json");
-    let out = rastercheck(
-        &dir,
+/// `matrix` of `case` under production and the flipped-ties mutant, its
+/// table written into `readme`.
+fn write_readme(dir: &Path, case: &Path, readme: &Path) -> std::process::Output {
+    rastercheck(
+        dir,
         &[
             "matrix",
             case.to_str().unwrap(),
@@ -103,7 +97,17 @@ fn write_readme_replaces_only_the_marked_block() {
             "--write-readme",
             readme.to_str().unwrap(),
         ],
-    );
+    )
+}
+
+#[test]
+fn write_readme_replaces_only_the_marked_block() {
+    let dir = common::cli::scratch("matrix");
+    let readme = dir.join("README.md");
+    let before = "# title\n\nintro\n\n<!-- matrix:begin -->\nold table\n<!-- matrix:end -->\n\n## Adding a case\ntail\n";
+    std::fs::write(&readme, before).unwrap();
+    let case = root().join("cases/triangles/shared_edge_diagonal.json");
+    let out = write_readme(&dir, &case, &readme);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     let after = std::fs::read_to_string(&readme).unwrap();
     let begin = after.find("<!-- matrix:begin -->").unwrap() + "<!-- matrix:begin -->".len();
@@ -132,19 +136,7 @@ fn write_readme_replaces_only_the_marked_block() {
         "{block}"
     );
     // Writing twice gives the same file.
-    let again = rastercheck(
-        &dir,
-        &[
-            "matrix",
-            case.to_str().unwrap(),
-            "-r",
-            "production",
-            "-r",
-            "mutant:flipped-ties",
-            "--write-readme",
-            readme.to_str().unwrap(),
-        ],
-    );
+    let again = write_readme(&dir, &case, &readme);
     assert!(again.status.success());
     assert_eq!(std::fs::read_to_string(&readme).unwrap(), after);
     // A file without markers is refused and left alone.

@@ -5,12 +5,14 @@
 //! layer, the PNGs, the HTML cards, `summary.md`, `junit.xml`, and a
 //! baseline that a worse time error regresses.
 
+mod common;
 mod sliding;
 
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
+use common::cli::exr_channel;
 use rastercheck::frame::Frame;
 use rastercheck::harness::baseline::{Baseline, Change, Observed, SelectionInfo};
 use rastercheck::harness::runner::{CaseOutcome, Selection};
@@ -180,17 +182,7 @@ fn the_report_shows_time_coverage() {
                 Some("time".to_owned())
             );
             assert_eq!((layer.size.width(), layer.size.height()), (16, 6));
-            let channel = |n: &str| -> Vec<f32> {
-                layer
-                    .channel_data
-                    .list
-                    .iter()
-                    .find(|c| c.name.to_string() == n)
-                    .unwrap_or_else(|| panic!("{exr}: no {n}"))
-                    .sample_data
-                    .values_as_f32()
-                    .collect()
-            };
+            let channel = |n: &str| exr_channel(layer, n, exr);
             assert_eq!(channel("time.exact"), exact, "{exr}");
             let largest = channel("time.error")
                 .iter()

@@ -57,6 +57,16 @@ fn p(x: &str, y: &str) -> (String, String) {
     (x.to_owned(), y.to_owned())
 }
 
+/// Points written "x y, x y, …", each as `p` makes it.
+fn parse_points(text: &str) -> Vec<At> {
+    text.split(',')
+        .map(|xy| {
+            let (x, y) = xy.trim().split_once(' ').expect("x y");
+            p(x, y)
+        })
+        .collect()
+}
+
 fn pi(x: i64, y: i64) -> (String, String) {
     (x.to_string(), y.to_string())
 }
@@ -287,18 +297,8 @@ fn assert_pixels(s: &Scene, size: u32, expected: impl Fn(i64, i64) -> RBig, what
 #[test]
 fn per_pixel_areas_of_holes_and_bow_ties_equal_their_convex_pieces() {
     let size = 7;
-    let outer = [
-        p("0.5", "0.25"),
-        p("6.75", "0.5"),
-        p("6.25", "6.5"),
-        p("0.25", "6"),
-    ];
-    let inner_cw = [
-        p("2.25", "2"),
-        p("4.5", "2.25"),
-        p("4", "4.75"),
-        p("2", "4.5"),
-    ];
+    let outer = parse_points("0.5 0.25, 6.75 0.5, 6.25 6.5, 0.25 6");
+    let inner_cw = parse_points("2.25 2, 4.5 2.25, 4 4.75, 2 4.5");
     let inner_ccw: Vec<At> = inner_cw.iter().rev().cloned().collect();
     let corners =
         |ps: &[At]| -> Vec<[RBig; 2]> { ps.iter().map(|(x, y)| [rq(x), rq(y)]).collect() };
@@ -328,12 +328,7 @@ fn per_pixel_areas_of_holes_and_bow_ties_equal_their_convex_pieces() {
     }
     // A bow-tie A→B→C→D whose edges BC and DA cross at X: the filled
     // region is the triangles ABX and CDX under either fill.
-    let bow = [
-        p("0.25", "0.5"),
-        p("6.5", "1"),
-        p("0.75", "6.25"),
-        p("6", "5.75"),
-    ];
+    let bow = parse_points("0.25 0.5, 6.5 1, 0.75 6.25, 6 5.75");
     let v = corners(&bow);
     let (a, b, c, d) = (&v[0], &v[1], &v[2], &v[3]);
     let cross = |u: [RBig; 2], w: [RBig; 2]| &u[0] * &w[1] - &u[1] * &w[0];
@@ -426,12 +421,7 @@ fn holes_bow_ties_and_orientation() {
         assert_eq!(assert_self_check(&s), RBig::from(expected), "{fill}");
     }
     // A bow-tie off the pixel grid, self-intersecting at a rational point.
-    let tilted = [
-        p("0.25", "0.5"),
-        p("5.5", "1"),
-        p("0.75", "4.25"),
-        p("4", "5.75"),
-    ];
+    let tilted = parse_points("0.25 0.5, 5.5 1, 0.75 4.25, 4 5.75");
     for fill in ["nonzero", "even-odd"] {
         let s = scene(
             6,
@@ -541,30 +531,10 @@ fn polygons_sharing_an_edge_cover_each_sample_once() {
     // Two quadrilaterals share the slanted edge from (3.5, 0.5) to
     // (2.5, 6.5) and meet a third along y = 6.5; the union is the square
     // [0.5, 6.5]², so every sample inside it is covered exactly once.
-    let left = [
-        p("0.5", "0.5"),
-        p("3.5", "0.5"),
-        p("2.5", "6.5"),
-        p("0.5", "6.5"),
-    ];
-    let right = [
-        p("3.5", "0.5"),
-        p("6.5", "0.5"),
-        p("6.5", "6.5"),
-        p("2.5", "6.5"),
-    ];
-    let below = [
-        p("0.5", "6.5"),
-        p("6.5", "6.5"),
-        p("6.5", "7.5"),
-        p("0.5", "7.5"),
-    ];
-    let union = [
-        p("0.5", "0.5"),
-        p("6.5", "0.5"),
-        p("6.5", "7.5"),
-        p("0.5", "7.5"),
-    ];
+    let left = parse_points("0.5 0.5, 3.5 0.5, 2.5 6.5, 0.5 6.5");
+    let right = parse_points("3.5 0.5, 6.5 0.5, 6.5 6.5, 2.5 6.5");
+    let below = parse_points("0.5 6.5, 6.5 6.5, 6.5 7.5, 0.5 7.5");
+    let union = parse_points("0.5 0.5, 6.5 0.5, 6.5 7.5, 0.5 7.5");
     for r in FillRule::CONSISTENT {
         for effects in ["{}".to_owned(), antialias(16, "standard")] {
             let parts = coverage(

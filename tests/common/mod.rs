@@ -1,10 +1,17 @@
-//! Helpers the adapter tests share: bundled and inline cases, and a readable
-//! account of where a candidate's frame differs from the reference's.
+//! Helpers the test binaries share: bundled and inline cases, a readable
+//! account of where a candidate's frame differs from the reference's, and a
+//! seeded random source. Running the binary is in `cli.rs`; driving a
+//! third-party adapter through the suite is in `adapters.rs`.
 
 #![allow(dead_code)] // each test crate uses its own subset
 
+pub mod adapters;
+pub mod cli;
+
+#[allow(unused_imports)] // not every binary runs the binary
+pub use cli::{rastercheck, text};
+
 use std::path::Path;
-use std::process::{Command, Output};
 
 use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, CandidateRun};
@@ -94,24 +101,6 @@ pub fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> 
         } else {
             format!("\n        {}", diffs.join("; "))
         }
-    )
-}
-
-/// Runs the rastercheck binary in `dir`, as a user would.
-pub fn rastercheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the binary runs")
-}
-
-/// Everything the binary printed, stdout then stderr.
-pub fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
     )
 }
 

@@ -1,0 +1,190 @@
+//! Helpers the driver tests (`gl.rs`, `lavapipe.rs`) share: the bundled case
+//! ids of a family, and the sweeps every driver runs over bundled cases
+//! (each case held to a check, values within the bound, every triangle case
+//! for the record, refusing what it cannot express). Whether a driver is
+//! installed, and its own conventions, stay in its test file.
+
+use std::path::Path;
+
+use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::scene::Scene;
+
+use super::{case, inline, report, run};
+
+/// Tie cases (samples exactly on edges, shared edges, fan centres) written
+/// for top-left, that every driver is held to; each driver adds its own.
+pub const TIE_CASES: &[&str] = &[
+    "triangles/fill_rule_top_left",
+    "triangles/fan_16_center",
+    "triangles/fan_16_center_ccw",
+    "triangles/fan_16_center_snap_tie",
+    "triangles/fan_16_square_ring",
+    "triangles/fan_64_center",
+    "triangles/shared_edge_diagonal",
+    "triangles/shared_edge_antidiagonal",
+    "triangles/shared_edge_horizontal",
+    "triangles/shared_edge_vertical",
+    "triangles/shared_edge_steep",
+    "triangles/shared_edge_mixed_windings",
+    "triangles/shared_edge_fractions_offgrid",
+];
+
+/// Winding cases under each cull: culled triangles draw nothing, kept ones
+/// match.
+pub const WINDING_CASES: &[&str] = &[
+    "triangles/winding_cw_cull_cw",
+    "triangles/winding_cw_cull_ccw",
+    "triangles/winding_ccw_cull_cw",
+    "triangles/winding_ccw_cull_ccw",
+    "triangles/cull_cw_mixed_windings",
+    "triangles/cull_ccw_mixed_windings",
+];
+
+/// Interpolation cases: depth, linear, flat, perspective with a wide range
+/// of w.
+pub const INTERPOLATION: &[&str] = &[
+    "triangles/interp_depth_z",
+    "triangles/interp_depth_perspective_w",
+    "triangles/interp_flat",
+    "triangles/interp_linear",
+    "triangles/interp_mixed_modes",
+    "triangles/interp_perspective_extreme",
+    "triangles/interp_perspective_fan",
+    "triangles/interp_perspective_w_range",
+];
+
+/// The ids (`family/stem`) of the bundled cases of `family` whose file stem
+/// `keep` accepts, sorted.
+pub fn bundled_ids(family: &str, keep: impl Fn(&str) -> bool) -> Vec<String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("cases")
+        .join(family);
+    let mut ids: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| {
+            let name = e.ok()?.file_name().into_string().ok()?;
+            let stem = name.strip_suffix(".json")?;
+            keep(stem).then(|| format!("{family}/{stem}"))
+        })
+        .collect();
+    ids.sort();
+    ids
+}
+
+/// Runs `candidate` on each bundled case of `ids` (changed by `adjust`
+/// first) and prints its line; `check` gets the case id, the run and that
+/// line and adds what fails to the list, which must stay empty.
+pub fn assert_each(
+    ids: &[&str],
+    candidate: &dyn Rasterizer,
+    adjust: impl Fn(&mut Scene),
+    mut check: impl FnMut(&str, &CandidateRun, &str, &mut Vec<String>),
+) {
+    let mut failures = Vec::new();
+    for id in ids {
+        let mut scene = case(id);
+        adjust(&mut scene);
+        let (reference, run) = run(&scene, candidate);
+        let line = report(id, &reference, &run);
+        eprintln!("{line}");
+        check(id, &run, &line, &mut failures);
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Each interpolation case of `ids` passes, every channel compared on some
+/// sample and within its bound (each channel's errors printed); `name` is
+/// the driver's, for the message when it draws no frame.
+pub fn assert_interpolation_within_the_bound(
+    ids: &[&str],
+    candidate: &dyn Rasterizer,
+    name: &str,
+    adjust: impl Fn(&mut Scene),
+) {
+    assert_each(ids, candidate, adjust, |id, run, line, failures| {
+        let m = run
+            .metrics
+            .as_ref()
+            .unwrap_or_else(|| panic!("{name} drew a frame"));
+        assert!(!m.channels.is_empty(), "{id}: no channel was compared");
+        for c in &m.channels {
+            assert!(c.samples > 0, "{id}: {} compared on no sample", c.channel);
+            eprintln!(
+                "        {}: max {:.3e} ({:.1} ulp), rms {:.3e}, bound {:.3e}",
+                c.channel, c.max_abs, c.max_ulp, c.rms, c.allowed_abs
+            );
+            if !c.within_bounds() {
+                failures.push(format!("{id}: {} max {:e}", c.channel, c.max_abs));
+            }
+        }
+        if run.verdict != Verdict::Pass {
+            failures.push(line.to_owned());
+        }
+    });
+}
+
+/// A line and a case of unsnapped coordinates are `unsupported`, never
+/// passed.
+pub fn assert_refuses_lines_and_unsnapped(candidate: &dyn Rasterizer) {
+    let line = inline(
+        r#"{"name": "l", "canvas": {"width": 8, "height": 8},
+            "primitives": [{"line": [[0.5, 0.5], [7.5, 3.5]]}]}"#,
+    );
+    assert!(matches!(
+        run(&line, candidate).1.verdict,
+        Verdict::Unsupported(_)
+    ));
+    let scene = case("triangles/unsnapped_dyadic_edges");
+    assert!(matches!(
+        run(&scene, candidate).1.verdict,
+        Verdict::Unsupported(_)
+    ));
+}
+
+/// Every triangle case once, for the record: each verdict printed, the
+/// driver's departures listed rather than hidden; only an error fails
+/// (`name broke`).
+pub fn record_every_triangle_case(candidate: &dyn Rasterizer, name: &str) {
+    let mut errors = Vec::new();
+    for id in &bundled_ids("triangles", |_| true) {
+        let scene = case(id);
+        let (reference, run) = run(&scene, candidate);
+        eprintln!("{}", report(id, &reference, &run));
+        if let Verdict::Error(why) = &run.verdict {
+            errors.push(format!("{id}: {why}"));
+        }
+    }
+    assert!(errors.is_empty(), "{name} broke: {}", errors.join("\n"));
+}
+
+/// An 8×8 case `pair` under fill rule `rule`, of `primitives` (the JSON of
+/// the primitives array's items), that covers each of its 64 samples once.
+pub fn square_of(rule: &str, primitives: &str) -> Scene {
+    inline(&format!(
+        r#"{{"name": "pair", "canvas": {{"width": 8, "height": 8}},
+            "rules": {{"fill_rule": "{rule}"}},
+            "primitives": [{primitives}],
+            "expect": {{"watertight": true, "samples_covered": 64}}}}"#
+    ))
+}
+
+/// The case `pair` makes passes under the driver's own rule `own`; under
+/// `other`, 8 tie samples change hands and none is missing or extra.
+pub fn assert_eight_ties_change_hands(
+    candidate: &dyn Rasterizer,
+    pair: impl Fn(&str) -> Scene,
+    own: &str,
+    other: &str,
+) {
+    let (_, r) = run(&pair(own), candidate);
+    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    let (_, r) = run(&pair(other), candidate);
+    let m = r.metrics.as_ref().unwrap();
+    assert_eq!(
+        (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),
+        (8, 0, 0),
+        "{}",
+        suite::describe(&r)
+    );
+}

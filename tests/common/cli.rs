@@ -1,0 +1,146 @@
+//! Helpers the CLI tests share: running the binary as a user would, fresh
+//! folders to run it in, and reading back what it wrote (`report.json`,
+//! golden files, pictures). No assertions about any one command's output.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs the rastercheck binary in `dir`, as a user would.
+pub fn rastercheck(dir: &Path, args: &[&str]) -> Output {
+    rastercheck_env(dir, args, &[])
+}
+
+/// Runs the rastercheck binary in `dir` with extra environment variables.
+pub fn rastercheck_env(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Output {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
+    command.args(args).current_dir(dir);
+    for (k, v) in env {
+        command.env(k, v);
+    }
+    command.output().expect("the binary runs")
+}
+
+/// Everything the binary printed, stdout then stderr.
+pub fn text(out: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+/// The binary never panics, whatever it is given.
+pub fn assert_no_panic(out: &Output) {
+    let t = text(out);
+    assert!(!t.contains("panicked"), "{t}");
+}
+
+/// A fresh, empty folder `rastercheck-{name}-{pid}` in the system's
+/// temporary folder.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rastercheck-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A fresh folder with a `cases/` tree holding the given files.
+pub fn workspace(name: &str, files: &[(&str, &str)]) -> PathBuf {
+    let dir = scratch(&format!("cli-{name}"));
+    for (path, content) in files {
+        let path = dir.join(path);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, content).unwrap();
+    }
+    dir
+}
+
+/// A JSON file, parsed.
+pub fn read_json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The case ids of `dir/report.json`, in its order.
+pub fn report_ids(dir: &Path) -> Vec<String> {
+    read_json(&dir.join("report.json"))["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["id"].as_str().unwrap().to_owned())
+        .collect()
+}
+
+/// `bless cases` in `dir`, which succeeds.
+pub fn bless_cases(dir: &Path) {
+    let out = rastercheck(dir, &["bless", "cases"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+}
+
+/// `run cases` with `more` arguments in `dir`, which exits with `code`:
+/// what it printed.
+pub fn run_cases(dir: &Path, more: &[&str], code: i32) -> String {
+    let args = [&["run", "cases"], more].concat();
+    let out = rastercheck(dir, &args);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(code), "{t}");
+    t
+}
+
+/// Blesses case `id` written as `json` in a workspace of its own (`name`)
+/// and copies the golden file it gets over `dir`'s: a golden file that no
+/// longer belongs to `dir`'s case.
+pub fn bless_elsewhere(dir: &Path, name: &str, id: &str, json: &str) {
+    let other = workspace(name, &[(&format!("cases/{id}.json"), json)]);
+    assert_eq!(rastercheck(&other, &["bless"]).status.code(), Some(0));
+    std::fs::copy(
+        other.join(format!("reference/{id}.exr")),
+        dir.join(format!("reference/{id}.exr")),
+    )
+    .unwrap();
+}
+
+/// `show` of `cases/{id}.json` in `dir` against `rasterizer`, into
+/// `dir/shown`: it fails (exit 1) and panics nowhere. The printed text, and
+/// the pictures `reference.png` and `{stem}{suffix}` for each of `suffixes`
+/// (the stem is the rasterizer's name with `:` as `-`), decoded, with their
+/// names.
+pub fn show_failing(
+    dir: &Path,
+    id: &str,
+    rasterizer: &str,
+    suffixes: &[&str],
+) -> (String, Vec<(String, image::DynamicImage)>) {
+    let stem = rasterizer.replace(':', "-");
+    let case = format!("cases/{id}.json");
+    let out = rastercheck(dir, &["show", &case, "--out", "shown", "-r", rasterizer]);
+    let t = text(&out);
+    assert_no_panic(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    let names = std::iter::once("reference.png".to_owned())
+        .chain(suffixes.iter().map(|s| format!("{stem}{s}")));
+    let pictures = names
+        .map(|name| {
+            let img = image::open(dir.join("shown").join(&name))
+                .unwrap_or_else(|e| panic!("{name}: {e}\n{t}"));
+            (name, img)
+        })
+        .collect();
+    (t, pictures)
+}
+
+/// The values of channel `name` of an EXR layer read from `file`.
+pub fn exr_channel(
+    layer: &exr::prelude::Layer<exr::prelude::AnyChannels<exr::prelude::FlatSamples>>,
+    name: &str,
+    file: &str,
+) -> Vec<f32> {
+    layer
+        .channel_data
+        .list
+        .iter()
+        .find(|c| c.name.to_string() == name)
+        .unwrap_or_else(|| panic!("{file} has no channel {name}"))
+        .sample_data
+        .values_as_f32()
+        .collect()
+}
