@@ -199,19 +199,7 @@ fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Sce
                 .iter()
                 .map(|p| p.each_ref().map(|c| placed(c, bits)))
                 .collect();
-            let c = centre.map(|v| {
-                Number::ratio((v * 65536.0).round() as i64, 65536)
-                    .as_rbig()
-                    .clone()
-            });
-            let n = placed_points.len();
-            let signs: Vec<_> = (0..n)
-                .map(|k| orient(&c, &placed_points[k], &placed_points[(k + 1) % n]))
-                .collect();
-            if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
-                return None;
-            }
-            let triangles = rastercheck::explore::fuzz::ear_clip(&placed_points, signs[0])?;
+            let triangles = rastercheck::explore::fuzz::ear_clip_star(centre, &placed_points)?;
             (points, triangles)
         }
     };
