@@ -40,12 +40,12 @@ use dashu_ratio::RBig;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
 use euc::{DepthStrategy, Interpolate, Pipeline, Target};
 
-use super::float_input::{culled, single_sample, snapped_triangle, to_f32, triangles_only};
+use super::float_input::{culled, f32_of, single_sample, snapped_triangle, to_f32, triangles_only};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::rules::limits::MAX_ATTRIBUTES;
-use crate::scene::{Interpolation, Number, Scene};
+use crate::scene::{Interpolation, Scene};
 
 /// euc 0.5.3's triangle rasterizer.
 pub struct Euc;
@@ -135,10 +135,6 @@ impl<T: Clone> Target for Recorder<T> {
     }
 }
 
-fn value_f32(n: &Number) -> f32 {
-    to_f32(n.as_rbig())
-}
-
 impl Rasterizer for Euc {
     fn name(&self) -> &str {
         "euc"
@@ -188,7 +184,7 @@ impl Rasterizer for Euc {
                     ];
                     let mut values = Varyings::default();
                     for (slot, a) in values.0.iter_mut().zip(&v.attributes) {
-                        *slot = value_f32(a);
+                        *slot = f32_of(a);
                     }
                     Vertex { clip, values }
                 })

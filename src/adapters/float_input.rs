@@ -17,7 +17,7 @@ use std::cmp::Ordering;
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 
-use crate::rasterizer::RasterError;
+use crate::rasterizer::{Capabilities, RasterError};
 use crate::scene::{Cull, Number, PolygonFill, Primitive, Scene, Triangle};
 
 /// `n` on the case's subpixel grid: the nearest multiple of 2^-bits, ties to
@@ -57,6 +57,11 @@ pub(crate) fn to_f32(q: &RBig) -> f32 {
     q.to_f32().value()
 }
 
+/// The f32 nearest an exact number (a depth, a w, an attribute), unsnapped.
+pub(crate) fn f32_of(n: &Number) -> f32 {
+    to_f32(n.as_rbig())
+}
+
 /// The nearest f64, ties to even.
 #[allow(dead_code)] // used by the vello adapter only
 pub(crate) fn to_f64(q: &RBig) -> f64 {
@@ -85,6 +90,19 @@ pub(crate) fn culled(positions: &[[RBig; 2]; 3], cull: Cull) -> bool {
         Cull::None => false,
         Cull::Clockwise => area > RBig::ZERO,
         Cull::CounterClockwise => area < RBig::ZERO,
+    }
+}
+
+/// What a path-fill library draws (tiny-skia, vello_cpu): triangles and
+/// polygons at their exact or snapped positions, and antialiased
+/// coverage; no depth, attributes or motion.
+#[allow(dead_code)] // used by the tiny-skia and vello adapters
+pub(crate) fn path_fill_capabilities() -> Capabilities {
+    Capabilities {
+        attributes: false,
+        depth: false,
+        motion_blur: false,
+        ..Capabilities::everything()
     }
 }
 

@@ -87,7 +87,7 @@ use khronos_egl as egl;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Cull, Interpolation, Primitive, Scene};
+use crate::scene::{Cull, Interpolation, Scene};
 
 /// The name of the adapter that draws with whatever Mesa's GL is.
 pub const NAME: &str = "gl";
@@ -101,7 +101,7 @@ const INSTALL_HINT: &str =
 /// `EGL_PLATFORM_SURFACELESS_MESA`.
 const PLATFORM_SURFACELESS_MESA: egl::Enum = 0x31DD;
 
-use super::gpu::{self, GROUPS, MAX_ATTRIBUTES, VERTEX_FLOATS};
+use super::gpu::{self, GROUPS, VERTEX_FLOATS};
 
 /// Mesa's OpenGL through EGL: llvmpipe, or whatever `GALLIUM_DRIVER` names.
 pub struct Gl;
@@ -139,15 +139,7 @@ impl Rasterizer for Softpipe {
 }
 
 fn capabilities() -> Capabilities {
-    Capabilities {
-        triangles: true,
-        ideal_geometry: false,
-        attributes: true,
-        depth: true,
-        polygons: false,
-        antialias: false,
-        motion_blur: false,
-    }
+    gpu::capabilities(false)
 }
 
 fn draw(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
@@ -156,27 +148,12 @@ fn draw(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError
             "multisampling is not wired to the GL adapter yet".to_owned(),
         ));
     }
-    if scene
-        .primitives
-        .iter()
-        .any(|p| matches!(p, Primitive::Line(_)))
-    {
-        return Err(RasterError::Unsupported(
-            "lines: GL's lines have no choice of the case's line rule".to_owned(),
-        ));
-    }
-    let Some(bits) = scene.rules.subpixel_bits else {
-        return Err(RasterError::Unsupported(
-            "unsnapped geometry (subpixel_bits: null): Mesa's GL snaps to 8 subpixel bits"
-                .to_owned(),
-        ));
-    };
-    if plan.attributes > MAX_ATTRIBUTES {
-        return Err(RasterError::Unsupported(format!(
-            "{} attributes (this adapter carries at most {MAX_ATTRIBUTES})",
-            plan.attributes
-        )));
-    }
+    let bits = gpu::snapping_bits(
+        scene,
+        plan,
+        "GL's lines have no choice of the case's line rule",
+        "Mesa's GL",
+    )?;
     if softpipe {
         ask_for_softpipe();
     }

@@ -8,10 +8,10 @@
 //! `(x_ndc·w, y_ndc·w, w/2, w)` so the driver's perspective division sees
 //! the vertex's w.
 
-use super::float_input::{snapped, to_f32};
+use super::float_input::{f32_of, snapped, to_f32};
 use crate::plan::Plan;
-use crate::rasterizer::RasterError;
-use crate::scene::{Interpolation, Number, Scene};
+use crate::rasterizer::{Capabilities, RasterError};
+use crate::scene::{Interpolation, Primitive, Scene};
 
 /// Attributes a vertex can carry through the pipelines.
 pub(crate) const MAX_ATTRIBUTES: usize = 16;
@@ -22,6 +22,50 @@ pub(crate) const GROUPS: usize = CHANNELS.div_ceil(4);
 /// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
 /// attributes (16).
 pub(crate) const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
+
+/// What a GPU API adapter draws: triangles snapped to the case's grid,
+/// with depth and attributes; antialiased scenes where its multisampling
+/// is wired (`antialias`). No polygons, no motion.
+pub(crate) fn capabilities(antialias: bool) -> Capabilities {
+    Capabilities {
+        ideal_geometry: false,
+        polygons: false,
+        antialias,
+        motion_blur: false,
+        ..Capabilities::everything()
+    }
+}
+
+/// The subpixel bits a GPU API adapter snaps the scene to, or why it cannot
+/// draw the scene: a line (`lines` says why, in the adapter's words),
+/// unsnapped geometry (the `driver` snaps to 8 bits), or more attributes
+/// than the pipelines carry.
+pub(crate) fn snapping_bits(
+    scene: &Scene,
+    plan: &Plan,
+    lines: &str,
+    driver: &str,
+) -> Result<u32, RasterError> {
+    if scene
+        .primitives
+        .iter()
+        .any(|p| matches!(p, Primitive::Line(_)))
+    {
+        return Err(RasterError::Unsupported(format!("lines: {lines}")));
+    }
+    let Some(bits) = scene.rules.subpixel_bits else {
+        return Err(RasterError::Unsupported(format!(
+            "unsnapped geometry (subpixel_bits: null): {driver} snaps to 8 subpixel bits"
+        )));
+    };
+    if plan.attributes > MAX_ATTRIBUTES {
+        return Err(RasterError::Unsupported(format!(
+            "{} attributes (this adapter carries at most {MAX_ATTRIBUTES})",
+            plan.attributes
+        )));
+    }
+    Ok(bits)
+}
 
 /// The power-of-two target a canvas is drawn in, or why it cannot be.
 pub(crate) fn target_size(
@@ -48,11 +92,6 @@ pub(crate) fn groups(plan: &Plan) -> usize {
     };
     debug_assert!(groups <= GROUPS);
     groups
-}
-
-/// The f32 nearest an exact number.
-pub(crate) fn f32_of(n: &Number) -> f32 {
-    to_f32(n.as_rbig())
 }
 
 /// Every triangle's vertices as `VERTEX_FLOATS` floats each, and the runs of

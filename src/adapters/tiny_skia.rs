@@ -37,7 +37,9 @@
 
 use tiny_skia::{FillRule, Mask, Path, PathBuilder, Transform};
 
-use super::float_input::{coverage_only, fill_paths, single_sample, to_f32, FillPath};
+use super::float_input::{
+    coverage_only, fill_paths, path_fill_capabilities, single_sample, to_f32, FillPath,
+};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
@@ -53,15 +55,7 @@ impl Rasterizer for TinySkia {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: true,
-            attributes: false,
-            depth: false,
-            polygons: true,
-            antialias: true,
-            motion_blur: false,
-        }
+        path_fill_capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

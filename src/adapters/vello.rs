@@ -25,7 +25,7 @@ use vello_cpu::kurbo::BezPath;
 use vello_cpu::peniko::Fill;
 use vello_cpu::{Pixmap, RenderContext, Resources};
 
-use super::float_input::{coverage_only, fill_paths, to_f64};
+use super::float_input::{coverage_only, fill_paths, path_fill_capabilities, to_f64};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
@@ -40,15 +40,7 @@ impl Rasterizer for VelloCpu {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: true,
-            attributes: false,
-            depth: false,
-            polygons: true,
-            antialias: true,
-            motion_blur: false,
-        }
+        path_fill_capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

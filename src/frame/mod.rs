@@ -9,6 +9,10 @@
 //! as f64 so that one type holds both a candidate's f32 output (widened
 //! exactly) and the reference's exact values (rounded to odd, see
 //! `reference::exact`).
+//!
+//! `exr.rs` stores a frame as EXR channels (golden files, external answers).
+
+pub mod exr;
 
 use crate::plan::Plan;
 

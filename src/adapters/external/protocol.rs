@@ -1,0 +1,372 @@
+//! The protocol's messages (SPEC.md §12): the JSON request a scene goes
+//! out as, and the response that comes back, read into a [`Frame`]: the
+//! covered pixels of each primitive composed in primitive order, summed
+//! antialiased coverage, or an EXR file in the golden files' layout
+//! (`frame::exr`). Starting, feeding and reaping the processes that speak
+//! it is `mod.rs`'s.
+
+use std::path::Path;
+
+use serde_json::{json, Value};
+
+use crate::frame::{exr, Frame};
+use crate::plan::Plan;
+use crate::rasterizer::RasterError;
+use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
+
+use super::PROTOCOL;
+
+/// A number twice: its nearest f64, and (in the sibling `exact` object) its
+/// exact spelling.
+fn float(n: &Number) -> Value {
+    json!(n.to_f64_lossy())
+}
+
+fn exact(n: &Number) -> Value {
+    Value::String(n.to_exact_string())
+}
+
+fn vertex(v: &Vertex) -> Value {
+    json!({
+        "x": float(&v.x),
+        "y": float(&v.y),
+        "z": float(&v.z),
+        "w": float(&v.w),
+        "attributes": v.attributes.iter().map(float).collect::<Vec<_>>(),
+        "exact": {
+            "x": exact(&v.x),
+            "y": exact(&v.y),
+            "z": exact(&v.z),
+            "w": exact(&v.w),
+            "attributes": v.attributes.iter().map(exact).collect::<Vec<_>>(),
+        }
+    })
+}
+
+/// The request for one scene (SPEC.md §12.2).
+pub fn request(scene: &Scene, plan: &Plan) -> Value {
+    let primitives: Vec<Value> = scene
+        .primitives
+        .iter()
+        .map(|p| match p {
+            Primitive::Triangle(t) => json!({
+                "triangle": t.vertices.iter().map(vertex).collect::<Vec<_>>(),
+                "interpolation": t.interpolation.name(),
+            }),
+            Primitive::Line(l) => json!({
+                "line": l.vertices.iter().map(vertex).collect::<Vec<_>>(),
+                "rule": l.rule.name(),
+                "width": float(&l.width),
+                "last_pixel": match l.last_pixel {
+                    LastPixel::Include => "include",
+                    LastPixel::Exclude => "exclude",
+                },
+                "parameter": match l.parameter {
+                    LineParameter::Major => "major",
+                    LineParameter::Projected => "projected",
+                },
+                "interpolation": l.interpolation.name(),
+                "exact": { "width": exact(&l.width) },
+            }),
+            Primitive::Polygon(polygon) => json!({
+                "contours": polygon
+                    .contours()
+                    .map(|c| c.iter().map(vertex).collect::<Vec<_>>())
+                    .collect::<Vec<_>>(),
+                "fill": polygon.fill.name(),
+            }),
+        })
+        .collect();
+    json!({
+        "protocol": PROTOCOL,
+        "case": scene.name,
+        "canvas": { "width": scene.canvas.width, "height": scene.canvas.height },
+        "rules": {
+            "subpixel_bits": scene.rules.subpixel_bits,
+            "fill_rule": scene.rules.fill_rule.name(),
+            "cull": scene.rules.cull.name(),
+        },
+        "plan": plan_json(plan),
+        "primitives": primitives,
+    })
+}
+
+/// The plan, with the sample offsets of an antialiased scene as floats and,
+/// in `exact`, as fractions.
+fn plan_json(plan: &Plan) -> Value {
+    let mut out = json!({
+        "samples_per_pixel": plan.samples_per_pixel,
+        "depth": plan.depth,
+        "attributes": plan.attributes,
+    });
+    if let Some(aa) = &plan.antialias {
+        let one = 1i64 << aa.position_bits;
+        let offset = |c: u32| Number::ratio(i64::from(c), one);
+        out["antialias"] = json!({
+            "samples": aa.offsets.len(),
+            "position_bits": aa.position_bits,
+            "offsets": aa.offsets.iter().map(|p| p.map(|c| float(&offset(c)))).collect::<Vec<_>>(),
+            "exact": {
+                "offsets": aa.offsets.iter().map(|p| p.map(|c| exact(&offset(c)))).collect::<Vec<_>>(),
+            },
+        });
+    }
+    out
+}
+
+// ---------------------------------------------------------------------------
+// The response.
+
+pub(super) fn parse_response(bytes: &[u8]) -> Result<Value, String> {
+    serde_json::from_slice(bytes).map_err(|e| {
+        let text = String::from_utf8_lossy(bytes);
+        let shown: String = text.chars().take(80).collect();
+        if text.trim().is_empty() {
+            "printed no response".to_owned()
+        } else {
+            format!(
+                "printed something that is not a JSON response ({e}): {shown:?}{}",
+                if text.chars().count() > 80 { "…" } else { "" }
+            )
+        }
+    })
+}
+
+/// Turns a response into a frame, checking it against the request.
+pub fn frame_from_response(
+    response: &Value,
+    scene: &Scene,
+    plan: &Plan,
+) -> Result<Frame, RasterError> {
+    let bad = |why: String| RasterError::Failed(format!("bad response: {why}"));
+    let Some(object) = response.as_object() else {
+        return Err(bad("not a JSON object".to_owned()));
+    };
+    if let Some(protocol) = object.get("protocol") {
+        if protocol.as_str() != Some(PROTOCOL) {
+            return Err(bad(format!(
+                "$.protocol is {protocol}; this rastercheck speaks {PROTOCOL:?}"
+            )));
+        }
+    }
+    if let Some(why) = object.get("unsupported") {
+        return Err(RasterError::Unsupported(text_of(why)));
+    }
+    if let Some(why) = object.get("error") {
+        return Err(RasterError::Failed(format!(
+            "the program reported an error: {}",
+            text_of(why)
+        )));
+    }
+    match (object.get("primitives"), object.get("exr")) {
+        (Some(primitives), None) => compose(primitives, scene, plan).map_err(bad),
+        (None, Some(path)) => {
+            let path = path
+                .as_str()
+                .ok_or_else(|| bad("$.exr must be a string (a file path)".to_owned()))?;
+            if plan.antialias.is_some() {
+                return Err(bad(
+                    "an exr response holds one sample per pixel; answer antialiased scenes with fragments or coverage"
+                        .to_owned(),
+                ));
+            }
+            frame_from_exr(Path::new(path), scene, plan).map_err(bad)
+        }
+        (Some(_), Some(_)) => Err(bad("give either $.primitives or $.exr, not both".to_owned())),
+        (None, None) => Err(bad(
+            "expected $.primitives, $.exr, $.unsupported or $.error".to_owned(),
+        )),
+    }
+}
+
+fn text_of(value: &Value) -> String {
+    match value {
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    }
+}
+
+/// Draws the fragments of each primitive, in primitive order; or, for an
+/// antialiased scene answered with per-pixel coverage, sums it.
+fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    let list = primitives
+        .as_array()
+        .ok_or("$.primitives must be an array")?;
+    if list.len() != scene.primitives.len() {
+        return Err(format!(
+            "$.primitives has {} entries; the request has {} primitives",
+            list.len(),
+            scene.primitives.len()
+        ));
+    }
+    let with_coverage = list.iter().filter(|e| e.get("coverage").is_some()).count();
+    if with_coverage > 0 {
+        if plan.antialias.is_none() {
+            return Err("coverage entries answer antialiased scenes only; give fragments".into());
+        }
+        if with_coverage != list.len() {
+            return Err("give coverage for every primitive or fragments for every one".into());
+        }
+        return sum_coverage(list, width, height);
+    }
+    let samples = plan.antialias.as_ref().map(|aa| aa.offsets.len() as u32);
+    let slot_field = usize::from(samples.is_some());
+    let values = usize::from(plan.depth) + plan.attributes;
+    let arity = 2 + slot_field + values;
+    let mut frame = Frame::for_plan(width, height, plan);
+    for (p, entry) in list.iter().enumerate() {
+        let fragments = entry
+            .as_object()
+            .and_then(|o| o.get("fragments"))
+            .and_then(Value::as_array)
+            .ok_or_else(|| format!("$.primitives[{p}] must be an object with a fragments array"))?;
+        for (f, fragment) in fragments.iter().enumerate() {
+            let at = || format!("$.primitives[{p}].fragments[{f}]");
+            let numbers = fragment
+                .as_array()
+                .filter(|a| a.len() == arity)
+                .ok_or_else(|| {
+                    format!(
+                        "{} must be an array of {arity} numbers: x, y{}{}{}",
+                        at(),
+                        if samples.is_some() { ", sample" } else { "" },
+                        if plan.depth { ", depth" } else { "" },
+                        if plan.attributes > 0 {
+                            format!(", {} attributes", plan.attributes)
+                        } else {
+                            String::new()
+                        }
+                    )
+                })?;
+            let (Some(x), Some(y)) = (
+                whole_below(&numbers[0], width),
+                whole_below(&numbers[1], height),
+            ) else {
+                return Err(format!(
+                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+                    at(),
+                    numbers[0],
+                    numbers[1]
+                ));
+            };
+            let slot = match samples {
+                Some(n) => whole_below(&numbers[2], n).ok_or_else(|| {
+                    format!(
+                        "{}[2]: {} is not a sample index in [0, {n})",
+                        at(),
+                        numbers[2]
+                    )
+                })?,
+                None => 0,
+            };
+            let i = frame.index(x, y) + slot as usize;
+            frame.hit(i, p);
+            for (k, v) in numbers[2 + slot_field..].iter().enumerate() {
+                let v = v.as_f64().filter(|v| v.is_finite()).ok_or_else(|| {
+                    format!("{}[{}] must be a finite number", at(), k + 2 + slot_field)
+                })?;
+                match (&mut frame.depth, k) {
+                    (Some(depth), 0) => depth[i] = v,
+                    (Some(_), k) => frame.attributes[k - 1][i] = v,
+                    (None, k) => frame.attributes[k][i] = v,
+                }
+            }
+        }
+    }
+    if samples.is_some() {
+        frame.resolve();
+    }
+    Ok(frame)
+}
+
+/// A whole number in [0, limit), as JSON gives it.
+fn whole_below(v: &Value, limit: u32) -> Option<u32> {
+    v.as_f64()
+        .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
+        .map(|c| c as u32)
+}
+
+/// An area method's answer (SPEC.md §12.2): each primitive's covered
+/// fraction of the pixels it touches, summed into a frame without samples.
+fn sum_coverage(list: &[Value], width: u32, height: u32) -> Result<Frame, String> {
+    let mut resolved = vec![0.0; width as usize * height as usize];
+    for (p, entry) in list.iter().enumerate() {
+        let items = entry
+            .get("coverage")
+            .and_then(Value::as_array)
+            .ok_or_else(|| format!("$.primitives[{p}].coverage must be an array"))?;
+        for (k, item) in items.iter().enumerate() {
+            let at = || format!("$.primitives[{p}].coverage[{k}]");
+            let triple = item
+                .as_array()
+                .filter(|a| a.len() == 3)
+                .ok_or_else(|| format!("{} must be [x, y, fraction]", at()))?;
+            let (Some(x), Some(y)) = (
+                whole_below(&triple[0], width),
+                whole_below(&triple[1], height),
+            ) else {
+                return Err(format!(
+                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+                    at(),
+                    triple[0],
+                    triple[1]
+                ));
+            };
+            let c = triple[2]
+                .as_f64()
+                .filter(|c| (0.0..=1.0).contains(c))
+                .ok_or_else(|| format!("{}[2]: {} is not a fraction in [0, 1]", at(), triple[2]))?;
+            resolved[y as usize * width as usize + x as usize] += c;
+        }
+    }
+    Ok(Frame::resolved_only(width, height, resolved))
+}
+
+/// Reads a frame from an EXR file with the channels of a golden file
+/// (`frame::exr`).
+fn frame_from_exr(path: &Path, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
+    let ((w, h), mut channels) = exr::read(path)?;
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    if (w, h) != (width as usize, height as usize) {
+        return Err(format!(
+            "{}: the image is {w}×{h}; the canvas is {width}×{height}",
+            path.display()
+        ));
+    }
+    let mut take = |name: &str| {
+        channels
+            .iter()
+            .position(|(n, _)| n == name)
+            .map(|at| channels.swap_remove(at).1)
+            .ok_or_else(|| format!("{}: no channel {name}", path.display()))
+    };
+    let coverage = take("coverage")?;
+    let primitive = take("primitive")?;
+    let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
+    let count = scene.primitives.len() as f32;
+    for (i, (&c, &p)) in coverage.iter().zip(&primitive).enumerate() {
+        let (x, y) = (i % w, i / w);
+        if !(c.fract() == 0.0 && (0.0..=f32::from(u16::MAX)).contains(&c)) {
+            return Err(format!("coverage at pixel ({x}, {y}) is {c}, not a count"));
+        }
+        if !(p.fract() == 0.0 && (0.0..=count).contains(&p)) || (p == 0.0) != (c == 0.0) {
+            return Err(format!(
+                "primitive at pixel ({x}, {y}) is {p} with coverage {c}: it must be index + 1 \
+                 of a primitive where coverage > 0, and 0 where coverage is 0"
+            ));
+        }
+        frame.coverage[i] = c as u16;
+        frame.last[i] = p as u32;
+    }
+    if let Some(depth) = &mut frame.depth {
+        *depth = take("depth")?.into_iter().map(f64::from).collect();
+    }
+    for k in 0..plan.attributes {
+        frame.attributes[k] = take(&format!("attribute.{k}"))?
+            .into_iter()
+            .map(f64::from)
+            .collect();
+    }
+    Ok(frame)
+}

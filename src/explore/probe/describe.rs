@@ -1,0 +1,212 @@
+//! The profile in words: its departures from D3D11 and Vulkan as
+//! sentences, the human-readable account `probe` prints, and its JSON.
+
+use super::{Profile, PROBE_BITS, RULE_NAMES};
+
+fn rule_index(name: &str) -> usize {
+    RULE_NAMES.iter().position(|r| *r == name).unwrap_or(0)
+}
+
+/// Where the nearest rule does not explain a mesh, as "mesh (n of m)".
+fn inconsistencies(p: &Profile) -> Vec<String> {
+    let Some(rule) = &p.fill_rule else {
+        return Vec::new();
+    };
+    let k = rule_index(rule);
+    p.fill_rule_evidence
+        .iter()
+        .filter(|e| e.error.is_none() && e.explained[k].samples < e.tie_samples)
+        .map(|e| {
+            let others: Vec<&str> = e
+                .explained
+                .iter()
+                .filter(|c| c.samples == e.tie_samples)
+                .map(|c| c.rule.as_str())
+                .collect();
+            format!(
+                "{}: {} of {} tie samples differ{}",
+                e.mesh,
+                e.tie_samples - e.explained[k].samples,
+                e.tie_samples,
+                if others.is_empty() {
+                    String::new()
+                } else {
+                    format!(" (explained by {})", others.join(", "))
+                }
+            )
+        })
+        .collect()
+}
+
+/// Departures from D3D11 and Vulkan, as sentences.
+pub(super) fn departures(p: &Profile) -> Vec<String> {
+    let mut out = Vec::new();
+    match p.fill_rule.as_deref() {
+        None => out.push("It drew none of the fill-rule meshes, so its tie rule is unknown.".to_owned()),
+        Some("top-left") => {}
+        Some("all-edges") => out.push(
+            "Samples on an edge belong to every triangle that has the edge (closed edges): samples on shared edges are drawn twice, where D3D11's top-left rule (functional spec §3.4.2.1) and Vulkan give each to exactly one triangle.".to_owned(),
+        ),
+        Some("none") => out.push(
+            "Samples on an edge belong to no triangle (open edges): meshes get holes along every shared edge, where D3D11 and Vulkan give each such sample to exactly one triangle.".to_owned(),
+        ),
+        Some(rule) => {
+            let owned = match rule {
+                "bottom-right" => "bottom and right",
+                "top-right" => "top and right",
+                _ => "bottom and left",
+            };
+            out.push(format!(
+                "Tie samples go to the triangle whose {owned} edges hold them ({rule}); D3D11 (functional spec §3.4.2.1) and Vulkan implementations use top-left. Meshes stay watertight, but every sample on a shared edge goes to the other triangle than on D3D11."
+            ));
+        }
+    }
+    if p.fill_rule.is_some() && !p.fill_rule_consistent {
+        out.push(format!(
+            "Its tie rule is not consistent: no single fill rule explains every tie sample ({}).",
+            inconsistencies(p).join("; ")
+        ));
+    }
+    if p.y_down == Some(false) {
+        out.push("y points up: a triangle in the top half of the canvas is drawn in the bottom rows; D3D11 and Vulkan framebuffer coordinates point down.".to_owned());
+    }
+    match p.subpixel_bits {
+        Some(b) if b < 4 => out.push(format!(
+            "Vertices snap to {b} subpixel bits (a 1/{} px grid): fewer than Vulkan's minimum subPixelPrecisionBits of 4 and D3D11's 8.",
+            1u64 << b
+        )),
+        Some(b) if b < 8 => out.push(format!(
+            "Vertices snap to {b} subpixel bits (a 1/{} px grid); D3D11 snaps to 8 (16.8 fixed point). Vulkan allows it (subPixelPrecisionBits ≥ 4).",
+            1u64 << b
+        )),
+        Some(b) if b > 8 => out.push(format!(
+            "Vertices keep {b} subpixel bits; D3D11 snaps to exactly 8, so vertices off the 1/256 px grid land elsewhere than on D3D11 (Vulkan allows any subPixelPrecisionBits ≥ 4)."
+        )),
+        None if p.subpixel.starts_with("exact") => out.push(
+            "Vertices keep every subpixel bit the case states (up to 16); D3D11 snaps to exactly 8, so a case stating more than 8 bits is drawn finer than on D3D11 (Vulkan allows any subPixelPrecisionBits ≥ 4).".to_owned(),
+        ),
+        _ => {}
+    }
+    if p.sample_offset != Some([0.5, 0.5]) {
+        out.push(format!(
+            "Sample position: {}; D3D11 and single-sampled Vulkan sample at the pixel centre.",
+            p.sample_position
+        ));
+    }
+    for probe in &p.interpolation {
+        for c in probe.channels.iter().filter(|c| !c.within_bound) {
+            out.push(format!(
+                "Interpolation of {} in the {} mesh is off by {:.3e} ({:.1} ulp), beyond rastercheck's bound of {:.3e} (SPEC §6.3).",
+                c.channel, probe.case, c.max_abs, c.max_ulp, c.allowed_abs
+            ));
+        }
+    }
+    out
+}
+
+impl Profile {
+    /// A human-readable account of the profile.
+    pub fn describe(&self) -> String {
+        let mut s = String::new();
+        let ties: usize = self
+            .fill_rule_evidence
+            .iter()
+            .filter(|e| e.error.is_none())
+            .map(|e| e.tie_samples)
+            .sum();
+        s += &format!("profile of {}\n", self.rasterizer);
+        s += &format!(
+            "  fill rule:          {}{}\n",
+            self.fill_rule.as_deref().unwrap_or("unknown"),
+            match (&self.fill_rule, self.fill_rule_consistent) {
+                (None, _) => String::new(),
+                (Some(_), true) => format!(
+                    " (explains all {ties} tie samples of {} meshes)",
+                    self.fill_rule_evidence.len()
+                ),
+                (Some(_), false) => ", inconsistent".to_owned(),
+            }
+        );
+        for line in inconsistencies(self) {
+            s += &format!("                      {line}\n");
+        }
+        let off: usize = self
+            .fill_rule_evidence
+            .iter()
+            .map(|e| e.off_edge_differences)
+            .sum();
+        if off > 0 {
+            s += &format!("                      and {off} samples away from the edges differ from the reference\n");
+        }
+        s += &format!(
+            "  y direction:        {}\n",
+            match self.y_down {
+                Some(true) => "down",
+                Some(false) => "up",
+                None => "unclear",
+            }
+        );
+        s += &format!(
+            "  subpixel precision: {}{}\n",
+            self.subpixel,
+            if self.subpixel.starts_with("exact") {
+                format!(" (all {PROBE_BITS} bits a case can state)")
+            } else {
+                String::new()
+            }
+        );
+        s += &format!("  sample position:    {}\n", self.sample_position);
+        for probe in &self.interpolation {
+            match probe.status.as_str() {
+                "measured" => {
+                    let worst = probe
+                        .channels
+                        .iter()
+                        .max_by(|a, b| a.max_abs.total_cmp(&b.max_abs));
+                    match worst {
+                        Some(c) => {
+                            s += &format!(
+                                "  interpolation:      {} max {:.3e} ({:.1} ulp, {}){}\n",
+                                probe.case,
+                                c.max_abs,
+                                c.max_ulp,
+                                c.channel,
+                                if probe.channels.iter().all(|c| c.within_bound) {
+                                    ""
+                                } else {
+                                    " beyond the bound"
+                                }
+                            )
+                        }
+                        None => {
+                            s += &format!(
+                                "  interpolation:      {} nothing to compare\n",
+                                probe.case
+                            )
+                        }
+                    }
+                }
+                other => {
+                    s += &format!(
+                        "  interpolation:      {} {other}: {}\n",
+                        probe.case,
+                        probe.why.as_deref().unwrap_or("")
+                    )
+                }
+            }
+        }
+        if self.departures.is_empty() {
+            s += "departures from D3D11/Vulkan: none found\n";
+        } else {
+            s += "departures from D3D11/Vulkan:\n";
+            for d in &self.departures {
+                s += &format!("  - {d}\n");
+            }
+        }
+        s
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
+    }
+}

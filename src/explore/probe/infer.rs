@@ -1,0 +1,262 @@
+//! What each probe decides from the frames it draws: the fill rule that
+//! explains the tie samples, the y direction, the subpixel bits resolved
+//! along an axis, the sample position, and the interpolation error. The
+//! scenes are `scenes.rs`'s; sentences about the result are `describe.rs`'s.
+
+use crate::frame::Frame;
+use crate::harness::suite::{self, Verdict};
+use crate::plan::Plan;
+use crate::rasterizer::{RasterError, Rasterizer};
+use crate::reference;
+use crate::scene::{FillRule, Scene};
+
+use super::scenes::{
+    fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri, with_rule,
+};
+use super::{ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES};
+
+/// Draws a scene, catching panics.
+fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError> {
+    let plan = Plan::for_scene(scene);
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        candidate.rasterize(scene, &plan)
+    }))
+    .unwrap_or_else(|panic| {
+        Err(RasterError::Failed(format!(
+            "panicked: {}",
+            suite::panic_message(&*panic)
+        )))
+    })
+}
+
+/// Runs the fill-rule meshes; returns the evidence per mesh.
+pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer) -> Vec<MeshEvidence> {
+    fill_rule_meshes()
+        .into_iter()
+        .map(|(label, s)| {
+            let plan = Plan::for_scene(&s);
+            let refs: Vec<Frame> = FillRule::ALL
+                .iter()
+                .map(|&r| reference::render(&with_rule(&s, r), &plan))
+                .collect();
+            let n = refs[0].sample_count();
+            let key = |f: &Frame, i: usize| (f.coverage[i], f.last[i]);
+            let ties: Vec<usize> = (0..n)
+                .filter(|&i| refs.iter().any(|f| key(f, i) != key(&refs[0], i)))
+                .collect();
+            let mut evidence = MeshEvidence {
+                mesh: label,
+                tie_samples: ties.len(),
+                explained: Vec::new(),
+                off_edge_differences: 0,
+                error: None,
+            };
+            let frame = match draw(candidate, &s) {
+                Ok(f) if f.sample_count() == n => f,
+                Ok(_) => {
+                    evidence.error = Some("returned a frame of the wrong size".to_owned());
+                    return evidence;
+                }
+                Err(e) => {
+                    evidence.error = Some(e.to_string());
+                    return evidence;
+                }
+            };
+            for (k, name) in RULE_NAMES.iter().enumerate() {
+                let samples = ties
+                    .iter()
+                    .filter(|&&i| match refs.get(k) {
+                        Some(r) => key(r, i) == key(&frame, i),
+                        None => frame.coverage[i] == 0,
+                    })
+                    .count();
+                evidence.explained.push(RuleCount {
+                    rule: (*name).to_owned(),
+                    samples,
+                });
+            }
+            evidence.off_edge_differences = (0..n)
+                .filter(|i| !ties.contains(i) && key(&refs[0], *i) != key(&frame, *i))
+                .count();
+            evidence
+        })
+        .collect()
+}
+
+/// The rule that explains the most tie samples over all meshes, and
+/// whether it explains all of them. `None` when no mesh was drawn.
+pub(super) fn nearest_rule(evidence: &[MeshEvidence]) -> Option<(String, bool)> {
+    let drawn: Vec<&MeshEvidence> = evidence.iter().filter(|e| e.error.is_none()).collect();
+    if drawn.is_empty() {
+        return None;
+    }
+    let total: usize = drawn.iter().map(|e| e.tie_samples).sum();
+    let score = |k: usize| -> usize { drawn.iter().map(|e| e.explained[k].samples).sum() };
+    let best = (0..RULE_NAMES.len())
+        .max_by_key(|&k| (score(k), std::cmp::Reverse(k)))
+        .unwrap_or(0);
+    Some((
+        RULE_NAMES[best].to_owned(),
+        score(best) == total && drawn.len() == evidence.len(),
+    ))
+}
+
+/// y direction: a triangle over the top half.
+pub(super) fn probe_y(candidate: &dyn Rasterizer) -> Option<bool> {
+    let s = mesh_scene(
+        "probe_y",
+        16,
+        16,
+        8,
+        vec![tri([(0.0, 0.0), (16.0, 0.0), (0.0, 8.0)])],
+    );
+    let frame = draw(candidate, &s).ok()?;
+    let (mut top, mut bottom) = (0usize, 0usize);
+    for y in 0..frame.height {
+        for x in 0..frame.width {
+            if frame.coverage[frame.index(x, y)] > 0 {
+                if y < frame.height / 2 {
+                    top += 1;
+                } else {
+                    bottom += 1;
+                }
+            }
+        }
+    }
+    match (top > 0, bottom > 0) {
+        (true, false) => Some(true),
+        (false, true) => Some(false),
+        _ => None,
+    }
+}
+
+/// Bits resolved along one axis: the largest k such that all three steps
+/// of every k' ≤ k change their sample. `Err` when it could not draw.
+pub(super) fn probe_axis(candidate: &dyn Rasterizer, transpose: bool) -> Result<u32, String> {
+    let (before, after, steps) = precision_scenes(transpose);
+    let f0 = draw(candidate, &before).map_err(|e| e.to_string())?;
+    let f1 = draw(candidate, &after).map_err(|e| e.to_string())?;
+    if f0.sample_count() != before.canvas.pixel_count()
+        || f1.sample_count() != after.canvas.pixel_count()
+    {
+        return Err("returned a frame of the wrong size".to_owned());
+    }
+    let mut bits = 0;
+    for k in 1..=PROBE_BITS {
+        let changed = steps.iter().filter(|s| s.k == k).all(|s| {
+            let i = f0.index(s.sample.0, s.sample.1);
+            f0.coverage[i] != f1.coverage[i]
+        });
+        if !changed {
+            break;
+        }
+        bits = k;
+    }
+    Ok(bits)
+}
+
+/// Sample position: tiny triangles around (i/8, j/8) in pixel (2i+1, 2j+1).
+pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> (String, Option<[f64; 2]>) {
+    let d = 1.0 / 32.0;
+    let mut triangles = Vec::new();
+    let mut anchors = Vec::new();
+    for j in 0..8u32 {
+        for i in 0..8u32 {
+            let (px, py) = (2 * i + 1, 2 * j + 1);
+            let (x, y) = (
+                f64::from(px) + f64::from(i) / 8.0,
+                f64::from(py) + f64::from(j) / 8.0,
+            );
+            triangles.push(tri([
+                (x - d, y - d),
+                (x + 2.0 * d, y - d),
+                (x - d, y + 2.0 * d),
+            ]));
+            anchors.push((x, y));
+        }
+    }
+    let s = mesh_scene("probe_sample_position", 18, 18, 8, triangles);
+    let frame = match draw(candidate, &s) {
+        Ok(f) => f,
+        Err(e) => return (format!("unknown: {e}"), None),
+    };
+    let mut offsets: Vec<(i64, i64)> = Vec::new();
+    for qy in 0..frame.height {
+        for qx in 0..frame.width {
+            let i = frame.index(qx, qy);
+            if frame.coverage[i] == 0 {
+                continue;
+            }
+            let (x, y) = anchors[frame.last[i] as usize - 1];
+            // The sample lies within 3/32 px of the anchor: name it to 1/8.
+            let o = (
+                ((x - f64::from(qx)) * 8.0).round() as i64,
+                ((y - f64::from(qy)) * 8.0).round() as i64,
+            );
+            if !offsets.contains(&o) {
+                offsets.push(o);
+            }
+        }
+    }
+    offsets.sort();
+    match offsets.as_slice() {
+        [] => (
+            "none found (no triangle of 3/32 px around an offset (i/8, j/8) was drawn)".to_owned(),
+            None,
+        ),
+        [(4, 4)] => ("centre".to_owned(), Some([0.5, 0.5])),
+        [(x, y)] => {
+            let o = [*x as f64 / 8.0, *y as f64 / 8.0];
+            (format!("({}, {}) in the pixel", o[0], o[1]), Some(o))
+        }
+        many => (
+            format!(
+                "several: {}",
+                many.iter()
+                    .map(|(x, y)| format!("({}, {})", *x as f64 / 8.0, *y as f64 / 8.0))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            None,
+        ),
+    }
+}
+
+pub(super) fn probe_interpolation(candidate: &dyn Rasterizer) -> Vec<InterpolationProbe> {
+    [
+        interpolation_scene("linear", "linear", ["1", "1", "1"]),
+        interpolation_scene("perspective", "perspective", ["0.1", "1", "10"]),
+    ]
+    .iter()
+    .map(|s| {
+        let reference = suite::run_reference(s);
+        let run = suite::run_candidate(s, &reference, candidate);
+        let (status, why) = match &run.verdict {
+            Verdict::Unsupported(why) => ("unsupported", Some(why.clone())),
+            Verdict::Error(why) => ("error", Some(why.clone())),
+            _ => ("measured", None),
+        };
+        let channels = run
+            .metrics
+            .map(|m| {
+                m.channels
+                    .iter()
+                    .map(|c| ChannelProbe {
+                        channel: c.channel.clone(),
+                        max_abs: c.max_abs,
+                        max_ulp: c.max_ulp,
+                        allowed_abs: c.allowed_abs,
+                        within_bound: c.within_bounds(),
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        InterpolationProbe {
+            case: s.name.clone(),
+            status: status.to_owned(),
+            why,
+            channels,
+        }
+    })
+    .collect()
+}

@@ -1,0 +1,226 @@
+//! Convention probing: what a rasterizer does, found from its rendered
+//! frames alone, and the profile (`rastercheck-profile/1`) that `run
+//! --profile` judges it by.
+//!
+//! Every probe draws small scenes built here (no case files) and reads the
+//! frames back; nothing about the rasterizer is assumed or asked:
+//!
+//! - **Fill rule.** Meshes whose samples lie exactly on shared horizontal,
+//!   vertical and diagonal edges and on fan centres, in several windings
+//!   and draw orders. The reference draws each under all five rules; the
+//!   samples where the rules disagree are the tie samples, and the
+//!   candidate's count and owner there are compared with each rule and with
+//!   "none" (open edges: holes). The rule that explains every tie sample is
+//!   the answer; when none does, the nearest is named and the rule is
+//!   reported inconsistent, with the meshes where it departs.
+//! - **y direction.** A triangle in the top half of the canvas: does it
+//!   appear in the top rows?
+//! - **Subpixel precision.** For k = 1..16, a vertex B of a thin triangle
+//!   is drawn at three consecutive steps p_j → p_j + 2^-k of the 2^-k
+//!   grid (j = 0, 1, 2), each in its own cell whose geometry puts one
+//!   sample exactly on the edge when B is at τ_j = p_j + ⅓·2^-k or
+//!   p_j + ⅔·2^-k: never a dyadic number, so never a rounding boundary or
+//!   a tie, and strictly inside the step. The other vertices lie on the
+//!   2^-k grid and do not move within a step. A rasterizer that keeps
+//!   k bits (and is exact once it has snapped) draws each sample in one
+//!   render of its step and not in the other. One that keeps b < k bits
+//!   moves B to a point of its 2^-b grid less than 2^-b away (truncation,
+//!   rounding with any ties): the four points p_0 … p_3 span 3·2^-k, and
+//!   four distinct grid points 2^-b ≥ 2·2^-k apart cannot lie within 2^-b
+//!   of them, so at least one step is drawn twice the same and its sample
+//!   does not change. The finest k at which every step changes, for every
+//!   k up to it, is therefore exactly the bits kept. The sweep is made
+//!   along x and along y; one that rounds edge positions between vertices
+//!   (tiny-skia rounds each edge's x on its first scanline to 1/64)
+//!   resolves fewer bits along that axis, never more than its grid, so the
+//!   grid is the finer of the two (both are reported). Scenes state 16
+//!   subpixel bits, the most a case can: "exact" means the rasterizer
+//!   keeps all of them.
+//! - **Sample position.** 64 tiny triangles (3/32 px) around the offsets
+//!   (i/8, j/8) of separate pixels: the ones drawn say where the sample is.
+//! - **Interpolation.** A linear and a perspective mesh (w from 0.1 to 10)
+//!   with depth and two attributes, measured as in `run` (SPEC §6.3).
+//!
+//! `run --profile FILE` overrides each case's `rules.fill_rule` with the
+//! profile's rule for the rasterizer the profile names (and drops the
+//! case's `expect.samples_covered`, which pins the reference to the case's
+//! own rule); snapping, sample position and interpolation are still judged
+//! against the case as written.
+//!
+//! The rooms: this file holds the profile model and [`probe`], which runs
+//! every probe; `scenes.rs` builds the probe scenes, `infer.rs` decides
+//! what each probe found, `describe.rs` puts the profile into words and
+//! JSON, and `run.rs` is `run --profile`.
+
+mod describe;
+mod infer;
+mod run;
+mod scenes;
+
+use serde::Serialize;
+
+use crate::rasterizer::Rasterizer;
+
+pub use run::{for_run, load_declared, run_all_with_profiles, under_rule, Declared};
+
+use describe::departures;
+use infer::{
+    nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
+};
+
+pub const SCHEMA: &str = "rastercheck-profile/1";
+
+/// The subpixel bits the probe scenes state: the most a case can.
+pub const PROBE_BITS: u32 = 16;
+
+/// What a probe found.
+#[derive(Clone, Debug, Serialize)]
+pub struct Profile {
+    pub schema: &'static str,
+    pub tool: crate::report::json::Tool,
+    pub rasterizer: String,
+    /// The rule that explains the most tie samples (`top-left`, ...,
+    /// `all-edges`, or `none` for open edges); `null` when nothing was drawn.
+    pub fill_rule: Option<String>,
+    /// Whether that rule explains every tie sample.
+    pub fill_rule_consistent: bool,
+    /// One entry per probe mesh.
+    pub fill_rule_evidence: Vec<MeshEvidence>,
+    /// `true` when y points down on screen (a triangle in the top half is
+    /// drawn in the top rows), `false` when up, `null` when unclear.
+    pub y_down: Option<bool>,
+    /// Subpixel bits the rasterizer keeps; `null` when it keeps all the
+    /// case states (`exact`) or when it could not be measured.
+    pub subpixel_bits: Option<u32>,
+    /// "8 bits", "exact", or why it is unknown.
+    pub subpixel: String,
+    /// Bits resolved along x and along y.
+    pub subpixel_resolved: Resolved,
+    /// "centre", "(x, y)", "several: ..." or "none found".
+    pub sample_position: String,
+    /// The sample's offset in its pixel, when there is exactly one.
+    pub sample_offset: Option<[f64; 2]>,
+    pub interpolation: Vec<InterpolationProbe>,
+    /// Departures from D3D11 and Vulkan, as sentences.
+    pub departures: Vec<String>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Resolved {
+    pub x: Option<u32>,
+    pub y: Option<u32>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct MeshEvidence {
+    pub mesh: String,
+    pub tie_samples: usize,
+    /// Tie samples each rule explains, in the order top-left, bottom-right,
+    /// top-right, bottom-left, all-edges, none.
+    pub explained: Vec<RuleCount>,
+    /// Samples away from every edge that differ from the reference.
+    pub off_edge_differences: usize,
+    /// Why the rasterizer drew nothing, when it did not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct RuleCount {
+    pub rule: String,
+    pub samples: usize,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct InterpolationProbe {
+    pub case: String,
+    /// `measured`, `unsupported` or `error`.
+    pub status: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub why: Option<String>,
+    pub channels: Vec<ChannelProbe>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ChannelProbe {
+    pub channel: String,
+    pub max_abs: f64,
+    pub max_ulp: f64,
+    pub allowed_abs: f64,
+    pub within_bound: bool,
+}
+
+/// The candidate rules: the five fill rules, then "none" (open edges).
+pub(super) const RULE_NAMES: [&str; 6] = [
+    "top-left",
+    "bottom-right",
+    "top-right",
+    "bottom-left",
+    "all-edges",
+    "none",
+];
+
+/// Probes a rasterizer. `Err` when it draws none of the probe scenes.
+pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
+    let evidence = probe_fill_rule(candidate);
+    if let Some(e) = evidence.iter().find_map(|e| e.error.clone()) {
+        if evidence.iter().all(|e| e.error.is_some()) {
+            return Err(format!(
+                "{} could not draw the probe meshes: {e}",
+                candidate.name()
+            ));
+        }
+    }
+    let rule = nearest_rule(&evidence);
+    let y_down = probe_y(candidate);
+    let x_bits = probe_axis(candidate, false);
+    let y_bits = probe_axis(candidate, true);
+    let (subpixel_bits, subpixel) = match (&x_bits, &y_bits) {
+        (Ok(x), Ok(y)) => {
+            // A rasterizer cannot resolve finer than its vertex grid along
+            // any axis, but may resolve less along one where it rounds edge
+            // positions between vertices: the grid is the finer of the two.
+            let b = (*x).max(*y);
+            let axes = if x == y {
+                String::new()
+            } else {
+                format!(
+                    " (x {x}, y {y}: edges resolve fewer bits along {} than the vertex grid)",
+                    if x < y { "x" } else { "y" }
+                )
+            };
+            if b >= PROBE_BITS {
+                (None, format!("exact{axes}"))
+            } else {
+                (Some(b), format!("{b} bits{axes}"))
+            }
+        }
+        (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
+    };
+    let (sample_position, sample_offset) = probe_sample_position(candidate);
+    let interpolation = probe_interpolation(candidate);
+    let mut profile = Profile {
+        schema: SCHEMA,
+        tool: crate::report::json::Tool {
+            name: "rastercheck",
+            version: env!("CARGO_PKG_VERSION"),
+        },
+        rasterizer: candidate.name().to_owned(),
+        fill_rule: rule.as_ref().map(|r| r.0.clone()),
+        fill_rule_consistent: rule.as_ref().is_some_and(|r| r.1),
+        fill_rule_evidence: evidence,
+        y_down,
+        subpixel_bits,
+        subpixel,
+        subpixel_resolved: Resolved {
+            x: x_bits.ok(),
+            y: y_bits.ok(),
+        },
+        sample_position,
+        sample_offset,
+        interpolation,
+        departures: Vec::new(),
+    };
+    profile.departures = departures(&profile);
+    Ok(profile)
+}

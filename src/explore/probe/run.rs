@@ -1,0 +1,202 @@
+//! `run --profile`: reading profile files, choosing the rasterizers to
+//! run, and judging each profiled rasterizer against a reference drawn
+//! under its declared fill rule instead of each case's.
+
+use std::path::Path;
+
+use rayon::prelude::*;
+use serde_json::Value;
+
+use crate::frame::Frame;
+use crate::harness::runner::{self, CaseOutcome};
+use crate::harness::suite::{self, CaseFile, Verdict};
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{FillRule, Limits, Scene};
+
+use super::scenes::with_rule;
+use super::SCHEMA;
+
+/// What `run --profile` takes from a profile file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Declared {
+    pub rasterizer: String,
+    pub fill_rule: FillRule,
+    pub file: String,
+}
+
+/// Reads a profile file for `run --profile`.
+pub fn load_declared(path: &Path) -> Result<Declared, String> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{shown}: {e}"))?;
+    let value: Value =
+        serde_json::from_str(&text).map_err(|e| format!("{shown}: not JSON: {e}"))?;
+    let schema = value.get("schema").and_then(Value::as_str);
+    if schema != Some(SCHEMA) {
+        return Err(format!(
+            "{shown}: $.schema: expected {SCHEMA:?}, found {}",
+            value
+                .get("schema")
+                .map_or("nothing".to_owned(), |v| v.to_string())
+        ));
+    }
+    let rasterizer = value
+        .get("rasterizer")
+        .and_then(Value::as_str)
+        .ok_or_else(|| format!("{shown}: $.rasterizer: expected a rasterizer name"))?
+        .to_owned();
+    let rule = value
+        .get("fill_rule")
+        .and_then(Value::as_str)
+        .ok_or_else(|| format!("{shown}: $.fill_rule: the profile declares no fill rule"))?;
+    let fill_rule = FillRule::from_name(rule).ok_or_else(|| {
+        format!(
+            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state ({})",
+            FillRule::ALL.map(|r| r.name()).join(", ")
+        )
+    })?;
+    Ok(Declared {
+        rasterizer,
+        fill_rule,
+        file: shown,
+    })
+}
+
+impl Declared {
+    /// The line `run` prints about the override.
+    pub fn note(&self) -> String {
+        format!(
+            "profile: {} is judged under its declared fill rule {} (from {}) instead of each case's",
+            self.rasterizer, self.fill_rule, self.file
+        )
+    }
+}
+
+/// The profiles of `run --profile`, and the rasterizers to run: `names`,
+/// or the profiles' rasterizers when none are named (production when
+/// there are no profiles either). Every profiled rasterizer must be run,
+/// and have one profile.
+pub fn for_run(
+    files: &[std::path::PathBuf],
+    names: &[String],
+) -> Result<(Vec<Declared>, Vec<String>), String> {
+    let mut declared: Vec<Declared> = Vec::new();
+    for file in files {
+        let d = load_declared(file)?;
+        if let Some(other) = declared.iter().find(|o| o.rasterizer == d.rasterizer) {
+            return Err(format!(
+                "{} and {} are both profiles of {}; give one per rasterizer",
+                other.file, d.file, d.rasterizer
+            ));
+        }
+        declared.push(d);
+    }
+    let names = if !names.is_empty() {
+        names.to_vec()
+    } else if declared.is_empty() {
+        vec!["production".to_owned()]
+    } else {
+        declared.iter().map(|d| d.rasterizer.clone()).collect()
+    };
+    if let Some(d) = declared.iter().find(|d| !names.contains(&d.rasterizer)) {
+        return Err(format!(
+            "{} is a profile of {}, which this run does not check (add -r '{}')",
+            d.file, d.rasterizer, d.rasterizer
+        ));
+    }
+    Ok((declared, names))
+}
+
+/// Stands in for a profiled rasterizer during the ordinary run, so that it
+/// is drawn only once, under its declared rule.
+struct Deferred {
+    name: String,
+    foil: bool,
+}
+
+impl Rasterizer for Deferred {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn capabilities(&self) -> Capabilities {
+        Capabilities::everything()
+    }
+    fn is_foil(&self) -> bool {
+        self.foil
+    }
+    fn rasterize(&self, _: &Scene, _: &Plan) -> Result<Frame, RasterError> {
+        Err(RasterError::Unsupported(
+            "deferred to its profile".to_owned(),
+        ))
+    }
+}
+
+/// A case with its fill rule replaced by a declared one.
+pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
+    let mut s = with_rule(scene, rule);
+    // The pin describes the case's own rule, not the declared one.
+    s.expect.samples_covered = None;
+    s
+}
+
+/// [`runner::run_all`], except that every candidate named by a profile is
+/// judged against a reference drawn under the profile's fill rule.
+pub fn run_all_with_profiles(
+    files: &[CaseFile],
+    limits: &Limits,
+    candidates: &mut [Box<dyn Rasterizer>],
+    declared: &[Declared],
+    root: &Path,
+    threads: Option<usize>,
+    done: &(dyn Fn(&CaseOutcome) + Sync),
+) -> Vec<CaseOutcome> {
+    let mut swapped: Vec<(usize, Box<dyn Rasterizer>, FillRule)> = Vec::new();
+    for (index, candidate) in candidates.iter_mut().enumerate() {
+        if let Some(d) = declared.iter().find(|d| d.rasterizer == candidate.name()) {
+            let stand_in: Box<dyn Rasterizer> = Box::new(Deferred {
+                name: candidate.name().to_owned(),
+                foil: candidate.is_foil(),
+            });
+            swapped.push((index, std::mem::replace(candidate, stand_in), d.fill_rule));
+        }
+    }
+    let mut outcomes = runner::run_all(files, limits, candidates, root, threads, done);
+    let work = |outcomes: &mut Vec<CaseOutcome>| {
+        outcomes.par_iter_mut().for_each(|outcome| {
+            let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) else {
+                return;
+            };
+            for (index, candidate, rule) in &swapped {
+                let s = under_rule(scene, *rule);
+                let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    let reference = suite::run_reference(&s);
+                    suite::run_candidate(&s, &reference, candidate.as_ref())
+                }));
+                let run = run.unwrap_or_else(|panic| suite::CandidateRun {
+                    rasterizer: candidate.name().to_owned(),
+                    verdict: Verdict::Error(format!(
+                        "the reference under the declared {rule} rule panicked: {}",
+                        suite::panic_message(&*panic)
+                    )),
+                    metrics: None,
+                    frame: None,
+                    elapsed: std::time::Duration::ZERO,
+                });
+                if let Some(slot) = outcome.candidates.get_mut(*index) {
+                    *slot = run;
+                }
+            }
+        })
+    };
+    match rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+    {
+        Ok(pool) => pool.install(|| work(&mut outcomes)),
+        Err(_) => work(&mut outcomes),
+    }
+    for (index, candidate, _) in swapped {
+        candidates[index] = candidate;
+    }
+    outcomes
+}

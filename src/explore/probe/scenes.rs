@@ -1,0 +1,209 @@
+//! The probe scenes, built here from JSON values (no case files): the
+//! fill-rule meshes, the subpixel-precision cells and the interpolation
+//! meshes, and the pieces (`tri`, `mesh_scene`) the sample-position probe
+//! lays its grid out with. What each probe makes of the frames is
+//! `infer.rs`'s.
+
+use serde_json::{json, Value};
+
+use crate::scene::{parse_case, FillRule, Limits, Scene};
+
+use super::PROBE_BITS;
+
+fn scene(value: Value) -> Scene {
+    parse_case(&value.to_string(), "probe", &Limits::default())
+        .unwrap_or_else(|e| panic!("a probe scene is invalid: {e}"))
+}
+
+pub(super) fn tri(points: [(f64, f64); 3]) -> Value {
+    json!({ "triangle": points.iter().map(|&(x, y)| json!([x, y])).collect::<Vec<_>>() })
+}
+
+pub(super) fn mesh_scene(name: &str, w: u32, h: u32, bits: u32, triangles: Vec<Value>) -> Scene {
+    scene(json!({
+        "name": name,
+        "canvas": {"width": w, "height": h},
+        "rules": {"subpixel_bits": bits, "fill_rule": "top-left", "cull": "none"},
+        "primitives": triangles,
+    }))
+}
+
+/// The fill-rule meshes: two-triangle meshes over a shared horizontal,
+/// vertical, diagonal and anti-diagonal edge (each as written, with both
+/// windings reversed, and drawn in the other order), and two fans whose
+/// centre is a sample.
+pub(super) fn fill_rule_meshes() -> Vec<(String, Scene)> {
+    type Pair = [[(f64, f64); 3]; 2];
+    let pairs: [(&str, Pair); 4] = [
+        (
+            "horizontal shared edge",
+            [
+                [(1.0, 8.5), (15.0, 8.5), (8.0, 1.5)],
+                [(1.0, 8.5), (8.0, 15.5), (15.0, 8.5)],
+            ],
+        ),
+        (
+            "vertical shared edge",
+            [
+                [(8.5, 1.0), (8.5, 15.0), (1.5, 8.0)],
+                [(8.5, 1.0), (15.5, 8.0), (8.5, 15.0)],
+            ],
+        ),
+        (
+            "diagonal shared edge",
+            [
+                [(1.0, 1.0), (15.0, 1.0), (15.0, 15.0)],
+                [(1.0, 1.0), (15.0, 15.0), (1.0, 15.0)],
+            ],
+        ),
+        (
+            "anti-diagonal shared edge",
+            [
+                [(1.0, 1.0), (15.0, 1.0), (1.0, 15.0)],
+                [(15.0, 1.0), (15.0, 15.0), (1.0, 15.0)],
+            ],
+        ),
+    ];
+    let mut out = Vec::new();
+    for (label, [a, b]) in pairs {
+        let rev = |t: [(f64, f64); 3]| [t[2], t[1], t[0]];
+        out.push((label.to_owned(), vec![tri(a), tri(b)]));
+        out.push((
+            format!("{label}, windings reversed"),
+            vec![tri(rev(a)), tri(rev(b))],
+        ));
+        out.push((
+            format!("{label}, drawn in the other order"),
+            vec![tri(b), tri(a)],
+        ));
+    }
+    let fan = |label: &str, spokes: &[(f64, f64)]| {
+        let c = (8.5, 8.5);
+        let triangles = (0..spokes.len())
+            .map(|i| {
+                let (p, q) = (spokes[i], spokes[(i + 1) % spokes.len()]);
+                tri([c, (c.0 + p.0, c.1 + p.1), (c.0 + q.0, c.1 + q.1)])
+            })
+            .collect();
+        (label.to_owned(), triangles)
+    };
+    out.push(fan(
+        "fan of 8 around a sample (axis and diagonal spokes)",
+        &[
+            (6.0, 0.0),
+            (6.0, 6.0),
+            (0.0, 6.0),
+            (-6.0, 6.0),
+            (-6.0, 0.0),
+            (-6.0, -6.0),
+            (0.0, -6.0),
+            (6.0, -6.0),
+        ],
+    ));
+    out.push(fan(
+        "fan of 8 around a sample (spokes of slope 1/2 and 2)",
+        &[
+            (4.0, 2.0),
+            (2.0, 4.0),
+            (-2.0, 4.0),
+            (-4.0, 2.0),
+            (-4.0, -2.0),
+            (-2.0, -4.0),
+            (2.0, -4.0),
+            (4.0, -2.0),
+        ],
+    ));
+    out.into_iter()
+        .map(|(label, triangles)| {
+            let s = mesh_scene("probe_fill_rule", 16, 16, 8, triangles);
+            (label, s)
+        })
+        .collect()
+}
+
+pub(super) fn with_rule(scene: &Scene, rule: FillRule) -> Scene {
+    let mut s = scene.clone();
+    s.rules.fill_rule = rule;
+    s
+}
+
+/// One precision cell: its sample, and the two positions of B.
+pub(super) struct Step {
+    pub(super) k: u32,
+    pub(super) sample: (u32, u32),
+}
+
+/// The two scenes (B at p, B at p + 2^-k for every k and both parities)
+/// and the cells' samples. `transpose` swaps x and y (the y sweep).
+pub(super) fn precision_scenes(transpose: bool) -> (Scene, Scene, Vec<Step>) {
+    let (cols, cell_w, cell_h) = (8u32, 12u32, 8u32);
+    let mut before = Vec::new();
+    let mut after = Vec::new();
+    let mut steps = Vec::new();
+    let mut cell = 0u32;
+    let fraction = |num: i64, k: u32| format!("{num}/{}", 1i64 << k);
+    for k in 1..=PROBE_BITS {
+        // Three consecutive steps p_j → p_j + 2^-k, p_j = p_0 + j·2^-k.
+        // With A = (n − 3j·2^-k, s_y − 3), B = (x, s_y + 1) and the sample
+        // at (n + ½, s_y), the edge AB meets the sample when
+        // x = τ_j = n + 2/3 + j·2^-k: strictly inside step j.
+        for j in 0..3i64 {
+            let (cx, cy) = ((cell % cols * cell_w) as i64, (cell / cols * cell_h) as i64);
+            cell += 1;
+            let n = cx + 4;
+            let ax = fraction((n << k) - 3 * j, k);
+            let p0 = (((3 * n + 2) << k) / 3) + j;
+            let point = |x: String, y: String| {
+                if transpose {
+                    json!([y, x])
+                } else {
+                    json!([x, y])
+                }
+            };
+            let a = point(ax, format!("{}.5", cy));
+            let c = point((cx + 9).to_string(), format!("{}.5", cy + 3));
+            let by = format!("{}.5", cy + 4);
+            let t0 =
+                json!({"triangle": [a.clone(), point(fraction(p0, k), by.clone()), c.clone()]});
+            let t1 = json!({"triangle": [a, point(fraction(p0 + 1, k), by), c]});
+            before.push(t0);
+            after.push(t1);
+            let sample = (n as u32, (cy + 3) as u32);
+            steps.push(Step {
+                k,
+                sample: if transpose {
+                    (sample.1, sample.0)
+                } else {
+                    sample
+                },
+            });
+        }
+    }
+    let rows = cell.div_ceil(cols);
+    let (w, h) = (cols * cell_w, rows * cell_h);
+    let (w, h) = if transpose { (h, w) } else { (w, h) };
+    (
+        mesh_scene("probe_precision", w, h, PROBE_BITS, before),
+        mesh_scene("probe_precision", w, h, PROBE_BITS, after),
+        steps,
+    )
+}
+
+pub(super) fn interpolation_scene(name: &str, mode: &str, w: [&str; 3]) -> Scene {
+    let v = |x: i32, y: i32, z: &str, w: &str, a: [&str; 2]| json!({"position": [x, y], "z": z, "w": w, "attributes": a});
+    let (v0, v1, v2, v3) = (
+        v(0, 0, "0.25", w[0], ["0", "1000"]),
+        v(16, 0, "0.75", w[1], ["100", "-3"]),
+        v(0, 16, "0.5", w[2], ["-50", "7"]),
+        v(16, 16, "0.125", w[0], ["33", "0.5"]),
+    );
+    scene(json!({
+        "name": name,
+        "canvas": {"width": 16, "height": 16},
+        "rules": {"subpixel_bits": 8},
+        "primitives": [
+            {"triangle": [v0, v1.clone(), v2.clone()], "interpolation": mode},
+            {"triangle": [v1, v3, v2], "interpolation": mode},
+        ],
+    }))
+}
