@@ -55,7 +55,8 @@ pub struct RunArgs {
 /// candidates, one line each, a summary, and the report folder.
 pub fn run(args: RunArgs) -> Exit {
     let limits = args.limits.limits();
-    let (declared, names) = match crate::explore::probe::for_run(&args.profile, &args.rasterizers) {
+    let (declared, names) = match crate::harness::profile::for_run(&args.profile, &args.rasterizers)
+    {
         Ok(found) => found,
         Err(e) => {
             eprintln!("error: {e}");
@@ -123,7 +124,7 @@ pub fn run(args: RunArgs) -> Exit {
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
-    let mut outcomes = crate::explore::probe::run_all_with_profiles(
+    let mut outcomes = crate::harness::profile::run_all_with_profiles(
         &files,
         &limits,
         &mut candidates,

@@ -6,11 +6,14 @@
 //!   outcomes in a fixed order.
 //! - [`golden`]: the blessed reference outputs (EXR) and their comparison.
 //! - [`baseline`]: recorded metrics that later runs must not get worse than.
+//! - [`profile`]: declared conventions (`run --profile`): a profiled
+//!   rasterizer judged under the fill rule its profile declares.
 //! - [`matrix`]: every case through several rasterizers, as a conformance
 //!   matrix with findings.
 
 pub mod baseline;
 pub mod golden;
 pub mod matrix;
+pub mod profile;
 pub mod runner;
 pub mod suite;

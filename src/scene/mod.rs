@@ -285,6 +285,13 @@ pub struct TimePin {
 }
 
 impl Scene {
+    /// The same scene under another fill rule.
+    pub fn with_fill_rule(&self, rule: FillRule) -> Scene {
+        let mut s = self.clone();
+        s.rules.fill_rule = rule;
+        s
+    }
+
     /// The triangles, each with its index among all primitives.
     pub fn triangles(&self) -> impl Iterator<Item = (usize, &Triangle)> {
         self.primitives

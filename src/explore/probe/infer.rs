@@ -10,9 +10,7 @@ use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference;
 use crate::scene::{FillRule, Scene};
 
-use super::scenes::{
-    fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri, with_rule,
-};
+use super::scenes::{fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri};
 use super::{ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES};
 
 /// Draws a scene, catching panics.
@@ -37,7 +35,7 @@ pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer) -> Vec<MeshEvidence> {
             let plan = Plan::for_scene(&s);
             let refs: Vec<Frame> = FillRule::ALL
                 .iter()
-                .map(|&r| reference::render(&with_rule(&s, r), &plan))
+                .map(|&r| reference::render(&s.with_fill_rule(r), &plan))
                 .collect();
             let n = refs[0].sample_count();
             let key = |f: &Frame, i: usize| (f.coverage[i], f.last[i]);

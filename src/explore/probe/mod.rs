@@ -50,25 +50,23 @@
 //! The rooms: this file holds the profile model and [`probe`], which runs
 //! every probe; `scenes.rs` builds the probe scenes, `infer.rs` decides
 //! what each probe found, `describe.rs` puts the profile into words and
-//! JSON, and `run.rs` is `run --profile`.
+//! JSON. Reading a profile for `run --profile` is the harness's
+//! (`harness/profile.rs`).
 
 mod describe;
 mod infer;
-mod run;
 mod scenes;
 
 use serde::Serialize;
 
 use crate::rasterizer::Rasterizer;
 
-pub use run::{for_run, load_declared, run_all_with_profiles, under_rule, Declared};
-
 use describe::departures;
 use infer::{
     nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
 };
 
-pub const SCHEMA: &str = "rastercheck-profile/1";
+pub use crate::harness::profile::SCHEMA;
 
 /// The subpixel bits the probe scenes state: the most a case can.
 pub const PROBE_BITS: u32 = 16;

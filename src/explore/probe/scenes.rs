@@ -6,7 +6,7 @@
 
 use serde_json::{json, Value};
 
-use crate::scene::{parse_case, FillRule, Limits, Scene};
+use crate::scene::{parse_case, Limits, Scene};
 
 use super::PROBE_BITS;
 
@@ -119,12 +119,6 @@ pub(super) fn fill_rule_meshes() -> Vec<(String, Scene)> {
             (label, s)
         })
         .collect()
-}
-
-pub(super) fn with_rule(scene: &Scene, rule: FillRule) -> Scene {
-    let mut s = scene.clone();
-    s.rules.fill_rule = rule;
-    s
 }
 
 /// One precision cell: its sample, and the two positions of B.

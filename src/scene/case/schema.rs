@@ -209,12 +209,7 @@ impl Reader<'_> {
 
     fn interpolation(&self, fields: &Fields) -> Result<Interpolation> {
         match fields.get("interpolation") {
-            Some((v, p)) => named(
-                v,
-                &p,
-                Interpolation::from_name,
-                &Interpolation::NAMES,
-            ),
+            Some((v, p)) => named(v, &p, Interpolation::from_name, &Interpolation::NAMES),
             None => Ok(Interpolation::Perspective),
         }
     }
@@ -243,12 +238,7 @@ impl Reader<'_> {
         let v = |i: usize| self.vertex(&list[i], &vertices_path.index(i));
         let vertices = [v(0)?, v(1)?];
         let rule = match fields.get("rule") {
-            Some((v, p)) => named(
-                v,
-                &p,
-                LineRule::from_name,
-                &LineRule::NAMES,
-            )?,
+            Some((v, p)) => named(v, &p, LineRule::from_name, &LineRule::NAMES)?,
             None => LineRule::Midpoint,
         };
         let width = match fields.get("width") {

@@ -1,21 +1,24 @@
-//! `run --profile`: reading profile files, choosing the rasterizers to
-//! run, and judging each profiled rasterizer against a reference drawn
-//! under its declared fill rule instead of each case's.
+//! Declared conventions (`run --profile`): reading profile files, choosing
+//! the rasterizers to run, and judging each profiled rasterizer against a
+//! reference drawn under its declared fill rule instead of each case's.
+//!
+//! `explore::probe` writes profiles; the harness only reads what they
+//! declare, so a hand-written profile is judged the same way.
 
 use std::path::Path;
 
 use rayon::prelude::*;
 use serde_json::Value;
 
+use super::runner::{self, CaseOutcome};
+use super::suite::{self, CaseFile, Verdict};
 use crate::frame::Frame;
-use crate::harness::runner::{self, CaseOutcome};
-use crate::harness::suite::{self, CaseFile, Verdict};
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, Limits, Scene};
 
-use super::scenes::with_rule;
-use super::SCHEMA;
+/// The schema of a profile file, written by `probe` and read here.
+pub const SCHEMA: &str = "rastercheck-profile/1";
 
 /// What `run --profile` takes from a profile file.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -133,7 +136,7 @@ impl Rasterizer for Deferred {
 
 /// A case with its fill rule replaced by a declared one.
 pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
-    let mut s = with_rule(scene, rule);
+    let mut s = scene.with_fill_rule(rule);
     // The pin describes the case's own rule, not the declared one.
     s.expect.samples_covered = None;
     s
