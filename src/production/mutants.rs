@@ -1,6 +1,6 @@
 //! Deliberately wrong rasterizers: the production rasterizer with one
 //! realistic bug each. They exist to prove that every check can fail: each
-//! is caught by a different metric (see tests/mutants.rs).
+//! is caught by a different metric (see tests/mutants/).
 //!
 //! A bug is applied by rewriting what production sees (the scene, or the
 //! plan's sample offsets) or what it returns (the resolved coverage of an
@@ -69,7 +69,7 @@ pub enum Mutation {
     /// first half of their path, twice as long; caught by the time-coverage
     /// RMS. (The same buffer over the whole shutter is not a bug these
     /// metrics catch: midpoints shared by every pixel err by at most about
-    /// 1/N per edge, below the RMS bound, tests/mutants.rs shows it. It
+    /// 1/N per edge, below the RMS bound, tests/mutants/ shows it. It
     /// strobes, but strobing is no error in any one pixel's mean.)
     MotionHalfShutter,
 }

@@ -18,7 +18,7 @@ use rastercheck::scene::{
 
 /// 1 to 40 coverage-only midpoint lines with ends anywhere around a 1024²
 /// canvas (6 MiB of frame: production draws them band by band with
-/// resumable walkers, `production/line.rs` `midpoint_lines`): half-pixel
+/// resumable walkers, `production/line/bands.rs` `midpoint_lines`): half-pixel
 /// ends force ties, 1/256 ends the general case, both `last_pixel`s.
 fn many_lines_scene() -> impl Strategy<Value = Scene> {
     let end = prop_oneof![

@@ -1,4 +1,4 @@
-//! The `meshes` family, after the strategies of tests/properties.rs: fans
+//! The `meshes` family, after the strategies of tests/properties/meshes.rs: fans
 //! around sample centres, jittered grids with shared vertices, convex fans
 //! and ear-clipped star polygons, kept only when snapping folds no triangle
 //! over, each with `expect.watertight: true`.
