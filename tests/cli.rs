@@ -580,15 +580,10 @@ fn a_time_limit_must_be_a_number_of_seconds() {
 #[test]
 fn bench_refuses_an_out_folder_that_does_not_exist_before_it_runs() {
     let dir = workspace("bench-out", &[]);
-    let started = std::time::Instant::now();
     let out = rastercheck(&dir, &["bench", "--out", "missing/BENCH.md"]);
     let t = text(&out);
     assert_eq!(out.status.code(), Some(2), "{t}");
     assert!(t.contains("missing/BENCH.md"), "{t}");
     assert!(!t.contains("bench: "), "no workload ran: {t}");
-    assert!(
-        started.elapsed().as_secs_f64() < 30.0,
-        "refused at once, not after the workloads"
-    );
     assert!(!dir.join("missing").exists());
 }
