@@ -1,0 +1,1 @@
+//! Faults: external programs that flood, hang, leak or answer with hostile files.

@@ -1,0 +1,1 @@
+//! Faults: reports that must stay whole (atomic writes, stale files, signals).
