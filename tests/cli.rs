@@ -322,8 +322,16 @@ fn filter_and_family_select_cases() {
     assert_eq!(run.status.code(), Some(0), "{}", text(&run));
     let ids = report_ids(&out);
     assert!(!ids.is_empty());
+    // `**` crosses segments and `diamond*` ends the id: every lines case
+    // whose id has "diamond" followed by anything, `spec_diamond_…` too.
     assert!(
-        ids.iter().all(|id| id.starts_with("lines/diamond")),
+        ids.iter()
+            .all(|id| id.starts_with("lines/") && id.contains("diamond")),
+        "{ids:?}"
+    );
+    assert!(ids.contains(&"lines/diamond_strip".to_owned()), "{ids:?}");
+    assert!(
+        ids.contains(&"lines/spec_diamond_single_point".to_owned()),
         "{ids:?}"
     );
     let bad = rastercheck(&root, &["run", "cases", "--shard", "4/3"]);
