@@ -5,7 +5,6 @@
 //! code is the documented one.
 
 #[path = "../common/mod.rs"]
-#[allow(dead_code)]
 mod common;
 
 mod answers;
