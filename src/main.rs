@@ -1,5 +1,6 @@
 //! The command line: parse arguments, call the library, map outcomes to exit
-//! codes (0: every case passes; 1: a case fails; 2: bad input or usage).
+//! codes (SPEC.md §9: 0 everything judged passes; 1 something failed; 2
+//! bad input or usage; 3 nothing was judged).
 //! Every command's body, and its argument types, live in
 //! `rastercheck::commands`.
 
@@ -44,7 +45,8 @@ enum Command {
     Baseline(BaselineCommand),
     /// Search random and adversarial scenes for a failure of one rasterizer,
     /// shrink it to a minimal scene that fails the same check, and write it
-    /// as a case file (exit 1 when one is found, 0 when none).
+    /// as a case file (exit 1 when one is found, 0 when none, 3 when every
+    /// scene was unsupported).
     Fuzz(FuzzArgs),
     /// Run the cases through several rasterizers and print a conformance
     /// matrix (rows: rasterizers, columns: case families) with findings.

@@ -389,7 +389,7 @@ fn a_bad_time_limit_is_an_error_naming_the_variable() {
         &[(external::TIMEOUT_ENV, "soon")],
     );
     let t = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert_eq!(out.status.code(), Some(2), "{t}");
     assert!(
         t.contains("RASTERCHECK_EXTERNAL_TIMEOUT=\"soon\" is not a positive number of seconds"),
         "{t}"

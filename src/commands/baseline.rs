@@ -2,6 +2,7 @@
 //! case and rasterizer, or hold a later run to them (exit 1 when a metric
 //! gets worse).
 
+use super::console::outln;
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
@@ -53,28 +54,29 @@ pub struct BaselineSelectArgs {
     /// Only cases of this family (check: default the baseline's).
     #[arg(long)]
     pub family: Option<String>,
-    /// Worker threads (default: one per core). Results do not depend on it.
-    #[arg(long)]
+    /// Worker threads, at most 256 (default, or 0: one per core).
+    /// Results do not depend on it.
+    #[arg(long, value_parser = super::threads)]
     pub threads: Option<usize>,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
 
-/// Discovers and selects the cases of a baseline run; `Err` is bad input
-/// already reported.
+/// Discovers and selects the cases of a baseline run; `Err` is the exit,
+/// already reported: bad input, or no case selected (unless `allow_empty`).
 fn baseline_cases(
     paths: Vec<PathBuf>,
     selection: &Selection,
     allow_empty: bool,
-) -> Result<Vec<suite::CaseFile>, ()> {
+) -> Result<Vec<suite::CaseFile>, Exit> {
     let (found, bad) = discover(paths);
     if bad {
-        return Err(());
+        return Err(Exit::BadInput);
     }
     let files = selection.apply(found.cases);
     if files.is_empty() && !allow_empty {
-        eprintln!("error: no case files found that match the selection");
-        return Err(());
+        eprintln!("error: no case files found that match the selection; nothing was judged");
+        return Err(Exit::NothingJudged);
     }
     Ok(files)
 }
@@ -140,8 +142,9 @@ fn baseline_save(
         filter: select.filter.clone(),
         family: select.family.clone(),
     };
-    let Ok(files) = baseline_cases(paths, &info.selection(), false) else {
-        return Exit::BadInput;
+    let files = match baseline_cases(paths, &info.selection(), false) {
+        Ok(files) => files,
+        Err(exit) => return exit,
     };
     let observed = observe(&files, &candidates, &names, &select);
     if !observed.problems.is_empty() {
@@ -159,7 +162,7 @@ fn baseline_save(
         eprintln!("error: writing the baseline: {e}");
         return Exit::BadInput;
     }
-    println!(
+    outln!(
         "baseline: recorded {} results ({} cases × {}) in {}",
         baseline.results.len(),
         files.len(),
@@ -218,7 +221,12 @@ fn baseline_check(
             return Exit::BadInput;
         }
         match suite::rasterizer(run) {
-            Some(r) => candidates.push(r),
+            Some(r) => {
+                if let Err(exit) = super::environment_for(run) {
+                    return exit;
+                }
+                candidates.push(r)
+            }
             None if names.is_empty() => {
                 eprintln!(
                     "error: {shown}: the baseline records {}",
@@ -242,8 +250,10 @@ fn baseline_check(
         family: select.family.clone().or(baseline.selection.family.clone()),
         shard: None,
     };
-    let Ok(files) = baseline_cases(paths, &selection, true) else {
-        return Exit::BadInput;
+    // Empty is allowed: the baseline's cases that are gone are regressions.
+    let files = match baseline_cases(paths, &selection, true) {
+        Ok(files) => files,
+        Err(exit) => return exit,
     };
     let recorded: Vec<String> = pairs.iter().map(|p| p.1.clone()).collect();
     let observed = observe(&files, &candidates, &recorded, &select);
@@ -263,24 +273,24 @@ fn baseline_check(
     for finding in &comparison.findings {
         let mut f = finding.clone();
         f.rasterizer = shown_as(&f.rasterizer);
-        println!("{f}");
+        outln!("{f}");
     }
     for (case, rasterizer) in &comparison.new {
-        println!(
+        outln!(
             "NEW         {case}  {}  not in the baseline",
             shown_as(rasterizer)
         );
     }
     if baseline.tool.version != env!("CARGO_PKG_VERSION") {
-        println!(
+        outln!(
             "note: {shown} was saved by rastercheck {}; this is {}",
             baseline.tool.version,
             env!("CARGO_PKG_VERSION")
         );
     }
-    println!("{}", comparison.summary());
+    outln!("{}", comparison.summary());
     if comparison.improvements() > 0 && comparison.regressions() == 0 {
-        println!("note: save the baseline again to hold future runs to the improvements");
+        outln!("note: save the baseline again to hold future runs to the improvements");
     }
     if !observed.problems.is_empty() {
         for (case, why) in &observed.problems {
@@ -289,6 +299,11 @@ fn baseline_check(
         Exit::BadInput
     } else if comparison.regressions() > 0 {
         Exit::Fail
+    } else if files.is_empty() && comparison.results == 0 {
+        eprintln!(
+            "error: no case files found that match the selection, and {shown} records none; nothing was judged"
+        );
+        Exit::NothingJudged
     } else {
         Exit::Pass
     }

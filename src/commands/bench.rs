@@ -1,6 +1,7 @@
 //! `rastercheck bench`: every method timed on the same seeded workloads and
 //! scored against the reference; writes BENCH.md and bench.svg beside it.
 
+use super::console::outln;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -28,7 +29,7 @@ pub fn bench(args: BenchArgs) -> Exit {
         return Exit::BadInput;
     }
     let report = bench::run(bench::Options { quick }, &mut |line| {
-        println!("bench: {line}")
+        outln!("bench: {line}")
     });
     let svg = out.with_file_name("bench.svg");
     let written = std::fs::write(&out, report.to_markdown("bench.svg"))
@@ -38,7 +39,7 @@ pub fn bench(args: BenchArgs) -> Exit {
         return Exit::BadInput;
     }
     for w in &report.workloads {
-        println!("{}", w.name);
+        outln!("{}", w.name);
         for m in &w.methods {
             let time = m.per_item.map_or("—".to_owned(), |d| {
                 format!("{:.3} µs", d.as_secs_f64() * 1e6)
@@ -49,7 +50,7 @@ pub fn bench(args: BenchArgs) -> Exit {
             let heap = m
                 .peak_heap
                 .map_or("—".to_owned(), bench::memory::bytes_text);
-            println!(
+            outln!(
                 "  {:<12} {time:>14} per item, error {error}, peak heap {heap}",
                 m.method
             );
@@ -61,8 +62,8 @@ pub fn bench(args: BenchArgs) -> Exit {
             Some(false) => "NOT met",
             None => "not measured",
         };
-        println!("target: {}: {} ({status})", t.target, t.measured);
+        outln!("target: {}: {} ({status})", t.target, t.measured);
     }
-    println!("wrote {} and {}", out.display(), svg.display());
+    outln!("wrote {} and {}", out.display(), svg.display());
     Exit::Pass
 }

@@ -1,6 +1,7 @@
 //! `rastercheck bless`: the oracle draws every case and its golden file
 //! (`reference/<case id>.exr`) is written anew. CI never blesses.
 
+use super::console::outln;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -51,7 +52,7 @@ pub fn bless(args: BlessArgs) -> Exit {
             }
         }
     }
-    println!("blessed {written} golden files under reference/");
+    outln!("blessed {written} golden files under reference/");
     if bad_input {
         Exit::BadInput
     } else {

@@ -2,11 +2,54 @@
 //! (coloured on a terminal), and a progress bar on a terminal once a run
 //! has lasted a second.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::harness::runner::{CaseOutcome, Problem};
 use crate::harness::suite::{self, GoldenStatus, Verdict};
 use crate::rasterizer::Rasterizer;
+
+/// Set once stdout could not be written (a reader that closed the pipe,
+/// as `rastercheck run | head` does): nothing more is printed, and the
+/// command goes on to its reports and its exit code.
+static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
+
+/// Writes `text` to stdout, unless stdout has been closed. A broken pipe
+/// ends printing quietly (no panic, no message); another error says so once
+/// on stderr. Every command prints through this ([`out!`], [`outln!`]),
+/// never through `println!`, which panics on a broken pipe.
+pub(crate) fn write_stdout(text: std::fmt::Arguments) {
+    if STDOUT_CLOSED.load(Ordering::Relaxed) {
+        return;
+    }
+    let mut stdout = std::io::stdout().lock();
+    let written = stdout.write_fmt(text).and_then(|()| stdout.flush());
+    if let Err(e) = written {
+        STDOUT_CLOSED.store(true, Ordering::Relaxed);
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            let _ = writeln!(std::io::stderr(), "note: stdout: {e}; printing stops here");
+        }
+    }
+}
+
+/// `print!` that survives a closed stdout ([`write_stdout`]).
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::commands::console::write_stdout(format_args!($($arg)*))
+    };
+}
+
+/// `println!` that survives a closed stdout ([`write_stdout`]).
+macro_rules! outln {
+    () => {
+        $crate::commands::console::write_stdout(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::commands::console::write_stdout(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+pub(crate) use {out, outln};
 
 /// One line per candidate (failures only with `quiet`), with reasons.
 pub(crate) fn print_outcome(
@@ -19,21 +62,21 @@ pub(crate) fn print_outcome(
     let id = &outcome.file.id;
     match &outcome.problem {
         Some(Problem::Unreadable(e)) => {
-            return println!("{} {id:width$}  {e}", paint("BAD  ", RED, colour))
+            return outln!("{} {id:width$}  {e}", paint("BAD  ", RED, colour))
         }
         Some(Problem::ReferenceFailed(e)) => {
-            return println!(
+            return outln!(
                 "{} {id:width$}  the reference failed on this case: {e}",
                 paint("ERROR", RED, colour)
             )
         }
         Some(Problem::LimitExceeded(e)) => {
-            return println!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
+            return outln!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
         }
         None => {}
     }
     if let Some(GoldenStatus::Differs(why)) = &outcome.golden {
-        println!(
+        outln!(
             "{} {id:width$}  the reference no longer reproduces its golden file: {why}",
             paint("GOLDEN", RED, colour)
         );
@@ -49,7 +92,7 @@ pub(crate) fn print_outcome(
         if quiet && matches!(result.verdict, Verdict::Pass) {
             continue;
         }
-        println!(
+        outln!(
             "{} {id:width$}  {}  {}",
             paint(&format!("{label:5}"), tint, colour),
             result.rasterizer,
@@ -57,7 +100,7 @@ pub(crate) fn print_outcome(
         );
         if let Verdict::Fail(reasons) = &result.verdict {
             for reason in reasons {
-                println!("        {reason}");
+                outln!("        {reason}");
             }
         }
     }

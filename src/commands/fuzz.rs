@@ -1,6 +1,7 @@
 //! `rastercheck fuzz`: search random and adversarial scenes for a failure
 //! of one rasterizer, shrink it, and write it as a case file.
 
+use super::console::outln;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -82,7 +83,7 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
     if let Some(c) = &args.check {
         command += &format!(" --check {c}");
     }
-    println!(
+    outln!(
         "fuzz: {} on {} cases{}, seed {seed} (--seed {seed} repeats this run)",
         candidate.name(),
         args.cases,
@@ -99,14 +100,14 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
         out: args.out,
         command,
     };
-    let summary = match fuzz::search(candidate.as_ref(), &options, &mut |line| println!("{line}")) {
+    let summary = match fuzz::search(candidate.as_ref(), &options, &mut |line| outln!("{line}")) {
         Ok(summary) => summary,
         Err(e) => {
             eprintln!("error: {e}");
             return Exit::BadInput;
         }
     };
-    println!(
+    outln!(
         "fuzz: {} cases, {} passed, {} failed and shrunk, {} unsupported{} (seed {seed})",
         summary.cases,
         summary.passed,
@@ -118,9 +119,15 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
             String::new()
         }
     );
-    if summary.found.is_empty() {
-        Exit::Pass
-    } else {
+    if !summary.found.is_empty() {
         Exit::Fail
+    } else if summary.cases > 0 && summary.unsupported == summary.cases {
+        eprintln!(
+            "error: nothing was judged: {} unsupported every scene tried",
+            candidate.name()
+        );
+        Exit::NothingJudged
+    } else {
+        Exit::Pass
     }
 }

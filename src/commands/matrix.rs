@@ -2,6 +2,7 @@
 //! a conformance matrix with findings (rows: rasterizers, columns: case
 //! families), and optionally written into a README between its markers.
 
+use super::console::{out, outln};
 use std::path::PathBuf;
 
 use clap::Args;
@@ -21,8 +22,9 @@ pub struct MatrixArgs {
     /// `<!-- matrix:end -->` in this file with the matrix.
     #[arg(long, value_name = "FILE")]
     pub write_readme: Option<PathBuf>,
-    /// Worker threads (default: one per core). Results do not depend on it.
-    #[arg(long)]
+    /// Worker threads, at most 256 (default, or 0: one per core).
+    /// Results do not depend on it.
+    #[arg(long, value_parser = super::threads)]
     pub threads: Option<usize>,
     #[command(flatten)]
     pub limits: LimitArgs,
@@ -40,13 +42,22 @@ pub fn matrix(args: MatrixArgs) -> Exit {
         eprintln!("error: {}", unknown_rasterizer(name));
         return Exit::BadInput;
     }
+    for name in &names {
+        if let Err(exit) = super::environment_for(name) {
+            return exit;
+        }
+    }
     let (found, bad_input) = discover(args.paths);
     if found.cases.is_empty() {
-        eprintln!("error: no case files found");
-        return Exit::BadInput;
+        if bad_input {
+            eprintln!("error: no case files found");
+            return Exit::BadInput;
+        }
+        eprintln!("error: no case files found; nothing was judged");
+        return Exit::NothingJudged;
     }
     let m = matrix::build(&found.cases, &args.limits.limits(), &names, args.threads);
-    print!("{}", m.to_markdown());
+    out!("{}", m.to_markdown());
     if m.unreadable > 0 {
         eprintln!(
             "error: {} case files could not be read (run `rastercheck run` to see why)",
@@ -59,15 +70,24 @@ pub fn matrix(args: MatrixArgs) -> Exit {
             .and_then(|text| matrix::replace_block(&text, &m.readme_block(&matrix::today())))
             .and_then(|text| std::fs::write(file, text).map_err(|e| e.to_string()));
         match written {
-            Ok(()) => println!("\nwrote the matrix into {}", file.display()),
+            Ok(()) => outln!("\nwrote the matrix into {}", file.display()),
             Err(e) => {
                 eprintln!("error: {}: {e}", file.display());
                 return Exit::BadInput;
             }
         }
     }
+    // Judged: some cell drew a case and got a verdict other than unsupported.
+    let judged = m
+        .rows
+        .iter()
+        .flat_map(|r| &r.cells)
+        .any(|c| c.pass + c.fail + c.departures + c.error > 0);
     if bad_input || m.unreadable > 0 {
         Exit::BadInput
+    } else if !judged {
+        eprintln!("error: nothing was judged: every case is unsupported by every rasterizer");
+        Exit::NothingJudged
     } else {
         Exit::Pass
     }

@@ -6,6 +6,7 @@
 //! Each command reads cases (harness), runs rasterizers, and writes what the
 //! user sees: console lines here, files through [`crate::report`].
 
+use console::outln;
 use std::path::PathBuf;
 
 use crate::harness::suite;
@@ -33,6 +34,9 @@ pub enum Exit {
     Fail,
     /// 2: bad input or bad usage, or a case over a resource limit.
     BadInput,
+    /// 3: nothing was judged: every selected case unsupported by every
+    /// candidate, or a selection that matched no case.
+    NothingJudged,
 }
 
 impl Exit {
@@ -42,8 +46,29 @@ impl Exit {
             Exit::Pass => 0,
             Exit::Fail => 1,
             Exit::BadInput => 2,
+            Exit::NothingJudged => 3,
         }
     }
+}
+
+/// The most worker threads `--threads` accepts (README: "Exit codes").
+pub const MAX_THREADS: usize = 256;
+
+/// A `--threads` value: 0 (one per core) to [`MAX_THREADS`]. More threads
+/// than that only cost memory and time (16 000 took minutes).
+pub(crate) fn threads(text: &str) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(n) if n <= MAX_THREADS => Ok(n),
+        _ => Err(format!(
+            "expected a number of threads from 0 (one per core) to {MAX_THREADS}, got {:?}",
+            shorten(text)
+        )),
+    }
+}
+
+/// `text` cut to about 80 characters, for echoing in a message.
+pub(crate) fn shorten(text: &str) -> String {
+    crate::adapters::external::shorten(text)
 }
 
 /// The case paths given, or `cases` when none is.
@@ -60,7 +85,7 @@ pub(crate) fn default_paths(paths: Vec<PathBuf>) -> Vec<PathBuf> {
 pub(crate) fn discover(paths: Vec<PathBuf>) -> (suite::Discovery, bool) {
     let found = suite::discover(&default_paths(paths));
     for dir in &found.skipped {
-        println!(
+        outln!(
             "note: skipping {} (negative tests; name it explicitly to check it)",
             dir.display()
         );
@@ -80,10 +105,25 @@ pub(crate) fn unknown_rasterizer(name: &str) -> String {
     )
 }
 
-/// The named rasterizer; `Err` (already printed) when there is none.
+/// The named rasterizer; `Err` (already printed) when there is none, or
+/// when the environment it reads is malformed.
 pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> {
-    suite::rasterizer(name).ok_or_else(|| {
+    let found = suite::rasterizer(name).ok_or_else(|| {
         eprintln!("error: {}", unknown_rasterizer(name));
+        Exit::BadInput
+    })?;
+    environment_for(name)?;
+    Ok(found)
+}
+
+/// Bad usage in the environment a rasterizer reads (an external program's
+/// `RASTERCHECK_EXTERNAL_TIMEOUT`): `Err` (already printed) when malformed.
+pub(crate) fn environment_for(name: &str) -> Result<(), Exit> {
+    if !name.trim_start().starts_with("external") {
+        return Ok(());
+    }
+    crate::adapters::external::check_environment().map_err(|e| {
+        eprintln!("error: {e}");
         Exit::BadInput
     })
 }
@@ -96,7 +136,7 @@ pub(crate) fn rasterizers_named(names: &[String]) -> Result<Vec<Box<dyn Rasteriz
 /// `rastercheck rasterizers`: the names `--rasterizer` accepts.
 pub fn list_rasterizers() -> Exit {
     for name in suite::rasterizer_names() {
-        println!("{name}");
+        outln!("{name}");
     }
     Exit::Pass
 }

@@ -1,6 +1,7 @@
 //! `rastercheck probe`: find a rasterizer's conventions from its frames and
 //! write them as a profile for `run --profile`.
 
+use super::console::{out, outln};
 use std::path::PathBuf;
 
 use clap::Args;
@@ -29,18 +30,20 @@ pub fn probe(args: ProbeArgs) -> Exit {
     };
     let profile = match crate::explore::probe::probe(candidate.as_ref()) {
         Ok(p) => p,
+        // It could draw none of the probe scenes (a program that cannot
+        // start, say): bad input, with the reason.
         Err(e) => {
             eprintln!("error: {e}");
-            return Exit::Fail;
+            return Exit::BadInput;
         }
     };
-    print!("{}", profile.describe());
+    out!("{}", profile.describe());
     if let Some(file) = out {
         if let Err(e) = std::fs::write(&file, profile.to_json()) {
             eprintln!("error: {}: {e}", file.display());
             return Exit::BadInput;
         }
-        println!("wrote {}", file.display());
+        outln!("wrote {}", file.display());
     }
     Exit::Pass
 }

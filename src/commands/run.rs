@@ -2,6 +2,7 @@
 //! each outcome printed as it is judged (console), totals printed, and the
 //! report folder written (report).
 
+use super::console::outln;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
@@ -39,8 +40,9 @@ pub struct RunArgs {
     /// Run the i-th of n shards (1-based): every n-th selected case.
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
-    /// Worker threads (default: one per core). Results do not depend on it.
-    #[arg(long)]
+    /// Worker threads, at most 256 (default, or 0: one per core).
+    /// Results do not depend on it.
+    #[arg(long, value_parser = super::threads)]
     pub threads: Option<usize>,
     /// A profile written by `probe`: its rasterizer is judged under the
     /// fill rule it declares instead of each case's (only the fill rule
@@ -64,7 +66,7 @@ pub fn run(args: RunArgs) -> Exit {
         }
     };
     for d in &declared {
-        println!("{}", d.note());
+        outln!("{}", d.note());
     }
     let mut candidates = match rasterizers_named(&names) {
         Ok(candidates) => candidates,
@@ -91,14 +93,25 @@ pub fn run(args: RunArgs) -> Exit {
     let files = selection.apply(found.cases);
     if files.is_empty() {
         eprintln!(
-            "error: no case files found{}",
+            "error: no case files found{}{}",
             if selection == Selection::default() {
                 ""
             } else {
                 " that match the selection"
+            },
+            if bad_input {
+                ""
+            } else {
+                "; nothing was judged"
             }
         );
-        return Exit::BadInput;
+        // A path that does not exist is bad input; a selection (or a
+        // folder) with no case in it judged nothing.
+        return if bad_input {
+            Exit::BadInput
+        } else {
+            Exit::NothingJudged
+        };
     }
     let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
     let mut report = Report::new(
@@ -155,8 +168,8 @@ pub fn run(args: RunArgs) -> Exit {
     let failed = t.reference_failed > 0
         || t.golden.differing > 0
         || t.verdicts.iter().any(|v| v.tally.fail + v.tally.error > 0);
-    println!();
-    println!(
+    outln!();
+    outln!(
         "{} case files, {} unreadable{}",
         t.cases,
         t.unreadable,
@@ -169,19 +182,23 @@ pub fn run(args: RunArgs) -> Exit {
     for (candidate, v) in candidates.iter().zip(&t.verdicts) {
         let x = &v.tally;
         if candidate.is_foil() {
-            println!(
+            outln!(
                 "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors",
                 v.rasterizer, x.pass, x.foil, x.unsupported, x.error
             );
         } else {
-            println!(
+            outln!(
                 "{}: {} passed, {} failed, {} unsupported, {} errors",
-                v.rasterizer, x.pass, x.fail, x.unsupported, x.error
+                v.rasterizer,
+                x.pass,
+                x.fail,
+                x.unsupported,
+                x.error
             );
         }
     }
     let g = &t.golden;
-    println!(
+    outln!(
         "golden files: {} match, {} differ, {} missing{}",
         g.matching,
         g.differing,
@@ -194,17 +211,32 @@ pub fn run(args: RunArgs) -> Exit {
     );
     if let Some(dir) = &args.report {
         match report::write_all(dir, &mut report, &outcomes) {
-            Ok(written) => println!("report: {} ({} files)", dir.display(), written.len()),
+            Ok(written) => outln!("report: {} ({} files)", dir.display(), written.len()),
             Err(e) => {
                 eprintln!("error: writing the report: {e}");
                 return Exit::BadInput;
             }
         }
     }
+    // Judged: a verdict other than unsupported, from some candidate.
+    let judged = t
+        .verdicts
+        .iter()
+        .any(|v| v.tally.pass + v.tally.fail + v.tally.foil + v.tally.error > 0);
     if bad_input {
         Exit::BadInput
     } else if failed {
         Exit::Fail
+    } else if !judged {
+        eprintln!(
+            "error: nothing was judged: every selected case is unsupported by every rasterizer ({})",
+            t.verdicts
+                .iter()
+                .map(|v| v.rasterizer.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        Exit::NothingJudged
     } else {
         Exit::Pass
     }

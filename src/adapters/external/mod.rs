@@ -250,16 +250,42 @@ impl Drop for External {
     }
 }
 
+/// Checks the environment external programs read (`TIMEOUT_ENV`): a
+/// malformed value is bad usage, said before any case runs.
+pub fn check_environment() -> Result<(), String> {
+    timeout_from_env().map(|_| ())
+}
+
+/// `text` cut to about 80 characters (with `…` and the full length when
+/// cut), for echoing a value in a message.
+pub fn shorten(text: &str) -> String {
+    const MAX: usize = 80;
+    if text.chars().count() <= MAX {
+        return text.to_owned();
+    }
+    let head: String = text.chars().take(MAX).collect();
+    format!("{head}… ({} bytes)", text.len())
+}
+
 fn timeout_from_env() -> Result<Duration, String> {
     match std::env::var(TIMEOUT_ENV) {
-        Err(_) => Ok(DEFAULT_TIMEOUT),
+        Err(std::env::VarError::NotPresent) => Ok(DEFAULT_TIMEOUT),
+        Err(std::env::VarError::NotUnicode(text)) => Err(format!(
+            "{TIMEOUT_ENV}={:?} is not a positive number of seconds",
+            shorten(&text.to_string_lossy())
+        )),
         Ok(text) => text
             .trim()
             .parse::<f64>()
             .ok()
             .filter(|s| s.is_finite() && *s > 0.0 && *s < 1e9)
             .map(Duration::from_secs_f64)
-            .ok_or_else(|| format!("{TIMEOUT_ENV}={text:?} is not a positive number of seconds")),
+            .ok_or_else(|| {
+                format!(
+                    "{TIMEOUT_ENV}={:?} is not a positive number of seconds",
+                    shorten(&text)
+                )
+            }),
     }
 }
 
