@@ -28,7 +28,11 @@ pub(crate) fn print_outcome(
             )
         }
         Some(Problem::LimitExceeded(e)) => {
-            return println!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
+            println!("{} {id:width$}  {e}", paint("LIMIT", RED, colour));
+            // A candidate over the limit: the others' verdicts follow.
+            if outcome.candidates.is_empty() {
+                return;
+            }
         }
         None => {}
     }
