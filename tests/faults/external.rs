@@ -135,7 +135,10 @@ fn judged(dir: &Path, out: &Output, code: i32, bad: &[(&str, &str, &str)]) -> Va
     for (id, expected, reason) in bad {
         let (got, reasons) = verdict(&report, id);
         assert_eq!(&got, expected, "{id}: {reasons}\n{t}");
-        assert!(reasons.contains(reason), "{id}: {reasons:?} lacks {reason:?}");
+        assert!(
+            reasons.contains(reason),
+            "{id}: {reasons:?} lacks {reason:?}"
+        );
     }
     report
 }
@@ -217,11 +220,19 @@ fn a_program_flooding_stdout_is_an_error_at_the_output_limit() {
 fn a_bad_output_limit_is_an_error_naming_the_variable() {
     let (dir, log) = cases("flood-bad-limit", &[]);
     let r = rasterizer("external_flood.py", &log, false);
-    let out = run(&dir, &r, &[], &[("RASTERCHECK_EXTERNAL_MAX_OUTPUT", "lots")]);
+    let out = run(
+        &dir,
+        &r,
+        &[],
+        &[("RASTERCHECK_EXTERNAL_MAX_OUTPUT", "lots")],
+    );
     let t = text(&out);
     assert!(!t.contains("panicked"), "{t}");
     assert_ne!(out.status.code(), Some(0), "{t}");
-    assert!(t.contains("RASTERCHECK_EXTERNAL_MAX_OUTPUT=\"lots\""), "{t}");
+    assert!(
+        t.contains("RASTERCHECK_EXTERNAL_MAX_OUTPUT=\"lots\""),
+        "{t}"
+    );
 }
 
 #[test]
@@ -245,7 +256,11 @@ fn an_exr_answer_with_a_huge_header_is_refused_before_decoding() {
             &dir,
             &out,
             1,
-            &[("bad", "error", "32768×32768 by its header; the canvas is 4×4")],
+            &[(
+                "bad",
+                "error",
+                "32768×32768 by its header; the canvas is 4×4",
+            )],
         );
         assert_no_group_left(&log);
     }
@@ -289,7 +304,10 @@ fn a_grandchild_is_killed_with_its_program_group() {
             &dir,
             &out,
             1,
-            &[("bad", "pass", ""), ("bad_hang", "error", "timed out after 3 s")],
+            &[
+                ("bad", "pass", ""),
+                ("bad_hang", "error", "timed out after 3 s"),
+            ],
         );
         assert_eq!(logged(&log, "grandchild ").len(), 2, "{}", text(&out));
         assert_no_group_left(&log);
@@ -338,7 +356,8 @@ fn no_thread_or_file_descriptor_leaks_per_case() {
             .lines()
             .filter_map(|l| {
                 let f: Vec<&str> = l.split_whitespace().collect();
-                (f.first() == Some(&"count")).then(|| (f[2].parse().unwrap(), f[3].parse().unwrap()))
+                (f.first() == Some(&"count"))
+                    .then(|| (f[2].parse().unwrap(), f[3].parse().unwrap()))
             })
             .collect();
         assert_eq!(counts.len(), count + 2, "{t}");

@@ -644,9 +644,7 @@ struct TailState {
 
 impl StderrTail {
     /// Starts the thread that reads it, returned to be joined.
-    fn collect(
-        stderr: Option<std::process::ChildStderr>,
-    ) -> (StderrTail, Option<JoinHandle<()>>) {
+    fn collect(stderr: Option<std::process::ChildStderr>) -> (StderrTail, Option<JoinHandle<()>>) {
         let tail = StderrTail(Arc::new((Mutex::new(TailState::default()), Condvar::new())));
         let Some(mut stderr) = stderr else {
             tail.0 .0.lock().unwrap().closed = true;
