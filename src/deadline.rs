@@ -67,6 +67,15 @@ pub fn within<T>(limit: Option<Duration>, work: impl FnOnce() -> T) -> Result<T,
     }
 }
 
+/// The time left before this thread's deadline (zero once it has passed),
+/// or `None` without one: for work that waits rather than polls (an
+/// external program), so that it stops waiting at the deadline.
+pub fn remaining() -> Option<Duration> {
+    DEADLINE
+        .with(Cell::get)
+        .map(|(deadline, _)| deadline.saturating_duration_since(Instant::now()))
+}
+
 /// Unwinds with [`Exceeded`] when this thread's deadline has passed.
 #[inline]
 pub fn check() {

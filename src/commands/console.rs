@@ -71,7 +71,11 @@ pub(crate) fn print_outcome(
             )
         }
         Some(Problem::LimitExceeded(e)) => {
-            return outln!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
+            outln!("{} {id:width$}  {e}", paint("LIMIT", RED, colour));
+            // A candidate over the limit: the others' verdicts follow.
+            if outcome.candidates.is_empty() {
+                return;
+            }
         }
         None => {}
     }

@@ -207,8 +207,57 @@ pub fn write(frame: &Frame, path: &Path) -> Result<(), String> {
 /// A golden file's size and its named f32 channels.
 pub type Channels = ((usize, usize), Vec<(String, Vec<f32>)>);
 
-/// Reads every f32 channel of a golden file, with the image size.
-pub fn read(path: &Path) -> Result<Channels, String> {
+/// The size of each layer of an EXR file, from its header alone, before
+/// anything is decoded. Anything but a regular file (after symbolic links:
+/// a FIFO, a device, a folder) is refused without being opened, so that
+/// reading it can neither hang nor take unbounded memory.
+pub(crate) fn layer_sizes(path: &Path) -> Result<Vec<(usize, usize)>, String> {
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "{}: not a regular file (a FIFO, device or folder is not read)",
+            path.display()
+        ));
+    }
+    let data = ::exr::meta::MetaData::read_from_file(path, false)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(data
+        .headers
+        .iter()
+        .map(|h| (h.layer_size.width(), h.layer_size.height()))
+        .collect())
+}
+
+/// Refuses a file with a layer of more than `max_pixels` pixels, from its
+/// header, before decoding it.
+fn check_size(path: &Path, max_pixels: usize, what: &str) -> Result<(), String> {
+    for (w, h) in layer_sizes(path)? {
+        if w.saturating_mul(h) > max_pixels {
+            return Err(format!(
+                "{}: its header says a layer of {w}×{h} pixels, more than {what} \
+                 ({max_pixels} pixels); not decoded",
+                path.display()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Reads every f32 channel of an EXR file of one layer of `size` pixels (an
+/// external rasterizer's answer), with the image size. Another size in its
+/// header is refused before anything is decoded.
+pub fn read(path: &Path, size: (usize, usize)) -> Result<Channels, String> {
+    if let Some(&(w, h)) = layer_sizes(path)?.first() {
+        if (w, h) != size {
+            return Err(format!(
+                "{}: the image is {w}×{h} by its header; the canvas is {}×{}",
+                path.display(),
+                size.0,
+                size.1
+            ));
+        }
+    }
+    check_size(path, size.0.saturating_mul(size.1), "the canvas")?;
     let image =
         read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let layer = image
@@ -226,8 +275,11 @@ pub fn read(path: &Path) -> Result<Channels, String> {
 }
 
 /// Every layer of a golden file with its size and channels (f32 values;
-/// u32 words as stored).
-pub(crate) fn read_layers(path: &Path) -> Result<Vec<LayerData>, String> {
+/// u32 words as stored). A file with a layer of more than `max_pixels`
+/// pixels (the largest layer of the frame it is compared with) is refused
+/// from its header, before anything is decoded.
+pub(crate) fn read_layers(path: &Path, max_pixels: usize) -> Result<Vec<LayerData>, String> {
+    check_size(path, max_pixels, "any layer of this case")?;
     let image =
         read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(image

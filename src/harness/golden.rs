@@ -24,10 +24,16 @@ pub fn path_for(root: &Path, case_id: &str) -> PathBuf {
 /// `Ok` when every channel of every layer matches to the bit; otherwise
 /// what differs.
 pub fn check(frame: &Frame, path: &Path) -> Result<(), String> {
-    let mut stored = read_layers(path)?;
+    let expected = layers(frame);
+    let largest = expected
+        .iter()
+        .map(|l| l.size.0 * l.size.1)
+        .max()
+        .unwrap_or(0);
+    let mut stored = read_layers(path, largest)?;
     let mut problems = Vec::new();
     let samples = frame.samples.max(1) as usize;
-    for layer in layers(frame) {
+    for layer in expected {
         let Some(at) = stored.iter().position(|l| l.name == layer.name) else {
             problems.push(format!(
                 "layer {} is missing from the golden file",
@@ -178,7 +184,7 @@ mod tests {
         let plain = Frame::new(3, 2, false, 0);
         write(&plain, &path).unwrap();
         assert_eq!(check(&plain, &path), Ok(()));
-        assert_eq!(read(&path).unwrap().0, (3, 2));
+        assert_eq!(read(&path, (3, 2)).unwrap().0, (3, 2));
         let err = check(&frame, &path).unwrap_err();
         assert!(err.contains("layer resolved is missing"), "{err}");
         std::fs::remove_dir_all(&dir).ok();
@@ -191,7 +197,7 @@ mod tests {
         let frame = Frame::time_only(4, 3, (0..12).map(|p| p as f64 / 7.0).collect());
         write(&frame, &path).unwrap();
         assert_eq!(check(&frame, &path), Ok(()));
-        let layers = read_layers(&path).unwrap();
+        let layers = read_layers(&path, usize::MAX).unwrap();
         assert_eq!(layers.len(), 1);
         assert_eq!((layers[0].name.as_str(), layers[0].size), ("time", (4, 3)));
         let mut names: Vec<&str> = layers[0].channels.iter().map(|(n, _)| n.as_str()).collect();

@@ -179,6 +179,9 @@ pub fn run_case(
         }
     };
     outcome.golden = Some(suite::check_golden(root, &file.id, &reference.frame));
+    // A candidate over the time limit: the case is over a limit of the run
+    // (exit 2), as when the reference is; the others keep their verdicts.
+    let mut over = Vec::new();
     outcome.candidates = candidates
         .iter()
         .map(|c| {
@@ -187,6 +190,7 @@ pub fn run_case(
                 suite::run_candidate(&scene, &reference, c.as_ref())
             })
             .unwrap_or_else(|exceeded| {
+                over.push(format!("{}: {} {exceeded}", file.path.display(), c.name()));
                 CandidateRun::without_frame(
                     c.name().to_owned(),
                     Verdict::Error(exceeded.to_string()),
@@ -195,6 +199,9 @@ pub fn run_case(
             })
         })
         .collect();
+    if !over.is_empty() {
+        outcome.problem = Some(Problem::LimitExceeded(over.join("; ")));
+    }
     outcome.reference = Some(reference);
     outcome.scene = Some(scene);
     outcome

@@ -10,10 +10,19 @@
 //!   driver is initialised once per run. `{"bye": true}` ends it.
 //!
 //! A program that crashes, hangs (past `RASTERCHECK_EXTERNAL_TIMEOUT`
-//! seconds, 30 by default), prints something that is not a response, or
+//! seconds, 30 by default, or past the case's `--case-timeout` deadline
+//! when that comes first), prints something that is not a response or more
+//! than `RASTERCHECK_EXTERNAL_MAX_OUTPUT` bytes (256 MiB by default), or
 //! cannot be started is a [`RasterError::Failed`] for that case, with the
-//! tail of its stderr; the run goes on. Every process started here is
-//! waited for: killed first when it overstays, never left as a zombie.
+//! tail of its stderr (the last 64 KiB are kept, the rest is read and
+//! dropped); the run goes on.
+//!
+//! Every program runs in a process group of its own. The whole group is
+//! killed when the program overstays, when a one-shot case is done, and when
+//! a persistent process is retired or the adapter is dropped at the end of
+//! the run, so nothing it started outlives its case (or the run), and the
+//! threads that feed and read its pipes end with it. Every process started
+//! here is waited for: never left running or as a zombie.
 //!
 //! This file holds the processes: starting them, feeding them, timing
 //! them out and reaping them. `protocol.rs` holds the messages: the
@@ -22,14 +31,16 @@
 mod protocol;
 
 use std::io::{BufRead, BufReader, Read, Write};
+use std::os::unix::process::CommandExt;
 use std::process::{Child, ChildStdin, Command, ExitStatus, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Condvar, Mutex};
-use std::thread;
+use std::thread::{self, JoinHandle};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
+use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
@@ -46,6 +57,13 @@ pub const TIMEOUT_ENV: &str = "RASTERCHECK_EXTERNAL_TIMEOUT";
 
 /// The per-case time limit when the environment does not set one.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(30);
+
+/// The environment variable that sets how many bytes a program may write to
+/// stdout for one case (one-shot) or in one line (persistent).
+pub const MAX_OUTPUT_ENV: &str = "RASTERCHECK_EXTERNAL_MAX_OUTPUT";
+
+/// The output limit when the environment does not set one: 256 MiB.
+pub const DEFAULT_MAX_OUTPUT: u64 = 256 << 20;
 
 /// How long a persistent process may take to exit after `{"bye": true}`.
 const BYE_GRACE: Duration = Duration::from_secs(2);
@@ -86,6 +104,9 @@ pub struct External {
     args: Vec<String>,
     /// The per-case time limit, or why the environment's value is refused.
     timeout: Result<Duration, String>,
+    /// The most bytes read from stdout per response, or why the
+    /// environment's value is refused.
+    max_output: Result<u64, String>,
     /// Idle processes of a persistent adapter; `None` in one-shot mode.
     pool: Option<Mutex<Vec<Worker>>>,
 }
@@ -99,6 +120,7 @@ impl External {
             program,
             args,
             timeout: timeout_from_env(),
+            max_output: max_output_from_env(),
             pool: persistent.then(|| Mutex::new(Vec::new())),
         }
     }
@@ -110,13 +132,22 @@ impl External {
         self
     }
 
+    /// The same adapter with another output limit in bytes (the
+    /// environment's `RASTERCHECK_EXTERNAL_MAX_OUTPUT` is the default).
+    pub fn with_max_output(mut self, bytes: u64) -> External {
+        self.max_output = Ok(bytes);
+        self
+    }
+
     fn command(&self) -> Command {
         let mut command = Command::new(&self.program);
         command
             .args(&self.args)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::piped());
+            .stderr(Stdio::piped())
+            // A group of its own, so that what it starts can be killed with it.
+            .process_group(0);
         command
     }
 
@@ -127,43 +158,69 @@ impl External {
     }
 
     /// One process for this case: request on stdin, response on stdout.
-    fn one_shot(&self, request: Vec<u8>, timeout: Duration) -> Result<Value, RasterError> {
+    /// Whatever happens, its whole process group is killed before this
+    /// returns, and the threads that fed and read it are joined.
+    fn one_shot(
+        &self,
+        request: Vec<u8>,
+        timeout: Duration,
+        max_output: u64,
+    ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
         let mut child = self.start()?;
-        let stderr = StderrTail::collect(child.stderr.take());
+        let (stderr, stderr_thread) = StderrTail::collect(child.stderr.take());
         let mut stdin = child.stdin.take().expect("stdin is piped");
         // Written from a thread: a program may print before reading it all.
-        thread::spawn(move || {
+        let writer = thread::spawn(move || {
             let _ = stdin.write_all(&request);
         });
-        let mut stdout = child.stdout.take().expect("stdout is piped");
+        let stdout = child.stdout.take().expect("stdout is piped");
         let (send, output) = mpsc::channel();
-        thread::spawn(move || {
-            let mut bytes = Vec::new();
-            let _ = send.send(stdout.read_to_end(&mut bytes).map(|_| bytes));
+        let reader = thread::spawn(move || {
+            let _ = send.send(read_bounded(stdout, max_output));
         });
-        let status = wait_until(&mut child, deadline);
-        let Some(status) = status else {
-            kill(&mut child);
-            return Err(failed(
-                format!("timed out after {}", seconds(timeout)),
-                &stderr,
-                0,
-            ));
+        let mut threads = vec![writer, reader];
+        threads.extend(stderr_thread);
+        // Waits for the exit, the deadline, or output over the limit.
+        let mut got = None;
+        let status = wait_until_or(&mut child, deadline, || {
+            if got.is_none() {
+                got = output.try_recv().ok();
+            }
+            matches!(got, Some(Err(Output::TooLong)))
+        });
+        let too_long = || {
+            format!(
+                "wrote more than {max_output} bytes to stdout (the limit is \
+                 {MAX_OUTPUT_ENV}, in bytes)"
+            )
         };
-        if !status.success() {
-            return Err(failed(exit_description(status), &stderr, 0));
-        }
-        match output.recv_timeout(PIPE_GRACE) {
-            Ok(Ok(bytes)) => parse_response(&bytes).map_err(|why| failed(why, &stderr, 0)),
-            Ok(Err(e)) => Err(failed(format!("reading its output: {e}"), &stderr, 0)),
-            Err(_) => Err(failed(
-                "exited, but its output stayed open (does a process it started hold it?)"
-                    .to_owned(),
-                &stderr,
-                0,
-            )),
-        }
+        let result = match status {
+            None if got.is_some() => Err(format!("{}; it was killed", too_long())),
+            None => Err(format!("timed out after {}", seconds(timeout))),
+            Some(status) if !status.success() => Err(exit_description(status)),
+            Some(_) => Ok(()),
+        };
+        // The case is done: nothing the program started outlives it.
+        kill_group(&mut child);
+        let result = result.and_then(|()| {
+            let got = match got.take() {
+                Some(got) => got,
+                None => output.recv_timeout(PIPE_GRACE).map_err(|_| {
+                    "exited, but its output stayed open (a process it started that left \
+                     its process group holds it)"
+                        .to_owned()
+                })?,
+            };
+            match got {
+                Ok(bytes) => parse_response(&bytes),
+                Err(Output::TooLong) => Err(too_long()),
+                Err(Output::Read(e)) => Err(format!("reading its output: {e}")),
+            }
+        });
+        let result = result.map_err(|why| failed(why, &stderr, 0));
+        join_within(threads, PIPE_GRACE);
+        result
     }
 
     /// A line to a process of the pool, and a line back.
@@ -172,12 +229,13 @@ impl External {
         pool: &Mutex<Vec<Worker>>,
         mut request: Vec<u8>,
         timeout: Duration,
+        max_output: u64,
     ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
         let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
         let mut worker = match idle {
             Some(worker) => worker,
-            None => Worker::start(self.start()?),
+            None => Worker::start(self.start()?, max_output),
         };
         request.push(b'\n');
         let mark = worker.stderr.written();
@@ -186,7 +244,16 @@ impl External {
             Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
             Err(Exchange::TimedOut) => Err((format!("timed out after {}", seconds(timeout)), true)),
             Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
-            Err(Exchange::Broken(e)) => Err((format!("reading its output: {e}"), true)),
+            Err(Exchange::Broken(Output::Read(e))) => {
+                Err((format!("reading its output: {e}"), true))
+            }
+            Err(Exchange::Broken(Output::TooLong)) => Err((
+                format!(
+                    "wrote more than {max_output} bytes to stdout in one line (the limit \
+                     is {MAX_OUTPUT_ENV}, in bytes); it was killed"
+                ),
+                true,
+            )),
         };
         match result {
             Ok(value) => {
@@ -222,11 +289,17 @@ impl Rasterizer for External {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let timeout = self.timeout.clone().map_err(RasterError::Failed)?;
+        let mut timeout = self.timeout.clone().map_err(RasterError::Failed)?;
+        let max_output = self.max_output.clone().map_err(RasterError::Failed)?;
+        // The case's deadline (`--case-timeout`) stops the program too; the
+        // runner then judges the case over the limit.
+        if let Some(left) = deadline::remaining() {
+            timeout = timeout.min(left);
+        }
         let request = serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
         let response = match &self.pool {
-            None => self.one_shot(request, timeout)?,
-            Some(pool) => self.persistent(pool, request, timeout)?,
+            None => self.one_shot(request, timeout, max_output)?,
+            Some(pool) => self.persistent(pool, request, timeout, max_output)?,
         };
         frame_from_response(&response, scene, plan)
     }
@@ -245,15 +318,22 @@ impl Drop for External {
             if wait_until(&mut worker.child, deadline).is_none() {
                 kill(&mut worker.child);
             }
+            // What it started goes with it.
+            kill_group(&mut worker.child);
             worker.reaped = true;
+        }
+        for worker in &mut workers {
+            worker.join();
         }
     }
 }
 
-/// Checks the environment external programs read (`TIMEOUT_ENV`): a
+/// Checks the environment external programs read (`TIMEOUT_ENV`,
+/// `MAX_OUTPUT_ENV`): a
 /// malformed value is bad usage, said before any case runs.
 pub fn check_environment() -> Result<(), String> {
-    timeout_from_env().map(|_| ())
+    timeout_from_env()?;
+    max_output_from_env().map(|_| ())
 }
 
 /// `text` cut to about 80 characters (with `…` and the full length when
@@ -289,6 +369,23 @@ fn timeout_from_env() -> Result<Duration, String> {
     }
 }
 
+fn max_output_from_env() -> Result<u64, String> {
+    match std::env::var(MAX_OUTPUT_ENV) {
+        Err(_) => Ok(DEFAULT_MAX_OUTPUT),
+        Ok(text) => text
+            .trim()
+            .parse::<u64>()
+            .ok()
+            .filter(|&n| n > 0)
+            .ok_or_else(|| {
+                format!(
+                    "{MAX_OUTPUT_ENV}={:?} is not a positive number of bytes",
+                    shorten(&text)
+                )
+            }),
+    }
+}
+
 fn seconds(d: Duration) -> String {
     format!("{} s", d.as_secs_f64())
 }
@@ -309,8 +406,21 @@ fn exit_description(status: ExitStatus) -> String {
 
 /// Polls until the child exits or the deadline passes; `None` on timeout.
 fn wait_until(child: &mut Child, deadline: Instant) -> Option<ExitStatus> {
+    wait_until_or(child, deadline, || false)
+}
+
+/// Polls until the child exits, the deadline passes or `stop` says so;
+/// `None` unless it exited.
+fn wait_until_or(
+    child: &mut Child,
+    deadline: Instant,
+    mut stop: impl FnMut() -> bool,
+) -> Option<ExitStatus> {
     let mut pause = Duration::from_micros(200);
     loop {
+        if stop() {
+            return None;
+        }
         match child.try_wait() {
             Ok(Some(status)) => return Some(status),
             Ok(None) => {}
@@ -332,6 +442,65 @@ fn kill(child: &mut Child) {
     let _ = child.wait();
 }
 
+extern "C" {
+    /// POSIX `kill(2)`, from the C library std already links.
+    #[link_name = "kill"]
+    fn posix_kill(pid: i32, signal: i32) -> i32;
+}
+
+const SIGKILL: i32 = 9;
+
+/// Kills every process of the child's group (it leads one of its own:
+/// `process_group(0)`), then the child itself, and reaps it. Called right
+/// after the child exits or instead of waiting for it: its group id stays
+/// taken while any member lives, so the signal reaches only its group.
+fn kill_group(child: &mut Child) {
+    if let Ok(pgid) = i32::try_from(child.id()) {
+        if pgid > 1 {
+            // SAFETY: kill(2) takes plain integers and touches no memory.
+            unsafe {
+                posix_kill(-pgid, SIGKILL);
+            }
+        }
+    }
+    kill(child);
+}
+
+/// Joins the threads that end within `grace` (they end once the pipes they
+/// serve close); a thread still blocked then (a process that left its group
+/// holds its pipe) is left to end by itself.
+fn join_within(threads: Vec<JoinHandle<()>>, grace: Duration) {
+    let deadline = Instant::now() + grace;
+    for thread in threads {
+        while !thread.is_finished() && Instant::now() < deadline {
+            thread::sleep(Duration::from_millis(1));
+        }
+        if thread.is_finished() {
+            let _ = thread.join();
+        }
+    }
+}
+
+/// Why a program's stdout was not read to the end.
+enum Output {
+    /// More bytes than the limit (`RASTERCHECK_EXTERNAL_MAX_OUTPUT`).
+    TooLong,
+    Read(std::io::Error),
+}
+
+/// Reads to the end, or stops after `max` bytes.
+fn read_bounded(stdout: impl Read, max: u64) -> Result<Vec<u8>, Output> {
+    let mut bytes = Vec::new();
+    stdout
+        .take(max.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(Output::Read)?;
+    if bytes.len() as u64 > max {
+        return Err(Output::TooLong);
+    }
+    Ok(bytes)
+}
+
 /// A failure, with what the program said on stderr since byte `mark`.
 fn failed(why: String, stderr: &StderrTail, mark: u64) -> RasterError {
     stderr.wait_closed(PIPE_GRACE.min(Duration::from_millis(200)));
@@ -349,7 +518,7 @@ enum Exchange {
     TimedOut,
     /// The process closed its stdout (it exited, most likely).
     Closed,
-    Broken(std::io::Error),
+    Broken(Output),
 }
 
 /// One process of a persistent adapter.
@@ -358,17 +527,19 @@ struct Worker {
     /// Lines to write to its stdin, by a thread, so that a program that
     /// stops reading cannot block rastercheck past the time limit.
     requests: Option<Sender<Vec<u8>>>,
-    lines: Receiver<std::io::Result<String>>,
+    lines: Receiver<Result<String, Output>>,
     stderr: StderrTail,
+    /// The threads that write its stdin and read its stdout and stderr.
+    threads: Vec<JoinHandle<()>>,
     reaped: bool,
 }
 
 impl Worker {
-    fn start(mut child: Child) -> Worker {
-        let stderr = StderrTail::collect(child.stderr.take());
+    fn start(mut child: Child, max_output: u64) -> Worker {
+        let (stderr, stderr_thread) = StderrTail::collect(child.stderr.take());
         let stdin: ChildStdin = child.stdin.take().expect("stdin is piped");
         let (requests, to_write) = mpsc::channel::<Vec<u8>>();
-        thread::spawn(move || {
+        let writer = thread::spawn(move || {
             let mut stdin = stdin;
             for request in to_write {
                 if stdin
@@ -382,21 +553,32 @@ impl Worker {
         });
         let stdout = child.stdout.take().expect("stdout is piped");
         let (send, lines) = mpsc::channel();
-        thread::spawn(move || {
-            for line in BufReader::new(stdout).lines() {
-                let stop = line.is_err();
+        let reader = thread::spawn(move || {
+            let mut stdout = BufReader::new(stdout);
+            loop {
+                let line = read_line(&mut stdout, max_output);
+                let stop = !matches!(line, Ok(Some(_)));
+                let Some(line) = line.transpose() else { break };
                 if send.send(line).is_err() || stop {
                     break;
                 }
             }
         });
+        let mut threads = vec![writer, reader];
+        threads.extend(stderr_thread);
         Worker {
             child,
             requests: Some(requests),
             lines,
             stderr,
+            threads,
             reaped: false,
         }
+    }
+
+    /// Joins its threads, once its group is gone and its pipes closed.
+    fn join(&mut self) {
+        join_within(std::mem::take(&mut self.threads), PIPE_GRACE);
     }
 
     /// Sends a request line and waits for the next non-blank line.
@@ -431,13 +613,14 @@ impl Worker {
     fn end(&mut self, kill_now: bool) -> Option<ExitStatus> {
         self.requests = None;
         self.reaped = true;
-        if !kill_now {
-            if let Some(status) = wait_until(&mut self.child, Instant::now() + PIPE_GRACE) {
-                return Some(status);
-            }
-        }
-        kill(&mut self.child);
-        None
+        let status = if kill_now {
+            None
+        } else {
+            wait_until(&mut self.child, Instant::now() + PIPE_GRACE)
+        };
+        kill_group(&mut self.child);
+        self.join();
+        status
     }
 }
 
@@ -445,9 +628,35 @@ impl Drop for Worker {
     fn drop(&mut self) {
         if !self.reaped {
             self.requests = None;
-            kill(&mut self.child);
+            kill_group(&mut self.child);
+            self.join();
         }
     }
+}
+
+/// One line of at most `max` bytes (without its line break), or `None` at
+/// the end of the output.
+fn read_line(stdout: &mut impl BufRead, max: u64) -> Result<Option<String>, Output> {
+    let mut bytes = Vec::new();
+    let n = stdout
+        .take(max.saturating_add(2))
+        .read_until(b'\n', &mut bytes)
+        .map_err(Output::Read)?;
+    if n == 0 {
+        return Ok(None);
+    }
+    if bytes.last() == Some(&b'\n') {
+        bytes.pop();
+        if bytes.last() == Some(&b'\r') {
+            bytes.pop();
+        }
+    }
+    if bytes.len() as u64 > max {
+        return Err(Output::TooLong);
+    }
+    String::from_utf8(bytes)
+        .map(Some)
+        .map_err(|e| Output::Read(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
 }
 
 /// The end of a program's stderr, collected by a thread.
@@ -464,14 +673,15 @@ struct TailState {
 }
 
 impl StderrTail {
-    fn collect(stderr: Option<std::process::ChildStderr>) -> StderrTail {
+    /// Starts the thread that reads it, returned to be joined.
+    fn collect(stderr: Option<std::process::ChildStderr>) -> (StderrTail, Option<JoinHandle<()>>) {
         let tail = StderrTail(Arc::new((Mutex::new(TailState::default()), Condvar::new())));
         let Some(mut stderr) = stderr else {
             tail.0 .0.lock().unwrap().closed = true;
-            return tail;
+            return (tail, None);
         };
         let shared = tail.clone();
-        thread::spawn(move || {
+        let thread = thread::spawn(move || {
             let mut buffer = [0u8; 8192];
             loop {
                 let n = stderr.read(&mut buffer).unwrap_or(0);
@@ -490,7 +700,7 @@ impl StderrTail {
                 }
             }
         });
-        tail
+        (tail, Some(thread))
     }
 
     fn written(&self) -> u64 {

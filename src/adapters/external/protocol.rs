@@ -326,8 +326,8 @@ fn sum_coverage(list: &[Value], width: u32, height: u32) -> Result<Frame, String
 /// Reads a frame from an EXR file with the channels of a golden file
 /// (`frame::exr`).
 fn frame_from_exr(path: &Path, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
-    let ((w, h), mut channels) = exr::read(path)?;
     let (width, height) = (scene.canvas.width, scene.canvas.height);
+    let ((w, h), mut channels) = exr::read(path, (width as usize, height as usize))?;
     if (w, h) != (width as usize, height as usize) {
         return Err(format!(
             "{}: the image is {w}×{h}; the canvas is {width}×{height}",
