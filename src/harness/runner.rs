@@ -178,7 +178,12 @@ pub fn run_case(
             return outcome;
         }
     };
-    outcome.golden = Some(suite::check_golden(root, &file.id, &reference.frame));
+    let golden_root = suite::golden_root(&file.path, root);
+    outcome.golden = Some(suite::check_golden(
+        &golden_root,
+        &file.id,
+        &reference.frame,
+    ));
     outcome.candidates = candidates
         .iter()
         .map(|c| {
