@@ -213,3 +213,26 @@ fn the_motion_golden_time_layer_is_what_spec_says() {
     }
     assert!(exact_pixels > 0 && bounded_pixels > 0);
 }
+
+/// A pixel whose certified interval meets two f64s is measured again until
+/// one f64 holds it: from a first pass of 4-bit isolation (which leaves
+/// bounds near 2^-40, far wider than an ulp) the oracle still ends with
+/// every pixel of a rotating triangle rounding once, to the same f64s as
+/// from 60 bits.
+#[test]
+fn the_oracle_refines_a_pixel_until_it_rounds_once() {
+    let path = repo().join("cases/motion/rotate_triangle_stratified16.json");
+    let scene = suite::load(&suite::case_file(&path), &Limits::default()).unwrap();
+    let plan = Plan::for_scene(&scene);
+    let fine = motion::time_coverage(&scene, &plan);
+    let coarse = motion::time_coverage_from(&scene, &plan, motion::Mutation::None, 4);
+    for c in &coarse {
+        let lo = (&c.value - &c.bound).to_f64().value();
+        let hi = (&c.value + &c.bound).to_f64().value();
+        assert_eq!(lo, hi, "a pixel left across a rounding boundary");
+    }
+    assert_eq!(
+        motion::frame_of(&scene, &coarse),
+        motion::frame_of(&scene, &fine)
+    );
+}

@@ -76,6 +76,19 @@ pub fn time_coverage(scene: &Scene, plan: &Plan) -> Vec<Certified> {
 /// show they catch it.
 #[doc(hidden)]
 pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec<Certified> {
+    time_coverage_from(scene, plan, mutation, ISOLATION_BITS)
+}
+
+/// [`time_coverage_with`] whose first pass isolates roots to
+/// `first_isolation` bits only (then to the 2^-40 bound): the tests' way to
+/// reach the refinement that makes every pixel round once.
+#[doc(hidden)]
+pub fn time_coverage_from(
+    scene: &Scene,
+    plan: &Plan,
+    mutation: Mutation,
+    first_isolation: usize,
+) -> Vec<Certified> {
     let motion = plan
         .motion
         .as_ref()
@@ -149,7 +162,7 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
             crate::deadline::check();
             for x in xs.clone() {
                 let pixel = &mut sums[y as usize * width as usize + x as usize];
-                measure(mover, x, y, ISOLATION_BITS, pixel);
+                measure(mover, x, y, first_isolation, pixel);
             }
         }
     }
@@ -169,7 +182,7 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
     // with finer isolation until it is (SPEC.md §15.4), up to
     // MAX_ISOLATION_BITS.
     for (i, c) in certified.iter_mut().enumerate() {
-        let mut isolation = ISOLATION_BITS;
+        let mut isolation = first_isolation;
         while !rounds_once(c) && isolation < MAX_ISOLATION_BITS {
             crate::deadline::check();
             isolation *= 2;
