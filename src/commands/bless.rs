@@ -43,7 +43,7 @@ pub fn bless(args: BlessArgs) -> Exit {
                     continue;
                 }
             };
-        let path = golden::path_for(&root, &file.id);
+        let path = golden::path_for(&suite::golden_root(&file.path, &root), &file.id);
         match golden::write(&reference.frame, &path) {
             Ok(()) => written += 1,
             Err(e) => {

@@ -178,7 +178,12 @@ pub fn run_case(
             return outcome;
         }
     };
-    outcome.golden = Some(suite::check_golden(root, &file.id, &reference.frame));
+    let golden_root = suite::golden_root(&file.path, root);
+    outcome.golden = Some(suite::check_golden(
+        &golden_root,
+        &file.id,
+        &reference.frame,
+    ));
     // A candidate over the time limit: the case is over a limit of the run
     // (exit 2), as when the reference is; the others keep their verdicts.
     let mut over = Vec::new();

@@ -80,14 +80,14 @@ fn walk(dir: &Path, found: &mut Discovery) {
 }
 
 /// The id of a case file: its path below the nearest folder named `cases`,
-/// without the extension; the path as given when there is none.
+/// without the extension; the path as given when there is none. The path
+/// as given is searched first, then its absolute form, so that
+/// `rastercheck run triangles` inside `cases/` names the same case as
+/// `rastercheck run cases/triangles` beside it.
 pub fn case_file(path: &Path) -> CaseFile {
-    let without_ext = path.with_extension("");
+    let (base, start) = cases_ancestor(path).unwrap_or((path.to_owned(), 0));
+    let without_ext = base.with_extension("");
     let components: Vec<_> = without_ext.components().collect();
-    let start = components
-        .iter()
-        .rposition(|c| c.as_os_str() == "cases")
-        .map_or(0, |i| i + 1);
     let id = components[start..]
         .iter()
         .filter(|c| matches!(c, std::path::Component::Normal(_)))
@@ -98,6 +98,39 @@ pub fn case_file(path: &Path) -> CaseFile {
         id,
         path: path.to_owned(),
     }
+}
+
+/// The folder that holds a case's golden files (`reference/` inside it,
+/// SPEC.md §7): the parent of the nearest folder named `cases` above the
+/// case file, so that golden files are found wherever the run starts;
+/// `fallback` (the working directory) when no folder above it is named
+/// `cases`.
+pub fn golden_root(path: &Path, fallback: &Path) -> PathBuf {
+    match cases_ancestor(path) {
+        Some((base, start)) => {
+            let cases: PathBuf = base.components().take(start - 1).collect();
+            if cases.as_os_str().is_empty() {
+                PathBuf::from(".")
+            } else {
+                cases
+            }
+        }
+        None => fallback.to_owned(),
+    }
+}
+
+/// The path (as given, else absolute) in which a folder above the file is
+/// named `cases`, and the index of the component after the nearest one.
+fn cases_ancestor(path: &Path) -> Option<(PathBuf, usize)> {
+    let find = |p: &Path| {
+        let components: Vec<_> = p.components().collect();
+        // The file itself is no folder: only the components above it count.
+        components[..components.len().saturating_sub(1)]
+            .iter()
+            .rposition(|c| c.as_os_str() == "cases")
+            .map(|i| (p.to_owned(), i + 1))
+    };
+    find(path).or_else(|| std::path::absolute(path).ok().as_deref().and_then(find))
 }
 
 /// Reads and validates one case file.

@@ -13,7 +13,7 @@
 //!   whose exact area is 0 and no sample covered to exactly 0, whatever the
 //!   method (piglit's `ext_framebuffer_multisample` accuracy test);
 //! - for a candidate with a mask, that its resolved value is its own mask's
-//!   box resolve.
+//!   box resolve, or (every pixel of it) the exact area, as the reference's.
 //!
 //! The errors are computed in f64 from the reference's resolved value (the
 //! exact area rounded once): they are measurements, not decisions. Which
@@ -215,6 +215,17 @@ pub fn measure(
             m.resolve_mismatches += u64::from(own[p] != r);
         }
     }
+    // A method may also resolve every pixel to its exact area, as the
+    // reference does (SPEC.md §14.3): the whole frame, to the bit, never a
+    // mix of the two.
+    if m.resolve_mismatches > 0
+        && resolved
+            .iter()
+            .zip(exact)
+            .all(|(r, e)| r.to_bits() == e.to_bits())
+    {
+        m.resolve_mismatches = 0;
+    }
     if m.edge_pixels > 0 {
         m.rms_edge = (sum_sq_edge / m.edge_pixels as f64).sqrt();
         m.bias_edge = sum_edge / m.edge_pixels as f64;
@@ -323,6 +334,24 @@ mod tests {
         let m = measure(&reference, &nothing, None, (None, None)).unwrap();
         assert_eq!((m.candidate_pixels, m.reference_pixels), (0, 2));
         assert!(failures(&m).iter().any(|f| f.contains("piglit")));
+    }
+
+    #[test]
+    fn an_exact_area_resolve_is_a_resolve_but_only_for_the_whole_frame() {
+        // Pixel 1's exact area is a third; its 2 samples resolve to a half.
+        let reference = frame(2, &[1, 1, 1, 0], &[1.0, 1.0 / 3.0]);
+        let exact = frame(2, &[1, 1, 1, 0], &[1.0, 1.0 / 3.0]);
+        let m = measure(&reference, &exact, None, (None, None)).unwrap();
+        assert_eq!(m.resolve_mismatches, 0);
+        // Neither its box resolve nor the exact area: caught.
+        let other = frame(2, &[1, 1, 1, 0], &[1.0, 0.25]);
+        let m = measure(&reference, &other, None, (None, None)).unwrap();
+        assert_eq!(m.resolve_mismatches, 1);
+        // Exact on one pixel, neither on another: a mix is no resolve.
+        let reference = frame(2, &[1, 0, 1, 0], &[0.3, 1.0 / 3.0]);
+        let mixed = frame(2, &[1, 0, 1, 0], &[0.3, 0.25]);
+        let m = measure(&reference, &mixed, None, (None, None)).unwrap();
+        assert_eq!(m.resolve_mismatches, 2);
     }
 
     #[test]

@@ -76,6 +76,19 @@ pub fn time_coverage(scene: &Scene, plan: &Plan) -> Vec<Certified> {
 /// show they catch it.
 #[doc(hidden)]
 pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec<Certified> {
+    time_coverage_from(scene, plan, mutation, ISOLATION_BITS)
+}
+
+/// [`time_coverage_with`] whose first pass isolates roots to
+/// `first_isolation` bits only (then to the 2^-40 bound): the tests' way to
+/// reach the refinement that makes every pixel round once.
+#[doc(hidden)]
+pub fn time_coverage_from(
+    scene: &Scene,
+    plan: &Plan,
+    mutation: Mutation,
+    first_isolation: usize,
+) -> Vec<Certified> {
     let motion = plan
         .motion
         .as_ref()
@@ -118,36 +131,80 @@ pub fn time_coverage_with(scene: &Scene, plan: &Plan, mutation: Mutation) -> Vec
         cull: scene.rules.cull,
         mutation,
     };
-    for primitive in scene.primitives.iter().filter(|p| p.moves()) {
-        let mover = Moving::new(primitive, bits, &scale);
-        let [xs, ys] = mover
-            .bounds([&open, &close], &time_unit)
-            .map(|[lo, hi]| pixel_range(&lo, &hi, &(&scale * &time_unit)));
-        let xs = xs[0].max(0)..=xs[1].min(i64::from(width) - 1);
-        let ys = ys[0].max(0)..=ys[1].min(i64::from(height) - 1);
-        for y in ys {
+    // Each moving primitive with the pixels its swept box meets.
+    let movers: Vec<(Moving, [std::ops::RangeInclusive<i64>; 2])> = scene
+        .primitives
+        .iter()
+        .filter(|p| p.moves())
+        .map(|primitive| {
+            let mover = Moving::new(primitive, bits, &scale);
+            let [xs, ys] = mover
+                .bounds([&open, &close], &time_unit)
+                .map(|[lo, hi]| pixel_range(&lo, &hi, &(&scale * &time_unit)));
+            let xs = xs[0].max(0)..=xs[1].min(i64::from(width) - 1);
+            let ys = ys[0].max(0)..=ys[1].min(i64::from(height) - 1);
+            (mover, [xs, ys])
+        })
+        .collect();
+    // Σ value and Σ bound of one moving primitive's samples in pixel (x, y),
+    // isolating roots to `isolation` bits at least.
+    let measure = |mover: &Moving, x: i64, y: i64, isolation: usize, pixel: &mut (RBig, RBig)| {
+        let corner = [IBig::from(x) * &scale, IBig::from(y) * &scale];
+        for offset in &offsets {
+            let p = [&corner[0] + &offset[0], &corner[1] + &offset[1]];
+            let (value, bound) = sample_measure(mover, &p, [&span[0], &span[1]], rules, isolation);
+            pixel.0 += value;
+            pixel.1 += bound;
+        }
+    };
+    for (mover, [xs, ys]) in &movers {
+        for y in ys.clone() {
             crate::deadline::check();
             for x in xs.clone() {
-                let corner = [IBig::from(x) * &scale, IBig::from(y) * &scale];
                 let pixel = &mut sums[y as usize * width as usize + x as usize];
-                for offset in &offsets {
-                    let p = [&corner[0] + &offset[0], &corner[1] + &offset[1]];
-                    let (value, bound) = sample_measure(&mover, &p, [&span[0], &span[1]], rules);
-                    pixel.0 += value;
-                    pixel.1 += bound;
-                }
+                measure(mover, x, y, first_isolation, pixel);
             }
         }
     }
     let samples = RBig::from(m);
     let per_sample = &length * &samples;
-    sums.into_iter()
-        .zip(static_counts)
-        .map(|((value, bound), count)| Certified {
-            value: RBig::from(count) / &samples + value / &per_sample,
-            bound: bound / &per_sample,
-        })
-        .collect()
+    let certify = |(value, bound): (RBig, RBig), count: u64| Certified {
+        value: RBig::from(count) / &samples + value / &per_sample,
+        bound: bound / &per_sample,
+    };
+    let mut certified: Vec<Certified> = sums
+        .into_iter()
+        .zip(&static_counts)
+        .map(|(sum, &count)| certify(sum, count))
+        .collect();
+    // Where the certified interval meets two f64s, the exact value's
+    // correctly rounded f64 is not yet known: the pixel is measured again
+    // with finer isolation until it is (SPEC.md §15.4), up to
+    // MAX_ISOLATION_BITS.
+    for (i, c) in certified.iter_mut().enumerate() {
+        let mut isolation = first_isolation;
+        while !rounds_once(c) && isolation < MAX_ISOLATION_BITS {
+            crate::deadline::check();
+            isolation *= 2;
+            let (x, y) = ((i % width as usize) as i64, (i / width as usize) as i64);
+            let mut pixel = (RBig::ZERO, RBig::ZERO);
+            for (mover, [xs, ys]) in &movers {
+                if xs.contains(&x) && ys.contains(&y) {
+                    measure(mover, x, y, isolation, &mut pixel);
+                }
+            }
+            *c = certify(pixel, static_counts[i]);
+        }
+    }
+    certified
+}
+
+/// Whether every value within a certified bound rounds to the same f64, so
+/// that the nearest f64 to the certified value is the exact value's.
+fn rounds_once(c: &Certified) -> bool {
+    c.bound == RBig::ZERO
+        || super::area::to_f64_nearest(&(&c.value - &c.bound))
+            == super::area::to_f64_nearest(&(&c.value + &c.bound))
 }
 
 /// The time coverage of one primitive at one exact point (in pixels) over
@@ -198,7 +255,7 @@ pub fn point_coverage_with(
         cull: scene.rules.cull,
         mutation,
     };
-    let (value, bound) = sample_measure(&mover, &p, shutter, rules);
+    let (value, bound) = sample_measure(&mover, &p, shutter, rules, ISOLATION_BITS);
     let length = shutter[1] - shutter[0];
     Certified {
         value: value / &length,
@@ -210,9 +267,15 @@ pub fn point_coverage_with(
 /// covered measure plus half of the undecided one, and that half. The
 /// isolation is refined until the bound is at most [`max_bound`] of the
 /// span, which is asserted.
-fn sample_measure(mover: &Moving, p: &[IBig; 2], span: [&RBig; 2], rules: Rules) -> (RBig, RBig) {
+fn sample_measure(
+    mover: &Moving,
+    p: &[IBig; 2],
+    span: [&RBig; 2],
+    rules: Rules,
+    isolation: usize,
+) -> (RBig, RBig) {
     let allowed = max_bound() * (span[1] - span[0]);
-    let mut bits = ISOLATION_BITS;
+    let mut bits = isolation;
     loop {
         let measured = mover.measure(p, span, bits, rules);
         let bound = measured.undecided / RBig::from(2u8);
@@ -277,7 +340,9 @@ pub fn frame(scene: &Scene, plan: &Plan) -> Frame {
 
 /// The time-only frame of certified per-pixel values (one per pixel),
 /// each rounded to the nearest f64: the one rounding of `frame` and of the
-/// suite, which keeps the certified values for its checks.
+/// suite, which keeps the certified values for its checks. For values from
+/// [`time_coverage`] this is the exact value's correctly rounded f64
+/// wherever 1024-bit isolation decides it (SPEC.md §15.4).
 pub fn frame_of(scene: &Scene, certified: &[Certified]) -> Frame {
     let time = certified
         .iter()
