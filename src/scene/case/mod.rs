@@ -42,6 +42,8 @@ pub struct Limits {
     /// (the last only when something moves). It bounds the frames'
     /// memory and the work of each primitive.
     pub max_samples: u64,
+    /// Bytes of one case file, checked before it is read (`--max-case-bytes`).
+    pub max_case_bytes: u64,
     /// Wall time each rasterizer (the reference, then each candidate) may
     /// spend on one case; `None` for no limit. Not a property of the file:
     /// the reader ignores it, the runner enforces it ([`crate::deadline`]).
@@ -54,6 +56,7 @@ impl Default for Limits {
             max_canvas_pixels: limits::DEFAULT_MAX_CANVAS_PIXELS,
             max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
             max_samples: limits::DEFAULT_MAX_SAMPLES,
+            max_case_bytes: limits::DEFAULT_MAX_CASE_BYTES,
             case_timeout: Some(limits::DEFAULT_CASE_TIMEOUT),
         }
     }
