@@ -11,7 +11,7 @@ use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::common::cli::{read_json, scratch, text, workspace};
+use crate::common::cli::{read_json, text, workspace};
 
 /// A small case that production passes.
 const GOOD: &str = r#"{"name": "good", "canvas": {"width": 4, "height": 4},
@@ -186,4 +186,115 @@ fn symlink_loops_in_the_case_tree_are_reported_once() {
     // The good case is run once, whatever paths lead to it.
     let report = read_json(&dir.join("rep/report.json"));
     assert_eq!(report["cases"].as_array().unwrap().len(), 1, "{t}");
+}
+
+#[test]
+fn one_id_is_one_case() {
+    let dir = workspace(
+        "input-ids",
+        &[
+            ("cases/a/good.json", GOOD),
+            ("other/cases/a/good.json", GOOD),
+        ],
+    );
+    // The same file through two paths is one case, and passes.
+    let out = run_bounded(&dir, &["run", "cases", "./cases", "cases/a/good.json"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    assert_eq!(t.matches(" a/good ").count(), 1, "{t}");
+    // Two different files with one id: an error naming both, exit 2, and
+    // the first is still run and judged.
+    let out = run_bounded(&dir, &["run", "cases", "other/cases", "--report", "rep"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(
+        t.contains("two different files have the case id \"a/good\": cases/a/good.json and other/cases/a/good.json"),
+        "{t}"
+    );
+    assert!(
+        t.lines()
+            .any(|l| l.starts_with("PASS") && l.contains(" a/good ")),
+        "{t}"
+    );
+    let report = read_json(&dir.join("rep/report.json"));
+    assert_eq!(report["cases"].as_array().unwrap().len(), 1, "{t}");
+}
+
+#[test]
+fn hostile_values_are_named_by_path_and_cut_when_echoed() {
+    let long_key = "k".repeat(5_000_000);
+    let long_rule = "x".repeat(5_000_000);
+    let dup = r#"{"name": "dup", "canvas": {"width": 4, "height": 4}, "canvas": {"width": 4, "height": 4},
+        "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]}]}"#;
+    let key = format!(
+        r#"{{"name": "key", "canvas": {{"width": 4, "height": 4, "{long_key}": 1}},
+        "primitives": [{{"triangle": [[0, 0], [4, 0], [0, 4]]}}]}}"#
+    );
+    let rule = format!(
+        r#"{{"name": "rule", "canvas": {{"width": 4, "height": 4}}, "rules": {{"fill_rule": "{long_rule}"}},
+        "primitives": [{{"triangle": [[0, 0], [4, 0], [0, 4]]}}]}}"#
+    );
+    let number = format!(
+        r#"{{"name": "number", "canvas": {{"width": 4, "height": 4}},
+        "primitives": [{{"triangle": [[0, 0], [4, 0], [0, "{long_rule}"]]}}]}}"#
+    );
+    let plus = r#"{"name": "plus", "canvas": {"width": 4, "height": 4},
+        "primitives": [{"triangle": [[0, 0], ["+4", 0], [0, 4]]}]}"#;
+    let dir = workspace(
+        "input-echo",
+        &[
+            ("cases/good.json", GOOD),
+            ("cases/dup.json", dup),
+            ("cases/key.json", &key),
+            ("cases/rule.json", &rule),
+            ("cases/number.json", &number),
+            ("cases/plus.json", plus),
+            (
+                "cases/seed_max.json",
+                &seeded("seed_max", "18446744073709551615"),
+            ),
+            (
+                "cases/seed_over.json",
+                &seeded("seed_over", "18446744073709551616"),
+            ),
+        ],
+    );
+    let (t, statuses) = run_report(&dir, &[], 2);
+    assert_good_passes(&t, &statuses);
+    for id in ["dup", "key", "rule", "number", "plus", "seed_over"] {
+        assert_eq!(status_of(&statuses, id), "unreadable", "{id}\n{t}");
+    }
+    assert_eq!(status_of(&statuses, "seed_max"), "ran", "{t}");
+    let line = |id: &str| {
+        t.lines()
+            .find(|l| l.split_whitespace().nth(1) == Some(id))
+            .unwrap_or_else(|| panic!("no line for {id}\n{t}"))
+    };
+    assert!(
+        line("dup").contains("$.canvas: a key repeated in one object"),
+        "{t}"
+    );
+    assert!(
+        line("plus").contains("$.primitives[0].triangle[1][0]: \"+4\""),
+        "{t}"
+    );
+    assert!(
+        line("seed_over").contains("$.effects.antialias.seed"),
+        "{t}"
+    );
+    for id in ["key", "rule", "number"] {
+        let l = line(id);
+        assert!(
+            l.contains("… (5000000 characters)"),
+            "{id}: {}",
+            &l[..l.len().min(400)]
+        );
+        assert!(
+            l.len() < 600,
+            "{id} echoes {} bytes: {}…",
+            l.len(),
+            &l[..400]
+        );
+    }
+    assert!(t.len() < 10_000, "the run printed {} bytes", t.len());
 }

@@ -88,6 +88,13 @@ pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, Case
         location: format!("line {} column {}", e.line(), e.column()),
         message: format!("invalid JSON: {}", strip_position(&e.to_string())),
     })?;
+    if let Some(path) = json::duplicate_key(text) {
+        return Err(CaseError {
+            file: file.to_owned(),
+            location: path.to_string(),
+            message: "a key repeated in one object; each key may appear once (SPEC §1)".to_owned(),
+        });
+    }
     let reader = Reader { limits };
     reader.scene(&value).map_err(|(path, message)| CaseError {
         file: file.to_owned(),
@@ -146,6 +153,21 @@ mod tests {
     fn syntax_errors_give_line_and_column() {
         let e = parse("{\"name\": \"t\",\n \"canvas\": }").unwrap_err();
         assert_eq!(e.location, "line 2 column 12");
+    }
+
+    #[test]
+    fn repeated_keys_are_refused_with_their_path() {
+        let e = parse(
+            r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+            "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]},
+                           {"triangle": [[0, 0], [4, 0], [0, 4]], "triangle": [[0, 0], [1, 0], [0, 1]]}]}"#,
+        )
+        .unwrap_err();
+        assert_eq!(e.location, "$.primitives[1].triangle");
+        assert!(e.message.contains("repeated"), "{e}");
+        // Numbers (maps under arbitrary_precision) and keys repeated in
+        // different objects are fine.
+        parse(&MINIMAL.replace("\"4/3\"", "1.25e0")).unwrap();
     }
 
     #[test]
