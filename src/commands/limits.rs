@@ -17,6 +17,9 @@ pub struct LimitArgs {
     /// pixel × time samples (these only when something moves).
     #[arg(long, default_value_t = Limits::default().max_samples)]
     pub max_samples: u64,
+    /// Largest case file, in bytes, checked before it is read.
+    #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_case_bytes)]
+    pub max_case_bytes: u64,
     /// Seconds each rasterizer (the reference, then each candidate) may
     /// spend on one case; 0 for no limit. A case over it is an error.
     #[arg(long, value_name = "SECONDS", default_value_t = default_case_timeout(), value_parser = seconds)]
@@ -47,6 +50,7 @@ impl LimitArgs {
             max_canvas_pixels: self.max_canvas_pixels,
             max_primitives: self.max_primitives,
             max_samples: self.max_samples,
+            max_case_bytes: self.max_case_bytes,
             case_timeout: (seconds > 0.0).then(|| std::time::Duration::from_secs_f64(seconds)),
         }
     }

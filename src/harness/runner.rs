@@ -152,10 +152,14 @@ pub fn run_case(
         golden: None,
         candidates: Vec::new(),
     };
-    let scene = match suite::load(file, limits) {
+    let scene = match suite::load_checked(file, limits) {
         Ok(scene) => scene,
-        Err(e) => {
+        Err(suite::LoadError::Unreadable(e)) => {
             outcome.problem = Some(Problem::Unreadable(e.to_string()));
+            return outcome;
+        }
+        Err(suite::LoadError::OverLimit(e)) => {
+            outcome.problem = Some(Problem::LimitExceeded(e.to_string()));
             return outcome;
         }
     };

@@ -40,13 +40,21 @@ pub struct Discovery {
 }
 
 /// Finds case files under `paths`, sorted by id. Folders are walked
-/// recursively; folders named `invalid` inside them are skipped.
+/// recursively, following symbolic links; folders named `invalid` inside
+/// them are skipped. A folder reached again through a link is walked once,
+/// and a link back to a folder being walked (a loop) is an error, reported
+/// once. One file reached through several paths is one case; two
+/// different files with one id are an error naming both (the first, by
+/// path, is kept), since an id names a case's images, golden file and
+/// baseline entry.
 pub fn discover(paths: &[PathBuf]) -> Discovery {
     let mut found = Discovery::default();
+    let mut walk_state = Walk::default();
     for path in paths {
         if path.is_dir() {
-            walk(path, &mut found);
-        } else if path.is_file() {
+            walk_state.walk(path, &mut found);
+        } else if path.exists() {
+            // A regular file, or something the reader refuses by name.
             found.cases.push(case_file(path));
         } else {
             found
@@ -56,26 +64,94 @@ pub fn discover(paths: &[PathBuf]) -> Discovery {
     }
     found.cases.sort();
     found.cases.dedup();
+    keep_each_id_once(&mut found);
     found
 }
 
-fn walk(dir: &Path, found: &mut Discovery) {
-    let entries = match std::fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(e) => return found.errors.push(format!("{}: {e}", dir.display())),
-    };
-    let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-    paths.sort();
-    for path in paths {
-        if path.is_dir() {
-            if path.file_name().is_some_and(|n| n == "invalid") {
-                found.skipped.push(path);
-            } else {
-                walk(&path, found);
+/// A file's or folder's identity: (device, inode) where there is one.
+fn identity(path: &Path) -> Option<(u64, u64)> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        std::fs::metadata(path).ok().map(|m| (m.dev(), m.ino()))
+    }
+    #[cfg(not(unix))]
+    {
+        std::fs::canonicalize(path).ok().map(|p| {
+            use std::hash::{Hash, Hasher};
+            let mut h = std::collections::hash_map::DefaultHasher::new();
+            p.hash(&mut h);
+            (0, h.finish())
+        })
+    }
+}
+
+/// Drops a second path to the same file under one id, and turns two
+/// different files with one id into an error naming both.
+fn keep_each_id_once(found: &mut Discovery) {
+    let mut kept: Vec<CaseFile> = Vec::with_capacity(found.cases.len());
+    let mut kept_identity = None;
+    for case in std::mem::take(&mut found.cases) {
+        let this = identity(&case.path);
+        if let Some(first) = kept.last().filter(|k| k.id == case.id) {
+            if this.is_none() || this != kept_identity {
+                found.errors.push(format!(
+                    "two different files have the case id {:?}: {} and {} (ids name images, golden files and baseline entries; only the first is run)",
+                    case.id,
+                    first.path.display(),
+                    case.path.display()
+                ));
             }
-        } else if path.extension().is_some_and(|e| e == "json") {
-            found.cases.push(case_file(&path));
+            continue;
         }
+        kept_identity = this;
+        kept.push(case);
+    }
+    found.cases = kept;
+}
+
+/// The folders a walk has entered, by identity, and those it is inside.
+#[derive(Default)]
+struct Walk {
+    visited: std::collections::HashSet<(u64, u64)>,
+    inside: Vec<(u64, u64)>,
+}
+
+impl Walk {
+    fn walk(&mut self, dir: &Path, found: &mut Discovery) {
+        let Some(id) = identity(dir) else {
+            return found
+                .errors
+                .push(format!("{}: cannot read the folder", dir.display()));
+        };
+        if self.inside.contains(&id) {
+            return found.errors.push(format!(
+                "{}: a symbolic link loop (it leads back to a folder that contains it); not followed",
+                dir.display()
+            ));
+        }
+        if !self.visited.insert(id) {
+            return; // walked already through another path
+        }
+        let entries = match std::fs::read_dir(dir) {
+            Ok(entries) => entries,
+            Err(e) => return found.errors.push(format!("{}: {e}", dir.display())),
+        };
+        let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        paths.sort();
+        self.inside.push(id);
+        for path in paths {
+            if path.is_dir() {
+                if path.file_name().is_some_and(|n| n == "invalid") {
+                    found.skipped.push(path);
+                } else {
+                    self.walk(&path, found);
+                }
+            } else if path.extension().is_some_and(|e| e == "json") {
+                found.cases.push(case_file(&path));
+            }
+        }
+        self.inside.pop();
     }
 }
 
@@ -135,13 +211,92 @@ fn cases_ancestor(path: &Path) -> Option<(PathBuf, usize)> {
 
 /// Reads and validates one case file.
 pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
-    let shown = file.path.display().to_string();
-    let text = std::fs::read_to_string(&file.path).map_err(|e| CaseError {
+    load_checked(file, limits).map_err(|e| match e {
+        LoadError::Unreadable(e) | LoadError::OverLimit(e) => e,
+    })
+}
+
+/// Why a case file did not become a scene: bad input, or a file larger
+/// than `--max-case-bytes` (a limit of the run, not a fault of the case).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LoadError {
+    Unreadable(CaseError),
+    OverLimit(CaseError),
+}
+
+/// [`load`], telling a file over the size limit from bad input. Only a
+/// regular file (symbolic links followed) is opened, so a FIFO or a device
+/// cannot hang the run, and its size is checked before a byte is read.
+pub fn load_checked(file: &CaseFile, limits: &Limits) -> Result<Scene, LoadError> {
+    let text = read_case_text(&file.path, limits.max_case_bytes)?;
+    parse_case(&text, &file.path.display().to_string(), limits).map_err(LoadError::Unreadable)
+}
+
+/// The text of a case file of at most `max_bytes` bytes.
+fn read_case_text(path: &Path, max_bytes: u64) -> Result<String, LoadError> {
+    use std::io::Read;
+    let shown = path.display().to_string();
+    let error = |message: String| CaseError {
         file: shown.clone(),
         location: "$".to_owned(),
-        message: format!("cannot read the file: {e}"),
-    })?;
-    parse_case(&text, &shown, limits)
+        message,
+    };
+    let bad = |message: String| LoadError::Unreadable(error(message));
+    let regular = |meta: &std::fs::Metadata| -> Result<(), LoadError> {
+        if !meta.is_file() {
+            return Err(bad(format!(
+                "not a regular file ({}); a case must be a regular file",
+                file_kind(meta)
+            )));
+        }
+        if meta.len() > max_bytes {
+            return Err(LoadError::OverLimit(error(format!(
+                "the file has {} bytes, over the limit of {max_bytes} bytes per case file (raise it with --max-case-bytes)",
+                meta.len()
+            ))));
+        }
+        Ok(())
+    };
+    let cannot = |e: std::io::Error| bad(format!("cannot read the file: {e}"));
+    // Checked before opening: opening a FIFO blocks until a writer comes.
+    regular(&std::fs::metadata(path).map_err(cannot)?)?;
+    let opened = std::fs::File::open(path).map_err(cannot)?;
+    // And again on what was opened, in case the path changed in between.
+    regular(&opened.metadata().map_err(cannot)?)?;
+    let mut bytes = Vec::new();
+    opened
+        .take(max_bytes.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(LoadError::OverLimit(error(format!(
+            "the file grew past the limit of {max_bytes} bytes per case file while it was read (raise it with --max-case-bytes)"
+        ))));
+    }
+    String::from_utf8(bytes).map_err(|e| bad(format!("cannot read the file: not UTF-8 text ({e})")))
+}
+
+/// What kind of file `meta` describes, in words.
+fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let t = meta.file_type();
+        if t.is_fifo() {
+            return "a FIFO";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+        if t.is_block_device() || t.is_char_device() {
+            return "a device";
+        }
+    }
+    if meta.is_dir() {
+        "a folder"
+    } else {
+        "of an unknown kind"
+    }
 }
 
 /// Every rasterizer the CLI can name.

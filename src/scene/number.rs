@@ -37,34 +37,62 @@ pub enum NumberError {
     TooLong(String),
     /// A fraction with a zero denominator.
     ZeroDenominator(String),
+    /// A plus sign, or a sign anywhere but in front (`"+3"`, `"1/-2"`).
+    Sign(String),
 }
 
 impl fmt::Display for NumberError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             NumberError::NonFinite(s) => {
-                write!(f, "{s:?} is not finite; coordinates and values must be finite numbers")
+                write!(f, "{} is not finite; coordinates and values must be finite numbers", echo(s))
             }
             NumberError::Malformed(s) => write!(
                 f,
-                "{s:?} is not an exact number; write a JSON number (12.5, -3e-2) or a fraction string (\"1/3\")"
+                "{} is not an exact number; write a JSON number (12.5, -3e-2) or a fraction string (\"1/3\")",
+                echo(s)
+            ),
+            NumberError::Sign(s) => write!(
+                f,
+                "{} is not an exact number: a sign may only be a minus in front (\"-1/2\", \"-0.5\"); a plus sign and a signed denominator are refused",
+                echo(s)
             ),
             NumberError::TooLong(s) => write!(
                 f,
                 "{} has more than {MAX_DIGITS} digits or an exponent beyond ±{MAX_DIGITS}",
                 abbreviate(s)
             ),
-            NumberError::ZeroDenominator(s) => write!(f, "{s:?} has a zero denominator"),
+            NumberError::ZeroDenominator(s) => write!(f, "{} has a zero denominator", echo(s)),
         }
     }
 }
 
-fn abbreviate(s: &str) -> String {
-    if s.len() <= 40 {
-        format!("{s:?}")
-    } else {
-        format!("{:?}… ({} characters)", &s[..32], s.len())
+/// Longest piece of input an error message repeats, in characters.
+pub const ECHO_CHARS: usize = 80;
+
+/// `s` as an error message repeats it: quoted, and cut to [`ECHO_CHARS`]
+/// characters with "…" and its whole length when it is longer, so that a
+/// 50 MB value never fills a message.
+pub fn echo(s: &str) -> String {
+    match s.char_indices().nth(ECHO_CHARS) {
+        None => format!("{s:?}"),
+        Some((cut, _)) => format!("{:?}… ({} characters)", &s[..cut], s.chars().count()),
     }
+}
+
+/// A number as an error message repeats it: its exact text, cut as
+/// [`echo`] cuts (without quotes when whole).
+pub fn echo_number(n: &Number) -> String {
+    let text = n.to_string();
+    if text.chars().count() <= ECHO_CHARS {
+        text
+    } else {
+        echo(&text)
+    }
+}
+
+fn abbreviate(s: &str) -> String {
+    echo(s)
 }
 
 impl Number {
@@ -137,6 +165,13 @@ impl Number {
         let bare = lower.trim_start_matches(['+', '-']);
         if matches!(bare, "nan" | "inf" | "infinity") {
             return Err(NumberError::NonFinite(text.to_owned()));
+        }
+        // SPEC §1.1: at most one sign, a minus, in front; a denominator is
+        // a positive integer. (An exponent's sign is part of a decimal.)
+        let (p, q) = trimmed.split_once('/').unwrap_or((trimmed, ""));
+        let signed = |t: &str| t.trim_start().starts_with(['+', '-']);
+        if trimmed.starts_with('+') || signed(q) || signed(p.strip_prefix('-').unwrap_or(p)) {
+            return Err(NumberError::Sign(text.to_owned()));
         }
         match trimmed.split_once('/') {
             None => Number::from_decimal(trimmed),
@@ -367,6 +402,14 @@ mod tests {
             Number::from_string("1/2.5"),
             Err(NumberError::Malformed(_))
         ));
+        for signed in ["+3", "1/-2", "-1/-2", "1/+2", "+1/2", "--1", "- -1"] {
+            assert!(
+                matches!(Number::from_string(signed), Err(NumberError::Sign(_))),
+                "{signed}"
+            );
+        }
+        assert_eq!(Number::from_string("-1/2"), Ok(Number::ratio(-1, 2)));
+        assert_eq!(Number::from_string("-2.5e+1"), Ok(Number::from_int(-25)));
         assert!(matches!(
             Number::from_string("abc"),
             Err(NumberError::Malformed(_))
@@ -379,6 +422,18 @@ mod tests {
             Number::from_decimal("1e-1001"),
             Err(NumberError::TooLong(_))
         ));
+    }
+
+    #[test]
+    fn echoes_are_cut() {
+        assert_eq!(echo("12"), "\"12\"");
+        let long = "é".repeat(1000);
+        let shown = echo(&long);
+        assert!(shown.ends_with("… (1000 characters)"), "{shown}");
+        assert_eq!(
+            shown.chars().count(),
+            ECHO_CHARS + 2 + "… (1000 characters)".chars().count()
+        );
     }
 
     #[test]

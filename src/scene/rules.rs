@@ -260,6 +260,10 @@ pub mod limits {
     /// spatial samples × time samples): 2^26, a 4096² canvas at 4×, whose
     /// frame of coverage counts and owners takes 384 MiB.
     pub const DEFAULT_MAX_SAMPLES: u64 = 1 << 26;
+    /// Default largest case file, in bytes: checked from the file's size
+    /// before it is read (reading holds about 33 times the file in memory).
+    /// The largest bundled case is under 20 KiB.
+    pub const DEFAULT_MAX_CASE_BYTES: u64 = 16 << 20;
     /// Default wall time per rasterizer and case.
     pub const DEFAULT_CASE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(60);
     /// Largest number of attributes a vertex may carry.

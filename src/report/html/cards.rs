@@ -306,7 +306,14 @@ pub(super) fn case_file(dir: &Path, case: &CaseEntry) -> String {
         None => html.push_str(&escape(&case.path)),
     }
     html.push_str("</div>");
-    if let Ok(text) = std::fs::read_to_string(&case.path) {
+    // Only a small regular file is read: a FIFO would block, a huge file
+    // would be read whole only to be left out.
+    let small_file = std::fs::metadata(&case.path)
+        .is_ok_and(|m| m.is_file() && m.len() <= MAX_EMBEDDED_CASE as u64);
+    if let Some(text) = small_file
+        .then(|| std::fs::read_to_string(&case.path).ok())
+        .flatten()
+    {
         if text.len() <= MAX_EMBEDDED_CASE {
             let _ = write!(
                 html,

@@ -11,7 +11,7 @@ use std::fmt;
 
 use serde_json::{Map, Value};
 
-use crate::scene::number::Number;
+use crate::scene::number::{echo, echo_number, Number, ECHO_CHARS};
 
 /// A JSON path under construction, e.g. `$.primitives[3].triangle[1]`.
 #[derive(Clone, Debug)]
@@ -21,8 +21,18 @@ impl Path {
     pub(super) fn root() -> Path {
         Path("$".to_owned())
     }
+    /// The path one key deeper; a key longer than [`ECHO_CHARS`] is cut
+    /// (its whole length shown), as every echo of input is.
     pub(super) fn key(&self, key: &str) -> Path {
-        Path(format!("{}.{key}", self.0))
+        match key.char_indices().nth(ECHO_CHARS) {
+            None => Path(format!("{}.{key}", self.0)),
+            Some((cut, _)) => Path(format!(
+                "{}.{}… ({} characters)",
+                self.0,
+                &key[..cut],
+                key.chars().count()
+            )),
+        }
     }
     pub(super) fn index(&self, i: usize) -> Path {
         Path(format!("{}[{i}]", self.0))
@@ -72,7 +82,7 @@ impl<'a> Fields<'a> {
                 Some(name) => format!("; did you mean \"{name}\"?"),
                 None => format!("; expected one of {}", allowed.join(", ")),
             };
-            return fail(&path.key(key), format!("unknown field \"{key}\"{hint}"));
+            return fail(&path.key(key), format!("unknown field {}{hint}", echo(key)));
         }
         Ok(Fields {
             map,
@@ -167,10 +177,16 @@ pub(super) fn number(value: &Value, path: &Path) -> Result<Number> {
 pub(super) fn count(value: &Value, path: &Path, max: u64) -> Result<u64> {
     let n = number(value, path)?;
     if !n.is_integer() || n < Number::ZERO {
-        return fail(path, format!("expected a whole number ≥ 0, found {n}"));
+        return fail(
+            path,
+            format!("expected a whole number ≥ 0, found {}", echo_number(&n)),
+        );
     }
-    if n > Number::from_int(max as i64) {
-        return fail(path, format!("{n} is larger than the limit {max}"));
+    if n.numerator() > &dashu_int::IBig::from(max) {
+        return fail(
+            path,
+            format!("{} is larger than the limit {max}", echo_number(&n)),
+        );
     }
     Ok(n.numerator()
         .to_string()
@@ -192,7 +208,94 @@ pub(super) fn named<T>(
         };
         (
             path.clone(),
-            format!("\"{s}\" is not one of {}{hint}", names.join(", ")),
+            format!("{} is not one of {}{hint}", echo(s), names.join(", ")),
         )
     })
+}
+
+/// The JSON path of the first key repeated in one object of `text`, if
+/// any (`text` is valid JSON). `serde_json::Value` keeps the last of
+/// repeated keys silently, so the check walks the text itself, keeping only
+/// the keys of the objects it is inside.
+pub(super) fn duplicate_key(text: &str) -> Option<Path> {
+    use serde::de::DeserializeSeed;
+    let found = std::cell::RefCell::new(None);
+    let mut reader = serde_json::Deserializer::from_str(text);
+    let seed = NoDuplicates {
+        path: Path::root(),
+        found: &found,
+    };
+    let _ = seed.deserialize(&mut reader);
+    found.into_inner()
+}
+
+/// A visitor that walks any JSON value and records the path of the first
+/// repeated key. Numbers (a one-key map under `arbitrary_precision`) and
+/// other scalars are passed over.
+struct NoDuplicates<'f> {
+    path: Path,
+    found: &'f std::cell::RefCell<Option<Path>>,
+}
+
+impl<'de> serde::de::DeserializeSeed<'de> for NoDuplicates<'_> {
+    type Value = ();
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> serde::de::Visitor<'de> for NoDuplicates<'_> {
+    type Value = ();
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("any JSON value")
+    }
+    fn visit_bool<E>(self, _: bool) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_i64<E>(self, _: i64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_u64<E>(self, _: u64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_f64<E>(self, _: f64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_str<E>(self, _: &str) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_unit<E>(self) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_none<E>(self) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        let mut i = 0;
+        while seq
+            .next_element_seed(NoDuplicates {
+                path: self.path.index(i),
+                found: self.found,
+            })?
+            .is_some()
+        {
+            i += 1;
+        }
+        Ok(())
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        let mut seen = std::collections::HashSet::new();
+        while let Some(key) = map.next_key::<String>()? {
+            let path = self.path.key(&key);
+            if !seen.insert(key) {
+                *self.found.borrow_mut() = Some(path);
+                return Err(serde::de::Error::custom("a repeated key"));
+            }
+            map.next_value_seed(NoDuplicates {
+                path,
+                found: self.found,
+            })?;
+        }
+        Ok(())
+    }
 }

@@ -42,6 +42,8 @@ pub struct Limits {
     /// (the last only when something moves). It bounds the frames'
     /// memory and the work of each primitive.
     pub max_samples: u64,
+    /// Bytes of one case file, checked before it is read (`--max-case-bytes`).
+    pub max_case_bytes: u64,
     /// Wall time each rasterizer (the reference, then each candidate) may
     /// spend on one case; `None` for no limit. Not a property of the file:
     /// the reader ignores it, the runner enforces it ([`crate::deadline`]).
@@ -54,6 +56,7 @@ impl Default for Limits {
             max_canvas_pixels: limits::DEFAULT_MAX_CANVAS_PIXELS,
             max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
             max_samples: limits::DEFAULT_MAX_SAMPLES,
+            max_case_bytes: limits::DEFAULT_MAX_CASE_BYTES,
             case_timeout: Some(limits::DEFAULT_CASE_TIMEOUT),
         }
     }
@@ -85,6 +88,13 @@ pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, Case
         location: format!("line {} column {}", e.line(), e.column()),
         message: format!("invalid JSON: {}", strip_position(&e.to_string())),
     })?;
+    if let Some(path) = json::duplicate_key(text) {
+        return Err(CaseError {
+            file: file.to_owned(),
+            location: path.to_string(),
+            message: "a key repeated in one object; each key may appear once (SPEC §1)".to_owned(),
+        });
+    }
     let reader = Reader { limits };
     reader.scene(&value).map_err(|(path, message)| CaseError {
         file: file.to_owned(),
@@ -143,6 +153,21 @@ mod tests {
     fn syntax_errors_give_line_and_column() {
         let e = parse("{\"name\": \"t\",\n \"canvas\": }").unwrap_err();
         assert_eq!(e.location, "line 2 column 12");
+    }
+
+    #[test]
+    fn repeated_keys_are_refused_with_their_path() {
+        let e = parse(
+            r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+            "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]},
+                           {"triangle": [[0, 0], [4, 0], [0, 4]], "triangle": [[0, 0], [1, 0], [0, 1]]}]}"#,
+        )
+        .unwrap_err();
+        assert_eq!(e.location, "$.primitives[1].triangle");
+        assert!(e.message.contains("repeated"), "{e}");
+        // Numbers (maps under arbitrary_precision) and keys repeated in
+        // different objects are fine.
+        parse(&MINIMAL.replace("\"4/3\"", "1.25e0")).unwrap();
     }
 
     #[test]

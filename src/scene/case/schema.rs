@@ -642,7 +642,13 @@ impl Reader<'_> {
             };
             let n = number(v, &p)?;
             if n < Number::ZERO {
-                return fail(&p, format!("{key} must be ≥ 0, found {n}"));
+                return fail(
+                    &p,
+                    format!(
+                        "{key} must be ≥ 0, found {}",
+                        crate::scene::number::echo_number(&n)
+                    ),
+                );
             }
             within(
                 &n,
@@ -728,7 +734,7 @@ fn pattern<T>(
 /// `seed` of a sampling effect; 0 when absent.
 fn seed(fields: &Fields) -> Result<u64> {
     match fields.get("seed") {
-        Some((v, p)) => count(v, &p, u64::MAX >> 1),
+        Some((v, p)) => count(v, &p, u64::MAX),
         None => Ok(0),
     }
 }

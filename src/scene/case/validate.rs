@@ -25,7 +25,10 @@ pub(super) fn within(
     if n < low || n > high {
         return fail(
             path,
-            format!("{what} {n} is outside the documented range [{low}, {high}]"),
+            format!(
+                "{what} {} is outside the documented range [{low}, {high}]",
+                crate::scene::number::echo_number(n)
+            ),
         );
     }
     Ok(())
