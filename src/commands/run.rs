@@ -174,7 +174,7 @@ pub fn run(args: RunArgs) -> Exit {
         t.cases,
         t.unreadable,
         if t.limit_exceeded > 0 {
-            format!(", {} over the time limit", t.limit_exceeded)
+            format!(", {} over a limit", t.limit_exceeded)
         } else {
             String::new()
         }

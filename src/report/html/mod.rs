@@ -173,7 +173,7 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
     let g = &t.golden;
     let _ = write!(
         html,
-        "<div class=\"panel\"><b>{}</b> case files · {} unreadable · {} reference failures · {} over the time limit · {} not run<br>golden files: {} match, {} differ, {} missing</div></div>",
+        "<div class=\"panel\"><b>{}</b> case files · {} unreadable · {} reference failures · {} over a limit · {} not run<br>golden files: {} match, {} differ, {} missing</div></div>",
         t.cases, t.unreadable, t.reference_failed, t.limit_exceeded, t.not_run, g.matching, g.differing, g.missing
     );
 
