@@ -30,6 +30,8 @@ pub(crate) fn print_outcome(
         Some(Problem::LimitExceeded(e)) => {
             return println!("{} {id:width$}  {e}", paint("LIMIT", RED, colour))
         }
+        // Listed once, in the run's summary line.
+        Some(Problem::Interrupted) => return,
         None => {}
     }
     if let Some(GoldenStatus::Differs(why)) = &outcome.golden {

@@ -33,6 +33,9 @@ pub enum Exit {
     Fail,
     /// 2: bad input or bad usage, or a case over a resource limit.
     BadInput,
+    /// 128 + the signal (130: SIGINT, 143: SIGTERM): the run was stopped
+    /// and its report is partial (`crate::stop`).
+    Interrupted(i32),
 }
 
 impl Exit {
@@ -42,6 +45,7 @@ impl Exit {
             Exit::Pass => 0,
             Exit::Fail => 1,
             Exit::BadInput => 2,
+            Exit::Interrupted(signal) => crate::stop::exit_code(signal),
         }
     }
 }

@@ -121,9 +121,13 @@ impl External {
     }
 
     fn start(&self) -> Result<Child, RasterError> {
-        self.command()
+        let child = self
+            .command()
             .spawn()
-            .map_err(|e| RasterError::Failed(format!("cannot start {:?}: {e}", self.program)))
+            .map_err(|e| RasterError::Failed(format!("cannot start {:?}: {e}", self.program)))?;
+        // Killed on SIGINT or SIGTERM; forgotten when reaped (`wait_until`, `kill`).
+        crate::stop::register(child.id());
+        Ok(child)
     }
 
     /// One process for this case: request on stdin, response on stdout.
@@ -286,7 +290,10 @@ fn wait_until(child: &mut Child, deadline: Instant) -> Option<ExitStatus> {
     let mut pause = Duration::from_micros(200);
     loop {
         match child.try_wait() {
-            Ok(Some(status)) => return Some(status),
+            Ok(Some(status)) => {
+                crate::stop::unregister(child.id());
+                return Some(status);
+            }
             Ok(None) => {}
             // Cannot be waited for: treat as exited, the caller kills it.
             Err(_) => return None,
@@ -302,6 +309,7 @@ fn wait_until(child: &mut Child, deadline: Instant) -> Option<ExitStatus> {
 
 /// Kills a child and reaps it.
 fn kill(child: &mut Child) {
+    crate::stop::unregister(child.id());
     let _ = child.kill();
     let _ = child.wait();
 }
