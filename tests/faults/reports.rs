@@ -80,6 +80,36 @@ fn wait_for(what: &str, mut done: impl FnMut() -> bool) {
     }
 }
 
+/// The run under test, killed if the test fails before it ends, and (only
+/// then) the programs it started, by pid, so a failing test leaves no
+/// process.
+struct Cleanup {
+    child: std::process::Child,
+    pids: PathBuf,
+}
+
+impl Drop for Cleanup {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        if !std::thread::panicking() {
+            return;
+        }
+        for e in std::fs::read_dir(&self.pids)
+            .into_iter()
+            .flatten()
+            .flatten()
+        {
+            if let Ok(pid) = e.file_name().to_string_lossy().parse::<u32>() {
+                let _ = Command::new("/bin/kill")
+                    .args(["-KILL", &pid.to_string()])
+                    .stderr(Stdio::null())
+                    .status();
+            }
+        }
+    }
+}
+
 /// Runs 6 cases on one thread against `reports_slow.py`, which answers
 /// the first 2 and sleeps on the third; sends `signal` once it sleeps.
 /// Asserts the exit code, the partial report and that the program is gone.
@@ -94,7 +124,7 @@ fn stopped_by(signal: &str, code: i32) {
         pids.display()
     );
     let log = std::fs::File::create(dir.join("log.txt")).unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+    let child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
         .args(["run", "cases", "--report", "out", "--threads", "1", "-r"])
         .arg(&rasterizer)
         .current_dir(&dir)
@@ -104,6 +134,11 @@ fn stopped_by(signal: &str, code: i32) {
         .stderr(log)
         .spawn()
         .unwrap();
+    let mut run = Cleanup {
+        child,
+        pids: pids.clone(),
+    };
+    let child = &mut run.child;
     let sleeping = || -> Option<u32> {
         std::fs::read_dir(&pids).ok()?.find_map(|e| {
             let name = e.ok()?.file_name().to_string_lossy().into_owned();
