@@ -22,7 +22,8 @@
 //! - On top: [`explore`] (fuzz, probe) and [`bench`].
 //!
 //! [`deadline`] is the per-case time limit that the long loops of every
-//! stage poll.
+//! stage poll; [`stop`] is how SIGINT and SIGTERM stop a run (the runner
+//! polls it, external programs register their children with it).
 
 pub mod adapters;
 pub mod bench;
@@ -38,6 +39,7 @@ pub mod rasterizer;
 pub mod reference;
 pub mod report;
 pub mod scene;
+pub mod stop;
 
 pub use frame::Frame;
 pub use plan::Plan;

@@ -77,6 +77,8 @@ pub(crate) fn print_outcome(
                 return;
             }
         }
+        // Listed once, in the run's summary line.
+        Some(Problem::Interrupted) => return,
         None => {}
     }
     if let Some(GoldenStatus::Differs(why)) = &outcome.golden {

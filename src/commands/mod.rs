@@ -37,6 +37,9 @@ pub enum Exit {
     /// 3: nothing was judged: every selected case unsupported by every
     /// candidate, or a selection that matched no case.
     NothingJudged,
+    /// 128 + the signal (130: SIGINT, 143: SIGTERM): the run was stopped
+    /// and its report is partial (`crate::stop`).
+    Interrupted(i32),
 }
 
 impl Exit {
@@ -47,6 +50,7 @@ impl Exit {
             Exit::Fail => 1,
             Exit::BadInput => 2,
             Exit::NothingJudged => 3,
+            Exit::Interrupted(signal) => crate::stop::exit_code(signal),
         }
     }
 }

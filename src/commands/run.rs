@@ -127,6 +127,12 @@ pub fn run(args: RunArgs) -> Exit {
     );
     report.cases = files.iter().map(CaseEntry::not_run).collect();
     if let Some(dir) = &args.report {
+        // What an earlier run wrote there goes first, so that no file in
+        // the folder can be mistaken for this run's.
+        if let Err(e) = report::remove_owned(dir) {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
         // Written first, so that a run that is killed still leaves a report
         // that lists what did not run.
         if let Err(e) = report::write_json(dir, &mut report) {
@@ -134,6 +140,9 @@ pub fn run(args: RunArgs) -> Exit {
             return Exit::BadInput;
         }
     }
+    // From here on, SIGINT and SIGTERM stop the run: no new case starts,
+    // external programs are killed, and the partial report is written.
+    crate::stop::install();
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
@@ -162,7 +171,8 @@ pub fn run(args: RunArgs) -> Exit {
         .iter()
         .map(|o| CaseEntry::from_outcome(o, &foils))
         .collect();
-    report.complete = true;
+    let stopped = crate::stop::requested();
+    report.complete = stopped.is_none();
     report.tally();
     let t = report.totals.clone();
     let failed = t.reference_failed > 0
@@ -197,6 +207,17 @@ pub fn run(args: RunArgs) -> Exit {
             );
         }
     }
+    if let Some(signal) = stopped {
+        println!(
+            "stopped by {}: {} cases did not run",
+            if signal == crate::stop::SIGINT {
+                "SIGINT"
+            } else {
+                "SIGTERM"
+            },
+            t.not_run
+        );
+    }
     let g = &t.golden;
     outln!(
         "golden files: {} match, {} differ, {} missing{}",
@@ -223,7 +244,9 @@ pub fn run(args: RunArgs) -> Exit {
         .verdicts
         .iter()
         .any(|v| v.tally.pass + v.tally.fail + v.tally.foil + v.tally.error > 0);
-    if bad_input {
+    if let Some(signal) = stopped {
+        Exit::Interrupted(signal)
+    } else if bad_input {
         Exit::BadInput
     } else if failed {
         Exit::Fail

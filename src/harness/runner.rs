@@ -109,6 +109,9 @@ pub enum Problem {
     /// (`--case-timeout`): an error of the run's limits, like a canvas too
     /// large, not of the case or of the rasterizers.
     LimitExceeded(String),
+    /// The run was stopped (SIGINT or SIGTERM, `crate::stop`) before this
+    /// case finished: it did not run, and has no verdict.
+    Interrupted,
 }
 
 impl Problem {
@@ -118,6 +121,7 @@ impl Problem {
         match self {
             Problem::Unreadable(e) | Problem::LimitExceeded(e) => e.clone(),
             Problem::ReferenceFailed(e) => format!("the reference failed: {e}"),
+            Problem::Interrupted => "the run was stopped before this case finished".to_owned(),
         }
     }
 
@@ -129,6 +133,19 @@ impl Problem {
 }
 
 impl CaseOutcome {
+    /// A case that did not run, or did not finish, because the run was
+    /// stopped.
+    pub fn interrupted(file: &CaseFile) -> CaseOutcome {
+        CaseOutcome {
+            file: file.clone(),
+            scene: None,
+            problem: Some(Problem::Interrupted),
+            reference: None,
+            golden: None,
+            candidates: Vec::new(),
+        }
+    }
+
     pub fn reference_time(&self) -> Duration {
         self.reference
             .as_ref()
@@ -218,6 +235,11 @@ pub fn run_case(
 
 /// Runs every case on `threads` threads (all cores when `None`), calling
 /// `done` as each finishes. The outcomes come back in the order of `files`.
+///
+/// Once a stop is requested (`crate::stop`: SIGINT or SIGTERM), no new case
+/// starts, and a case that finishes after the request (its external
+/// programs were killed under it) is [`CaseOutcome::interrupted`] too: every
+/// verdict kept is one the case earned before the signal.
 pub fn run_all(
     files: &[CaseFile],
     limits: &Limits,
@@ -230,7 +252,13 @@ pub fn run_all(
         files
             .par_iter()
             .map(|file| {
+                if crate::stop::requested().is_some() {
+                    return CaseOutcome::interrupted(file);
+                }
                 let outcome = run_case(file, limits, candidates, root);
+                if crate::stop::requested().is_some() {
+                    return CaseOutcome::interrupted(file);
+                }
                 done(&outcome);
                 outcome
             })

@@ -179,18 +179,20 @@ pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBu
     if !time.is_empty() {
         layers.push(layer("time", canvas, time));
     }
+    let mut bytes = Vec::new();
+    let buffer = std::io::Cursor::new(&mut bytes);
     let written = match layers.len() {
         0 => return Err(format!("{}: nothing to compare", path.display())),
         1 => Image::from_layer(layers.pop().expect("one layer"))
             .write()
-            .to_file(path),
+            .to_buffered(buffer),
         _ => Image::from_layers(
             ImageAttributes::new(IntegerBounds::new((0, 0), canvas)),
             layers,
         )
         .write()
-        .to_file(path),
+        .to_buffered(buffer),
     };
     written.map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(path.to_owned())
+    super::write_file(path, &bytes)
 }

@@ -321,6 +321,7 @@ impl CaseEntry {
             Some(Problem::Unreadable(_)) => "unreadable",
             Some(Problem::ReferenceFailed(_)) => "reference-failed",
             Some(Problem::LimitExceeded(_)) => "limit-exceeded",
+            Some(Problem::Interrupted) => return entry,
         };
         entry.error = outcome.problem.as_ref().map(Problem::message);
         if let Some(scene) = &outcome.scene {

@@ -365,9 +365,13 @@ fn save_all(
     let mut written = Vec::new();
     for (name, img) in images {
         let path = dir.join(name);
-        img.save(&path)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-        written.push(path);
+        let mut bytes = Vec::new();
+        img.write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+        written.push(super::write_file(&path, &bytes)?);
     }
     Ok(written)
 }

@@ -152,9 +152,13 @@ impl External {
     }
 
     fn start(&self) -> Result<Child, RasterError> {
-        self.command()
+        let child = self
+            .command()
             .spawn()
-            .map_err(|e| RasterError::Failed(format!("cannot start {:?}: {e}", self.program)))
+            .map_err(|e| RasterError::Failed(format!("cannot start {:?}: {e}", self.program)))?;
+        // Killed on SIGINT or SIGTERM; forgotten when reaped (`wait_until`, `kill`).
+        crate::stop::register(child.id());
+        Ok(child)
     }
 
     /// One process for this case: request on stdin, response on stdout.
@@ -422,7 +426,10 @@ fn wait_until_or(
             return None;
         }
         match child.try_wait() {
-            Ok(Some(status)) => return Some(status),
+            Ok(Some(status)) => {
+                crate::stop::unregister(child.id());
+                return Some(status);
+            }
             Ok(None) => {}
             // Cannot be waited for: treat as exited, the caller kills it.
             Err(_) => return None,
@@ -438,6 +445,7 @@ fn wait_until_or(
 
 /// Kills a child and reaps it.
 fn kill(child: &mut Child) {
+    crate::stop::unregister(child.id());
     let _ = child.kill();
     let _ = child.wait();
 }
