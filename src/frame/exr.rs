@@ -276,10 +276,10 @@ pub fn read(path: &Path, size: (usize, usize)) -> Result<Channels, String> {
 
 /// Every layer of a golden file with its size and channels (f32 values;
 /// u32 words as stored). A file with a layer of more than `max_pixels`
-/// pixels (the largest layer of the frame it is compared with) is refused
-/// from its header, before anything is decoded.
+/// pixels (the largest layer the case's canvas can have) is refused from
+/// its header, before anything is decoded.
 pub(crate) fn read_layers(path: &Path, max_pixels: usize) -> Result<Vec<LayerData>, String> {
-    check_size(path, max_pixels, "any layer of this case")?;
+    check_size(path, max_pixels, "any layer of this canvas")?;
     let image =
         read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(image
