@@ -29,12 +29,13 @@ pub fn check(frame: &Frame, path: &Path) -> Result<(), String> {
     // sample count a case may ask for: a file of another sample count is
     // still read, and then said to differ in its sample count; a header
     // claiming more is refused before anything is decoded.
+    let any_count = frame.width as usize
+        * frame.height as usize
+        * crate::scene::samples::limits::MAX_SAMPLES as usize;
     let largest = expected
         .iter()
         .map(|l| l.size.0 * l.size.1)
-        .chain([frame.width as usize
-            * frame.height as usize
-            * crate::scene::samples::limits::MAX_SAMPLES as usize])
+        .chain([any_count])
         .max()
         .unwrap_or(0);
     let mut stored = read_layers(path, largest)?;
