@@ -1,7 +1,7 @@
 //! Watertight meshes: random fans, polygons and jittered grids, each
 //! interior sample covered exactly once under every consistent rule.
 
-use crate::strategies::{any_bits, coord, orient, placed, production, scene_of, Exact2};
+use crate::strategies::{any_bits, coord, placed, production, scene_of, Exact2};
 use proptest::prelude::*;
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
@@ -192,32 +192,19 @@ fn jittered_grid() -> impl Strategy<Value = Shape> {
 /// reversed or its vertices rotated at random. `None` when snapping folded
 /// a triangle over (the shape is then no longer a mesh).
 fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Scene> {
-    let (points, triangles) = match shape {
-        Shape::Triangles(points, triangles) => (points, triangles),
+    let place = |p: &[Number; 2]| p.each_ref().map(|c| placed(c, bits));
+    let (points, placed_points, triangles) = match shape {
+        Shape::Triangles(points, triangles) => {
+            let placed_points: Vec<Exact2> = points.iter().map(place).collect();
+            (points, placed_points, triangles)
+        }
         Shape::Star { centre, points } => {
-            let placed_points: Vec<Exact2> = points
-                .iter()
-                .map(|p| p.each_ref().map(|c| placed(c, bits)))
-                .collect();
+            let placed_points: Vec<Exact2> = points.iter().map(place).collect();
             let triangles = rastercheck::explore::fuzz::ear_clip_star(centre, &placed_points)?;
-            (points, triangles)
+            (points, placed_points, triangles)
         }
     };
-    let placed_points: Vec<Exact2> = points
-        .iter()
-        .map(|p| p.each_ref().map(|c| placed(c, bits)))
-        .collect();
-    let signs: Vec<_> = triangles
-        .iter()
-        .map(|t| {
-            orient(
-                &placed_points[t[0]],
-                &placed_points[t[1]],
-                &placed_points[t[2]],
-            )
-        })
-        .collect();
-    if signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+    if !rastercheck::explore::fuzz::winds_one_way(&placed_points, &triangles) {
         return None;
     }
     let primitives = triangles

@@ -74,7 +74,7 @@ mod search;
 mod shrink;
 
 pub use case_json::case_json;
-pub use family::{ear_clip, ear_clip_star, generate, Family};
+pub use family::{ear_clip, ear_clip_star, generate, winds_one_way, Family};
 pub use judge::{evaluate, kinds_named, Failure, Kind, Outcome};
 pub use rng::Rng;
 pub use search::{clock_seed, default_out, search, Found, Options, Summary};

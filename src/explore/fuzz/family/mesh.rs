@@ -235,6 +235,17 @@ pub fn ear_clip_star(centre: [f64; 2], points: &[[RBig; 2]]) -> Option<Vec<[usiz
     ear_clip(points, signs[0])
 }
 
+/// Whether every triangle of a mesh has the same, nonzero orientation on
+/// its placed points: no triangle folded over or collapsed by snapping.
+/// An empty mesh is no mesh.
+pub fn winds_one_way(points: &[Point], triangles: &[[usize; 3]]) -> bool {
+    let signs: Vec<_> = triangles
+        .iter()
+        .map(|t| orient(&points[t[0]], &points[t[1]], &points[t[2]]))
+        .collect();
+    !signs.is_empty() && signs.iter().all(|s| *s == signs[0] && !s.is_eq())
+}
+
 /// A mesh scene, or `None` when snapping folded a triangle over (the shape
 /// is then no longer a mesh).
 pub(super) fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
@@ -247,26 +258,18 @@ pub(super) fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
     };
     let bits = any_bits(rng);
     let at = |p: &[Number; 2]| p.each_ref().map(|c| placed(c, bits));
-    let (points, triangles) = match shape {
-        Shape::Triangles(points, triangles) => (points, triangles),
+    let (points, placed_points, triangles) = match shape {
+        Shape::Triangles(points, triangles) => {
+            let placed_points: Vec<Point> = points.iter().map(at).collect();
+            (points, placed_points, triangles)
+        }
         Shape::Star { centre, points } => {
             let placed_points: Vec<Point> = points.iter().map(at).collect();
             let triangles = ear_clip_star(centre, &placed_points)?;
-            (points, triangles)
+            (points, placed_points, triangles)
         }
     };
-    let placed_points: Vec<Point> = points.iter().map(at).collect();
-    let signs: Vec<_> = triangles
-        .iter()
-        .map(|t| {
-            orient(
-                &placed_points[t[0]],
-                &placed_points[t[1]],
-                &placed_points[t[2]],
-            )
-        })
-        .collect();
-    if signs.is_empty() || signs.iter().any(|s| *s != signs[0] || s.is_eq()) {
+    if !winds_one_way(&placed_points, &triangles) {
         return None;
     }
     // Values belong to points, so that shared vertices agree.

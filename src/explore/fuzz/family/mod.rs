@@ -11,7 +11,7 @@ mod motion;
 mod polygons;
 mod triangles;
 
-pub use mesh::{ear_clip, ear_clip_star};
+pub use mesh::{ear_clip, ear_clip_star, winds_one_way};
 
 use super::case_json::valid;
 use super::rng::Rng;
