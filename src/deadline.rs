@@ -12,6 +12,9 @@
 //! it returns: taking longer than the limit is exceeding it, so the verdict
 //! does not depend on where the polls are.
 //!
+//! A stop of the run (SIGINT, SIGTERM) ends the work at its next poll the
+//! same way, so a long case does not hold the run past the signal.
+//!
 //! Without a deadline, [`check`] is one thread-local read.
 
 use std::any::Any;
@@ -76,11 +79,14 @@ pub fn remaining() -> Option<Duration> {
         .map(|(deadline, _)| deadline.saturating_duration_since(Instant::now()))
 }
 
-/// Unwinds with [`Exceeded`] when this thread's deadline has passed.
+/// Unwinds with [`Exceeded`] when this thread's deadline has passed, or
+/// when the run was stopped (SIGINT or SIGTERM, [`crate::stop`]): then the
+/// case in flight stops at its next poll instead of running to its end,
+/// and the runner records it as not run.
 #[inline]
 pub fn check() {
     if let Some((deadline, limit)) = DEADLINE.with(Cell::get) {
-        if Instant::now() > deadline {
+        if Instant::now() > deadline || crate::stop::requested().is_some() {
             std::panic::resume_unwind(Box::new(Exceeded { limit }));
         }
     }

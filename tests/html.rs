@@ -89,18 +89,85 @@ fn attribute<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
     Some(&tag[start..start + len])
 }
 
-/// A dda-f32 foil card with its reference, candidate and diff pictures.
-fn has_foil_card_with_pictures(html: &str) -> bool {
+/// A dda-f32 foil card with its reference, candidate and diff pictures,
+/// each a PNG file of the report folder `dir` (the page's base).
+fn has_foil_card_with_pictures(html: &str, dir: &Path) -> bool {
     cards(html).iter().any(|card| {
         let head = &card[..card.find('>').unwrap()];
         attribute(head, "data-rasterizer") == Some("dda-f32")
             && attribute(head, "data-verdict") == Some("foil")
             && ["reference", "candidate", "diff"].iter().all(|role| {
-                card.contains(&format!(
-                    "data-role=\"{role}\" src=\"data:image/png;base64,"
-                ))
+                let tag = format!("data-role=\"{role}\" src=\"");
+                card.find(&tag).is_some_and(|at| {
+                    let src = &card[at + tag.len()..];
+                    let src = &src[..src.find('"').unwrap()];
+                    src.starts_with("images/") && src.ends_with(".png") && dir.join(src).is_file()
+                })
             })
     })
+}
+
+/// Every case page of the report folder `dir`, by path, with its text.
+fn pages(dir: &Path) -> Vec<(PathBuf, String)> {
+    let mut found = Vec::new();
+    let mut folders = vec![dir.join("pages")];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(&folder).unwrap().flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                folders.push(path);
+            } else if path.extension().is_some_and(|e| e == "html") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                found.push((path, text));
+            }
+        }
+    }
+    found.sort();
+    found
+}
+
+/// The value of every `href="..."` in `html` that is not an anchor.
+fn links(html: &str) -> Vec<&str> {
+    html.split("href=\"")
+        .skip(1)
+        .map(|rest| &rest[..rest.find('"').unwrap()])
+        .filter(|l| !l.starts_with('#') && !l.ends_with('/'))
+        .collect()
+}
+
+/// A relative URL of the report folder as a file path: no anchor, and
+/// percent escapes decoded.
+fn url_file(url: &str) -> String {
+    let url = url.split('#').next().unwrap();
+    let mut out = Vec::new();
+    let bytes = url.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            out.push(u8::from_str_radix(&url[i + 1..i + 3], 16).unwrap());
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).unwrap()
+}
+
+/// Opens `page` in Chromium and returns its DOM after load, with what the
+/// page's script recorded on `<body>`: pictures decoded of all, script
+/// errors, and the milliseconds from navigation to the load event.
+fn open(chromium: &Path, profile: &Path, page: &Path, out: &Path) -> (String, String, u32, f64) {
+    run_chromium(chromium, profile, page, &["--dump-dom".to_owned()], out);
+    let dom = std::fs::read_to_string(out).unwrap();
+    let body = &dom[dom.find("<body").expect("a body")..];
+    let tag = &body[..body.find('>').unwrap()];
+    let images = attribute(tag, "data-images")
+        .expect("the page's load script ran")
+        .to_owned();
+    let errors = attribute(tag, "data-errors").unwrap().parse().unwrap();
+    let load_ms = attribute(tag, "data-load-ms").unwrap().parse().unwrap();
+    (dom.clone(), images, errors, load_ms)
 }
 
 fn check_exr(dir: &Path, report: &Value) -> usize {
@@ -245,42 +312,64 @@ fn the_html_report_opens_in_a_browser_with_every_picture() {
         started.elapsed().as_secs_f64()
     );
 
-    // The page is self-contained.
+    // The index is light: no picture embedded, nothing from the network,
+    // and every link resolves in the report folder.
     let page = dir.join("index.html");
     let html = std::fs::read_to_string(&page).expect("index.html is written");
     eprintln!("index.html: {} bytes", html.len());
-    let images = html.matches("<img ").count();
-    assert!(images > 0);
-    assert_eq!(
-        html.matches("<img data-role=").count(),
-        html.matches(" src=\"data:image/png;base64,").count()
+    assert!(html.len() < 1 << 20, "index.html has {} bytes", html.len());
+    assert!(
+        !html.contains("data:image"),
+        "a picture embedded in the index"
     );
     assert!(
         !html.contains("src=\"http") && !html.contains("<link"),
         "external resources"
     );
-    assert!(
-        has_foil_card_with_pictures(&html),
-        "no dda-f32 foil card with three pictures"
-    );
-
-    // Every case link resolves from the report folder.
-    let links: Vec<&str> = html
-        .split("class=\"case-json\" href=\"")
-        .skip(1)
-        .map(|rest| &rest[..rest.find('"').unwrap()])
-        .collect();
-    assert!(!links.is_empty());
-    for link in &links {
+    let index_links = links(&html);
+    assert!(index_links.iter().any(|l| l.starts_with("pages/")));
+    for link in &index_links {
         assert!(
-            dir.join(link).is_file(),
-            "case link {link} does not resolve"
+            dir.join(url_file(link)).is_file(),
+            "{link} does not resolve"
         );
     }
 
-    // The EXR error maps agree with the metrics.
+    // The case pages: the foil's cards with their pictures, and links that
+    // resolve against the report folder (each page's `<base>`).
+    let pages = pages(&dir);
+    assert!(!pages.is_empty(), "no case pages");
+    let foil_page = pages
+        .iter()
+        .find(|(_, text)| has_foil_card_with_pictures(text, &dir))
+        .expect("no dda-f32 foil card with three pictures");
+    let mut case_links = 0;
+    for (path, text) in &pages {
+        let depth = path.strip_prefix(&dir).unwrap().components().count() - 1;
+        assert!(
+            text.contains(&format!("<base href=\"{}\">", "../".repeat(depth))),
+            "{}: no base at the report folder",
+            path.display()
+        );
+        for link in links(text) {
+            assert!(
+                dir.join(url_file(link)).is_file(),
+                "{}: {link} does not resolve",
+                path.display()
+            );
+            case_links += usize::from(link.ends_with(".json"));
+        }
+    }
+    assert!(case_links > 0, "no case file linked");
     let report: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
+    for case in report["cases"].as_array().unwrap() {
+        if let Some(page) = case["page"].as_str() {
+            assert!(dir.join(page).is_file(), "{page}");
+        }
+    }
+
+    // The EXR error maps agree with the metrics.
     let maps = check_exr(&dir, &report);
     assert!(maps > 0, "no EXR error maps");
     let foils = report["totals"]["verdicts"][1]["foil"].as_u64().unwrap();
@@ -315,23 +404,35 @@ fn the_html_report_opens_in_a_browser_with_every_picture() {
     colours.dedup();
     assert!(colours.len() > 20, "the screenshot looks blank");
 
-    let dom = dir.join("dom.html");
-    run_chromium(&chromium, &profile, &page, &["--dump-dom".to_owned()], &dom);
-    let dom = std::fs::read_to_string(&dom).unwrap();
-    let body = &dom[dom.find("<body").expect("a body")..];
-    let decoded = attribute(&body[..body.find('>').unwrap()], "data-images")
-        .expect("the page's load script ran");
+    let (dom, decoded, errors, load_ms) = open(&chromium, &profile, &page, &dir.join("dom.html"));
+    let images = html.matches("<img ").count();
     assert_eq!(
         decoded,
         format!("{images}/{images}"),
-        "pictures that decoded / all"
+        "index pictures decoded / all"
     );
+    assert_eq!(errors, 0, "script errors on the index");
+    assert!(load_ms < 1000.0, "the index took {load_ms} ms to load");
+    assert!(dom.contains("Failures first"), "the DOM lacks the failures");
     assert!(
-        has_foil_card_with_pictures(&dom),
+        dom.contains("<h2>Families</h2>"),
+        "the DOM lacks the summary"
+    );
+
+    let (dom, decoded, errors, _) = open(&chromium, &profile, &foil_page.0, &dir.join("page.html"));
+    let images = foil_page.1.matches("<img ").count();
+    assert_eq!(
+        decoded,
+        format!("{images}/{images}"),
+        "case page pictures decoded / all"
+    );
+    assert_eq!(errors, 0, "script errors on a case page");
+    assert!(
+        has_foil_card_with_pictures(&dom, &dir),
         "the DOM lacks the foil card"
     );
     eprintln!(
-        "chromium: screenshot and DOM in {:.1} s; {decoded} pictures decoded",
+        "chromium: screenshot and DOMs in {:.1} s; the index loaded in {load_ms:.0} ms",
         browser.elapsed().as_secs_f64()
     );
     let _ = std::fs::remove_dir_all(&dir);
@@ -462,8 +563,9 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
     }
     assert!(check_exr(&report_dir, &report) >= 4);
 
-    // Passing antialiased results get a card too, drawn from the frames.
-    let html = std::fs::read_to_string(report_dir.join("index.html")).unwrap();
+    // Passing antialiased results get a card too, drawn from the frames, on
+    // their case's page.
+    let html: String = pages(&report_dir).into_iter().map(|(_, t)| t).collect();
     let aa_cards: Vec<&str> = cards(&html)
         .into_iter()
         .filter(|c| c.contains("<h4>resolved coverage</h4>"))

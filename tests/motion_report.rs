@@ -61,6 +61,7 @@ fn outcomes(dir: &Path, slides: &[Slide]) -> Vec<CaseOutcome> {
                 reference: Some(reference),
                 golden: Some(GoldenStatus::Matches),
                 candidates: runs,
+                written: Default::default(),
             }
         })
         .collect()
@@ -93,6 +94,20 @@ fn write_report(dir: &Path, outcomes: &[CaseOutcome]) -> (PathBuf, Value) {
     report::write_all(&out, &mut report, outcomes).expect("the report is written");
     let json = std::fs::read_to_string(out.join("report.json")).unwrap();
     (out, serde_json::from_str(&json).unwrap())
+}
+
+/// The text of every case page in the report folder `out`.
+fn pages(out: &Path) -> String {
+    let folder = out.join("pages/motion");
+    let mut names: Vec<PathBuf> = std::fs::read_dir(&folder)
+        .unwrap_or_else(|e| panic!("{}: {e}", folder.display()))
+        .map(|e| e.unwrap().path())
+        .collect();
+    names.sort();
+    names
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect()
 }
 
 fn slides() -> Vec<Slide> {
@@ -224,9 +239,9 @@ fn the_report_shows_time_coverage() {
     assert!(diff.pixels().any(|p| p.0[0] > 200 && p.0[2] < 100), "red");
     assert!(diff.pixels().any(|p| p.0[2] > 200 && p.0[0] < 100), "blue");
 
-    // The page: a time card per result (the sampler's error is not zero),
-    // each with its three pictures and the time metrics.
-    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    // The case pages: a time card per result (the sampler's error is not
+    // zero), each with its three pictures and the time metrics.
+    let html = pages(&out);
     let cards: Vec<&str> = html
         .split("<article")
         .skip(1)
@@ -346,7 +361,7 @@ fn a_frame_that_is_not_time_coverage_gets_no_time_pictures() {
     let result = &report["cases"][0]["results"][0];
     assert_eq!(result["verdict"], "error", "{result}");
     assert!(result.get("files").is_none(), "{result}");
-    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let html = pages(&out);
     assert!(html.contains("needs a time coverage per pixel"));
     let _ = std::fs::remove_dir_all(&dir);
 }

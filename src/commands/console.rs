@@ -95,7 +95,7 @@ pub(crate) fn print_outcome(
             Verdict::Unsupported(_) => ("UNSUPPORTED", YELLOW),
             Verdict::Error(_) => ("ERROR", RED),
         };
-        if quiet && matches!(result.verdict, Verdict::Pass) {
+        if quiet && matches!(result.verdict, Verdict::Pass | Verdict::Unsupported(_)) {
             continue;
         }
         outln!(

@@ -20,6 +20,11 @@ pub struct LimitArgs {
     /// Largest case file, in bytes, checked before it is read.
     #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_case_bytes)]
     pub max_case_bytes: u64,
+    /// Memory one case's frames may take, in bytes, estimated from the
+    /// scene before anything is allocated: the reference's frame, a
+    /// working copy, and one frame per candidate.
+    #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_case_memory)]
+    pub max_case_memory: u64,
     /// Seconds each rasterizer (the reference, then each candidate) may
     /// spend on one case; 0 for no limit. A case over it is an error.
     #[arg(long, value_name = "SECONDS", default_value_t = default_case_timeout(), value_parser = seconds)]
@@ -51,6 +56,7 @@ impl LimitArgs {
             max_primitives: self.max_primitives,
             max_samples: self.max_samples,
             max_case_bytes: self.max_case_bytes,
+            max_case_memory: self.max_case_memory,
             case_timeout: (seconds > 0.0).then(|| std::time::Duration::from_secs_f64(seconds)),
         }
     }

@@ -146,6 +146,12 @@ pub fn run(args: RunArgs) -> Exit {
 
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
+    // Each case's pictures, error maps and page are written as it
+    // finishes, and then its frames are released.
+    let writer = args
+        .report
+        .as_deref()
+        .map(|dir| report::case_files::CaseWriter::new(dir, &foils));
     let mut outcomes = crate::harness::profile::run_all_with_profiles(
         &files,
         &limits,
@@ -153,7 +159,12 @@ pub fn run(args: RunArgs) -> Exit {
         &declared,
         &root,
         args.threads,
-        &|_| progress.tick(),
+        &|outcome| {
+            if let Some(writer) = &writer {
+                outcome.written = writer.write(outcome);
+            }
+            progress.tick();
+        },
     );
     progress.finish();
     runner::reject_duplicate_names(&mut outcomes);
@@ -230,9 +241,12 @@ pub fn run(args: RunArgs) -> Exit {
             ""
         }
     );
-    if let Some(dir) = &args.report {
-        match report::write_all(dir, &mut report, &outcomes) {
-            Ok(written) => outln!("report: {} ({} files)", dir.display(), written.len()),
+    if let (Some(dir), Some(writer)) = (&args.report, writer) {
+        let written = writer
+            .finish()
+            .and_then(|cases| Ok(cases + report::write_summaries(dir, &mut report)?.len()));
+        match written {
+            Ok(n) => outln!("report: {} ({n} files)", dir.display()),
             Err(e) => {
                 eprintln!("error: writing the report: {e}");
                 return Exit::BadInput;

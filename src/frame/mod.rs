@@ -76,6 +76,32 @@ impl Frame {
         Frame::with_samples(width, height, 1, depth, attributes)
     }
 
+    /// The bytes [`Frame::for_plan`] allocates for a canvas and a plan,
+    /// computed before anything is allocated: what one rasterizer's answer
+    /// to the case holds (the runner bounds a case's memory with it,
+    /// `--max-case-memory`).
+    pub fn estimated_bytes(width: u32, height: u32, plan: &Plan) -> u64 {
+        let pixels = u64::from(width) * u64::from(height);
+        if plan.motion.is_some() {
+            return pixels * 8;
+        }
+        let samples = pixels * u64::from(plan.samples_per_pixel);
+        // coverage (u16) and last (u32) per sample, then f64 channels.
+        let channels = u64::from(plan.depth) + plan.attributes as u64;
+        let resolved = if plan.antialias.is_some() {
+            pixels * 8
+        } else {
+            0
+        };
+        samples * (2 + 4 + 8 * channels) + resolved
+    }
+
+    /// A frame of no pixels, standing in for one whose memory was given
+    /// back once its case was judged and written.
+    pub fn released() -> Frame {
+        Frame::with_samples(0, 0, 0, false, 0)
+    }
+
     /// An empty frame with room for what the plan asks for.
     pub fn for_plan(width: u32, height: u32, plan: &Plan) -> Frame {
         if plan.motion.is_some() {

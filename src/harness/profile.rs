@@ -7,7 +7,6 @@
 
 use std::path::Path;
 
-use rayon::prelude::*;
 use serde_json::Value;
 
 use super::runner::{self, CaseOutcome};
@@ -143,7 +142,9 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 }
 
 /// [`runner::run_all`], except that every candidate named by a profile is
-/// judged against a reference drawn under the profile's fill rule.
+/// judged against a reference drawn under the profile's fill rule. That is
+/// done on the case's own thread, before `done` sees the outcome, so that
+/// the case's frames can be released as soon as it is written.
 pub fn run_all_with_profiles(
     files: &[CaseFile],
     limits: &Limits,
@@ -151,7 +152,7 @@ pub fn run_all_with_profiles(
     declared: &[Declared],
     root: &Path,
     threads: Option<usize>,
-    done: &(dyn Fn(&CaseOutcome) + Sync),
+    done: &(dyn Fn(&mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
     let mut swapped: Vec<(usize, Box<dyn Rasterizer>, FillRule)> = Vec::new();
     for (index, candidate) in candidates.iter_mut().enumerate() {
@@ -163,12 +164,8 @@ pub fn run_all_with_profiles(
             swapped.push((index, std::mem::replace(candidate, stand_in), d.fill_rule));
         }
     }
-    let mut outcomes = runner::run_all(files, limits, candidates, root, threads, done);
-    let work = |outcomes: &mut Vec<CaseOutcome>| {
-        outcomes.par_iter_mut().for_each(|outcome| {
-            let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) else {
-                return;
-            };
+    let under_profiles = |outcome: &mut CaseOutcome| {
+        if let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) {
             for (index, candidate, rule) in &swapped {
                 let s = under_rule(scene, *rule);
                 let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
@@ -189,15 +186,10 @@ pub fn run_all_with_profiles(
                     *slot = run;
                 }
             }
-        })
+        }
+        done(outcome);
     };
-    match rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-    {
-        Ok(pool) => pool.install(|| work(&mut outcomes)),
-        Err(_) => work(&mut outcomes),
-    }
+    let outcomes = runner::run_all(files, limits, candidates, root, threads, &under_profiles);
     for (index, candidate, _) in swapped {
         candidates[index] = candidate;
     }

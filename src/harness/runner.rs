@@ -12,6 +12,7 @@ use std::time::Duration;
 use rayon::prelude::*;
 
 use crate::deadline;
+use crate::frame::Frame;
 use crate::harness::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
 use crate::rasterizer::Rasterizer;
 use crate::scene::{Limits, Scene};
@@ -97,6 +98,18 @@ pub struct CaseOutcome {
     pub reference: Option<ReferenceRun>,
     pub golden: Option<GoldenStatus>,
     pub candidates: Vec<CandidateRun>,
+    /// What the report folder got of the case's frames before they were
+    /// released (`report::case_files`), for the report to link.
+    pub written: Written,
+}
+
+/// Files written for one case, relative to the report folder.
+#[derive(Clone, Debug, Default)]
+pub struct Written {
+    /// The case's HTML page.
+    pub page: Option<String>,
+    /// Pictures and error maps, per candidate in order.
+    pub results: Vec<Vec<String>>,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -143,6 +156,21 @@ impl CaseOutcome {
             reference: None,
             golden: None,
             candidates: Vec::new(),
+            written: Written::default(),
+        }
+    }
+
+    /// Gives back the memory of the case's frames once it has been judged
+    /// and its pictures written: verdicts and metrics stay.
+    pub fn release_frames(&mut self) {
+        if let Some(reference) = &mut self.reference {
+            reference.frame = Frame::released();
+            reference.interior = None;
+            reference.areas = None;
+            reference.time = None;
+        }
+        for run in &mut self.candidates {
+            run.frame = None;
         }
     }
 
@@ -168,6 +196,7 @@ pub fn run_case(
         reference: None,
         golden: None,
         candidates: Vec::new(),
+        written: Written::default(),
     };
     let scene = match suite::load_checked(file, limits) {
         Ok(scene) => scene,
@@ -180,6 +209,14 @@ pub fn run_case(
             return outcome;
         }
     };
+    if let Some(over) = over_memory(&scene, limits, candidates.len()) {
+        outcome.problem = Some(Problem::LimitExceeded(format!(
+            "{}: {over}",
+            file.path.display()
+        )));
+        outcome.scene = Some(scene);
+        return outcome;
+    }
     let limit = limits.case_timeout;
     let reference = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         deadline::within(limit, || suite::run_reference(&scene))
@@ -233,8 +270,36 @@ pub fn run_case(
     outcome
 }
 
+/// Why a case's frames would take more memory than `--max-case-memory`
+/// allows, estimated from its scene before anything is allocated: the
+/// reference's frame, a working copy of it (metrics, pictures and error
+/// maps are computed from pairs of frames), one frame per candidate, and a
+/// byte per pixel for the mesh interior.
+pub fn over_memory(scene: &Scene, limits: &Limits, candidates: usize) -> Option<String> {
+    let plan = crate::plan::Plan::for_scene(scene);
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let frame = Frame::estimated_bytes(w, h, &plan);
+    let frames = 2 + candidates as u64;
+    let need = frame
+        .saturating_mul(frames)
+        .saturating_add(u64::from(w) * u64::from(h));
+    (need > limits.max_case_memory).then(|| {
+        const MIB: u64 = 1 << 20;
+        format!(
+            "its frames would take about {} MiB ({frames} frames of {} MiB: the reference's, a working copy and one per rasterizer), over the limit of {} MiB per case (raise it with --max-case-memory)",
+            need.div_ceil(MIB),
+            frame.div_ceil(MIB),
+            limits.max_case_memory / MIB
+        )
+    })
+}
+
 /// Runs every case on `threads` threads (all cores when `None`), calling
-/// `done` as each finishes. The outcomes come back in the order of `files`.
+/// `done` as each finishes, on the thread that ran it: it may write what it
+/// needs of the frames (pictures, error maps). Then the case's frames are
+/// released ([`CaseOutcome::release_frames`]), so a run holds the frames of
+/// the cases in flight only, never of the whole run. The outcomes come back
+/// in the order of `files`.
 ///
 /// Once a stop is requested (`crate::stop`: SIGINT or SIGTERM), no new case
 /// starts, and a case that finishes after the request (its external
@@ -246,7 +311,7 @@ pub fn run_all(
     candidates: &[Box<dyn Rasterizer>],
     root: &Path,
     threads: Option<usize>,
-    done: &(dyn Fn(&CaseOutcome) + Sync),
+    done: &(dyn Fn(&mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
     let work = || {
         files
@@ -255,11 +320,12 @@ pub fn run_all(
                 if crate::stop::requested().is_some() {
                     return CaseOutcome::interrupted(file);
                 }
-                let outcome = run_case(file, limits, candidates, root);
+                let mut outcome = run_case(file, limits, candidates, root);
                 if crate::stop::requested().is_some() {
                     return CaseOutcome::interrupted(file);
                 }
-                done(&outcome);
+                done(&mut outcome);
+                outcome.release_frames();
                 outcome
             })
             .collect()
@@ -290,11 +356,13 @@ pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> usize {
             }
             Some(first) => {
                 outcome.problem = Some(Problem::Unreadable(format!(
-                    "{path}: $.name: the case name {name:?} is also used by {first}; case names must be unique"
+                    "{path}: $.name: the case name {} is also used by {first}; case names must be unique",
+                    crate::scene::number::echo(&name)
                 )));
                 outcome.reference = None;
                 outcome.golden = None;
                 outcome.candidates.clear();
+                outcome.written = Written::default();
                 marked += 1;
             }
         }

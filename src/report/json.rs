@@ -49,6 +49,8 @@ pub struct LimitsInfo {
     pub max_canvas_pixels: u64,
     pub max_primitives: usize,
     pub max_samples: u64,
+    pub max_case_bytes: u64,
+    pub max_case_memory: u64,
     /// Seconds per rasterizer and case; `null` for none.
     pub case_timeout_s: Option<f64>,
 }
@@ -59,6 +61,8 @@ impl LimitsInfo {
             max_canvas_pixels: limits.max_canvas_pixels,
             max_primitives: limits.max_primitives,
             max_samples: limits.max_samples,
+            max_case_bytes: limits.max_case_bytes,
+            max_case_memory: limits.max_case_memory,
             case_timeout_s: limits.case_timeout.map(|d| d.as_secs_f64()),
         }
     }
@@ -114,6 +118,10 @@ pub struct CaseEntry {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub golden_detail: Option<String>,
     pub reference_ms: f64,
+    /// The case's HTML page, relative to the report folder, when it has
+    /// one (failures, departures, results with some error).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub page: Option<String>,
     pub results: Vec<ResultEntry>,
 }
 
@@ -308,6 +316,7 @@ impl CaseEntry {
             golden: None,
             golden_detail: None,
             reference_ms: 0.0,
+            page: None,
             results: Vec::new(),
         }
     }
@@ -355,6 +364,10 @@ impl CaseEntry {
                 files: Vec::new(),
             })
             .collect();
+        entry.page.clone_from(&outcome.written.page);
+        for (result, files) in entry.results.iter_mut().zip(&outcome.written.results) {
+            result.files.clone_from(files);
+        }
         entry
     }
 }

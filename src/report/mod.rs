@@ -15,13 +15,22 @@
 //!                          is not a pass or has any nonzero error (per
 //!                          sample; antialiased: resolved error per pixel;
 //!                          moving: exact, candidate and error per pixel)
-//! DIR/index.html           one self-contained page for people
+//! DIR/pages/<id>.html      one page per case worth a look (failures,
+//!                          departures, results with some error): its
+//!                          cards, pictures embedded, loaded only when opened
+//! DIR/index.html           the light page for people: totals, families,
+//!                          failures first, links to the case pages
 //! ```
+//!
+//! The pictures, error maps and case page of a case are written as soon as
+//! it is judged, while its frames are in memory (`case_files.rs`); the rest
+//! at the end, from `report.json`'s model alone.
 //!
 //! Every file is written whole or not at all ([`write_file`]: a temporary
 //! name, then a rename), and a run first removes what an earlier run wrote
 //! there ([`remove_owned`]), never a user's own files.
 
+pub mod case_files;
 pub mod exr;
 pub mod html;
 pub mod json;
@@ -34,10 +43,16 @@ use std::path::{Path, PathBuf};
 use json::Report;
 
 use crate::harness::runner::CaseOutcome;
-use crate::harness::suite::Verdict;
 
-/// Results that get pictures, at most: the page must stay loadable.
+/// Results that get PNG pictures, at most, over a run.
 pub const MAX_PICTURED: usize = 200;
+
+/// Case pages for failures, errors and problems, at most, over a run.
+pub const MAX_PROBLEM_PAGES: usize = 1000;
+
+/// Case pages for a foil's departures and passes with some error, at most,
+/// over a run.
+pub const MAX_PAGES: usize = 200;
 
 /// What the temporary name of a file being written ends with: a file so
 /// named is one rastercheck did not finish writing.
@@ -46,7 +61,7 @@ pub const TEMPORARY_SUFFIX: &str = ".rastercheck-partial";
 /// The files and folders a report folder holds that rastercheck wrote;
 /// nothing else in it is ever removed.
 pub const OWNED_FILES: [&str; 4] = ["report.json", "junit.xml", "summary.md", "index.html"];
-pub const OWNED_FOLDERS: [&str; 2] = ["images", "exr"];
+pub const OWNED_FOLDERS: [&str; 3] = ["images", "exr", "pages"];
 
 /// Writes `content` to `path` whole or not at all (every report file goes
 /// through here): into a temporary file in the same folder, then renamed
@@ -119,101 +134,37 @@ pub fn write_json(dir: &Path, report: &mut Report) -> Result<PathBuf, String> {
     write_file(&dir.join("report.json"), report.to_json().as_bytes())
 }
 
-/// Writes every output for a finished run.
+/// Writes every output for a finished run whose outcomes still hold their
+/// frames: each case's files ([`case_files::CaseWriter`]), then the
+/// summaries ([`write_summaries`]). `run` writes each case's files as it
+/// finishes instead, and only the summaries at the end.
 pub fn write_all(
     dir: &Path,
     report: &mut Report,
     outcomes: &[CaseOutcome],
 ) -> Result<Vec<PathBuf>, String> {
-    let mut written = Vec::new();
-    written.extend(write_pictures(dir, report, outcomes)?);
-    written.extend(write_error_maps(dir, report, outcomes)?);
-    written.push(write_json(dir, report)?);
-    written.push(write_file(
-        &dir.join("junit.xml"),
-        junit::render(report).as_bytes(),
-    )?);
-    written.push(write_file(
-        &dir.join("summary.md"),
-        summary::render(report).as_bytes(),
-    )?);
-    // Last: the page embeds the pictures written above.
-    written.push(write_file(
-        &dir.join("index.html"),
-        html::render(dir, report, outcomes).as_bytes(),
-    )?);
-    Ok(written)
-}
-
-/// EXR error maps for every result that is not a pass or has any error,
-/// recorded in the entry's files.
-fn write_error_maps(
-    dir: &Path,
-    report: &mut Report,
-    outcomes: &[CaseOutcome],
-) -> Result<Vec<PathBuf>, String> {
-    let mut written = Vec::new();
+    let foils: Vec<bool> = report.rasterizers.iter().map(|r| r.foil).collect();
+    let writer = case_files::CaseWriter::new(dir, &foils);
     for (entry, outcome) in report.cases.iter_mut().zip(outcomes) {
-        let Some(reference) = &outcome.reference else {
-            continue;
-        };
-        for (result, run) in entry.results.iter_mut().zip(&outcome.candidates) {
-            let (Some(frame), Some(metrics)) = (&run.frame, &run.metrics) else {
-                continue;
-            };
-            if !exr::has_error(matches!(run.verdict, Verdict::Pass), metrics) {
-                continue;
-            }
-            let path = dir
-                .join("exr")
-                .join(&entry.id)
-                .join(exr::file_name(&run.rasterizer));
-            let path = exr::write(&reference.frame, frame, &path)?;
-            result.files.push(relative(dir, &path));
-            written.push(path);
+        let written = writer.write(outcome);
+        entry.page = written.page;
+        for (result, files) in entry.results.iter_mut().zip(written.results) {
+            result.files = files;
         }
     }
-    Ok(written)
+    writer.finish()?;
+    write_summaries(dir, report)
 }
 
-/// PNGs for every result that is not a pass, recorded in the entry's files.
-fn write_pictures(
-    dir: &Path,
-    report: &mut Report,
-    outcomes: &[CaseOutcome],
-) -> Result<Vec<PathBuf>, String> {
-    let mut written = Vec::new();
-    let mut pictured = 0;
-    for (entry, outcome) in report.cases.iter_mut().zip(outcomes) {
-        let (Some(scene), Some(reference)) = (&outcome.scene, &outcome.reference) else {
-            continue;
-        };
-        for (result, run) in entry.results.iter_mut().zip(&outcome.candidates) {
-            let (Some(frame), Some(metrics)) = (&run.frame, &run.metrics) else {
-                continue;
-            };
-            if matches!(run.verdict, Verdict::Pass) || pictured >= MAX_PICTURED {
-                continue;
-            }
-            pictured += 1;
-            let folder = dir.join("images").join(&entry.id);
-            let scale = png::auto_scale(frame);
-            let paths = png::write_comparison(
-                scene,
-                &reference.frame,
-                &run.rasterizer,
-                frame,
-                &metrics.coverage.mask,
-                &folder,
-                scale,
-            )?;
-            for path in paths {
-                result.files.push(relative(dir, &path));
-                written.push(path);
-            }
-        }
-    }
-    Ok(written)
+/// Writes the files that summarise the run, from the report alone:
+/// `report.json`, `junit.xml`, `summary.md` and `index.html`.
+pub fn write_summaries(dir: &Path, report: &mut Report) -> Result<Vec<PathBuf>, String> {
+    Ok(vec![
+        write_json(dir, report)?,
+        write_file(&dir.join("junit.xml"), junit::render(report).as_bytes())?,
+        write_file(&dir.join("summary.md"), summary::render(report).as_bytes())?,
+        write_file(&dir.join("index.html"), html::render(report).as_bytes())?,
+    ])
 }
 
 /// Escapes text for XML and HTML content and attribute values. Control

@@ -264,6 +264,13 @@ pub mod limits {
     /// before it is read (reading holds about 33 times the file in memory).
     /// The largest bundled case is under 20 KiB.
     pub const DEFAULT_MAX_CASE_BYTES: u64 = 16 << 20;
+    /// Default memory one case's frames may take, in bytes: the
+    /// reference's frame, a working copy, and each candidate's, estimated
+    /// from the scene before any is allocated ([`crate::frame::Frame::estimated_bytes`]).
+    /// 4 GiB holds a case at `DEFAULT_MAX_SAMPLES` with depth and a few
+    /// attributes for one candidate; with 16 attributes such a case needs
+    /// about 38 GiB, and gets a limit verdict instead of ending the run.
+    pub const DEFAULT_MAX_CASE_MEMORY: u64 = 4 << 30;
     /// Default wall time per rasterizer and case.
     pub const DEFAULT_CASE_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(60);
     /// Largest number of attributes a vertex may carry.

@@ -11,4 +11,5 @@ mod answers;
 mod exit_codes;
 mod external;
 mod input;
+mod memory;
 mod reports;

@@ -218,6 +218,70 @@ fn assert_no_partial_files(dir: &Path) {
     assert!(partial.is_empty(), "{partial:?}");
 }
 
+/// A case that keeps the reference busy for minutes: 4000 triangles over
+/// the whole of a 1024² canvas, each tested at every pixel.
+fn slow_case() -> String {
+    let triangles: Vec<String> = (0..4000)
+        .map(|k| {
+            format!(
+                r#"{{"triangle": [[{}, 0], [1024, 1024], [0, 1024]]}}"#,
+                k % 7
+            )
+        })
+        .collect();
+    format!(
+        r#"{{"name": "slow", "canvas": {{"width": 1024, "height": 1024}}, "primitives": [{}]}}"#,
+        triangles.join(", ")
+    )
+}
+
+#[test]
+fn sigterm_stops_the_reference_in_the_middle_of_a_case() {
+    let dir =
+        crate::common::cli::workspace("signal-reference", &[("cases/a/slow.json", &slow_case())]);
+    let log = std::fs::File::create(dir.join("log.txt")).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args(["run", "cases", "--report", "out", "--case-timeout", "600"])
+        .current_dir(&dir)
+        .stdin(Stdio::null())
+        .stdout(log.try_clone().unwrap())
+        .stderr(log)
+        .spawn()
+        .unwrap();
+    let mut run = Cleanup {
+        child,
+        pids: dir.join("pids"),
+    };
+    let child = &mut run.child;
+    // Let the reference get going.
+    std::thread::sleep(Duration::from_millis(1500));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "the case finished too soon to test"
+    );
+    let sent = Instant::now();
+    let killed = Command::new("/bin/kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let mut status = None;
+    wait_for("rastercheck to stop", || {
+        status = child.try_wait().unwrap();
+        status.is_some()
+    });
+    let took = sent.elapsed();
+    let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
+    assert_eq!(status.unwrap().code(), Some(143), "{log}");
+    assert!(
+        took < Duration::from_secs(5),
+        "stopped {took:?} after the signal"
+    );
+    let report = read_json(&dir.join("out/report.json"));
+    assert_eq!(report["cases"][0]["status"], "not-run", "{report}");
+    assert_eq!(report["complete"], false);
+}
+
 #[test]
 fn sigterm_stops_the_run_kills_the_program_and_leaves_a_partial_report() {
     stopped_by("TERM", 143);

@@ -11,13 +11,13 @@ use std::fmt::Write as _;
 use std::path::{Component, Path, PathBuf};
 
 use super::pictures::{
-    colour_key, coverage_pictures, data_uri, figure, first_differences, heat_maps, picture_shape,
+    colour_key, coverage_pictures, figure, first_differences, heat_maps, picture_shape,
     COVERAGE_TWICE,
 };
 use super::tables::{badge, metrics_tables};
 use crate::frame::Frame;
 use crate::report::escape;
-use crate::report::json::{CaseEntry, MetricsEntry, Report, ResultEntry};
+use crate::report::json::{CaseEntry, MetricsEntry, ResultEntry};
 use crate::report::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
 use crate::scene::Scene;
 
@@ -25,7 +25,7 @@ use crate::scene::Scene;
 pub(super) const MAX_EMBEDDED_CASE: usize = 64 * 1024;
 
 /// Why a card is shown, in order of importance.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub(super) enum Kind {
     /// A failure, an error, a case that did not run, a differing golden file.
     Problem,
@@ -36,13 +36,20 @@ pub(super) enum Kind {
     Interpolation,
 }
 
-/// One card: a case (`result` None: the case itself has a problem) or a
-/// case × rasterizer.
-#[derive(Clone, Copy)]
-pub(super) struct Card {
+/// One card of a case's page: the case itself (`result` None: it has a
+/// problem of its own) or a case × rasterizer.
+#[derive(Clone, Copy, Debug)]
+pub struct Card {
     pub(super) kind: Kind,
-    pub(super) case: usize,
     pub(super) result: Option<usize>,
+}
+
+impl Card {
+    /// A failure, an error or a problem of the case: worth a page even
+    /// when pages for lesser cards have run out.
+    pub fn is_problem(&self) -> bool {
+        self.kind == Kind::Problem
+    }
 }
 
 pub(super) fn anchor(case: &CaseEntry, result: Option<&ResultEntry>) -> String {
@@ -74,33 +81,30 @@ pub(super) fn interpolation_error(m: &MetricsEntry) -> bool {
             .is_some_and(|t| t.max_error != 0.0 || t.max_error.is_nan())
 }
 
-/// Every card the run deserves, the most important first (case order within
-/// a kind).
-pub(super) fn cards(report: &Report) -> Vec<Card> {
+/// The cards a case deserves, the most important first: its own problem
+/// or differing golden file, failures and errors, a foil's departures,
+/// passes with some interpolation, coverage or time-coverage error.
+pub fn cards_of(case: &CaseEntry) -> Vec<Card> {
     let mut out = Vec::new();
-    for (c, case) in report.cases.iter().enumerate() {
-        if case.error.is_some() || case.golden == Some("differ") {
-            out.push(Card {
-                kind: Kind::Problem,
-                case: c,
-                result: None,
-            });
-        }
-        for (r, result) in case.results.iter().enumerate() {
-            let kind = match result.verdict {
-                "fail" | "error" => Kind::Problem,
-                "foil" => Kind::Departure,
-                "pass" if result.metrics.as_ref().is_some_and(interpolation_error) => {
-                    Kind::Interpolation
-                }
-                _ => continue,
-            };
-            out.push(Card {
-                kind,
-                case: c,
-                result: Some(r),
-            });
-        }
+    if case.error.is_some() || case.golden == Some("differ") {
+        out.push(Card {
+            kind: Kind::Problem,
+            result: None,
+        });
+    }
+    for (r, result) in case.results.iter().enumerate() {
+        let kind = match result.verdict {
+            "fail" | "error" => Kind::Problem,
+            "foil" => Kind::Departure,
+            "pass" if result.metrics.as_ref().is_some_and(interpolation_error) => {
+                Kind::Interpolation
+            }
+            _ => continue,
+        };
+        out.push(Card {
+            kind,
+            result: Some(r),
+        });
     }
     out.sort_by_key(|card| card.kind);
     out
@@ -238,9 +242,12 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         let candidate = find(&|f| !f.ends_with("/reference.png") && !f.ends_with(".diff.png"));
         let shape = picture_shape(case);
         let _ = write!(html, "<h4>coverage</h4><div class=\"pictures{shape}\">");
+        // Linked, not embedded: the files are beside the page, and the
+        // page's `<base>` is the report folder.
         let mut show = |file: Option<&String>, role: &str, caption: &str| {
-            if let Some(bytes) = file.and_then(|f| std::fs::read(dir.join(f)).ok()) {
-                html.push_str(&figure(&data_uri(&bytes), role, caption, None));
+            if let Some(f) = file.filter(|f| dir.join(f).is_file()) {
+                let url: Vec<String> = f.split('/').map(url_segment).collect();
+                html.push_str(&figure(&escape(&url.join("/")), role, caption, None));
             }
         };
         show(reference, "reference", "reference (exact)");

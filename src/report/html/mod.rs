@@ -1,12 +1,18 @@
-//! `index.html`: one self-contained page for people. Inline CSS, every
-//! picture embedded as a base64 `data:` URI, no script but a one-line check
-//! that the pictures decoded (it writes `data-images="decoded/total"` on the
-//! body, which the browser test reads).
+//! The HTML pages: `index.html`, light and built from the report alone,
+//! and one page per case worth a look (`pages/<id>.html`), written while
+//! the case's frames are in memory (`report::case_files`) and opened only
+//! when wanted. Inline CSS, no network, no script but a few lines that
+//! record on `<body>` what the browser test reads (pictures decoded, script
+//! errors, load time).
 //!
-//! The page: a header with the command, the totals per rasterizer and the
-//! golden files; one section per family (first segment of the case id) with
-//! a table of cases × rasterizers; and cards for what deserves a look, at
-//! most `MAX_PICTURED` of them, the worst first:
+//! The index: a header with the command, the totals per rasterizer and the
+//! golden files; a table of families × rasterizers; the failures first
+//! (failures, errors, problems and a foil's departures, with their first
+//! reason and a link to the card); then one section per family with a table
+//! of cases × rasterizers, each result linking to its card.
+//!
+//! A case page holds the case's cards ([`cards_of`]), the most important
+//! first:
 //!
 //! 1. failures and errors, unreadable cases, broken references, golden
 //!    files that differ;
@@ -14,11 +20,11 @@
 //! 3. passing results with a nonzero interpolation error (their heat maps).
 //!
 //! A result card shows the reference, the candidate and the difference mask
-//! (the PNGs `write_pictures` wrote, colour key in `png.rs`), the reasons,
-//! every metric, one heat map per interpolated channel (|candidate − exact|
-//! per pixel on a viridis scale from 0 to the channel's largest error), its
-//! files, and the case file (linked relative to the report folder, and
-//! embedded).
+//! (the PNGs `case_files` wrote, linked; colour key in `png.rs`), the
+//! reasons, every metric, one heat map per interpolated channel
+//! (|candidate − exact| per pixel on a viridis scale from 0 to the
+//! channel's largest error), its files, and the case file. Links are
+//! relative to the report folder, which the page's `<base>` names.
 //!
 //! An antialiased case's card shows its resolved coverage instead (drawn
 //! from the frames, for passes too): the exact area and the candidate's
@@ -35,17 +41,16 @@
 //! efficiency of a method that counts it). Passing results with any time
 //! error get a card too.
 //!
-//! The page is built in four rooms: this file (the page: header, totals,
-//! family tables, where the cards go), `cards.rs` (which results get a card,
-//! and the case and result cards), `tables.rs` (table cells and metrics
-//! tables) and `pictures.rs` (coverage pictures, heat maps, difference
-//! lists, PNG data URIs).
+//! The pages are built in four rooms: this file (the index and the case
+//! page), `cards.rs` (which results get a card, and the case and result
+//! cards), `tables.rs` (table cells and metrics tables) and `pictures.rs`
+//! (coverage pictures, heat maps, difference lists, PNG data URIs).
 
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::json::Report;
-use super::{escape, MAX_PICTURED};
+use super::json::{CaseEntry, Report};
+use super::{escape, MAX_PAGES, MAX_PROBLEM_PAGES};
 use crate::frame::Frame;
 use crate::harness::runner::CaseOutcome;
 
@@ -53,8 +58,8 @@ mod cards;
 mod pictures;
 mod tables;
 
-pub use cards::relative_url;
-use cards::{anchor, cards, case_card, result_card, Card, Kind, ResultView};
+use cards::{anchor, case_card, result_card, Kind, ResultView};
+pub use cards::{cards_of, relative_url, Card};
 pub use pictures::base64;
 use tables::{badge, cell, shorten};
 
@@ -106,11 +111,18 @@ details { margin-top:8px; } summary { cursor:pointer; color:#0b62c4; }
 .files { font-size:12px; }
 "#;
 
-/// After load, counts the pictures that decoded.
-const SCRIPT: &str = r#"window.addEventListener('load', function () {
+/// After load, records on `<body>` for the browser test: the pictures that
+/// decoded of all (`data-images`), the script errors seen
+/// (`data-errors`), and the milliseconds from navigation to load
+/// (`data-load-ms`).
+const SCRIPT: &str = r#"var rastercheckErrors = 0;
+window.addEventListener('error', function () { rastercheckErrors++; }, true);
+window.addEventListener('load', function () {
   var imgs = document.images, ok = 0;
   for (var i = 0; i < imgs.length; i++) { if (imgs[i].complete && imgs[i].naturalWidth > 0) ok++; }
   document.body.dataset.images = ok + '/' + imgs.length;
+  document.body.dataset.errors = rastercheckErrors;
+  document.body.dataset.loadMs = Math.round(performance.now());
 });"#;
 
 fn shell_quote(arg: &str) -> String {
@@ -125,15 +137,79 @@ fn shell_quote(arg: &str) -> String {
     }
 }
 
-/// The whole page. `dir` is the report folder (links are relative to it);
-/// `outcomes` are in the order of `report.cases`.
-pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
-    let t = &report.totals;
-    let mut html = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>rastercheck report</title>\n<style>");
+fn head(title: &str, base: Option<&str>) -> String {
+    let mut html = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
+    if let Some(base) = base {
+        let _ = writeln!(html, "<base href=\"{}\">", escape(base));
+    }
+    let _ = write!(html, "<title>{}</title>\n<style>", escape(title));
     html.push_str(STYLE);
     html.push_str("</style>\n<script>");
     html.push_str(SCRIPT);
     html.push_str("</script></head>\n<body><main>\n");
+    html
+}
+
+/// The file of a case's page, relative to the report folder.
+pub fn page_file(id: &str) -> String {
+    format!("pages/{id}.html")
+}
+
+/// A link from the report folder to a case's page, at `anchor`.
+fn page_url(page: &str, anchor: &str) -> String {
+    let url: Vec<String> = page.split('/').map(cards::url_segment).collect();
+    format!("{}#{anchor}", url.join("/"))
+}
+
+/// The page of one case: its cards (see [`cards_of`]) drawn from the
+/// outcome's frames, which must still be in memory. Its links are
+/// relative to the report folder `dir` (a `<base>` points there).
+pub fn page(dir: &Path, case: &CaseEntry, shown: &[Card], outcome: &CaseOutcome) -> String {
+    let depth = page_file(&case.id).matches('/').count();
+    let mut html = head(
+        &format!("{} · rastercheck", case.id),
+        Some(&"../".repeat(depth)),
+    );
+    let _ = write!(
+        html,
+        "<p class=\"muted\"><a href=\"index.html\">rastercheck report</a> › {} › {}</p>",
+        escape(&case.family),
+        escape(&case.id)
+    );
+    let reference = outcome.reference.as_ref().map(|r| &r.frame);
+    for card in shown {
+        match card.result {
+            None => html.push_str(&case_card(dir, case)),
+            Some(r) => {
+                let view = ResultView {
+                    case,
+                    result: &case.results[r],
+                    scene: outcome.scene.as_ref(),
+                    reference,
+                    candidate: outcome
+                        .candidates
+                        .get(r)
+                        .and_then(|run| run.frame.as_ref())
+                        .filter(|f| reference.is_some_and(|r| same_shape(r, f))),
+                };
+                html.push_str(&result_card(dir, &view));
+            }
+        }
+        html.push('\n');
+    }
+    html.push_str("</main></body></html>\n");
+    html
+}
+
+/// Rows of the failures table on the index, at most.
+const MAX_FAILURE_ROWS: usize = 500;
+
+/// The index: the run's header, totals, a family × rasterizer summary, the
+/// failures first, then one table per family. Built from the report alone;
+/// pictures live on the case pages, so the index stays light.
+pub fn render(report: &Report) -> String {
+    let t = &report.totals;
+    let mut html = head("rastercheck report", None);
 
     // Header.
     let _ = write!(
@@ -177,39 +253,6 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
         t.cases, t.unreadable, t.reference_failed, t.limit_exceeded, t.not_run, g.matching, g.differing, g.missing
     );
 
-    // Cards: chosen over the whole run, the most important first.
-    let all = cards(report);
-    let shown: Vec<Card> = all.iter().copied().take(MAX_PICTURED).collect();
-    if all.len() > shown.len() {
-        let left: Vec<String> = [
-            (Kind::Problem, "failures and problems"),
-            (Kind::Departure, "foil departures"),
-            (
-                Kind::Interpolation,
-                "error maps of passing results (interpolation, antialiasing, time coverage)",
-            ),
-        ]
-        .iter()
-        .filter_map(|(kind, name)| {
-            let n = all[shown.len()..]
-                .iter()
-                .filter(|c| c.kind == *kind)
-                .count();
-            (n > 0).then(|| format!("{n} {name}"))
-        })
-        .collect();
-        let _ = write!(
-            html,
-            "<div class=\"banner\">{} of {} cards shown (at most {MAX_PICTURED}); left out: {}. report.json has every result.</div>",
-            shown.len(),
-            all.len(),
-            left.join(", ")
-        );
-    }
-    let carded = |case: usize, result: Option<usize>| {
-        shown.iter().any(|c| c.case == case && c.result == result)
-    };
-
     // Families, in order of first appearance.
     let mut families: Vec<&str> = Vec::new();
     for case in &report.cases {
@@ -217,24 +260,25 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
             families.push(&case.family);
         }
     }
-    html.push_str("<p>Families: ");
-    let nav: Vec<String> = families
+    html.push_str(&family_summary(report, &families));
+    html.push_str(&failures(report));
+    let unpaged = report
+        .cases
         .iter()
-        .map(|f| {
-            let n = report.cases.iter().filter(|c| c.family == *f).count();
-            format!(
-                "<a href=\"#family-{}\">{}</a> ({n})",
-                escape(&slug(f)),
-                escape(f)
-            )
-        })
-        .collect();
-    html.push_str(&nav.join(" · "));
-    html.push_str("</p>\n");
+        .filter(|c| c.page.is_none() && !cards_of(c).is_empty())
+        .count();
+    if unpaged > 0 && report.complete {
+        let _ = write!(
+            html,
+            "<div class=\"banner\">{unpaged} cases worth a look have no page of their own (at most {MAX_PROBLEM_PAGES} pages of failures and {MAX_PAGES} others are written); report.json has every result.</div>"
+        );
+    }
 
     for family in &families {
-        let members: Vec<usize> = (0..report.cases.len())
-            .filter(|&c| report.cases[c].family == *family)
+        let members: Vec<&CaseEntry> = report
+            .cases
+            .iter()
+            .filter(|c| c.family == *family)
             .collect();
         let _ = write!(
             html,
@@ -249,16 +293,14 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
             let _ = write!(html, "<th>{}</th>", escape(&r.name));
         }
         html.push_str("</tr>\n");
-        for &c in &members {
-            let case = &report.cases[c];
-            let id_cell = if carded(c, None) {
-                format!(
-                    "<a href=\"#{}\">{}</a>",
-                    anchor(case, None),
+        for case in members {
+            let id_cell = match &case.page {
+                Some(page) => format!(
+                    "<a href=\"{}\">{}</a>",
+                    escape(&page_url(page, &anchor(case, None))),
                     escape(&case.id)
-                )
-            } else {
-                escape(&case.id)
+                ),
+                None => escape(&case.id),
             };
             let _ = write!(html, "<tr><td class=\"id\">{id_cell}</td><td>");
             if let Some(golden) = case.golden {
@@ -275,45 +317,148 @@ pub fn render(dir: &Path, report: &Report, outcomes: &[CaseOutcome]) -> String {
                     escape(&shorten(why, 160))
                 );
             } else {
+                let carded = cards_of(case);
                 for (r, result) in case.results.iter().enumerate() {
-                    let link = carded(c, Some(r)).then(|| anchor(case, Some(result)));
+                    let link = case
+                        .page
+                        .as_ref()
+                        .filter(|_| carded.iter().any(|c| c.result == Some(r)))
+                        .map(|page| page_url(page, &anchor(case, Some(result))));
                     let _ = write!(html, "<td>{}</td>", cell(result, link.as_deref()));
                 }
             }
             html.push_str("</tr>\n");
         }
-        html.push_str("</table>\n");
-
-        // This family's cards, worst first.
-        for card in shown.iter().filter(|card| members.contains(&card.case)) {
-            let case = &report.cases[card.case];
-            let outcome = outcomes.get(card.case).filter(|o| o.file.id == case.id);
-            match card.result {
-                None => html.push_str(&case_card(dir, case)),
-                Some(r) => {
-                    let result = &case.results[r];
-                    let view = ResultView {
-                        case,
-                        result,
-                        scene: outcome.and_then(|o| o.scene.as_ref()),
-                        reference: outcome.and_then(|o| o.reference.as_ref()).map(|r| &r.frame),
-                        candidate: outcome
-                            .and_then(|o| o.candidates.get(r))
-                            .and_then(|run| run.frame.as_ref())
-                            .filter(|f| {
-                                outcome
-                                    .and_then(|o| o.reference.as_ref())
-                                    .is_some_and(|r| same_shape(&r.frame, f))
-                            }),
-                    };
-                    html.push_str(&result_card(dir, &view));
-                }
-            }
-            html.push('\n');
-        }
-        html.push_str("</section>\n");
+        html.push_str("</table></section>\n");
     }
     html.push_str("</main></body></html>\n");
+    html
+}
+
+/// Per family and rasterizer, how many results passed, failed, departed,
+/// were unsupported or errors, and cases with problems of their own.
+fn family_summary(report: &Report, families: &[&str]) -> String {
+    let mut html = String::from(
+        "<h2>Families</h2><table class=\"families\"><tr><th>family</th><th class=\"n\">cases</th>",
+    );
+    for r in &report.rasterizers {
+        let _ = write!(html, "<th>{}</th>", escape(&r.name));
+    }
+    html.push_str("</tr>\n");
+    for family in families {
+        let members: Vec<&CaseEntry> = report
+            .cases
+            .iter()
+            .filter(|c| c.family == *family)
+            .collect();
+        let problems = members.iter().filter(|c| c.status != "ran").count();
+        let _ = write!(
+            html,
+            "<tr><td><a href=\"#family-{}\">{}</a></td><td class=\"n\">{}{}</td>",
+            escape(&slug(family)),
+            escape(family),
+            members.len(),
+            if problems > 0 {
+                format!(" <span class=\"metric\">({problems} did not run)</span>")
+            } else {
+                String::new()
+            }
+        );
+        for r in 0..report.rasterizers.len() {
+            let mut counts: Vec<(&str, usize)> = Vec::new();
+            for verdict in ["pass", "fail", "foil", "error", "unsupported"] {
+                let n = members
+                    .iter()
+                    .filter(|c| c.results.get(r).is_some_and(|x| x.verdict == verdict))
+                    .count();
+                if n > 0 {
+                    counts.push((verdict, n));
+                }
+            }
+            html.push_str("<td>");
+            for (verdict, n) in counts {
+                html.push_str(&badge(verdict, &format!("{n} {verdict}")));
+            }
+            html.push_str("</td>");
+        }
+        html.push_str("</tr>\n");
+    }
+    html.push_str("</table>\n");
+    html
+}
+
+/// Every failure, error, problem and foil departure, in that order, with
+/// its first reason and a link to its page.
+fn failures(report: &Report) -> String {
+    let mut rows: Vec<(Card, &CaseEntry)> = report
+        .cases
+        .iter()
+        .flat_map(|case| {
+            cards_of(case)
+                .into_iter()
+                .filter(|c| c.kind != Kind::Interpolation)
+                .map(move |c| (c, case))
+        })
+        .collect();
+    rows.sort_by_key(|(c, _)| c.kind);
+    if rows.is_empty() {
+        return "<h2>Failures</h2><p>None: every judged result passed.</p>\n".to_owned();
+    }
+    let mut html = format!(
+        "<h2>Failures first <span class=\"muted\">({})</span></h2><table class=\"failures\"><tr><th>case</th><th>rasterizer</th><th>verdict</th><th>why</th></tr>\n",
+        rows.len()
+    );
+    for (card, case) in rows.iter().take(MAX_FAILURE_ROWS) {
+        let result = card.result.map(|r| &case.results[r]);
+        let (who, verdict, why) = match result {
+            Some(r) => (
+                escape(&r.rasterizer),
+                badge(r.verdict, &r.verdict.to_uppercase()),
+                r.reasons.first().cloned().unwrap_or_default(),
+            ),
+            None => (
+                String::new(),
+                badge(
+                    if case.status == "ran" {
+                        "differ"
+                    } else {
+                        case.status
+                    },
+                    if case.status == "ran" {
+                        "golden differs"
+                    } else {
+                        case.status
+                    },
+                ),
+                case.error
+                    .clone()
+                    .or_else(|| case.golden_detail.clone())
+                    .unwrap_or_default(),
+            ),
+        };
+        let id = match &case.page {
+            Some(page) => format!(
+                "<a href=\"{}\">{}</a>",
+                escape(&page_url(page, &anchor(case, result))),
+                escape(&case.id)
+            ),
+            None => escape(&case.id),
+        };
+        let _ = writeln!(
+            html,
+            "<tr><td class=\"id\">{id}</td><td>{who}</td><td>{verdict}</td><td class=\"metric\" title=\"{}\">{}</td></tr>",
+            escape(&shorten(&why, 400)),
+            escape(&shorten(&why, 140))
+        );
+    }
+    html.push_str("</table>\n");
+    if rows.len() > MAX_FAILURE_ROWS {
+        let _ = writeln!(
+            html,
+            "<p class=\"muted\">and {} more; report.json has every result.</p>",
+            rows.len() - MAX_FAILURE_ROWS
+        );
+    }
     html
 }
 

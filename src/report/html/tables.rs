@@ -84,7 +84,7 @@ pub(super) fn cell(result: &ResultEntry, link: Option<&str>) -> String {
         );
     }
     if let Some(link) = link {
-        let _ = write!(html, " <a href=\"#{link}\">details</a>");
+        let _ = write!(html, " <a href=\"{}\">details</a>", escape(link));
     }
     html
 }

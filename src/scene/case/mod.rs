@@ -44,6 +44,10 @@ pub struct Limits {
     pub max_samples: u64,
     /// Bytes of one case file, checked before it is read (`--max-case-bytes`).
     pub max_case_bytes: u64,
+    /// Bytes one case's frames may take, estimated before they are
+    /// allocated (`--max-case-memory`); enforced by the runner, not the
+    /// reader.
+    pub max_case_memory: u64,
     /// Wall time each rasterizer (the reference, then each candidate) may
     /// spend on one case; `None` for no limit. Not a property of the file:
     /// the reader ignores it, the runner enforces it ([`crate::deadline`]).
@@ -57,6 +61,7 @@ impl Default for Limits {
             max_primitives: limits::DEFAULT_MAX_PRIMITIVES,
             max_samples: limits::DEFAULT_MAX_SAMPLES,
             max_case_bytes: limits::DEFAULT_MAX_CASE_BYTES,
+            max_case_memory: limits::DEFAULT_MAX_CASE_MEMORY,
             case_timeout: Some(limits::DEFAULT_CASE_TIMEOUT),
         }
     }
