@@ -31,6 +31,7 @@ mod exit_codes;
 mod external;
 mod input;
 mod reports;
+mod soak;
 
 /// The peak RSS (MiB) a run of the binary stays under through any fault
 /// here; see the table above.
