@@ -96,7 +96,7 @@ def descendants(pid, table):
     return found
 
 
-def sample(pid, groups):
+def sample(pid):
     """(rss KiB, threads, fds, processes below) of pid, or None."""
     try:
         with open("/proc/%d/status" % pid) as fh:
@@ -106,11 +106,7 @@ def sample(pid, groups):
         return None
     if "VmRSS" not in status:  # a zombie: it has exited
         return None
-    table = proc_table()
-    below = descendants(pid, table)
-    for p in below:
-        if p in table:
-            groups.add(table[p][1])
+    below = descendants(pid, proc_table())
     return (
         int(status["VmRSS"].split()[0]),
         int(status["Threads"]),
@@ -122,8 +118,8 @@ def sample(pid, groups):
 def run(binary, folder, clean, args, interval):
     """Runs rastercheck on folder's cases; returns (exit code, seconds,
     samples [(seconds, cases done, rss KiB, threads, fds, processes below)],
-    process groups seen). Cases done: the requests the programs have read
-    (rastercheck prints its lines only at the end)."""
+    process groups of the programs it started). Cases done: the requests
+    the programs have read (rastercheck prints its lines only at the end)."""
     name = "clean" if clean else "faulty"
     progress_path = os.path.join(folder, "progress-%s.log" % name)
     open(progress_path, "w").close()
@@ -136,13 +132,25 @@ def run(binary, folder, clean, args, interval):
     with open(os.path.join(folder, name + ".log"), "wb") as log, \
             open(progress_path, "rb") as progress:
         child = subprocess.Popen(command, cwd=folder, stdout=log, stderr=subprocess.STDOUT)
-        done = 0
+        done, partial = 0, b""
+
+        def follow():
+            nonlocal done, partial
+            lines = (partial + progress.read()).split(b"\n")
+            partial = lines.pop()
+            for line in lines:
+                if line.startswith(b"pgid "):
+                    groups.add(int(line.split()[1]))
+                else:
+                    done += 1
+
         while child.poll() is None:
-            done += progress.read().count(b"\n")
-            s = sample(child.pid, groups)
+            follow()
+            s = sample(child.pid)
             if s is not None and done > 0:
                 samples.append((time.monotonic() - started, done) + s)
             time.sleep(interval)
+        follow()
     return child.returncode, time.monotonic() - started, samples, groups
 
 
@@ -256,6 +264,8 @@ def main():
 
         # No process of the run's groups is left (a killed one may take a
         # moment to be reaped).
+        if not groups:
+            failures.append("the programs logged no process group")
         left = None
         for _ in range(50):
             left = [p for p, (_, g) in proc_table().items() if g in groups]
@@ -297,7 +307,8 @@ def main():
         print("| processes below it, faulty run | %s |" % row(samples, 5))
         print("\nRSS per case kept (10 %% to 90 %% of the cases): clean %.1f KiB, faulty %.1f KiB"
               % (slope(clean_samples, n), slope(samples, n)))
-        print("process groups seen: %d; left after the run: %d\n" % (len(groups), len(left or [])))
+        print("programs started (process groups): %d; processes of them left after the run: %d\n"
+              % (len(groups), len(left or [])))
         if failures:
             print("FAILED:")
             for f in failures:

@@ -12,8 +12,9 @@ compared with one with them, case by case), it misbehaves instead:
   case) a JSON response that breaks §12.2.
 
 With --clean it never misbehaves: the same program, for the clean run.
-With --log PATH it appends each request's case name to PATH as it reads it
-(how tools/soak.py follows a run's progress).
+With --log PATH it appends "pgid N" (its process group) to PATH when it
+starts, then each request's case name as it reads it: how tools/soak.py
+follows a run's progress and finds every process group it must see gone.
 
     python3 tools/soak/faulty_rasterizer.py [--clean] [--log PATH]
 
@@ -51,6 +52,8 @@ def main():
     args = sys.argv[1:]
     clean = "--clean" in args
     log = open(args[args.index("--log") + 1], "a", buffering=1) if "--log" in args else None
+    if log:
+        log.write("pgid %d\n" % os.getpgid(0))
     out = sys.stdout
     for text in sys.stdin:
         request = json.loads(text)
