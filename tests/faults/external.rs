@@ -193,9 +193,9 @@ fn a_program_flooding_stdout_is_an_error_at_the_output_limit() {
         let env = [("RASTERCHECK_EXTERNAL_MAX_OUTPUT", "1000000")];
         let m = run(&dir, &r, &[], &env);
         let out = &m.output;
-        // Measured 15 MiB. The program writes without end: without the
-        // output limit the run would hold all of it (256 MiB by default);
-        // with it, at most the 1 MB allowed.
+        // Measured 15 MiB. The program writes without end: the run holds
+        // at most the 1 MB allowed here (256 MiB under the default limit,
+        // everything without one; 388 MiB with the limit at 400 MB).
         assert_peak_rss("flood", &m, crate::RSS_BOUND_MIB);
         judged(
             &dir,
