@@ -2,9 +2,8 @@
 //! crash, hang, huge or hostile input, signal or limit in one case. Each
 //! module is one family of fault; each test asserts that the run finishes,
 //! the other cases keep their verdicts, report.json parses, and the exit
-//! code is the documented one; the tests of `external` and `input` (the
-//! faults that could cost memory) also that the run's peak RSS stays under
-//! a bound.
+//! code is the documented one; the tests of `external`, `input` and
+//! `exit_codes` also that the run's peak RSS stays under a bound.
 //!
 //! Peak RSS is `wait4`'s `ru_maxrss` for the binary (`common::cli::
 //! run_measured`): the largest of its own peak, the peaks of the programs
@@ -18,9 +17,10 @@
 //! | huge golden file (external) | 13 MiB | 64 MiB | the same, for a golden file |
 //! | huge case file (input) | 6 MiB | 64 MiB | 600 MB read, about 20 GB parsed |
 //! | hostile values, 5 MB each (input) | 35 MiB | 128 MiB | (the values are read: they are under every limit; parsed on more threads with more cores) |
-//! | every other run (external, input) | 4–13 MiB | 64 MiB | |
+//! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
+//! | every other run (external, input, exit_codes) | 4–13 MiB | 64 MiB | |
 //!
-//! One bound for all but one: three to four times the largest measured,
+//! One bound for all but two: three to four times the largest measured,
 //! and far under what any of the guarded faults would cost.
 
 #[path = "../common/mod.rs"]
