@@ -18,7 +18,9 @@ file descriptors, and the processes below it. Then it checks:
   both reports;
 - every faulted case is an error: a crash or garbage is status `ran` with
   verdict `error`, a hang is `limit-exceeded` (the --case-timeout deadline);
-- both reports are complete, and list every case;
+- both reports are complete and list every case; every case of the clean
+  run passes or fails, and it exits 0 or 1; the faulty run exits 2 when a
+  case hung (a case over a limit, SPEC.md §9);
 - faults cost no memory: the faulty run's RSS at 50 and 90 % of the cases
   and its peak are within 10 % + 8 MiB of the clean run's (both grow: every
   case's outcome, frames included, is kept for the reports);
@@ -212,6 +214,16 @@ def main():
             failures.append("a report is not complete")
         if set(clean) != set(ids) or set(faulty) != set(ids):
             failures.append("a report does not list every case")
+        # The clean run judges every case (SPEC.md §9: 0 or 1); the faulty
+        # one has cases over the time limit (2) as soon as one hangs.
+        if code_c not in (0, 1):
+            failures.append("the clean run exited %d, not 0 or 1" % code_c)
+        errors = sum(1 for v in clean.values() if v[1] != "pass" and v[1] != "fail")
+        if errors:
+            failures.append("%d cases of the clean run are neither pass nor fail" % errors)
+        expected_code = 2 if "hang" in faults.values() else max(code_c, 1 if faults else 0)
+        if code_f != expected_code:
+            failures.append("the faulty run exited %d, not %d" % (code_f, expected_code))
 
         same = differ = 0
         by_fault = {f: {"expected": 0, "other": 0} for f in ("crash", "hang", "garbage")}
