@@ -20,6 +20,95 @@ pub fn rastercheck_env(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Outpu
     command.output().expect("the binary runs")
 }
 
+/// A finished child process: what it printed and its peak resident memory.
+pub struct Measured {
+    pub output: Output,
+    /// The largest resident set of the process (or of a child it reaped)
+    /// over its life, in KiB: `ru_maxrss` as `wait4` reports it.
+    pub peak_rss_kib: u64,
+}
+
+impl Measured {
+    pub fn peak_rss_mib(&self) -> f64 {
+        self.peak_rss_kib as f64 / 1024.0
+    }
+}
+
+/// Runs `command` with stdout and stderr piped (drained on threads, so a
+/// full pipe cannot block it) and reaps it with `wait4` for its own peak
+/// RSS, which std's `Child::wait` does not give. Killed, and the caller
+/// panics, if it is not over within `guard`: a hang fails a test instead
+/// of hanging it.
+#[cfg(unix)]
+#[allow(clippy::zombie_processes)] // reaped by wait4, which clippy does not see
+pub fn run_measured(command: &mut Command, guard: std::time::Duration) -> Measured {
+    use std::io::Read;
+    use std::os::unix::process::{CommandExt, ExitStatusExt};
+    use std::process::Stdio;
+
+    // Linux records, when the child execs, the memory it had until then as
+    // part of its peak: under posix_spawn (which std prefers) that is this
+    // test process's own peak so far; a hook forces fork, which makes it
+    // this process's current RSS (a few MiB), the floor of every number.
+    // SAFETY: the hook does nothing, so it is async-signal-safe.
+    unsafe {
+        command.pre_exec(|| Ok(()));
+    }
+    let mut child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    let drain = |mut pipe: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut v = Vec::new();
+            let _ = pipe.read_to_end(&mut v);
+            v
+        })
+    };
+    let stdout = drain(Box::new(child.stdout.take().unwrap()));
+    let stderr = drain(Box::new(child.stderr.take().unwrap()));
+    let pid = child.id() as libc::pid_t;
+    let started = std::time::Instant::now();
+    let mut killed = false;
+    let (status, usage) = loop {
+        let mut status = 0;
+        // SAFETY: rusage is plain old data, written by wait4 before it is read.
+        let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+        // SAFETY: pid is our own unreaped child (std never waits for it here).
+        let got = unsafe { libc::wait4(pid, &mut status, libc::WNOHANG, &mut usage) };
+        if got == pid {
+            break (status, usage);
+        }
+        let error = std::io::Error::last_os_error();
+        assert!(
+            got == 0 || error.kind() == std::io::ErrorKind::Interrupted,
+            "wait4: {error}"
+        );
+        if !killed && started.elapsed() > guard {
+            // Still unreaped, so the pid is still ours to kill.
+            let _ = child.kill();
+            killed = true;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    };
+    let output = Output {
+        status: std::process::ExitStatus::from_raw(status),
+        stdout: stdout.join().unwrap(),
+        stderr: stderr.join().unwrap(),
+    };
+    assert!(
+        !killed,
+        "{:?} hung (killed after {guard:?}):\n{}",
+        command.get_args().collect::<Vec<_>>(),
+        text(&output)
+    );
+    Measured {
+        output,
+        peak_rss_kib: usage.ru_maxrss as u64,
+    }
+}
+
 /// Everything the binary printed, stdout then stderr.
 pub fn text(out: &Output) -> String {
     format!(
@@ -143,4 +232,16 @@ pub fn exr_channel(
         .sample_data
         .values_as_f32()
         .collect()
+}
+
+/// The run's peak RSS stays under `bound_mib`, the bound a test states
+/// (with its reason beside the call). Printed either way, for `--nocapture`.
+pub fn assert_peak_rss(what: &str, m: &Measured, bound_mib: f64) {
+    let peak = m.peak_rss_mib();
+    eprintln!("peak RSS {what}: {peak:.1} MiB (bound {bound_mib} MiB)");
+    assert!(
+        peak < bound_mib,
+        "{what}: peak RSS {peak:.1} MiB is over the bound of {bound_mib} MiB\n{}",
+        text(&m.output)
+    );
 }

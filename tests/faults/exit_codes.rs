@@ -7,9 +7,10 @@
 use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
+use std::time::Duration;
 
 use crate::common::cli::{
-    assert_no_panic, rastercheck, rastercheck_env, read_json, text, workspace,
+    assert_no_panic, assert_peak_rss, rastercheck_env, read_json, run_measured, text, workspace,
 };
 
 const EASY: &str = r#"{"name": "easy", "canvas": {"width": 8, "height": 8},
@@ -27,12 +28,22 @@ fn unsupported_everything() -> String {
     format!("external:python3 {}", program.display())
 }
 
-/// Runs `args` in `dir`: asserts the exit code and no panic; what it printed.
+/// Runs `args` in `dir`: asserts the exit code, no panic, and a peak RSS
+/// under the faults' bound (`crate::RSS_BOUND_MIB`); what it printed.
 fn exits(dir: &std::path::Path, args: &[&str], code: i32) -> String {
-    let out = rastercheck(dir, args);
-    let t = text(&out);
-    assert_no_panic(&out);
+    exits_within(dir, args, code, crate::RSS_BOUND_MIB)
+}
+
+/// [`exits`] with another bound on the peak RSS, in MiB.
+fn exits_within(dir: &std::path::Path, args: &[&str], code: i32, rss_mib: f64) -> String {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
+    command.args(args).current_dir(dir);
+    let run = run_measured(&mut command, Duration::from_secs(180));
+    let out = &run.output;
+    let t = text(out);
+    assert_no_panic(out);
     assert_eq!(out.status.code(), Some(code), "{args:?}\n{t}");
+    assert_peak_rss(&format!("{args:?}"), &run, rss_mib);
     t
 }
 
@@ -209,10 +220,14 @@ fn show_bounds_its_pictures() {
         ],
     );
     // 64 would make 70400×64000 pictures (13 GB): lowered to 7, with a note.
-    let t = exits(
+    // Measured 492 MiB: pictures of 7700×7000 pixels (under the 2^26 bound)
+    // are drawn, 206 MiB each at 4 bytes a pixel; at scale 64 they would
+    // have 4.5 G pixels each.
+    let t = exits_within(
         &dir,
         &["show", "cases/big.json", "--out", "shown", "--scale", "64"],
         0,
+        1024.0,
     );
     assert!(t.contains("scale 7 instead"), "{t}");
     for entry in std::fs::read_dir(dir.join("shown")).unwrap() {

@@ -12,12 +12,12 @@
 
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
-use crate::common::cli::{read_json, text, workspace};
+use crate::common::cli::{assert_peak_rss, read_json, run_measured, text, workspace, Measured};
 
 /// Guards against a hang only: a run that is not over by then is killed and
 /// the test fails (every run here takes seconds).
@@ -70,30 +70,18 @@ fn rasterizer(script: &str, log: &Path, persistent: bool) -> String {
 }
 
 /// `run cases -r RASTERIZER --report report ARGS` in `dir`, killed (and the
-/// test failed) if it is not over within the hang guard.
-fn run(dir: &Path, rasterizer: &str, args: &[&str], env: &[(&str, &str)]) -> Output {
+/// test failed) if it is not over within the hang guard; with its peak RSS.
+fn run(dir: &Path, rasterizer: &str, args: &[&str], env: &[(&str, &str)]) -> Measured {
     let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
     command
         .args(["run", "cases", "--report", "report", "-r"])
         .arg(rasterizer)
         .args(args)
-        .current_dir(dir)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
+        .current_dir(dir);
     for (k, v) in env {
         command.env(k, v);
     }
-    let mut child = command.spawn().expect("the binary starts");
-    let started = Instant::now();
-    while child.try_wait().unwrap().is_none() {
-        if started.elapsed() > HANG_GUARD {
-            let _ = child.kill();
-            let out = child.wait_with_output().unwrap();
-            panic!("the run hung; killed:\n{}", text(&out));
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    child.wait_with_output().unwrap()
+    run_measured(&mut command, HANG_GUARD)
 }
 
 /// The report's entry for case `id`.
@@ -203,14 +191,19 @@ fn a_program_flooding_stdout_is_an_error_at_the_output_limit() {
         let (dir, log) = cases(&format!("flood-{persistent}"), &["bad"]);
         let r = rasterizer("external_flood.py", &log, persistent);
         let env = [("RASTERCHECK_EXTERNAL_MAX_OUTPUT", "1000000")];
-        let out = run(&dir, &r, &[], &env);
+        let m = run(&dir, &r, &[], &env);
+        let out = &m.output;
+        // Measured 15 MiB. The program writes without end: the run holds
+        // at most the 1 MB allowed here (256 MiB under the default limit,
+        // everything without one; 388 MiB with the limit at 400 MB).
+        assert_peak_rss("flood", &m, crate::RSS_BOUND_MIB);
         judged(
             &dir,
-            &out,
+            out,
             1,
             &[("bad", "error", "more than 1000000 bytes to stdout")],
         );
-        let t = text(&out);
+        let t = text(out);
         assert!(t.contains("RASTERCHECK_EXTERNAL_MAX_OUTPUT"), "{t}");
         assert_no_group_left(&log);
     }
@@ -220,13 +213,16 @@ fn a_program_flooding_stdout_is_an_error_at_the_output_limit() {
 fn a_bad_output_limit_is_an_error_naming_the_variable() {
     let (dir, log) = cases("flood-bad-limit", &[]);
     let r = rasterizer("external_flood.py", &log, false);
-    let out = run(
+    let m = run(
         &dir,
         &r,
         &[],
         &[("RASTERCHECK_EXTERNAL_MAX_OUTPUT", "lots")],
     );
-    let t = text(&out);
+    let out = &m.output;
+    // Measured 4 MiB: refused before any case runs.
+    assert_peak_rss("bad output limit", &m, crate::RSS_BOUND_MIB);
+    let t = text(out);
     assert!(!t.contains("panicked"), "{t}");
     // Bad usage, said before any case runs (SPEC §9).
     assert_eq!(out.status.code(), Some(2), "{t}");
@@ -241,8 +237,11 @@ fn an_exr_answer_that_is_a_fifo_is_refused_without_opening_it() {
     for persistent in MODES {
         let (dir, log) = cases(&format!("fifo-{persistent}"), &["bad"]);
         let r = rasterizer("external_fifo.py", &log, persistent);
-        let out = run(&dir, &r, &[], &[]);
-        judged(&dir, &out, 1, &[("bad", "error", "not a regular file")]);
+        let m = run(&dir, &r, &[], &[]);
+        let out = &m.output;
+        // Measured 13 MiB (the python program's own peak among them).
+        assert_peak_rss("EXR FIFO", &m, crate::RSS_BOUND_MIB);
+        judged(&dir, out, 1, &[("bad", "error", "not a regular file")]);
         assert_no_group_left(&log);
     }
 }
@@ -252,10 +251,14 @@ fn an_exr_answer_with_a_huge_header_is_refused_before_decoding() {
     for persistent in MODES {
         let (dir, log) = cases(&format!("huge-exr-{persistent}"), &["bad"]);
         let r = rasterizer("external_huge_exr.py", &log, persistent);
-        let out = run(&dir, &r, &[], &[]);
+        let m = run(&dir, &r, &[], &[]);
+        let out = &m.output;
+        // Measured 18 MiB. Decoding the 32768×32768 layer the header
+        // declares would take 8 GiB (two f32 channels); it is refused from the header.
+        assert_peak_rss("huge EXR answer", &m, crate::RSS_BOUND_MIB);
         judged(
             &dir,
-            &out,
+            out,
             1,
             &[(
                 "bad",
@@ -280,10 +283,13 @@ fn a_golden_file_with_a_huge_header_is_refused_before_decoding() {
         .unwrap();
     assert!(written.success());
     let r = rasterizer("external_counter.py", &log, false);
-    let out = run(&dir, &r, &[], &[]);
-    let t = text(&out);
+    let m = run(&dir, &r, &[], &[]);
+    let out = &m.output;
+    // Measured 13 MiB; the golden file's 32768×32768 layer is not decoded.
+    assert_peak_rss("huge golden file", &m, crate::RSS_BOUND_MIB);
+    let t = text(out);
     // The reference no longer reproduces its golden file: a failure (1).
-    let report = judged(&dir, &out, 1, &[]);
+    let report = judged(&dir, out, 1, &[]);
     assert_eq!(entry(&report, "a")["golden"], "differ", "{t}");
     let detail = entry(&report, "a")["golden_detail"].to_string();
     assert!(
@@ -299,18 +305,21 @@ fn a_grandchild_is_killed_with_its_program_group() {
         let (dir, log) = cases(&format!("forker-{persistent}"), &["bad", "bad_hang"]);
         let r = rasterizer("external_forker.py", &log, persistent);
         let env = [("RASTERCHECK_EXTERNAL_TIMEOUT", "3")];
-        let out = run(&dir, &r, &[], &env);
+        let m = run(&dir, &r, &[], &env);
+        let out = &m.output;
+        // Measured 13 MiB.
+        assert_peak_rss("forker", &m, crate::RSS_BOUND_MIB);
         // "bad" answered correctly before leaving its grandchild behind.
         judged(
             &dir,
-            &out,
+            out,
             1,
             &[
                 ("bad", "pass", ""),
                 ("bad_hang", "error", "timed out after 3 s"),
             ],
         );
-        assert_eq!(logged(&log, "grandchild ").len(), 2, "{}", text(&out));
+        assert_eq!(logged(&log, "grandchild ").len(), 2, "{}", text(out));
         assert_no_group_left(&log);
     }
 }
@@ -322,11 +331,14 @@ fn a_candidate_over_the_case_timeout_is_a_limit_verdict() {
         let r = rasterizer("external_hanger.py", &log, persistent);
         // The program's own limit is far away: the case's deadline stops it.
         let env = [("RASTERCHECK_EXTERNAL_TIMEOUT", "900")];
-        let out = run(&dir, &r, &["--case-timeout", "5"], &env);
-        let report = judged(&dir, &out, 2, &[("bad", "error", "--case-timeout")]);
+        let m = run(&dir, &r, &["--case-timeout", "5"], &env);
+        let out = &m.output;
+        // Measured 13 MiB.
+        assert_peak_rss("hanger", &m, crate::RSS_BOUND_MIB);
+        let report = judged(&dir, out, 2, &[("bad", "error", "--case-timeout")]);
         assert_eq!(entry(&report, "bad")["status"], "limit-exceeded");
         assert_eq!(report["totals"]["limit_exceeded"], 1);
-        let t = text(&out);
+        let t = text(out);
         assert!(t.contains("LIMIT"), "{t}");
         assert_no_group_left(&log);
     }
@@ -348,8 +360,11 @@ fn no_thread_or_file_descriptor_leaks_per_case() {
         let bad: Vec<&str> = names.iter().map(String::as_str).collect();
         let (dir, log) = cases(&format!("counter-{persistent}"), &bad);
         let r = rasterizer("external_counter.py", &log, persistent);
-        let out = run(&dir, &r, &["--threads", "1"], &[]);
-        let t = text(&out);
+        let m = run(&dir, &r, &["--threads", "1"], &[]);
+        let out = &m.output;
+        // Measured 13 MiB over 200 cases: nothing accumulates per case.
+        assert_peak_rss("counter", &m, crate::RSS_BOUND_MIB);
+        let t = text(out);
         assert_eq!(out.status.code(), Some(0), "{t}");
         // (fds, threads) of rastercheck, in the order the cases ran.
         let counts: Vec<(u32, u32)> = std::fs::read_to_string(&log)

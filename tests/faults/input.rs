@@ -6,12 +6,11 @@
 //! case keeps its verdict, report.json parses and names each case's status,
 //! and the exit code is SPEC §9's: 2 for bad input or a case over a limit.
 
-use std::io::Read;
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
+use std::time::Duration;
 
-use crate::common::cli::{read_json, text, workspace};
+use crate::common::cli::{assert_peak_rss, read_json, run_measured, text, workspace, Measured};
 
 /// A small case that production passes.
 const GOOD: &str = r#"{"name": "good", "canvas": {"width": 4, "height": 4},
@@ -27,54 +26,21 @@ fn seeded(name: &str, seed: &str) -> String {
 }
 
 /// Runs rastercheck in `dir` with `args`, killing it after a minute: a run
-/// that hangs fails the test instead of hanging it.
-fn run_bounded(dir: &Path, args: &[&str]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    // Drain both pipes on threads so that a full pipe cannot block it.
-    let mut out = child.stdout.take().unwrap();
-    let mut err = child.stderr.take().unwrap();
-    let stdout = std::thread::spawn(move || {
-        let mut v = Vec::new();
-        let _ = out.read_to_end(&mut v);
-        v
-    });
-    let stderr = std::thread::spawn(move || {
-        let mut v = Vec::new();
-        let _ = err.read_to_end(&mut v);
-        v
-    });
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if started.elapsed() > Duration::from_secs(60) {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("rastercheck {args:?} hung (killed after 60 s)");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    Output {
-        status,
-        stdout: stdout.join().unwrap(),
-        stderr: stderr.join().unwrap(),
-    }
+/// that hangs fails the test instead of hanging it. With its peak RSS.
+fn run_bounded(dir: &Path, args: &[&str]) -> Measured {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
+    command.args(args).current_dir(dir);
+    run_measured(&mut command, Duration::from_secs(60))
 }
 
 /// `run cases --report rep` (plus `more`) in `dir`: it exits with `code`,
 /// panics nowhere, and report.json parses. Returns the printed text and
 /// the status of each case in the report, by id.
-fn run_report(dir: &Path, more: &[&str], code: i32) -> (String, Vec<(String, String)>) {
+fn run_report(dir: &Path, more: &[&str], code: i32) -> (String, Vec<(String, String)>, Measured) {
     let args = [&["run", "cases", "--report", "rep"], more].concat();
-    let out = run_bounded(dir, &args);
-    let t = text(&out);
+    let run = run_bounded(dir, &args);
+    let out = &run.output;
+    let t = text(out);
     assert!(!t.contains("panicked"), "{t}");
     assert_eq!(out.status.code(), Some(code), "{t}");
     let report = read_json(&dir.join("rep/report.json"));
@@ -90,7 +56,7 @@ fn run_report(dir: &Path, more: &[&str], code: i32) -> (String, Vec<(String, Str
             )
         })
         .collect();
-    (t, statuses)
+    (t, statuses, run)
 }
 
 /// The good case ran and production passed it.
@@ -122,7 +88,10 @@ fn a_huge_case_file_is_a_limit_verdict_read_from_its_size() {
     let huge = std::fs::File::create(dir.join("cases/huge.json")).unwrap();
     huge.set_len(600_000_000).unwrap();
     drop(huge);
-    let (t, statuses) = run_report(&dir, &[], 2);
+    let (t, statuses, run) = run_report(&dir, &[], 2);
+    // Measured 6 MiB. Reading the 600 MB file would hold 600 MB, and
+    // parsing it about 20 GB: it is judged from its size unread.
+    assert_peak_rss("huge case file", &run, crate::RSS_BOUND_MIB);
     assert_good_passes(&t, &statuses);
     assert_eq!(status_of(&statuses, "huge"), "limit-exceeded", "{t}");
     let line = t.lines().find(|l| l.contains(" huge ")).unwrap();
@@ -133,9 +102,11 @@ fn a_huge_case_file_is_a_limit_verdict_read_from_its_size() {
     // The flag moves the limit: a small good case over a tiny limit is a
     // limit verdict too, and under a raised one the same file reads.
     let dir = workspace("input-small-limit", &[("cases/good.json", GOOD)]);
-    let (t, statuses) = run_report(&dir, &["--max-case-bytes", "20"], 2);
+    let (t, statuses, run) = run_report(&dir, &["--max-case-bytes", "20"], 2);
+    assert_peak_rss("tiny --max-case-bytes", &run, crate::RSS_BOUND_MIB);
     assert_eq!(status_of(&statuses, "good"), "limit-exceeded", "{t}");
-    let (t, statuses) = run_report(&dir, &["--max-case-bytes", "100000"], 0);
+    let (t, statuses, run) = run_report(&dir, &["--max-case-bytes", "100000"], 0);
+    assert_peak_rss("raised --max-case-bytes", &run, crate::RSS_BOUND_MIB);
     assert_good_passes(&t, &statuses);
 }
 
@@ -147,12 +118,16 @@ fn a_fifo_case_is_refused_and_the_run_goes_on() {
     let made = Command::new("mkfifo").arg(&fifo).status().expect("mkfifo");
     assert!(made.success());
     // Found by walking the folder, and named on the command line.
-    let (t, statuses) = run_report(&dir, &[], 2);
+    let (t, statuses, run) = run_report(&dir, &[], 2);
+    // Measured 6 MiB.
+    assert_peak_rss("FIFO case", &run, crate::RSS_BOUND_MIB);
     assert_good_passes(&t, &statuses);
     assert_eq!(status_of(&statuses, "fifo"), "unreadable", "{t}");
     assert!(t.contains("not a regular file (a FIFO)"), "{t}");
-    let out = run_bounded(&dir, &["run", "cases/fifo.json", "cases/good.json"]);
-    let t = text(&out);
+    let run = run_bounded(&dir, &["run", "cases/fifo.json", "cases/good.json"]);
+    let out = &run.output;
+    assert_peak_rss("FIFO case named", &run, crate::RSS_BOUND_MIB);
+    let t = text(out);
     assert_eq!(out.status.code(), Some(2), "{t}");
     assert!(
         t.contains("cases/fifo.json: $: not a regular file (a FIFO)"),
@@ -183,8 +158,11 @@ fn symlink_loops_in_the_case_tree_are_reported_once() {
     // A link to the case root inside it, and one to its own folder.
     std::os::unix::fs::symlink("..", dir.join("cases/a/up")).unwrap();
     std::os::unix::fs::symlink(".", dir.join("cases/a/here")).unwrap();
-    let out = run_bounded(&dir, &["run", "cases", "--report", "rep"]);
-    let t = text(&out);
+    let run = run_bounded(&dir, &["run", "cases", "--report", "rep"]);
+    let out = &run.output;
+    // Measured 6 MiB: each loop is walked once.
+    assert_peak_rss("symlink loops", &run, crate::RSS_BOUND_MIB);
+    let t = text(out);
     assert_eq!(out.status.code(), Some(2), "{t}");
     assert_eq!(t.matches("symbolic link loop").count(), 2, "{t}");
     assert!(t.contains("cases/a/up: a symbolic link loop"), "{t}");
@@ -203,14 +181,19 @@ fn one_id_is_one_case() {
         ],
     );
     // The same file through two paths is one case, and passes.
-    let out = run_bounded(&dir, &["run", "cases", "./cases", "cases/a/good.json"]);
-    let t = text(&out);
+    let run = run_bounded(&dir, &["run", "cases", "./cases", "cases/a/good.json"]);
+    let out = &run.output;
+    // Measured 7 MiB.
+    assert_peak_rss("one file by two paths", &run, crate::RSS_BOUND_MIB);
+    let t = text(out);
     assert_eq!(out.status.code(), Some(0), "{t}");
     assert_eq!(t.matches(" a/good ").count(), 1, "{t}");
     // Two different files with one id: an error naming both, exit 2, and
     // the first is still run and judged.
-    let out = run_bounded(&dir, &["run", "cases", "other/cases", "--report", "rep"]);
-    let t = text(&out);
+    let run = run_bounded(&dir, &["run", "cases", "other/cases", "--report", "rep"]);
+    let out = &run.output;
+    assert_peak_rss("two files with one id", &run, crate::RSS_BOUND_MIB);
+    let t = text(out);
     assert_eq!(out.status.code(), Some(2), "{t}");
     assert!(
         t.contains("two different files have the case id \"a/good\": cases/a/good.json and other/cases/a/good.json"),
@@ -258,7 +241,10 @@ fn hostile_values_are_named_by_path_and_cut_when_echoed() {
             ),
         ],
     );
-    let (t, statuses) = run_report(&dir, &[], 2);
+    let (t, statuses, run) = run_report(&dir, &[], 2);
+    // Measured 35 MiB on 2 cores: three 5 MB values read and parsed
+    // (each file is under --max-case-bytes), more at once on more cores.
+    assert_peak_rss("hostile values", &run, 128.0);
     assert_good_passes(&t, &statuses);
     for id in ["dup", "key", "rule", "number", "plus", "seed_over"] {
         assert_eq!(status_of(&statuses, id), "unreadable", "{id}\n{t}");

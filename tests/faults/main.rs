@@ -2,7 +2,26 @@
 //! crash, hang, huge or hostile input, signal or limit in one case. Each
 //! module is one family of fault; each test asserts that the run finishes,
 //! the other cases keep their verdicts, report.json parses, and the exit
-//! code is the documented one.
+//! code is the documented one; the tests of `external`, `input` and
+//! `exit_codes` also that the run's peak RSS stays under a bound.
+//!
+//! Peak RSS is `wait4`'s `ru_maxrss` for the binary (`common::cli::
+//! run_measured`): the largest of its own peak, the peaks of the programs
+//! it ran and reaped (python, about 13 MiB), and this test process's RSS
+//! when it forked (a few MiB). Measured on a release build:
+//!
+//! | test (module) | measured | bound | without the fix it guards |
+//! |---|---|---|---|
+//! | flood, one-shot and persistent (external) | 15 MiB | 64 MiB | the whole flood, 256 MiB by default, unbounded without the limit |
+//! | huge EXR answer (external) | 18 MiB | 64 MiB | 8 GiB to decode a 32768×32768 layer |
+//! | huge golden file (external) | 13 MiB | 64 MiB | the same, for a golden file |
+//! | huge case file (input) | 6 MiB | 64 MiB | 600 MB read, about 20 GB parsed |
+//! | hostile values, 5 MB each (input) | 35 MiB | 128 MiB | (the values are read: they are under every limit; parsed on more threads with more cores) |
+//! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
+//! | every other run (external, input, exit_codes) | 4–13 MiB | 64 MiB | |
+//!
+//! One bound for all but two: three to four times the largest measured,
+//! and far under what any of the guarded faults would cost.
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -13,3 +32,8 @@ mod external;
 mod input;
 mod memory;
 mod reports;
+mod soak;
+
+/// The peak RSS (MiB) a run of the binary stays under through any fault
+/// here; see the table above.
+const RSS_BOUND_MIB: f64 = 64.0;
