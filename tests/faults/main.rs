@@ -18,6 +18,8 @@
 //! | huge case file (input) | 6 MiB | 64 MiB | 600 MB read, about 20 GB parsed |
 //! | hostile values, 5 MB each (input) | 35 MiB | 128 MiB | (the values are read: they are under every limit; parsed on more threads with more cores) |
 //! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
+//! | a case whose frames would take 27 GiB (memory) | 15 MiB | 200 MiB | the 27 GiB, allocated or aborted |
+//! | six cases of 156 MiB of frames, one thread (memory) | 363 MiB | 450 MiB | 1064 MiB: every case's frames kept to the end |
 //! | every other run (external, input, exit_codes) | 4–13 MiB | 64 MiB | |
 //!
 //! One bound for all but two: three to four times the largest measured,

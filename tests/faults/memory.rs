@@ -5,9 +5,10 @@
 //! rastercheck process itself (`wait4`).
 
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Command;
+use std::time::Duration;
 
-use crate::common::cli::{read_json, workspace};
+use crate::common::cli::{read_json, text, workspace};
 
 /// A triangle over most of a `size`² canvas with depth and `attributes`
 /// attributes per vertex, at `samples` samples per pixel.
@@ -40,30 +41,12 @@ const SMALL: &str = r#"{"name": "small", "canvas": {"width": 8, "height": 8},
   "primitives": [{"triangle": [[1, 1], [7, 2], [2, 7]]}]}"#;
 
 /// Runs the binary in `dir` and returns its exit code, stdout + stderr, and
-/// its peak resident set in MiB (its own, from `wait4`).
-fn run_measured(dir: &Path, args: &[&str]) -> (Option<i32>, String, u64) {
-    let out_path = dir.join("out.log");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(std::fs::File::create(&out_path).unwrap())
-        .stderr(std::fs::File::create(dir.join("err.log")).unwrap())
-        .spawn()
-        .expect("the binary starts");
-    let mut status = 0;
-    // SAFETY: a zeroed rusage is a valid value for wait4 to fill in.
-    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    // SAFETY: waits for our own child, with valid pointers.
-    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as i32, "wait4 failed");
-    // Reaped by wait4 already: this only tells std so.
-    let _ = child.try_wait();
-    let code = libc::WIFEXITED(status).then(|| libc::WEXITSTATUS(status));
-    let log = std::fs::read_to_string(&out_path).unwrap()
-        + &std::fs::read_to_string(dir.join("err.log")).unwrap();
-    // ru_maxrss is in KiB on Linux.
-    (code, log, usage.ru_maxrss as u64 / 1024)
+/// its peak resident set in MiB (`common::cli::run_measured`).
+fn run_measured(dir: &Path, args: &[&str]) -> (Option<i32>, String, f64) {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_rastercheck"));
+    command.args(args).current_dir(dir);
+    let m = crate::common::cli::run_measured(&mut command, Duration::from_secs(300));
+    (m.output.status.code(), text(&m.output), m.peak_rss_mib())
 }
 
 #[test]
@@ -95,7 +78,7 @@ fn a_case_whose_frames_would_not_fit_gets_a_limit_verdict() {
     assert_eq!(status("a/small"), ("ran".to_owned(), "pass".into()));
     assert_eq!(report["limits"]["max_case_memory"], 4u64 << 30);
     // Nothing of the 27 GiB was allocated.
-    assert!(peak < 200, "peak RSS {peak} MiB");
+    assert!(peak < 200.0, "peak RSS {peak:.1} MiB");
 
     // The limit is a flag: a lower one catches a smaller case, and the
     // message names the flag.
@@ -134,9 +117,9 @@ fn a_run_holds_the_frames_of_the_cases_in_flight_only() {
     assert_eq!(code, Some(0), "{log}");
     let report = read_json(&dir.join("report/report.json"));
     assert_eq!(report["totals"]["verdicts"][0]["pass"], 6, "{log}");
-    eprintln!("six cases of 156 MiB of frames each, one thread: peak RSS {peak} MiB");
+    eprintln!("six cases of 156 MiB of frames each, one thread: peak RSS {peak:.1} MiB");
     assert!(
-        peak < 450,
-        "peak RSS {peak} MiB: frames kept past their case?"
+        peak < 450.0,
+        "peak RSS {peak:.1} MiB: frames kept past their case?"
     );
 }
