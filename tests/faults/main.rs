@@ -2,8 +2,9 @@
 //! crash, hang, huge or hostile input, signal or limit in one case. Each
 //! module is one family of fault; each test asserts that the run finishes,
 //! the other cases keep their verdicts, report.json parses, and the exit
-//! code is the documented one; the tests of `external`, `input` and
-//! `exit_codes` also that the run's peak RSS stays under a bound.
+//! code is the documented one; the tests of `external`, `input`,
+//! `exit_codes`, `memory` and the signals in `reports` also that the run's
+//! peak RSS stays under a bound.
 //!
 //! Peak RSS is `wait4`'s `ru_maxrss` for the binary (`common::cli::
 //! run_measured`): the largest of its own peak, the peaks of the programs
@@ -20,7 +21,7 @@
 //! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
 //! | a case whose frames would take 27 GiB (memory) | 15 MiB | 200 MiB | the 27 GiB, allocated or aborted |
 //! | six cases of 156 MiB of frames, one thread (memory) | 363 MiB | 450 MiB | 1064 MiB: every case's frames kept to the end |
-//! | every other run (external, input, exit_codes) | 4–13 MiB | 64 MiB | |
+//! | every other run (external, input, exit_codes); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–13 MiB | 64 MiB | |
 //!
 //! One bound for all but two: three to four times the largest measured,
 //! and far under what any of the guarded faults would cost.

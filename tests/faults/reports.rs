@@ -71,6 +71,19 @@ fn process_state(pid: u32) -> Option<char> {
     after.trim_start().chars().next()
 }
 
+/// The peak resident set of a running process so far (VmHWM), in MiB: read
+/// just before a signal ends it, since a process killed by the test is not
+/// reaped through `run_measured`.
+fn peak_so_far_mib(pid: u32) -> f64 {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
+    let line = status
+        .lines()
+        .find(|l| l.starts_with("VmHWM:"))
+        .expect("VmHWM in /proc/PID/status");
+    let kib: f64 = line.split_whitespace().nth(1).unwrap().parse().unwrap();
+    kib / 1024.0
+}
+
 /// Polls `done` until it holds; panics after [`HANG_GUARD`].
 fn wait_for(what: &str, mut done: impl FnMut() -> bool) {
     let started = Instant::now();
@@ -149,6 +162,11 @@ fn stopped_by(signal: &str, code: i32) {
         sleeping().is_some() || child.try_wait().unwrap().is_some()
     });
     let sleeper = sleeping().expect("the third case's program sleeps");
+    let peak = peak_so_far_mib(child.id());
+    assert!(
+        peak < crate::RSS_BOUND_MIB,
+        "peak RSS {peak:.1} MiB before the signal"
+    );
     let sent = Command::new("/bin/kill")
         .args([&format!("-{signal}"), &child.id().to_string()])
         .status()
@@ -258,6 +276,11 @@ fn sigterm_stops_the_reference_in_the_middle_of_a_case() {
     assert!(
         child.try_wait().unwrap().is_none(),
         "the case finished too soon to test"
+    );
+    let peak = peak_so_far_mib(child.id());
+    assert!(
+        peak < crate::RSS_BOUND_MIB,
+        "peak RSS {peak:.1} MiB before the signal"
     );
     let sent = Instant::now();
     let killed = Command::new("/bin/kill")
