@@ -689,6 +689,28 @@ mod tests {
         }
     }
 
+    #[test]
+    fn names_are_escaped() {
+        let mut r = report(&["ext:<a&b>\"'"]);
+        for samples in [1, 4] {
+            r.cases.push(aa_case(
+                &format!("fam<&>/g{samples}"),
+                "grid",
+                samples,
+                &[("ext:<a&b>\"'", 0.1 / f64::from(samples))],
+            ));
+        }
+        let plots = plots(&r);
+        assert_eq!(
+            files(&plots),
+            ["aa-error-by-family.svg", "aa-error-vs-samples-ext--a-b---.svg"]
+        );
+        for p in &plots {
+            check_well_formed(&p.svg);
+        }
+        assert!(plots[0].svg.contains(">fam&lt;&amp;&gt;</text>"));
+    }
+
     fn escape_title(t: &str) -> String {
         crate::report::escape(t)
     }
