@@ -52,7 +52,7 @@ fn frame(
     y_values: &[f64],
 ) -> Option<Frame> {
     let (lo, hi) = LogAxis::decades(y_values.iter().copied())?;
-    let zeros = y_values.iter().any(|&v| v == 0.0);
+    let zeros = y_values.contains(&0.0);
     let legend_h = legend_height(width - LEFT - RIGHT, entries);
     let height = HEIGHT + (legend_h - 16.0).max(0.0);
     let mut svg = Svg::new(width, height);
@@ -154,7 +154,6 @@ pub fn distribution(d: &Distribution) -> Option<String> {
             columns.push((c, present));
         }
     }
-    let slots: usize = columns.iter().map(|(_, s)| s.len()).sum();
     let slot = 18.0;
     let gap = 14.0;
     let label_room = columns
@@ -186,7 +185,6 @@ pub fn distribution(d: &Distribution) -> Option<String> {
         .collect();
     let ys: Vec<f64> = finite.iter().map(|v| v.value).collect();
     let mut f = frame(width, d.title, d.y_label, &entries, &ys)?;
-    let _ = slots;
     // Spread the categories over the plot, each as wide as it needs.
     let inner = f.right - f.left - 10.0;
     let scale = inner / label_room;

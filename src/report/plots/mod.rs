@@ -106,6 +106,15 @@ fn by_family(
     (families, series, values)
 }
 
+/// "1 case", "2 cases".
+fn cases(n: usize) -> String {
+    if n == 1 {
+        "1 case".to_owned()
+    } else {
+        format!("{n} cases")
+    }
+}
+
 /// What a chart leaves out: rasterizers whose every value is 0, and values
 /// that are not finite.
 fn left_out(series: &[String], values: &[Value], what: &str) -> Vec<String> {
@@ -118,8 +127,8 @@ fn left_out(series: &[String], values: &[Value], what: &str) -> Vec<String> {
             .collect();
         if !of.is_empty() && of.iter().all(|&v| v == 0.0) {
             notes.push(format!(
-                "{name}: zero {what} on every case ({} cases)",
-                of.len()
+                "{name}: zero {what} on every case ({})",
+                cases(of.len())
             ));
         }
         let bad = of.iter().filter(|v| !v.is_finite()).count();
@@ -230,9 +239,9 @@ fn aa_against_samples(report: &Report, plots: &mut Vec<Plot>, notes: &mut Vec<St
         }
         if !area.is_empty() && points.is_empty() {
             area_methods.push(format!(
-                "{name} (median {:.2e} over {} cases)",
+                "{name} (median {:.2e} over {})",
                 charts::median(&area),
-                area.len()
+                cases(area.len())
             ));
         }
         if points.is_empty() {
@@ -703,7 +712,10 @@ mod tests {
         let plots = plots(&r);
         assert_eq!(
             files(&plots),
-            ["aa-error-by-family.svg", "aa-error-vs-samples-ext--a-b---.svg"]
+            [
+                "aa-error-by-family.svg",
+                "aa-error-vs-samples-ext--a-b---.svg"
+            ]
         );
         for p in &plots {
             check_well_formed(&p.svg);
@@ -854,7 +866,7 @@ mod tests {
         assert!(plots(&r).is_empty(), "{:?}", files(&plots(&r)));
         let notes = notes(&r);
         assert!(
-            notes.contains(&"exact: zero antialiasing error on every case (1 cases)".to_owned()),
+            notes.contains(&"exact: zero antialiasing error on every case (1 case)".to_owned()),
             "{notes:?}"
         );
         assert!(
@@ -866,7 +878,7 @@ mod tests {
         r.cases
             .push(aa_case("antialias/g4", "grid", 0, &[("area", 1e-7)]));
         assert_eq!(files(&plots(&r)), ["aa-error-by-family.svg"]);
-        assert!(notes_of(&r).contains("area (median 1.00e-7 over 1 cases)"));
+        assert!(notes_of(&r).contains("area (median 1.00e-7 over 1 case)"));
     }
 
     fn notes_of(r: &Report) -> String {
