@@ -276,7 +276,9 @@ fn label_value(v: f64, lo: i32, hi: i32) -> String {
     } else {
         let e = v.log10().floor() as i32;
         let m = (v / 10f64.powi(e)).round();
-        if m == 1.0 {
+        if e == 0 {
+            format!("{m}")
+        } else if m == 1.0 {
             format!("1e{e}")
         } else {
             format!("{m}e{e}")
@@ -435,6 +437,7 @@ mod tests {
         assert_eq!(label_value(100.0, 0, 3), "100");
         assert_eq!(label_value(1e-7, -8, 0), "1e-7");
         assert_eq!(label_value(5e-7, -8, 0), "5e-7");
+        assert_eq!(label_value(1.0, -8, 0), "1");
     }
 
     #[test]
