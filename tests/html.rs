@@ -414,6 +414,13 @@ fn the_html_report_opens_in_a_browser_with_every_picture() {
     assert_eq!(errors, 0, "script errors on the index");
     assert!(load_ms < 1000.0, "the index took {load_ms} ms to load");
     assert!(dom.contains("Failures first"), "the DOM lacks the failures");
+    // The plots: SVG files beside the index, each decoded (counted above),
+    // and linked from summary.md too.
+    let plots = html.matches("data-role=\"plot\"").count();
+    assert!(plots >= 3, "{plots} plots on the index");
+    assert_eq!(dom.matches("data-role=\"plot\"").count(), plots);
+    let summary = std::fs::read_to_string(dir.join("summary.md")).unwrap();
+    assert_eq!(summary.matches("](plots/").count(), plots, "{summary}");
     assert!(
         dom.contains("<h2>Families</h2>"),
         "the DOM lacks the summary"

@@ -6,7 +6,8 @@
 //! ```text
 //! DIR/report.json          the run, machine-readable (SPEC.md §10)
 //! DIR/junit.xml            one testcase per case × rasterizer
-//! DIR/summary.md           totals, failures first, worst metrics
+//! DIR/summary.md           totals, failures first, worst metrics, the plots
+//! DIR/plots/*.svg          accuracy charts (plots/mod.rs)
 //! DIR/images/<id>/*.png    reference, candidate and difference mask, for
 //!                          every result that is not a pass (antialiased
 //!                          cases: resolved coverage, signed error, samples;
@@ -35,6 +36,7 @@ pub mod exr;
 pub mod html;
 pub mod json;
 pub mod junit;
+pub mod plots;
 pub mod png;
 pub mod summary;
 
@@ -61,7 +63,7 @@ pub const TEMPORARY_SUFFIX: &str = ".rastercheck-partial";
 /// The files and folders a report folder holds that rastercheck wrote;
 /// nothing else in it is ever removed.
 pub const OWNED_FILES: [&str; 4] = ["report.json", "junit.xml", "summary.md", "index.html"];
-pub const OWNED_FOLDERS: [&str; 3] = ["images", "exr", "pages"];
+pub const OWNED_FOLDERS: [&str; 4] = ["images", "exr", "pages", "plots"];
 
 /// Writes `content` to `path` whole or not at all (every report file goes
 /// through here): into a temporary file in the same folder, then renamed
@@ -157,14 +159,23 @@ pub fn write_all(
 }
 
 /// Writes the files that summarise the run, from the report alone:
-/// `report.json`, `junit.xml`, `summary.md` and `index.html`.
+/// `report.json`, `junit.xml`, the plots, `summary.md` and `index.html`
+/// (the last two show the plots).
 pub fn write_summaries(dir: &Path, report: &mut Report) -> Result<Vec<PathBuf>, String> {
-    Ok(vec![
+    let mut written = vec![
         write_json(dir, report)?,
         write_file(&dir.join("junit.xml"), junit::render(report).as_bytes())?,
-        write_file(&dir.join("summary.md"), summary::render(report).as_bytes())?,
-        write_file(&dir.join("index.html"), html::render(report).as_bytes())?,
-    ])
+    ];
+    written.extend(plots::write(dir, report)?);
+    written.push(write_file(
+        &dir.join("summary.md"),
+        summary::render(report).as_bytes(),
+    )?);
+    written.push(write_file(
+        &dir.join("index.html"),
+        html::render(report).as_bytes(),
+    )?);
+    Ok(written)
 }
 
 /// Escapes text for XML and HTML content and attribute values. Control

@@ -118,6 +118,32 @@ pub fn render(report: &Report) -> String {
         }
     }
     md.push_str(&time_errors(report));
+    md.push_str(&plots(report));
+    md
+}
+
+/// The charts of `plots/` as images with their captions, and what they
+/// leave out.
+fn plots(report: &Report) -> String {
+    let plots = super::plots::plots(report);
+    let notes = super::plots::notes(report);
+    let mut md = String::new();
+    if plots.is_empty() && notes.is_empty() {
+        return md;
+    }
+    md.push_str("\n## Plots\n\n");
+    for p in &plots {
+        md.push_str(&format!(
+            "![{}]({}/{})\n\n{}\n\n",
+            p.title,
+            super::plots::FOLDER,
+            p.file,
+            p.caption
+        ));
+    }
+    for n in &notes {
+        md.push_str(&format!("- {n}\n"));
+    }
     md
 }
 

@@ -109,6 +109,9 @@ figure img { display:block; image-rendering:pixelated; border:1px solid #000; ma
 .ramp { display:inline-block; width:140px; height:12px; border:1px solid #555; vertical-align:-2px; margin:0 4px; }
 details { margin-top:8px; } summary { cursor:pointer; color:#0b62c4; }
 .files { font-size:12px; }
+.plots { display:flex; flex-wrap:wrap; gap:16px; }
+.plots figure.plot { background:var(--card); border:1px solid var(--line); border-radius:8px; padding:8px; max-width:700px; }
+.plots figure.plot img { border:none; image-rendering:auto; }
 "#;
 
 /// After load, records on `<body>` for the browser test: the pictures that
@@ -262,6 +265,7 @@ pub fn render(report: &Report) -> String {
     }
     html.push_str(&family_summary(report, &families));
     html.push_str(&failures(report));
+    html.push_str(&plots(report));
     let unpaged = report
         .cases
         .iter()
@@ -384,6 +388,41 @@ fn family_summary(report: &Report, families: &[&str]) -> String {
         html.push_str("</tr>\n");
     }
     html.push_str("</table>\n");
+    html
+}
+
+/// The accuracy charts (`report::plots`), linked from `plots/`, with their
+/// captions, and a line for each chart not drawn.
+fn plots(report: &Report) -> String {
+    let charts = super::plots::plots(report);
+    let notes = super::plots::notes(report);
+    if charts.is_empty() && notes.is_empty() {
+        return String::new();
+    }
+    let mut html = String::from("<h2>Plots</h2><div class=\"plots\">");
+    for chart in &charts {
+        let url: Vec<String> = format!("{}/{}", super::plots::FOLDER, chart.file)
+            .split('/')
+            .map(cards::url_segment)
+            .collect();
+        let _ = write!(
+            html,
+            "<figure class=\"plot\"><img data-role=\"plot\" src=\"{}\" alt=\"{}\"><figcaption><b>{}</b> {}</figcaption></figure>",
+            escape(&url.join("/")),
+            escape(&chart.title),
+            escape(&chart.title),
+            escape(&chart.caption)
+        );
+    }
+    html.push_str("</div>");
+    if !notes.is_empty() {
+        html.push_str("<ul class=\"muted\">");
+        for note in &notes {
+            let _ = write!(html, "<li>{}</li>", escape(note));
+        }
+        html.push_str("</ul>");
+    }
+    html.push('\n');
     html
 }
 
