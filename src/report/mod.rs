@@ -22,6 +22,7 @@
 //! name, then a rename), and a run first removes what an earlier run wrote
 //! there ([`remove_owned`]), never a user's own files.
 
+pub mod diff;
 pub mod exr;
 pub mod html;
 pub mod json;
