@@ -427,3 +427,35 @@ fn bad_input_exits_2_naming_the_file() {
     assert_eq!(code(&out), 2, "{}", text(&out));
     assert!(text(&out).contains("--out"), "{}", text(&out));
 }
+
+#[test]
+fn the_markdown_is_cut_to_fit_a_pull_request_comment() {
+    let dir = scratch("long");
+    let old = triangles_report(&dir);
+    let old_file = write(&dir, "old.json", &old);
+    let mut new = old.clone();
+    let long_reason = "coverage: ".to_owned() + &"x|".repeat(500);
+    for case in new["cases"].as_array_mut().unwrap() {
+        case["results"][0]["verdict"] = "fail".into();
+        case["results"][0]["reasons"] = serde_json::json!([long_reason]);
+    }
+    let new_file = write(&dir, "new.json", &new);
+    let (exit, printed, json) = diff(&old_file, &new_file, &dir.join("out"), &[]);
+    assert_eq!(exit, 1, "{printed}");
+    assert_eq!(json["newly_failing"].as_array().unwrap().len(), 76);
+    let md = std::fs::read_to_string(dir.join("out/diff.md")).unwrap();
+    assert!(md.len() < 65_536, "{}", md.len());
+    assert!(md.contains("and 26 more"), "{md}");
+    // Every row of the table is one line: `|` in a reason is escaped.
+    let rows = md
+        .lines()
+        .filter(|l| l.starts_with("| `triangles/"))
+        .count();
+    assert_eq!(rows, 50, "{md}");
+    for row in md.lines().filter(|l| l.starts_with("| `")) {
+        let cells = row.matches('|').count() - row.matches("\\|").count();
+        assert_eq!(cells, 5, "four cells: {row}");
+    }
+    let html = std::fs::read_to_string(dir.join("out/diff.html")).unwrap();
+    assert_eq!(html.matches("<tr><td>triangles/").count(), 76);
+}
