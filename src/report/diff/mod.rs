@@ -336,6 +336,7 @@ pub fn compare(old: &Side, new: &Side, pairs: Vec<Pair>) -> Diff {
         metrics: Vec::new(),
     };
     let mut regressed: BTreeSet<(String, String)> = BTreeSet::new();
+    let pairs = diff.pairs.clone();
     for id in old_ids.intersection(&new_ids) {
         let (o, n) = (&old.cases[*id], &new.cases[*id]);
         diff.counts.compared_cases += 1;
@@ -352,7 +353,7 @@ pub fn compare(old: &Side, new: &Side, pairs: Vec<Pair>) -> Diff {
             };
             diff.file(change, &mut regressed);
         }
-        for p in &diff.pairs.clone() {
+        for p in &pairs {
             diff.counts.compared_results += 1;
             let (os, ns) = (o.state(&p.old), n.state(&p.new));
             let renamed = (p.old != p.new).then(|| p.old.clone());
