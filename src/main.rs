@@ -9,8 +9,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 use rastercheck::commands::{
-    self, baseline::BaselineCommand, bench::BenchArgs, bless::BlessArgs, fuzz::FuzzArgs,
-    matrix::MatrixArgs, probe::ProbeArgs, run::RunArgs, show::ShowArgs, Exit,
+    self, baseline::BaselineCommand, bench::BenchArgs, bless::BlessArgs, diff::DiffArgs,
+    fuzz::FuzzArgs, matrix::MatrixArgs, probe::ProbeArgs, run::RunArgs, show::ShowArgs, Exit,
 };
 
 /// The system allocator, counting only while `bench` measures a method's
@@ -58,6 +58,10 @@ enum Command {
     /// rule, y direction, subpixel precision, sample position,
     /// interpolation error; write them as a profile for `run --profile`.
     Probe(ProbeArgs),
+    /// Compare two reports (report.json, or report folders): newly failing,
+    /// fixed, added and removed cases, metric deltas worst first; exit 1
+    /// on a regression.
+    Diff(DiffArgs),
 }
 
 fn main() -> ExitCode {
@@ -82,6 +86,7 @@ fn main() -> ExitCode {
         Command::Matrix(args) => commands::matrix::matrix(args),
         Command::Probe(args) => commands::probe::probe(args),
         Command::Bench(args) => commands::bench::bench(args),
+        Command::Diff(args) => commands::diff::diff(args),
         Command::Rasterizers => commands::list_rasterizers(),
     };
     ExitCode::from(exit.code())

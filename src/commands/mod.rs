@@ -16,6 +16,7 @@ pub mod baseline;
 pub mod bench;
 pub mod bless;
 pub mod console;
+pub mod diff;
 pub mod fuzz;
 pub mod limits;
 pub mod matrix;

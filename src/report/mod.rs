@@ -32,6 +32,7 @@
 //! there ([`remove_owned`]), never a user's own files.
 
 pub mod case_files;
+pub mod diff;
 pub mod exr;
 pub mod html;
 pub mod json;

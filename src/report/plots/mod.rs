@@ -483,6 +483,8 @@ mod tests {
                 max_canvas_pixels: 1,
                 max_primitives: 1,
                 max_samples: 1,
+                max_case_bytes: 1,
+                max_case_memory: 1,
                 case_timeout_s: None,
             },
         )
@@ -592,6 +594,7 @@ mod tests {
             golden: None,
             golden_detail: None,
             reference_ms: 0.0,
+            page: None,
             results: results
                 .into_iter()
                 .map(|(r, m)| ResultEntry {
