@@ -144,6 +144,13 @@ pub fn run(args: RunArgs) -> Exit {
     // external programs are killed, and the partial report is written.
     crate::stop::install();
 
+    let index: std::collections::HashMap<&str, usize> = files
+        .iter()
+        .enumerate()
+        .map(|(k, f)| (f.id.as_str(), k))
+        .collect();
+    let entries: Vec<std::sync::Mutex<Option<CaseEntry>>> =
+        files.iter().map(|_| std::sync::Mutex::new(None)).collect();
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
     // Each case's pictures, error maps and page are written as it
@@ -163,6 +170,16 @@ pub fn run(args: RunArgs) -> Exit {
             if let Some(writer) = &writer {
                 outcome.written = writer.write(outcome);
             }
+            // The case's report entry is kept, and the bulk of its scene
+            // let go: a run's memory then grows by an entry per case.
+            if let Some(&k) = index.get(outcome.file.id.as_str()) {
+                let entry = CaseEntry::from_outcome(outcome, &foils);
+                *entries[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(entry);
+                if let Some(scene) = &mut outcome.scene {
+                    scene.primitives = Vec::new();
+                    scene.description = String::new();
+                }
+            }
             progress.tick();
         },
     );
@@ -178,9 +195,23 @@ pub fn run(args: RunArgs) -> Exit {
             .as_ref()
             .is_some_and(Problem::is_input_error);
     }
+    // The entries kept as each case finished; a case marked since (a
+    // duplicate name) gets a fresh one with the scene's facts kept.
     report.cases = outcomes
         .iter()
-        .map(|o| CaseEntry::from_outcome(o, &foils))
+        .zip(entries)
+        .map(|(o, kept)| {
+            let fresh = CaseEntry::from_outcome(o, &foils);
+            match kept.into_inner().unwrap_or_else(|e| e.into_inner()) {
+                Some(kept) if kept.status == fresh.status => kept,
+                Some(kept) => CaseEntry {
+                    description: kept.description,
+                    rules: kept.rules,
+                    ..fresh
+                },
+                None => fresh,
+            }
+        })
         .collect();
     let stopped = crate::stop::requested();
     report.complete = stopped.is_none();

@@ -171,6 +171,11 @@ impl CaseOutcome {
         }
         for run in &mut self.candidates {
             run.frame = None;
+            // The per-sample difference mask is a frame's worth too; the
+            // counts stay.
+            if let Some(m) = &mut run.metrics {
+                m.coverage.mask = Vec::new();
+            }
         }
     }
 

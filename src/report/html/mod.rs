@@ -109,6 +109,8 @@ figure img { display:block; image-rendering:pixelated; border:1px solid #000; ma
 .ramp { display:inline-block; width:140px; height:12px; border:1px solid #555; vertical-align:-2px; margin:0 4px; }
 details { margin-top:8px; } summary { cursor:pointer; color:#0b62c4; }
 .files { font-size:12px; }
+.scroll { max-height:460px; overflow:auto; border:1px solid var(--line); border-radius:6px; }
+table.failures td:nth-child(2) { white-space:nowrap; }
 .plots { display:flex; flex-wrap:wrap; gap:16px; }
 .plots figure.plot { background:var(--card); border:1px solid var(--line); border-radius:8px; padding:8px; max-width:700px; }
 .plots figure.plot img { border:none; image-rendering:auto; }
@@ -444,7 +446,7 @@ fn failures(report: &Report) -> String {
         return "<h2>Failures</h2><p>None: every judged result passed.</p>\n".to_owned();
     }
     let mut html = format!(
-        "<h2>Failures first <span class=\"muted\">({})</span></h2><table class=\"failures\"><tr><th>case</th><th>rasterizer</th><th>verdict</th><th>why</th></tr>\n",
+        "<h2>Failures first <span class=\"muted\">({})</span></h2><div class=\"scroll\"><table class=\"failures\"><tr><th>case</th><th>rasterizer</th><th>verdict</th><th>why</th></tr>\n",
         rows.len()
     );
     for (card, case) in rows.iter().take(MAX_FAILURE_ROWS) {
@@ -490,7 +492,7 @@ fn failures(report: &Report) -> String {
             escape(&shorten(&why, 140))
         );
     }
-    html.push_str("</table>\n");
+    html.push_str("</table></div>\n");
     if rows.len() > MAX_FAILURE_ROWS {
         let _ = writeln!(
             html,
