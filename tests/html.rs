@@ -603,3 +603,62 @@ fn antialiased_cases_show_resolved_coverage_and_error_maps() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `diff`'s page opens in Chromium: production against a mutant on the
+/// triangles, and every case the mutant newly fails is a row of the page's
+/// DOM after load.
+#[test]
+fn the_diff_page_opens_in_a_browser() {
+    let dir = report_dir().with_extension("diff");
+    std::fs::create_dir_all(&dir).unwrap();
+    let triangles = Path::new(ROOT).join("cases/triangles");
+    for (name, rasterizer) in [("old", "production"), ("new", "mutant:no-perspective")] {
+        let out = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+            .args(["run", "-q", "-r", rasterizer, "--report"])
+            .arg(dir.join(name))
+            .arg(&triangles)
+            .output()
+            .expect("the binary runs");
+        assert!(out.status.code().is_some_and(|c| c <= 1), "{out:?}");
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .arg("diff")
+        .args([dir.join("old"), dir.join("new")])
+        .arg("--out")
+        .arg(dir.join("diff"))
+        .output()
+        .expect("the binary runs");
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("diff/diff.json")).unwrap())
+            .unwrap();
+    let newly: Vec<String> = json["newly_failing"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["case"].as_str().unwrap().to_owned())
+        .collect();
+    assert!(!newly.is_empty());
+    let page = dir.join("diff/diff.html");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(!html.contains("src=\"http") && !html.contains("<link"));
+
+    let Some(chromium) = chromium() else {
+        eprintln!("skipped: chromium not found; .ci/run installs it (the browser half of this test did not run)");
+        return;
+    };
+    let dom = dir.join("dom.html");
+    run_chromium(
+        &chromium,
+        &dir.join("chromium-profile"),
+        &page,
+        &["--dump-dom".to_owned()],
+        &dom,
+    );
+    let dom = std::fs::read_to_string(&dom).unwrap();
+    assert!(dom.contains("regression"), "{dom}");
+    for case in &newly {
+        assert!(dom.contains(case.as_str()), "{case} is not on the page");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
