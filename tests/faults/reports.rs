@@ -84,6 +84,32 @@ fn peak_so_far_mib(pid: u32) -> f64 {
     kib / 1024.0
 }
 
+/// Checks the run's peak RSS so far against the bound, sends it `signal`
+/// (`TERM`, `INT`), and waits for it to end: its status, and how long it
+/// took after the signal.
+fn signal_and_wait(
+    child: &mut std::process::Child,
+    signal: &str,
+) -> (std::process::ExitStatus, Duration) {
+    let peak = peak_so_far_mib(child.id());
+    assert!(
+        peak < crate::RSS_BOUND_MIB,
+        "peak RSS {peak:.1} MiB before the signal"
+    );
+    let sent = Instant::now();
+    let killed = Command::new("/bin/kill")
+        .args([&format!("-{signal}"), &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let mut status = None;
+    wait_for("rastercheck to stop", || {
+        status = child.try_wait().unwrap();
+        status.is_some()
+    });
+    (status.unwrap(), sent.elapsed())
+}
+
 /// Polls `done` until it holds; panics after [`HANG_GUARD`].
 fn wait_for(what: &str, mut done: impl FnMut() -> bool) {
     let started = Instant::now();
@@ -162,23 +188,9 @@ fn stopped_by(signal: &str, code: i32) {
         sleeping().is_some() || child.try_wait().unwrap().is_some()
     });
     let sleeper = sleeping().expect("the third case's program sleeps");
-    let peak = peak_so_far_mib(child.id());
-    assert!(
-        peak < crate::RSS_BOUND_MIB,
-        "peak RSS {peak:.1} MiB before the signal"
-    );
-    let sent = Command::new("/bin/kill")
-        .args([&format!("-{signal}"), &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(sent.success());
-    let mut status = None;
-    wait_for("rastercheck to stop", || {
-        status = child.try_wait().unwrap();
-        status.is_some()
-    });
+    let (status, _) = signal_and_wait(child, signal);
     let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
-    assert_eq!(status.unwrap().code(), Some(code), "{log}");
+    assert_eq!(status.code(), Some(code), "{log}");
     assert!(!log.contains("panicked"), "{log}");
     assert!(log.contains("cases did not run"), "{log}");
 
@@ -277,25 +289,9 @@ fn sigterm_stops_the_reference_in_the_middle_of_a_case() {
         child.try_wait().unwrap().is_none(),
         "the case finished too soon to test"
     );
-    let peak = peak_so_far_mib(child.id());
-    assert!(
-        peak < crate::RSS_BOUND_MIB,
-        "peak RSS {peak:.1} MiB before the signal"
-    );
-    let sent = Instant::now();
-    let killed = Command::new("/bin/kill")
-        .args(["-TERM", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(killed.success());
-    let mut status = None;
-    wait_for("rastercheck to stop", || {
-        status = child.try_wait().unwrap();
-        status.is_some()
-    });
-    let took = sent.elapsed();
+    let (status, took) = signal_and_wait(child, "TERM");
     let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
-    assert_eq!(status.unwrap().code(), Some(143), "{log}");
+    assert_eq!(status.code(), Some(143), "{log}");
     assert!(
         took < Duration::from_secs(5),
         "stopped {took:?} after the signal"
