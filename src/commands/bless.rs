@@ -34,6 +34,11 @@ pub fn bless(args: BlessArgs) -> Exit {
                 continue;
             }
         };
+        if let Some(over) = crate::harness::runner::over_memory(&scene, &limits, 0) {
+            eprintln!("error: {}: {over}", file.path.display());
+            bad_input = true;
+            continue;
+        }
         let reference =
             match crate::deadline::within(limits.case_timeout, || suite::run_reference(&scene)) {
                 Ok(reference) => reference,

@@ -63,6 +63,10 @@ pub fn show(args: ShowArgs) -> Exit {
         );
         return Exit::BadInput;
     };
+    if let Some(over) = crate::harness::runner::over_memory(&scene, &limits, 1) {
+        eprintln!("error: {}: {over}", case.display());
+        return Exit::BadInput;
+    }
     let reference = suite::run_reference(&scene);
     let result = suite::run_candidate(&scene, &reference, candidate.as_ref());
     let (Some(frame), Some(metrics)) = (&result.frame, &result.metrics) else {

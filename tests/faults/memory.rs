@@ -88,6 +88,17 @@ fn a_case_whose_frames_would_not_fit_gets_a_limit_verdict() {
     );
     assert_eq!(code, Some(2), "{log}");
     assert!(log.contains("--max-case-memory"), "{log}");
+
+    // `bless` and `show` draw with the reference too, and check first.
+    for args in [
+        &["bless", "cases/a/huge.json"][..],
+        &["show", "cases/a/huge.json", "--out", "shown"][..],
+    ] {
+        let (code, log, peak) = run_measured(&dir, args);
+        assert_eq!(code, Some(2), "{args:?}: {log}");
+        assert!(log.contains("--max-case-memory"), "{args:?}: {log}");
+        assert!(peak < 200.0, "{args:?}: peak RSS {peak:.1} MiB");
+    }
 }
 
 #[test]
