@@ -218,5 +218,40 @@ fn bad_names_are_refused() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {t}");
         assert!(t.contains("name"), "{args:?}: {t}");
     }
-    let _ = Path::new(&dir);
+}
+
+/// `-r NAME=COMMAND` in `matrix` (the row) and `baseline` (the key it
+/// records, and checks under).
+#[test]
+fn names_hold_in_matrix_and_baseline() {
+    let dir = scratch("protocol-names-elsewhere");
+    let spec = format!(
+        "lava=external-persistent:python3 {} {} --persistent",
+        program(),
+        dir.join("log").display()
+    );
+    let cases = [CASES[2], CASES[7]];
+    let out = rastercheck_env(
+        &root(),
+        &[&["matrix", "-r", &spec][..], &cases].concat(),
+        &[],
+    );
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    assert!(t.contains("| `lava` |"), "{t}");
+    let base = dir.join("base.json").display().to_string();
+    let save = [&["baseline", "save", &base, "-r", &spec][..], &cases].concat();
+    let out = rastercheck_env(&root(), &save, &[]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let recorded = read_json(Path::new(&base));
+    assert_eq!(
+        recorded["rasterizers"],
+        serde_json::json!(["lava"]),
+        "{recorded}"
+    );
+    let check = [&["baseline", "check", &base, "-r", &spec][..], &cases].concat();
+    let out = rastercheck_env(&root(), &check, &[]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    assert!(t.contains("0 regressions"), "{t}");
 }

@@ -146,6 +146,8 @@ fn baseline_save(
         Ok(files) => files,
         Err(exit) => return exit,
     };
+    // Recorded under the names the candidates go by (NAME in `-r NAME=external…`).
+    let names: Vec<String> = candidates.iter().map(|c| c.name().to_owned()).collect();
     let observed = observe(&files, &candidates, &names, &select);
     if !observed.problems.is_empty() {
         for (case, why) in &observed.problems {
