@@ -148,6 +148,13 @@ fn a_late_answer_is_dropped_by_its_id() {
     survives("late", 3, "timed out after 2 s with no answer");
 }
 
+/// A program that hangs on a case is killed by the next case's timeout,
+/// and that case is sent again to a fresh process: it is not blamed.
+#[test]
+fn a_hung_program_costs_its_own_case_only() {
+    survives("hang", 3, "timed out after 2 s with no answer");
+}
+
 #[test]
 fn an_answer_with_a_wrong_id_is_never_used() {
     survives("wrongid", 4, "1 stray line on stdout");

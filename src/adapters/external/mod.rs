@@ -300,6 +300,7 @@ impl External {
         plan: &Plan,
         timeout: Duration,
         max_output: u64,
+        retried: bool,
     ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
         let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
@@ -325,7 +326,23 @@ impl External {
             }
         }
         if worker.speaks_v2() {
-            return self.persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output);
+            return match self
+                .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
+            {
+                Ok(result) => result,
+                // The process was stuck on an earlier case, and is gone:
+                // this case is sent once more, to a fresh one, with a
+                // fresh time limit (within the case's deadline).
+                Err(_) if !retried => {
+                    let timeout = match (self.timeout.clone(), deadline::remaining()) {
+                        (Ok(t), Some(left)) => t.min(left),
+                        (Ok(t), None) => t,
+                        (Err(why), _) => return Err(RasterError::Failed(why)),
+                    };
+                    self.persistent(pool, scene, plan, timeout, max_output, true)
+                }
+                Err(why) => Err(why),
+            };
         }
         let mut request =
             serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
@@ -368,7 +385,9 @@ impl External {
     /// A v2 exchange (SPEC.md §12.7): the answer is the line that carries
     /// the request's id. Stray lines make this case a protocol error and
     /// nothing else; late answers to requests that timed out are dropped;
-    /// a timeout keeps the process unless it is its second in a row.
+    /// a timeout keeps the process unless it is its second in a row: the
+    /// process is then stuck on the earlier request, and is killed;
+    /// `Err` says so, for the caller to send the case to a fresh process.
     #[allow(clippy::too_many_arguments)]
     fn persistent_v2(
         &self,
@@ -379,7 +398,7 @@ impl External {
         deadline: Instant,
         timeout: Duration,
         max_output: u64,
-    ) -> Result<Value, RasterError> {
+    ) -> Result<Result<Value, RasterError>, RasterError> {
         let id = format!(
             "{}#{}",
             scene.name,
@@ -395,7 +414,7 @@ impl External {
         let (why, kill_now) = match answer {
             Ok(value) if skipped.strays == 0 => {
                 keep(worker);
-                return Ok(value);
+                return Ok(Ok(value));
             }
             Ok(_) => {
                 let why = format!(
@@ -404,7 +423,7 @@ impl External {
                 );
                 let err = failed(why, &worker.stderr, mark);
                 keep(worker);
-                return Err(err);
+                return Ok(Err(err));
             }
             Err(Exchange::TimedOut) => {
                 worker.owe(id.clone());
@@ -426,12 +445,15 @@ impl External {
                         mark,
                     );
                     keep(worker);
-                    return Err(err);
+                    return Ok(Err(err));
                 }
-                (
-                    format!("{why}; its second timeout in a row: it was killed"),
-                    true,
-                )
+                // Nothing since its last timeout: stuck on that request.
+                let why = format!(
+                    "{why}, nor to the earlier request it timed out on: it is stuck, and \
+                     was killed"
+                );
+                worker.end(true);
+                return Err(failed(why, &worker.stderr, mark));
             }
             Err(Exchange::Flood) => (
                 format!(
@@ -454,7 +476,7 @@ impl External {
             Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
             _ => why,
         };
-        Err(failed(why, &worker.stderr, mark))
+        Ok(Err(failed(why, &worker.stderr, mark)))
     }
 }
 
@@ -487,7 +509,7 @@ impl Rasterizer for External {
                     serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
                 self.one_shot(request, timeout, max_output)?
             }
-            Some(pool) => self.persistent(pool, scene, plan, timeout, max_output)?,
+            Some(pool) => self.persistent(pool, scene, plan, timeout, max_output, false)?,
         };
         frame_from_response(&response, scene, plan)
     }

@@ -13,7 +13,8 @@ case named CASE:
 - skip: never answers that case (the next one is answered as usual);
 - late: answers it after PROTOCOL_LATE seconds (3 by default), so that the
   late answer comes while the next request is in flight;
-- wrongid: answers it with another id.
+- wrongid: answers it with another id;
+- hang: stops answering anything from that case on (it sleeps).
 
 Standard library only.
 """
@@ -60,6 +61,8 @@ def main():
             time.sleep(float(os.environ.get("PROTOCOL_LATE", "3")))
         elif fault == "wrongid":
             response["id"] = "bogus"
+        elif fault == "hang":
+            time.sleep(600)
         print(json.dumps(response), flush=True)
 
 
