@@ -155,6 +155,26 @@ fn a_hung_program_costs_its_own_case_only() {
     survives("hang", 3, "timed out after 2 s with no answer");
 }
 
+/// A flood of stray lines is bounded (1000 lines): an error for its case,
+/// the process killed, the next case answered by a fresh one.
+#[test]
+fn a_flood_of_stray_lines_is_cut_short() {
+    survives("flood", 5, "more than 1000 lines");
+}
+
+/// A hello that breaks §12.7 is an error naming its JSON path, for every
+/// case (each process says it again), and never a crash or a pass.
+#[test]
+fn a_malformed_hello_is_an_error() {
+    let (code, report, t, log) = run("bad-hello", "", "--bad-hello", &CASES[..2]);
+    assert_eq!(code, Some(1), "{t}");
+    for v in verdicts(&report) {
+        assert_eq!(v.1, "error", "{v:?}");
+        assert!(v.2.contains("$.hello.capabilities.primitives[1]"), "{v:?}");
+    }
+    assert!(!log.contains("case "), "{log}");
+}
+
 #[test]
 fn an_answer_with_a_wrong_id_is_never_used() {
     survives("wrongid", 4, "1 stray line on stdout");

@@ -24,9 +24,19 @@
 //! threads that feed and read its pipes end with it. Every process started
 //! here is waited for: never left running or as a zombie.
 //!
+//! Protocol v2 (SPEC.md §12.7), persistent mode: a program whose first
+//! line is a hello of version 2 gets an `id` in every request and must
+//! echo it. The answer is the line with the id in flight; a late answer to
+//! a request that timed out is dropped, any other line is a stray (an
+//! error for the case in flight only), so no answer is ever matched to
+//! another case. A timed-out process is kept, unless the next request
+//! times out too: then it is stuck, killed, and that case is sent once
+//! more to a fresh process. The hello's capabilities (`hello.rs`) refuse
+//! cases before they are sent. `NAME=external…` names the adapter.
+//!
 //! This file holds the processes: starting them, feeding them, timing
 //! them out and reaping them. `protocol.rs` holds the messages: the
-//! request, and reading a response into a frame.
+//! request, and reading a response into a frame; `hello.rs` the hello.
 
 mod hello;
 mod protocol;

@@ -14,7 +14,10 @@ case named CASE:
 - late: answers it after PROTOCOL_LATE seconds (3 by default), so that the
   late answer comes while the next request is in flight;
 - wrongid: answers it with another id;
-- hang: stops answering anything from that case on (it sleeps).
+- hang: stops answering anything from that case on (it sleeps);
+- flood: 5000 stray lines before its answer.
+
+With --bad-hello its hello declares a primitive kind that does not exist.
 
 Standard library only.
 """
@@ -40,6 +43,8 @@ def main():
         hello = json.loads(json.dumps(example.HELLO))
         if "--no-lines" in args:
             hello["hello"]["capabilities"]["primitives"] = ["triangles", "polygons"]
+        if "--bad-hello" in args:
+            hello["hello"]["capabilities"]["primitives"] = ["triangles", "spheres"]
         print(json.dumps(hello), flush=True)
     for text in sys.stdin:
         request = json.loads(text)
@@ -63,6 +68,10 @@ def main():
             response["id"] = "bogus"
         elif fault == "hang":
             time.sleep(600)
+        elif fault == "flood":
+            for i in range(5000):
+                print("stray %d" % i)
+            sys.stdout.flush()
         print(json.dumps(response), flush=True)
 
 
