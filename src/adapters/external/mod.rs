@@ -45,7 +45,7 @@ use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::process::CommandExt;
 use std::process::{Child, ChildStdin, Command, ExitStatus, Stdio};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread::{self, JoinHandle};
@@ -72,7 +72,9 @@ pub const PROTOCOL_V2: &str = "rastercheck-external/2";
 
 /// How long a fresh persistent process is given to write its hello before
 /// the first request is sent to it (it is sent at once when a line comes
-/// sooner). A program that writes none is v1, and pays this once per process.
+/// sooner). A program that writes none is v1, and pays this once per run
+/// (per thread that starts one at the same time): once a process has
+/// written no hello, the next ones are not waited for.
 const HELLO_WAIT: Duration = Duration::from_secs(1);
 
 /// The most lines a v2 exchange skips (stray lines, late answers) before
@@ -181,6 +183,9 @@ pub struct External {
     pool: Option<Mutex<Vec<Worker>>>,
     /// The id of the next v2 request (unique in the adapter's life).
     next_id: AtomicU64,
+    /// Whether a process of this program wrote no hello: later processes
+    /// are not waited for (a hello that comes later is still read).
+    said_no_hello: AtomicBool,
 }
 
 impl External {
@@ -195,6 +200,7 @@ impl External {
             max_output: max_output_from_env(),
             pool: persistent.then(|| Mutex::new(Vec::new())),
             next_id: AtomicU64::new(1),
+            said_no_hello: AtomicBool::new(false),
         }
     }
 
@@ -318,7 +324,12 @@ impl External {
             Some(worker) => worker,
             None => {
                 let mut worker = Worker::start(self.start()?, max_output);
-                worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                if !self.said_no_hello.load(Ordering::Relaxed) {
+                    worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                    if worker.hello.is_none() {
+                        self.said_no_hello.store(true, Ordering::Relaxed);
+                    }
+                }
                 worker
             }
         };
