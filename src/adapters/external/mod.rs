@@ -1145,3 +1145,25 @@ impl StderrTail {
         Some(tail)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_split_only_before_a_spec() {
+        assert_eq!(
+            split_name("lava=external-persistent:prog --a=b"),
+            Some(("lava", "external-persistent:prog --a=b"))
+        );
+        assert_eq!(split_name("x=external:prog"), Some(("x", "external:prog")));
+        // An argument that is a spec is never split, whatever `=` it holds.
+        assert_eq!(split_name("external:prog --name=external:y"), None);
+        // `RUN=RECORDED` of baseline check is no name.
+        assert_eq!(split_name("production=reference"), None);
+        assert!(check_name("lava").is_ok());
+        for bad in ["", "a b", "a:b", "tab\there"] {
+            assert!(check_name(bad).is_err(), "{bad:?}");
+        }
+    }
+}
