@@ -5,6 +5,11 @@ It speaks the external-process protocol of SPEC.md §12:
 
     rastercheck run cases -r 'external:python3 examples/python_rasterizer.py'
     rastercheck run cases -r 'external-persistent:python3 examples/python_rasterizer.py --persistent'
+    rastercheck run cases -r 'py=external-persistent:python3 examples/python_rasterizer.py --persistent --v1'
+
+In persistent mode it speaks version 2 of the protocol (SPEC.md §12.7): a
+hello declaring what it draws, then answers that echo each request's id;
+with --v1, version 1 (no hello, no ids).
 
 It is written the way a first course assignment usually is, and it is meant
 to be caught:
@@ -179,14 +184,51 @@ def rasterize(request):
     return {"primitives": out}
 
 
+# What this program declares in its hello (protocol v2, SPEC.md §12.7): what
+# it draws, and the conventions it follows. Cases outside the capabilities
+# are never sent to it; they are reported unsupported, with this as reason.
+# The fill rule is not declared: the program ignores the case's rule, and a
+# case whose rule it breaks is a finding, not something to refuse.
+HELLO = {
+    "hello": {
+        "protocol": 2,
+        "name": "python-example",
+        "version": "2",
+        "capabilities": {
+            "primitives": ["triangles", "lines", "polygons"],
+            "line_rules": ["midpoint"],
+            "interpolation": ["flat", "linear", "perspective"],
+            "antialias": True,
+            "depth": True,
+            "attributes": True,
+            "motion": False,
+        },
+        "conventions": {
+            "fill_rule": "inclusive: a centre on any edge is inside",
+            "polygon_fill": "even-odd",
+            "line_walk": "float DDA",
+        },
+    }
+}
+
+
 def main():
-    if "--persistent" in sys.argv[1:]:
+    args = sys.argv[1:]
+    if "--persistent" in args:
         # JSON Lines: one request per line, one response per line, until bye.
+        # v2 (the default): a hello first, and every answer echoes the
+        # request's id; --v1 speaks version 1 (no hello, no ids).
+        v2 = "--v1" not in args
+        if v2:
+            print(json.dumps(HELLO), flush=True)
         for text in sys.stdin:
             request = json.loads(text)
             if request.get("bye"):
                 break
-            print(json.dumps(rasterize(request)), flush=True)
+            response = rasterize(request)
+            if v2 and "id" in request:
+                response["id"] = request["id"]
+            print(json.dumps(response), flush=True)
     else:
         print(json.dumps(rasterize(json.load(sys.stdin))))
 

@@ -146,6 +146,8 @@ fn baseline_save(
         Ok(files) => files,
         Err(exit) => return exit,
     };
+    // Recorded under the names the candidates go by (NAME in `-r NAME=external…`).
+    let names: Vec<String> = candidates.iter().map(|c| c.name().to_owned()).collect();
     let observed = observe(&files, &candidates, &names, &select);
     if !observed.problems.is_empty() {
         for (case, why) in &observed.problems {
@@ -194,11 +196,18 @@ fn baseline_check(
             .map(|n| (n.clone(), n.clone()))
             .collect()
     } else {
+        if let Err(exit) = super::check_names(&names) {
+            return exit;
+        }
         names
             .iter()
-            .map(|n| match n.split_once('=') {
-                Some((run, recorded)) => (run.trim().to_owned(), recorded.trim().to_owned()),
-                None => (n.clone(), n.clone()),
+            .map(|n| match crate::adapters::external::split_name(n) {
+                // `-r NAME=external…`: run the program, held to NAME.
+                Some((name, _)) => (n.clone(), name.to_owned()),
+                None => match n.split_once('=') {
+                    Some((run, recorded)) => (run.trim().to_owned(), recorded.trim().to_owned()),
+                    None => (n.clone(), n.clone()),
+                },
             })
             .collect()
     };

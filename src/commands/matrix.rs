@@ -38,6 +38,9 @@ pub fn matrix(args: MatrixArgs) -> Exit {
     } else {
         args.rasterizers
     };
+    if let Err(exit) = super::check_names(&names) {
+        return exit;
+    }
     if let Some(name) = names.iter().find(|n| matrix::rasterizer(n).is_none()) {
         eprintln!("error: {}", unknown_rasterizer(name));
         return Exit::BadInput;

@@ -110,9 +110,39 @@ pub(crate) fn unknown_rasterizer(name: &str) -> String {
     )
 }
 
+/// Checks the names given as `-r NAME=external…` (SPEC.md §12): each one
+/// word, not a bundled rasterizer's, and given once among `args`. `Err`
+/// (already printed) otherwise: bad usage.
+pub(crate) fn check_names(args: &[String]) -> Result<(), Exit> {
+    let refuse = |why: String| {
+        eprintln!("error: {why}");
+        Exit::BadInput
+    };
+    let mut seen: Vec<&str> = Vec::new();
+    for arg in args {
+        let Some((name, _)) = crate::adapters::external::split_name(arg) else {
+            continue;
+        };
+        crate::adapters::external::check_name(name).map_err(refuse)?;
+        if suite::rasterizer_names().contains(&name) {
+            return Err(refuse(format!(
+                "rasterizer name {name:?} is a bundled rasterizer's; choose another"
+            )));
+        }
+        if seen.contains(&name) {
+            return Err(refuse(format!(
+                "rasterizer name {name:?} is given to two -r; give each its own"
+            )));
+        }
+        seen.push(name);
+    }
+    Ok(())
+}
+
 /// The named rasterizer; `Err` (already printed) when there is none, or
 /// when the environment it reads is malformed.
 pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> {
+    check_names(&[name.to_owned()])?;
     let found = suite::rasterizer(name).ok_or_else(|| {
         eprintln!("error: {}", unknown_rasterizer(name));
         Exit::BadInput
@@ -124,6 +154,7 @@ pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> 
 /// Bad usage in the environment a rasterizer reads (an external program's
 /// `RASTERCHECK_EXTERNAL_TIMEOUT`): `Err` (already printed) when malformed.
 pub(crate) fn environment_for(name: &str) -> Result<(), Exit> {
+    let name = crate::adapters::external::split_name(name).map_or(name, |(_, spec)| spec);
     if !name.trim_start().starts_with("external") {
         return Ok(());
     }
@@ -135,6 +166,7 @@ pub(crate) fn environment_for(name: &str) -> Result<(), Exit> {
 
 /// The named rasterizers; `Err` (already printed) on an unknown name.
 pub(crate) fn rasterizers_named(names: &[String]) -> Result<Vec<Box<dyn Rasterizer>>, Exit> {
+    check_names(names)?;
     names.iter().map(|name| rasterizer_named(name)).collect()
 }
 

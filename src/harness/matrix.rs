@@ -162,11 +162,15 @@ pub fn build(
     // For each row, its index among `candidates` when available.
     let mut slot: Vec<Option<usize>> = Vec::new();
     for name in names {
+        // The row is called what the rasterizer calls itself (NAME in
+        // `-r NAME=external…`).
+        let mut row_name = name.clone();
         let (available, foil) = match rasterizer(name) {
             None => (Err("unknown rasterizer".to_owned()), false),
             Some(Err(why)) => (Err(why), false),
             Some(Ok(r)) => {
                 let foil = r.is_foil();
+                row_name = r.name().to_owned();
                 match check_available(r.as_ref()) {
                     Ok(()) => {
                         candidates.push(r);
@@ -178,7 +182,7 @@ pub fn build(
         };
         slot.push(available.is_ok().then(|| candidates.len() - 1));
         rows.push(Row {
-            name: name.clone(),
+            name: row_name,
             foil,
             available,
             cells: Vec::new(),

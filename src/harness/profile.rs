@@ -100,7 +100,14 @@ pub fn for_run(
     } else {
         declared.iter().map(|d| d.rasterizer.clone()).collect()
     };
-    if let Some(d) = declared.iter().find(|d| !names.contains(&d.rasterizer)) {
+    // A program named with `-r NAME=external…` is called NAME.
+    fn called(n: &str) -> &str {
+        crate::adapters::external::split_name(n).map_or(n, |(name, _)| name)
+    }
+    if let Some(d) = declared
+        .iter()
+        .find(|d| !names.iter().any(|n| called(n) == d.rasterizer))
+    {
         return Err(format!(
             "{} is a profile of {}, which this run does not check (add -r '{}')",
             d.file, d.rasterizer, d.rasterizer

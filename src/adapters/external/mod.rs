@@ -24,15 +24,28 @@
 //! threads that feed and read its pipes end with it. Every process started
 //! here is waited for: never left running or as a zombie.
 //!
+//! Protocol v2 (SPEC.md §12.7), persistent mode: a program whose first
+//! line is a hello of version 2 gets an `id` in every request and must
+//! echo it. The answer is the line with the id in flight; a late answer to
+//! a request that timed out is dropped, any other line is a stray (an
+//! error for the case in flight only), so no answer is ever matched to
+//! another case. A timed-out process is kept, unless the next request
+//! times out too: then it is stuck, killed, and that case is sent once
+//! more to a fresh process. The hello's capabilities (`hello.rs`) refuse
+//! cases before they are sent. `NAME=external…` names the adapter.
+//!
 //! This file holds the processes: starting them, feeding them, timing
 //! them out and reaping them. `protocol.rs` holds the messages: the
-//! request, and reading a response into a frame.
+//! request, and reading a response into a frame; `hello.rs` the hello.
 
+mod hello;
 mod protocol;
 
+use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::process::CommandExt;
 use std::process::{Child, ChildStdin, Command, ExitStatus, Stdio};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread::{self, JoinHandle};
@@ -46,11 +59,32 @@ use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
 
+use hello::Hello;
 use protocol::parse_response;
-pub use protocol::{frame_from_response, request};
+pub use protocol::{frame_from_response, request, request_v2};
 
-/// The protocol's name and version, sent in every request.
+/// The protocol's name and version, sent in every request of v1.
 pub const PROTOCOL: &str = "rastercheck-external/1";
+
+/// Version 2 (SPEC.md §12.7): the program's hello, ids in every request
+/// and answer.
+pub const PROTOCOL_V2: &str = "rastercheck-external/2";
+
+/// How long a fresh persistent process is given to write its hello before
+/// the first request is sent to it (it is sent at once when a line comes
+/// sooner). A program that writes none is v1, and pays this once per run
+/// (per thread that starts one at the same time): once a process has
+/// written no hello, the next ones are not waited for.
+const HELLO_WAIT: Duration = Duration::from_secs(1);
+
+/// The most lines a v2 exchange skips (stray lines, late answers) before
+/// the process is judged to flood and is killed; their bytes count against
+/// the output limit too.
+const MAX_SKIPPED_LINES: usize = 1000;
+
+/// How many ids of requests that timed out a v2 process remembers, so
+/// that their late answers are told apart from stray lines.
+const OWED_IDS: usize = 64;
 
 /// The environment variable that sets the per-case time limit, in seconds.
 pub const TIMEOUT_ENV: &str = "RASTERCHECK_EXTERNAL_TIMEOUT";
@@ -77,12 +111,50 @@ const STDERR_KEEP: usize = 64 * 1024;
 const STDERR_QUOTE_CHARS: usize = 1500;
 const STDERR_QUOTE_LINES: usize = 12;
 
-/// The adapter for `external:...` and `external-persistent:...` names, or
-/// `None` for any other name.
-pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
-    let (persistent, command) = if let Some(rest) = name.strip_prefix("external-persistent:") {
+/// Whether `spec` runs an external program (`external:…` or
+/// `external-persistent:…`).
+fn is_external(spec: &str) -> bool {
+    spec.starts_with("external:") || spec.starts_with("external-persistent:")
+}
+
+/// `NAME=external:…` or `NAME=external-persistent:…` split into the name
+/// reports use and the program's spec; `None` for any other argument. Only
+/// the first `=` counts, and only when what follows it starts a spec, so a
+/// command whose arguments hold `=` is left whole (`external:prog --a=b`
+/// is no name).
+pub fn split_name(arg: &str) -> Option<(&str, &str)> {
+    if is_external(arg) {
+        return None;
+    }
+    let (name, spec) = arg.split_once('=')?;
+    is_external(spec).then_some((name, spec))
+}
+
+/// Why `name` cannot name an external program: empty, with whitespace, or
+/// with `:` or `=` (which would read as a spec).
+pub fn check_name(name: &str) -> Result<(), String> {
+    if name.is_empty() {
+        return Err("an empty rasterizer name in NAME=external…; give a name before the =".into());
+    }
+    if name
+        .chars()
+        .any(|c| c.is_whitespace() || c == ':' || c == '=')
+    {
+        return Err(format!(
+            "rasterizer name {:?} has whitespace, ':' or '='; a name is one word",
+            shorten(name)
+        ));
+    }
+    Ok(())
+}
+
+/// The adapter for `external:...` and `external-persistent:...` names,
+/// also as `NAME=external…` (then called NAME), or `None` for any other.
+pub fn by_name(arg: &str) -> Option<Box<dyn Rasterizer>> {
+    let (name, spec) = split_name(arg).unwrap_or((arg, arg));
+    let (persistent, command) = if let Some(rest) = spec.strip_prefix("external-persistent:") {
         (true, rest)
-    } else if let Some(rest) = name.strip_prefix("external:") {
+    } else if let Some(rest) = spec.strip_prefix("external:") {
         (false, rest)
     } else {
         return None;
@@ -109,6 +181,11 @@ pub struct External {
     max_output: Result<u64, String>,
     /// Idle processes of a persistent adapter; `None` in one-shot mode.
     pool: Option<Mutex<Vec<Worker>>>,
+    /// The id of the next v2 request (unique in the adapter's life).
+    next_id: AtomicU64,
+    /// Whether a process of this program wrote no hello: later processes
+    /// are not waited for (a hello that comes later is still read).
+    said_no_hello: AtomicBool,
 }
 
 impl External {
@@ -122,6 +199,8 @@ impl External {
             timeout: timeout_from_env(),
             max_output: max_output_from_env(),
             pool: persistent.then(|| Mutex::new(Vec::new())),
+            next_id: AtomicU64::new(1),
+            said_no_hello: AtomicBool::new(false),
         }
     }
 
@@ -227,26 +306,74 @@ impl External {
         result
     }
 
-    /// A line to a process of the pool, and a line back.
+    /// A line to a process of the pool, and a line back. The request is
+    /// written in the version the process speaks: v2 (an id, the answer
+    /// found by it) when its first line was a hello of version 2, else v1.
     fn persistent(
         &self,
         pool: &Mutex<Vec<Worker>>,
-        mut request: Vec<u8>,
+        scene: &Scene,
+        plan: &Plan,
         timeout: Duration,
         max_output: u64,
+        retried: bool,
     ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
         let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
         let mut worker = match idle {
             Some(worker) => worker,
-            None => Worker::start(self.start()?, max_output),
+            None => {
+                let mut worker = Worker::start(self.start()?, max_output);
+                if !self.said_no_hello.load(Ordering::Relaxed) {
+                    worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                    if worker.hello.is_none() {
+                        self.said_no_hello.store(true, Ordering::Relaxed);
+                    }
+                }
+                worker
+            }
         };
-        request.push(b'\n');
         let mark = worker.stderr.written();
+        if let Some(Err(why)) = &worker.hello {
+            let why = format!("its hello is not a hello of SPEC.md §12.7: {why}");
+            worker.end(true);
+            return Err(failed(why, &worker.stderr, mark));
+        }
+        if let Some(Ok(hello)) = &worker.hello {
+            if let Some(why) = hello.refuses(scene, plan) {
+                // Never sent: the program said it cannot draw it.
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                return Err(RasterError::Unsupported(why));
+            }
+        }
+        if worker.speaks_v2() {
+            return match self
+                .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
+            {
+                Ok(result) => result,
+                // The process was stuck on an earlier case, and is gone:
+                // this case is sent once more, to a fresh one, with a
+                // fresh time limit (within the case's deadline).
+                Err(_) if !retried => {
+                    let timeout = match (self.timeout.clone(), deadline::remaining()) {
+                        (Ok(t), Some(left)) => t.min(left),
+                        (Ok(t), None) => t,
+                        (Err(why), _) => return Err(RasterError::Failed(why)),
+                    };
+                    self.persistent(pool, scene, plan, timeout, max_output, true)
+                }
+                Err(why) => Err(why),
+            };
+        }
+        let mut request =
+            serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
+        request.push(b'\n');
         let line = worker.exchange(request, deadline);
         let result = match line {
             Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
-            Err(Exchange::TimedOut) => Err((format!("timed out after {}", seconds(timeout)), true)),
+            Err(Exchange::TimedOut | Exchange::Flood) => {
+                Err((format!("timed out after {}", seconds(timeout)), true))
+            }
             Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
             Err(Exchange::Broken(Output::Read(e))) => {
                 Err((format!("reading its output: {e}"), true))
@@ -275,6 +402,103 @@ impl External {
             }
         }
     }
+
+    /// A v2 exchange (SPEC.md §12.7): the answer is the line that carries
+    /// the request's id. Stray lines make this case a protocol error and
+    /// nothing else; late answers to requests that timed out are dropped;
+    /// a timeout keeps the process unless it is its second in a row: the
+    /// process is then stuck on the earlier request, and is killed;
+    /// `Err` says so, for the caller to send the case to a fresh process.
+    #[allow(clippy::too_many_arguments)]
+    fn persistent_v2(
+        &self,
+        pool: &Mutex<Vec<Worker>>,
+        mut worker: Worker,
+        scene: &Scene,
+        plan: &Plan,
+        deadline: Instant,
+        timeout: Duration,
+        max_output: u64,
+    ) -> Result<Result<Value, RasterError>, RasterError> {
+        let id = format!(
+            "{}#{}",
+            scene.name,
+            self.next_id.fetch_add(1, Ordering::Relaxed)
+        );
+        let mark = worker.stderr.written();
+        let mut request =
+            serde_json::to_vec(&request_v2(scene, plan, &id)).expect("a JSON value serializes");
+        request.push(b'\n');
+        let (answer, skipped) = worker.exchange_v2(request, &id, deadline, max_output);
+        let keep = |worker: Worker| pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+        let strays = skipped.describe();
+        let (why, kill_now) = match answer {
+            Ok(value) if skipped.strays == 0 => {
+                keep(worker);
+                return Ok(Ok(value));
+            }
+            Ok(_) => {
+                let why = format!(
+                    "protocol error: before its answer (id {id:?}) it wrote {strays}; the \
+                     answer was read and not judged, and the next case is read by its own id"
+                );
+                let err = failed(why, &worker.stderr, mark);
+                keep(worker);
+                return Ok(Err(err));
+            }
+            Err(Exchange::TimedOut) => {
+                worker.owe(id.clone());
+                let why = format!(
+                    "timed out after {} with no answer to id {id:?}{}",
+                    seconds(timeout),
+                    if skipped.strays + skipped.late > 0 {
+                        format!(" ({strays})")
+                    } else {
+                        String::new()
+                    }
+                );
+                if worker.timeouts_in_a_row < 2 {
+                    // It may only be slow: kept, and its late answer is
+                    // dropped by its id when it comes.
+                    let err = failed(
+                        format!("{why}; the process is kept (a late answer is dropped by its id)"),
+                        &worker.stderr,
+                        mark,
+                    );
+                    keep(worker);
+                    return Ok(Err(err));
+                }
+                // Nothing since its last timeout: stuck on that request.
+                let why = format!(
+                    "{why}, nor to the earlier request it timed out on: it is stuck, and \
+                     was killed"
+                );
+                worker.end(true);
+                return Err(failed(why, &worker.stderr, mark));
+            }
+            Err(Exchange::Flood) => (
+                format!(
+                    "{strays} without answering id {id:?}, more than {MAX_SKIPPED_LINES} lines \
+                     or {max_output} bytes ({MAX_OUTPUT_ENV}); it was killed"
+                ),
+                true,
+            ),
+            Err(Exchange::Closed) => ("closed its output".to_owned(), false),
+            Err(Exchange::Broken(Output::Read(e))) => (format!("reading its output: {e}"), true),
+            Err(Exchange::Broken(Output::TooLong)) => (
+                format!(
+                    "wrote more than {max_output} bytes to stdout in one line (the limit \
+                     is {MAX_OUTPUT_ENV}, in bytes); it was killed"
+                ),
+                true,
+            ),
+        };
+        let why = match worker.end(kill_now) {
+            Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
+            _ => why,
+        };
+        Ok(Err(failed(why, &worker.stderr, mark)))
+    }
 }
 
 impl Rasterizer for External {
@@ -300,10 +524,13 @@ impl Rasterizer for External {
         if let Some(left) = deadline::remaining() {
             timeout = timeout.min(left);
         }
-        let request = serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
         let response = match &self.pool {
-            None => self.one_shot(request, timeout, max_output)?,
-            Some(pool) => self.persistent(pool, request, timeout, max_output)?,
+            None => {
+                let request =
+                    serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
+                self.one_shot(request, timeout, max_output)?
+            }
+            Some(pool) => self.persistent(pool, scene, plan, timeout, max_output, false)?,
         };
         frame_from_response(&response, scene, plan)
     }
@@ -524,6 +751,8 @@ fn failed(why: String, stderr: &StderrTail, mark: u64) -> RasterError {
 /// What a persistent exchange got instead of a line.
 enum Exchange {
     TimedOut,
+    /// Too many lines that were not the answer (v2).
+    Flood,
     /// The process closed its stdout (it exited, most likely).
     Closed,
     Broken(Output),
@@ -540,6 +769,53 @@ struct Worker {
     /// The threads that write its stdin and read its stdout and stderr.
     threads: Vec<JoinHandle<()>>,
     reaped: bool,
+    /// What its first line declared, if it was a hello (SPEC.md §12.7),
+    /// or why that hello was refused.
+    hello: Option<Result<Hello, String>>,
+    /// A first line read while waiting for a hello that was none: the
+    /// first line the first exchange reads.
+    pending: Option<Result<String, Output>>,
+    /// Whether any line was read from it yet.
+    heard: bool,
+    /// v2: ids of requests that timed out, whose late answers are dropped.
+    owed: VecDeque<String>,
+    /// v2: timeouts since its last answer.
+    timeouts_in_a_row: u32,
+}
+
+/// What a v2 exchange skipped on the way to its answer.
+#[derive(Default)]
+struct Skipped {
+    /// Lines that answer no request of this process: not JSON, no id, an
+    /// unknown id.
+    strays: usize,
+    /// Answers to earlier requests that timed out.
+    late: usize,
+    bytes: u64,
+    /// The first stray line, shortened.
+    first: Option<String>,
+}
+
+impl Skipped {
+    fn describe(&self) -> String {
+        let mut parts = Vec::new();
+        if self.strays > 0 {
+            parts.push(format!(
+                "{} stray line{} on stdout (the first: {:?})",
+                self.strays,
+                if self.strays == 1 { "" } else { "s" },
+                self.first.as_deref().unwrap_or("")
+            ));
+        }
+        if self.late > 0 {
+            parts.push(format!(
+                "{} late answer{} to earlier requests, dropped",
+                self.late,
+                if self.late == 1 { "" } else { "s" }
+            ));
+        }
+        parts.join(", ")
+    }
 }
 
 impl Worker {
@@ -581,6 +857,128 @@ impl Worker {
             stderr,
             threads,
             reaped: false,
+            hello: None,
+            pending: None,
+            heard: false,
+            owed: VecDeque::new(),
+            timeouts_in_a_row: 0,
+        }
+    }
+
+    /// Waits until `deadline` for the first line, and keeps it as the
+    /// process's hello if it is one; any other line is left for the first
+    /// exchange. A program that says nothing by then speaks v1 (a hello
+    /// that comes later, as its first line, is still read: §12.7).
+    fn await_hello(&mut self, deadline: Instant) {
+        loop {
+            let left = deadline.saturating_duration_since(Instant::now());
+            match self.lines.recv_timeout(left) {
+                Ok(Ok(line)) if line.trim().is_empty() => continue,
+                Ok(Ok(line)) => {
+                    if !self.take_hello(&line) {
+                        self.pending = Some(Ok(line));
+                    }
+                    return;
+                }
+                Ok(Err(e)) => {
+                    self.pending = Some(Err(e));
+                    return;
+                }
+                Err(_) => return,
+            }
+        }
+    }
+
+    /// Reads `line` as the hello if it is the first line and one.
+    fn take_hello(&mut self, line: &str) -> bool {
+        if self.heard {
+            return false;
+        }
+        self.heard = true;
+        match serde_json::from_str::<Value>(line) {
+            Ok(value) if hello::is_hello(&value) => {
+                self.hello = Some(Hello::parse(&value));
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Whether it declared version 2 in its hello.
+    fn speaks_v2(&self) -> bool {
+        matches!(&self.hello, Some(Ok(h)) if h.protocol >= 2)
+    }
+
+    /// Remembers the id of a request that timed out.
+    fn owe(&mut self, id: String) {
+        self.timeouts_in_a_row += 1;
+        if self.owed.len() == OWED_IDS {
+            self.owed.pop_front();
+        }
+        self.owed.push_back(id);
+    }
+
+    /// The next line (the one kept from the hello's wait first).
+    fn next_line(&mut self, deadline: Instant) -> Result<Result<String, Output>, Exchange> {
+        if let Some(line) = self.pending.take() {
+            return Ok(line);
+        }
+        let left = deadline.saturating_duration_since(Instant::now());
+        match self.lines.recv_timeout(left) {
+            Ok(line) => Ok(line),
+            Err(RecvTimeoutError::Timeout) => Err(Exchange::TimedOut),
+            Err(RecvTimeoutError::Disconnected) => Err(Exchange::Closed),
+        }
+    }
+
+    /// Sends a v2 request and reads lines until the one whose `id` is
+    /// `id`: the answer. Every other line is skipped and counted: a late
+    /// answer to a request that timed out, or a stray. Past
+    /// [`MAX_SKIPPED_LINES`] lines or `max_output` bytes skipped, gives up.
+    fn exchange_v2(
+        &mut self,
+        request: Vec<u8>,
+        id: &str,
+        deadline: Instant,
+        max_output: u64,
+    ) -> (Result<Value, Exchange>, Skipped) {
+        if let Some(requests) = &self.requests {
+            let _ = requests.send(request);
+        }
+        let mut skipped = Skipped::default();
+        loop {
+            let line = match self.next_line(deadline) {
+                Ok(Ok(line)) => line,
+                Ok(Err(e)) => return (Err(Exchange::Broken(e)), skipped),
+                Err(e) => return (Err(e), skipped),
+            };
+            if line.trim().is_empty() {
+                continue;
+            }
+            let value = serde_json::from_str::<Value>(&line).ok();
+            let got = value
+                .as_ref()
+                .and_then(|v| v.get("id"))
+                .and_then(Value::as_str);
+            match got {
+                Some(got) if got == id => {
+                    self.timeouts_in_a_row = 0;
+                    return (Ok(value.expect("it parsed")), skipped);
+                }
+                Some(got) if self.owed.iter().any(|o| o == got) => {
+                    self.owed.retain(|o| o != got);
+                    self.timeouts_in_a_row = 0;
+                    skipped.late += 1;
+                }
+                _ => {
+                    skipped.strays += 1;
+                    skipped.first.get_or_insert_with(|| shorten(&line));
+                }
+            }
+            skipped.bytes += line.len() as u64;
+            if skipped.strays + skipped.late > MAX_SKIPPED_LINES || skipped.bytes > max_output {
+                return (Err(Exchange::Flood), skipped);
+            }
         }
     }
 
@@ -597,13 +995,13 @@ impl Worker {
             let _ = requests.send(request);
         }
         loop {
-            let left = deadline.saturating_duration_since(Instant::now());
-            match self.lines.recv_timeout(left) {
-                Ok(Ok(line)) if line.trim().is_empty() => continue,
-                Ok(Ok(line)) => return Ok(line),
-                Ok(Err(e)) => return Err(Exchange::Broken(e)),
-                Err(RecvTimeoutError::Timeout) => return Err(Exchange::TimedOut),
-                Err(RecvTimeoutError::Disconnected) => return Err(Exchange::Closed),
+            match self.next_line(deadline)? {
+                Ok(line) if line.trim().is_empty() => continue,
+                // A hello that came after the wait: its capabilities and
+                // version hold from the next request on.
+                Ok(line) if self.take_hello(&line) => continue,
+                Ok(line) => return Ok(line),
+                Err(e) => return Err(Exchange::Broken(e)),
             }
         }
     }
@@ -745,5 +1143,27 @@ impl StderrTail {
             tail.insert_str(0, "…\n");
         }
         Some(tail)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_split_only_before_a_spec() {
+        assert_eq!(
+            split_name("lava=external-persistent:prog --a=b"),
+            Some(("lava", "external-persistent:prog --a=b"))
+        );
+        assert_eq!(split_name("x=external:prog"), Some(("x", "external:prog")));
+        // An argument that is a spec is never split, whatever `=` it holds.
+        assert_eq!(split_name("external:prog --name=external:y"), None);
+        // `RUN=RECORDED` of baseline check is no name.
+        assert_eq!(split_name("production=reference"), None);
+        assert!(check_name("lava").is_ok());
+        for bad in ["", "a b", "a:b", "tab\there"] {
+            assert!(check_name(bad).is_err(), "{bad:?}");
+        }
     }
 }

@@ -14,7 +14,7 @@ use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
 
-use super::PROTOCOL;
+use super::{PROTOCOL, PROTOCOL_V2};
 
 /// A number twice: its nearest f64, and (in the sibling `exact` object) its
 /// exact spelling.
@@ -91,6 +91,15 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
     })
 }
 
+/// The request of protocol v2 (SPEC.md §12.7): v1's, named
+/// `rastercheck-external/2` and carrying the `id` its answer must echo.
+pub fn request_v2(scene: &Scene, plan: &Plan, id: &str) -> Value {
+    let mut out = request(scene, plan);
+    out["protocol"] = json!(PROTOCOL_V2);
+    out["id"] = json!(id);
+    out
+}
+
 /// The plan, with the sample offsets of an antialiased scene as floats and,
 /// in `exact`, as fractions.
 fn plan_json(plan: &Plan) -> Value {
@@ -143,9 +152,9 @@ pub fn frame_from_response(
         return Err(bad("not a JSON object".to_owned()));
     };
     if let Some(protocol) = object.get("protocol") {
-        if protocol.as_str() != Some(PROTOCOL) {
+        if protocol.as_str() != Some(PROTOCOL) && protocol.as_str() != Some(PROTOCOL_V2) {
             return Err(bad(format!(
-                "$.protocol is {protocol}; this rastercheck speaks {PROTOCOL:?}"
+                "$.protocol is {protocol}; this rastercheck speaks {PROTOCOL:?} and {PROTOCOL_V2:?}"
             )));
         }
     }
