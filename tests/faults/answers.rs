@@ -10,7 +10,7 @@ use rastercheck::plan::Plan;
 use rastercheck::reference::motion;
 use rastercheck::scene::Limits;
 
-use crate::common::cli::{rastercheck, scratch, text, workspace};
+use crate::common::cli::{scratch, text, workspace};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -39,7 +39,7 @@ fn golden_files_are_found_beside_the_cases_folder_from_any_folder() {
     // reference/ of its own.
     let elsewhere = scratch("answers-elsewhere");
     let cases = repo().join("cases/triangles");
-    let out = rastercheck(&elsewhere, &["run", cases.to_str().unwrap(), "-q"]);
+    let out = crate::bounded_run(&elsewhere, &["run", cases.to_str().unwrap(), "-q"]);
     let t = text(&out);
     assert_eq!(out.status.code(), Some(0), "{t}");
     let (matching, differing, missing) = golden_counts(&t);
@@ -47,7 +47,7 @@ fn golden_files_are_found_beside_the_cases_folder_from_any_folder() {
     assert!(!elsewhere.join("reference").exists());
 
     // Inside cases/, a relative path names the same cases and files.
-    let out = rastercheck(&repo().join("cases"), &["run", "triangles", "-q"]);
+    let out = crate::bounded_run(&repo().join("cases"), &["run", "triangles", "-q"]);
     let t = text(&out);
     assert_eq!(out.status.code(), Some(0), "{t}");
     assert_eq!(golden_counts(&t), (matching, 0, 0), "{t}");
@@ -58,34 +58,34 @@ fn bless_writes_beside_the_cases_folder_and_run_finds_it() {
     let suite = workspace("answers-bless", &[("cases/shapes/square.json", SQUARE)]);
     let elsewhere = scratch("answers-bless-elsewhere");
     let cases = suite.join("cases");
-    let out = rastercheck(&elsewhere, &["bless", cases.to_str().unwrap()]);
+    let out = crate::bounded_run(&elsewhere, &["bless", cases.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     assert!(suite.join("reference/shapes/square.exr").is_file());
     assert!(!elsewhere.join("reference").exists());
     let file = cases.join("shapes/square.json");
-    let out = rastercheck(&elsewhere, &["run", file.to_str().unwrap(), "-q"]);
+    let out = crate::bounded_run(&elsewhere, &["run", file.to_str().unwrap(), "-q"]);
     let t = text(&out);
     assert_eq!(out.status.code(), Some(0), "{t}");
     assert_eq!(golden_counts(&t), (1, 0, 0), "{t}");
     // From the suite's own folder, with a relative path: the same file.
-    let out = rastercheck(&suite, &["run", "cases", "-q"]);
+    let out = crate::bounded_run(&suite, &["run", "cases", "-q"]);
     assert_eq!(golden_counts(&text(&out)), (1, 0, 0));
 }
 
 #[test]
 fn a_case_with_no_cases_folder_above_it_uses_the_working_directory() {
     let dir = workspace("answers-loose", &[("loose/square.json", SQUARE)]);
-    let out = rastercheck(&dir, &["bless", "loose/square.json"]);
+    let out = crate::bounded_run(&dir, &["bless", "loose/square.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     assert!(dir.join("reference/loose/square.exr").is_file());
-    let out = rastercheck(&dir, &["run", "loose/square.json", "-q"]);
+    let out = crate::bounded_run(&dir, &["run", "loose/square.json", "-q"]);
     assert_eq!(golden_counts(&text(&out)), (1, 0, 0));
 }
 
 #[test]
 fn the_reference_passes_every_bundled_case() {
     let report = scratch("answers-reference");
-    let out = rastercheck(
+    let out = crate::bounded_run(
         &repo(),
         &[
             "run",
@@ -121,7 +121,7 @@ fn a_resolve_that_is_neither_the_box_nor_the_exact_area_still_fails() {
     // antialiased case with sloped edges it is neither its mask's box resolve nor the exact
     // area, so the resolve check still catches it.
     let first = repo().join("cases/antialias/edge_slope_1_16_standard16.json");
-    let out = rastercheck(
+    let out = crate::bounded_run(
         &repo(),
         &[
             "run",
@@ -154,15 +154,15 @@ fn a_moving_scene_without_snapping_is_refused_and_16_bits_say_it() {
             ),
         ],
     );
-    let out = rastercheck(&dir, &["run", "cases/unsnapped.json"]);
+    let out = crate::bounded_run(&dir, &["run", "cases/unsnapped.json"]);
     let t = text(&out);
     assert_eq!(out.status.code(), Some(2), "{t}");
     assert!(
         t.contains("$.rules.subpixel_bits") && t.contains("needs subpixel_bits"),
         "{t}"
     );
-    rastercheck(&dir, &["bless", "cases/bits16.json"]);
-    let out = rastercheck(&dir, &["run", "cases/bits16.json"]);
+    crate::bounded_run(&dir, &["bless", "cases/bits16.json"]);
+    let out = crate::bounded_run(&dir, &["run", "cases/bits16.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
 }
 

@@ -2,9 +2,8 @@
 //! crash, hang, huge or hostile input, signal or limit in one case. Each
 //! module is one family of fault; each test asserts that the run finishes,
 //! the other cases keep their verdicts, report.json parses, and the exit
-//! code is the documented one; the tests of `external`, `input`,
-//! `exit_codes`, `memory` and the signals in `reports` also that the run's
-//! peak RSS stays under a bound.
+//! code is the documented one, and that the run's peak RSS stays under a
+//! bound (the soak, a Python script, keeps its own).
 //!
 //! Peak RSS is `wait4`'s `ru_maxrss` for the binary (`common::cli::
 //! run_measured`): the largest of its own peak, the peaks of the programs
@@ -21,7 +20,7 @@
 //! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
 //! | a case whose frames would take 27 GiB (memory) | 15 MiB | 200 MiB | the 27 GiB, allocated or aborted |
 //! | six cases of 156 MiB of frames, one thread (memory) | 363 MiB | 450 MiB | 1064 MiB: every case's frames kept to the end |
-//! | every other run (external, input, exit_codes); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–13 MiB | 64 MiB | |
+//! | every other run (external, input, exit_codes, answers, reports); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–20 MiB | 64 MiB | |
 //!
 //! One bound for all but two: three to four times the largest measured,
 //! and far under what any of the guarded faults would cost.
@@ -40,3 +39,14 @@ mod soak;
 /// The peak RSS (MiB) a run of the binary stays under through any fault
 /// here; see the table above.
 const RSS_BOUND_MIB: f64 = 64.0;
+
+/// The binary run in `dir` with `args`, its peak RSS held to
+/// [`RSS_BOUND_MIB`]: for the runs of `answers` and `reports` that need
+/// nothing more of it than its output.
+fn bounded_run(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rastercheck"));
+    command.args(args).current_dir(dir);
+    let m = common::cli::run_measured(&mut command, std::time::Duration::from_secs(300));
+    common::cli::assert_peak_rss(&format!("{args:?}"), &m, RSS_BOUND_MIB);
+    m.output
+}

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::common::cli::{rastercheck, read_json, scratch, text};
+use crate::common::cli::{read_json, scratch, text};
 
 /// Generous: only guards the test against a hang, never times anything.
 const HANG_GUARD: Duration = Duration::from_secs(120);
@@ -333,7 +333,7 @@ fn a_reused_report_folder_loses_the_earlier_runs_files_and_keeps_the_users() {
         std::fs::create_dir_all(path.parent().unwrap()).unwrap();
         std::fs::write(path, content).unwrap();
     }
-    let run = rastercheck(&dir, &["run", "cases", "--report", "out"]);
+    let run = crate::bounded_run(&dir, &["run", "cases", "--report", "out"]);
     let t = text(&run);
     assert_eq!(run.status.code(), Some(0), "{t}");
     // The earlier run's files are gone or rewritten by this run.
@@ -378,7 +378,7 @@ fn report_files_are_replaced_by_a_rename_never_written_in_place() {
 fn a_run_with_pictures_and_error_maps_leaves_no_partial_file() {
     // A mutant fails: pictures and EXR maps are written.
     let (dir, _) = with_cases("pictures", 4);
-    let run = rastercheck(
+    let run = crate::bounded_run(
         &dir,
         &[
             "run",
