@@ -61,7 +61,6 @@ fn outcomes(dir: &Path, slides: &[Slide]) -> Vec<CaseOutcome> {
                 reference: Some(reference),
                 golden: Some(GoldenStatus::Matches),
                 candidates: runs,
-                written: Default::default(),
             }
         })
         .collect()

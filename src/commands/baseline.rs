@@ -95,7 +95,7 @@ fn observe(
         candidates,
         &PathBuf::from("."),
         select.threads,
-        &|_| {},
+        &|_, _| {},
     );
     let foils: Vec<bool> = candidates.iter().map(|c| c.is_foil()).collect();
     Observed::from_outcomes(&outcomes, names, &foils)

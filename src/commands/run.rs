@@ -144,11 +144,7 @@ pub fn run(args: RunArgs) -> Exit {
     // external programs are killed, and the partial report is written.
     crate::stop::install();
 
-    let index: std::collections::HashMap<&str, usize> = files
-        .iter()
-        .enumerate()
-        .map(|(k, f)| (f.id.as_str(), k))
-        .collect();
+    // Each case's report entry, kept as it finishes.
     let entries: Vec<std::sync::Mutex<Option<CaseEntry>>> =
         files.iter().map(|_| std::sync::Mutex::new(None)).collect();
     let progress = Progress::new(files.len(), args.quiet);
@@ -166,25 +162,23 @@ pub fn run(args: RunArgs) -> Exit {
         &declared,
         &root,
         args.threads,
-        &|outcome| {
-            if let Some(writer) = &writer {
-                outcome.written = writer.write(outcome);
-            }
-            // The case's report entry is kept, and the bulk of its scene
-            // let go: a run's memory then grows by an entry per case.
-            if let Some(&k) = index.get(outcome.file.id.as_str()) {
-                let entry = CaseEntry::from_outcome(outcome, &foils);
-                *entries[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(entry);
-                if let Some(scene) = &mut outcome.scene {
-                    scene.primitives = Vec::new();
-                    scene.description = String::new();
-                }
+        &|k, outcome| {
+            let entry = match &writer {
+                Some(writer) => writer.write(outcome),
+                None => CaseEntry::from_outcome(outcome, &foils),
+            };
+            *entries[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(entry);
+            // The entry holds what the report needs of the scene; the bulk
+            // of it goes, so a run's memory grows by an entry per case.
+            if let Some(scene) = &mut outcome.scene {
+                scene.primitives = Vec::new();
+                scene.description = String::new();
             }
             progress.tick();
         },
     );
     progress.finish();
-    runner::reject_duplicate_names(&mut outcomes);
+    let duplicates = runner::reject_duplicate_names(&mut outcomes);
 
     let colour = std::io::stdout().is_terminal();
     let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
@@ -195,23 +189,24 @@ pub fn run(args: RunArgs) -> Exit {
             .as_ref()
             .is_some_and(Problem::is_input_error);
     }
-    // The entries kept as each case finished; a case marked since (a
-    // duplicate name) gets a fresh one with the scene's facts kept.
+    // The entries kept as each case finished. A case that did not finish
+    // gets its entry now; one marked since (a duplicate name) a fresh one,
+    // with the facts of its scene kept (the scene itself was let go).
     report.cases = outcomes
         .iter()
         .zip(entries)
-        .map(|(o, kept)| {
-            let fresh = CaseEntry::from_outcome(o, &foils);
-            match kept.into_inner().unwrap_or_else(|e| e.into_inner()) {
-                Some(kept) if kept.status == fresh.status => kept,
-                Some(kept) => CaseEntry {
+        .enumerate()
+        .map(
+            |(k, (o, kept))| match kept.into_inner().unwrap_or_else(|e| e.into_inner()) {
+                Some(kept) if duplicates.contains(&k) => CaseEntry {
                     description: kept.description,
                     rules: kept.rules,
-                    ..fresh
+                    ..CaseEntry::from_outcome(o, &foils)
                 },
-                None => fresh,
-            }
-        })
+                Some(kept) => kept,
+                None => CaseEntry::from_outcome(o, &foils),
+            },
+        )
         .collect();
     let stopped = crate::stop::requested();
     report.complete = stopped.is_none();

@@ -189,7 +189,7 @@ pub fn build(
         });
     }
     let root = Path::new(".");
-    let mut outcomes = runner::run_all(files, limits, &candidates, root, threads, &|_| {});
+    let mut outcomes = runner::run_all(files, limits, &candidates, root, threads, &|_, _| {});
     runner::reject_duplicate_names(&mut outcomes);
 
     let mut families: Vec<String> = files

@@ -159,7 +159,7 @@ pub fn run_all_with_profiles(
     declared: &[Declared],
     root: &Path,
     threads: Option<usize>,
-    done: &(dyn Fn(&mut CaseOutcome) + Sync),
+    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
     let mut swapped: Vec<(usize, Box<dyn Rasterizer>, FillRule)> = Vec::new();
     for (index, candidate) in candidates.iter_mut().enumerate() {
@@ -171,7 +171,7 @@ pub fn run_all_with_profiles(
             swapped.push((index, std::mem::replace(candidate, stand_in), d.fill_rule));
         }
     }
-    let under_profiles = |outcome: &mut CaseOutcome| {
+    let under_profiles = |k: usize, outcome: &mut CaseOutcome| {
         if let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) {
             for (index, candidate, rule) in &swapped {
                 let s = under_rule(scene, *rule);
@@ -194,7 +194,7 @@ pub fn run_all_with_profiles(
                 }
             }
         }
-        done(outcome);
+        done(k, outcome);
     };
     let outcomes = runner::run_all(files, limits, candidates, root, threads, &under_profiles);
     for (index, candidate, _) in swapped {

@@ -98,18 +98,6 @@ pub struct CaseOutcome {
     pub reference: Option<ReferenceRun>,
     pub golden: Option<GoldenStatus>,
     pub candidates: Vec<CandidateRun>,
-    /// What the report folder got of the case's frames before they were
-    /// released (`report::case_files`), for the report to link.
-    pub written: Written,
-}
-
-/// Files written for one case, relative to the report folder.
-#[derive(Clone, Debug, Default)]
-pub struct Written {
-    /// The case's HTML page.
-    pub page: Option<String>,
-    /// Pictures and error maps, per candidate in order.
-    pub results: Vec<Vec<String>>,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -156,7 +144,6 @@ impl CaseOutcome {
             reference: None,
             golden: None,
             candidates: Vec::new(),
-            written: Written::default(),
         }
     }
 
@@ -201,7 +188,6 @@ pub fn run_case(
         reference: None,
         golden: None,
         candidates: Vec::new(),
-        written: Written::default(),
     };
     let scene = match suite::load_checked(file, limits) {
         Ok(scene) => scene,
@@ -300,8 +286,9 @@ pub fn over_memory(scene: &Scene, limits: &Limits, candidates: usize) -> Option<
 }
 
 /// Runs every case on `threads` threads (all cores when `None`), calling
-/// `done` as each finishes, on the thread that ran it: it may write what it
-/// needs of the frames (pictures, error maps). Then the case's frames are
+/// `done` with its index in `files` as each finishes, on the thread that
+/// ran it: it may write what it needs of the frames (pictures, error
+/// maps). Then the case's frames are
 /// released ([`CaseOutcome::release_frames`]), so a run holds the frames of
 /// the cases in flight only, never of the whole run. The outcomes come back
 /// in the order of `files`.
@@ -316,12 +303,13 @@ pub fn run_all(
     candidates: &[Box<dyn Rasterizer>],
     root: &Path,
     threads: Option<usize>,
-    done: &(dyn Fn(&mut CaseOutcome) + Sync),
+    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
     let work = || {
         files
             .par_iter()
-            .map(|file| {
+            .enumerate()
+            .map(|(k, file)| {
                 if crate::stop::requested().is_some() {
                     return CaseOutcome::interrupted(file);
                 }
@@ -329,7 +317,7 @@ pub fn run_all(
                 if crate::stop::requested().is_some() {
                     return CaseOutcome::interrupted(file);
                 }
-                done(&mut outcome);
+                done(k, &mut outcome);
                 outcome.release_frames();
                 outcome
             })
@@ -346,11 +334,11 @@ pub fn run_all(
 
 /// Marks every case whose `name` an earlier case already uses as bad input:
 /// names identify cases in reports and baselines, so they must be unique in
-/// a run. Returns how many were marked.
-pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> usize {
+/// a run. Returns the indices of those marked.
+pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
     let mut seen: std::collections::HashMap<String, String> = std::collections::HashMap::new();
-    let mut marked = 0;
-    for outcome in outcomes.iter_mut() {
+    let mut marked = Vec::new();
+    for (k, outcome) in outcomes.iter_mut().enumerate() {
         let Some(name) = outcome.scene.as_ref().map(|s| s.name.clone()) else {
             continue;
         };
@@ -367,8 +355,7 @@ pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> usize {
                 outcome.reference = None;
                 outcome.golden = None;
                 outcome.candidates.clear();
-                outcome.written = Written::default();
-                marked += 1;
+                marked.push(k);
             }
         }
     }

@@ -15,7 +15,7 @@ use std::sync::Mutex;
 
 use super::json::CaseEntry;
 use super::{exr, html, png, relative, MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
-use crate::harness::runner::{CaseOutcome, Written};
+use crate::harness::runner::CaseOutcome;
 use crate::harness::suite::Verdict;
 
 /// Writes each case's pictures, error maps and page (see the module
@@ -45,20 +45,14 @@ impl CaseWriter {
         }
     }
 
-    /// Writes what `outcome`'s frames show, and returns the paths written
-    /// (relative to the report folder) for [`CaseEntry::from_outcome`] to
-    /// record. A write that fails is remembered and the case goes without.
-    pub fn write(&self, outcome: &CaseOutcome) -> Written {
+    /// Writes what `outcome`'s frames show, and returns the case's report
+    /// entry with the files written recorded in it (paths relative to the
+    /// report folder). A write that fails is remembered and the case goes
+    /// without.
+    pub fn write(&self, outcome: &CaseOutcome) -> CaseEntry {
         let mut entry = CaseEntry::from_outcome(outcome, &self.foils);
-        let mut written = Written {
-            page: None,
-            results: vec![Vec::new(); outcome.candidates.len()],
-        };
-        if let Err(e) = self.write_frames(outcome, &mut written) {
+        if let Err(e) = self.write_frames(outcome, &mut entry) {
             self.keep(e);
-        }
-        for (result, files) in entry.results.iter_mut().zip(&written.results) {
-            result.files.clone_from(files);
         }
         let cards = html::cards_of(&entry);
         let problem = cards.iter().any(|c| c.is_problem());
@@ -73,23 +67,24 @@ impl CaseWriter {
             match super::write_file(&self.dir.join(&file), text.as_bytes()) {
                 Ok(_) => {
                     self.files.fetch_add(1, Ordering::Relaxed);
-                    written.page = Some(file);
+                    entry.page = Some(file);
                 }
                 Err(e) => self.keep(e),
             }
         }
-        written
+        entry
     }
 
     /// The PNGs of every result that is not a pass (at most
     /// [`MAX_PICTURED`] over the run) and the EXR error maps of every
-    /// result with any error.
-    fn write_frames(&self, outcome: &CaseOutcome, written: &mut Written) -> Result<(), String> {
+    /// result with any error, recorded in the result's files.
+    fn write_frames(&self, outcome: &CaseOutcome, entry: &mut CaseEntry) -> Result<(), String> {
         let (Some(scene), Some(reference)) = (&outcome.scene, &outcome.reference) else {
             return Ok(());
         };
         let id = &outcome.file.id;
-        for (run, files) in outcome.candidates.iter().zip(&mut written.results) {
+        for (run, result) in outcome.candidates.iter().zip(&mut entry.results) {
+            let files = &mut result.files;
             let (Some(frame), Some(metrics)) = (&run.frame, &run.metrics) else {
                 continue;
             };

@@ -364,10 +364,6 @@ impl CaseEntry {
                 files: Vec::new(),
             })
             .collect();
-        entry.page.clone_from(&outcome.written.page);
-        for (result, files) in entry.results.iter_mut().zip(&outcome.written.results) {
-            result.files.clone_from(files);
-        }
         entry
     }
 }

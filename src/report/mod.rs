@@ -149,11 +149,7 @@ pub fn write_all(
     let foils: Vec<bool> = report.rasterizers.iter().map(|r| r.foil).collect();
     let writer = case_files::CaseWriter::new(dir, &foils);
     for (entry, outcome) in report.cases.iter_mut().zip(outcomes) {
-        let written = writer.write(outcome);
-        entry.page = written.page;
-        for (result, files) in entry.results.iter_mut().zip(written.results) {
-            result.files = files;
-        }
+        *entry = writer.write(outcome);
     }
     writer.finish()?;
     write_summaries(dir, report)
