@@ -194,6 +194,19 @@ impl Svg {
     }
 }
 
+/// The smallest and largest of the positive, finite `values`; `None` when
+/// there is none.
+fn positive_range(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values {
+        if v > 0.0 && v.is_finite() {
+            lo = lo.min(v);
+            hi = hi.max(v);
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
 /// A logarithmic axis in base 10 from 10^lo to 10^hi (whole decades), over
 /// the pixels `from` (at 10^lo) to `to` (at 10^hi), with an optional lane
 /// for zeros beyond the `from` end.
@@ -211,17 +224,7 @@ impl LogAxis {
     /// The whole decades around the positive values `values`; `None` when
     /// there is none.
     pub fn decades(values: impl IntoIterator<Item = f64>) -> Option<(i32, i32)> {
-        let mut lo = f64::INFINITY;
-        let mut hi = f64::NEG_INFINITY;
-        for v in values {
-            if v > 0.0 && v.is_finite() {
-                lo = lo.min(v);
-                hi = hi.max(v);
-            }
-        }
-        if lo > hi {
-            return None;
-        }
+        let (lo, hi) = positive_range(values)?;
         let (mut a, mut b) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
         if a == b {
             b += 1;
@@ -298,17 +301,7 @@ pub struct Log2Axis {
 impl Log2Axis {
     /// The powers of two around the positive values; `None` without any.
     pub fn around(values: impl IntoIterator<Item = f64>) -> Option<(i32, i32)> {
-        let mut lo = f64::INFINITY;
-        let mut hi = f64::NEG_INFINITY;
-        for v in values {
-            if v > 0.0 && v.is_finite() {
-                lo = lo.min(v);
-                hi = hi.max(v);
-            }
-        }
-        if lo > hi {
-            return None;
-        }
+        let (lo, hi) = positive_range(values)?;
         let a = lo.log2().floor() as i32;
         let mut b = hi.log2().ceil() as i32;
         if a == b {
