@@ -44,9 +44,14 @@ const RSS_BOUND_MIB: f64 = 64.0;
 /// [`RSS_BOUND_MIB`]: for the runs of `answers` and `reports` that need
 /// nothing more of it than its output.
 fn bounded_run(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    run_within(dir, args, RSS_BOUND_MIB)
+}
+
+/// The binary run in `dir` with `args`, its peak RSS held to `bound_mib`.
+fn run_within(dir: &std::path::Path, args: &[&str], bound_mib: f64) -> std::process::Output {
     let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_rastercheck"));
     command.args(args).current_dir(dir);
     let m = common::cli::run_measured(&mut command, std::time::Duration::from_secs(300));
-    common::cli::assert_peak_rss(&format!("{args:?}"), &m, RSS_BOUND_MIB);
+    common::cli::assert_peak_rss(&format!("{args:?}"), &m, bound_mib);
     m.output
 }
