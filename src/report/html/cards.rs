@@ -246,8 +246,7 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         // page's `<base>` is the report folder.
         let mut show = |file: Option<&String>, role: &str, caption: &str| {
             if let Some(f) = file.filter(|f| dir.join(f).is_file()) {
-                let url: Vec<String> = f.split('/').map(url_segment).collect();
-                html.push_str(&figure(&escape(&url.join("/")), role, caption, None));
+                html.push_str(&figure(&escape(&file_url(f)), role, caption, None));
             }
         };
         show(reference, "reference", "reference (exact)");
@@ -285,10 +284,7 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         html.push_str("<div class=\"files\">files: ");
         let links: Vec<String> = files
             .iter()
-            .map(|f| {
-                let url: Vec<String> = f.split('/').map(url_segment).collect();
-                format!("<a href=\"{}\">{}</a>", escape(&url.join("/")), escape(f))
-            })
+            .map(|f| format!("<a href=\"{}\">{}</a>", escape(&file_url(f)), escape(f)))
             .collect();
         html.push_str(&links.join(" · "));
         html.push_str("</div>");
@@ -356,13 +352,18 @@ pub fn relative_url(from: &Path, to: &Path) -> Option<String> {
             .iter()
             .map(|c| c.as_os_str().to_string_lossy().into_owned()),
     );
-    Some(
-        parts
-            .iter()
-            .map(|p| url_segment(p))
-            .collect::<Vec<_>>()
-            .join("/"),
-    )
+    // A component holds no `/`, so joining then encoding each segment
+    // encodes each component.
+    Some(file_url(&parts.join("/")))
+}
+
+/// A `/`-separated path relative to the report folder as a URL: each
+/// segment percent-encoded.
+pub(super) fn file_url(path: &str) -> String {
+    path.split('/')
+        .map(url_segment)
+        .collect::<Vec<_>>()
+        .join("/")
 }
 
 pub(super) fn url_segment(segment: &str) -> String {

@@ -162,8 +162,7 @@ pub fn page_file(id: &str) -> String {
 
 /// A link from the report folder to a case's page, at `anchor`.
 fn page_url(page: &str, anchor: &str) -> String {
-    let url: Vec<String> = page.split('/').map(cards::url_segment).collect();
-    format!("{}#{anchor}", url.join("/"))
+    format!("{}#{anchor}", cards::file_url(page))
 }
 
 /// The page of one case: its cards (see [`cards_of`]) drawn from the
@@ -403,14 +402,11 @@ fn plots(report: &Report) -> String {
     }
     let mut html = String::from("<h2>Plots</h2><div class=\"plots\">");
     for chart in &charts {
-        let url: Vec<String> = format!("{}/{}", super::plots::FOLDER, chart.file)
-            .split('/')
-            .map(cards::url_segment)
-            .collect();
+        let url = cards::file_url(&format!("{}/{}", super::plots::FOLDER, chart.file));
         let _ = write!(
             html,
             "<figure class=\"plot\"><img data-role=\"plot\" src=\"{}\" alt=\"{}\"><figcaption><b>{}</b> {}</figcaption></figure>",
-            escape(&url.join("/")),
+            escape(&url),
             escape(&chart.title),
             escape(&chart.title),
             escape(&chart.caption)
