@@ -70,6 +70,18 @@ impl Plan {
         }
     }
 
+    /// Coverage only: one sample at the pixel centre, no depth, no
+    /// attributes, no effects.
+    pub fn coverage_only() -> Plan {
+        Plan {
+            samples_per_pixel: 1,
+            antialias: None,
+            depth: false,
+            attributes: 0,
+            motion: None,
+        }
+    }
+
     /// Whether any value beyond coverage is interpolated.
     pub fn interpolates(&self) -> bool {
         self.depth || self.attributes > 0

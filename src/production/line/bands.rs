@@ -435,13 +435,7 @@ mod tests {
     #[test]
     fn banded_midpoint_lines_equal_line_by_line() {
         let mut rng = Rng(0x6261_6e64_6564);
-        let plan = Plan {
-            samples_per_pixel: 1,
-            antialias: None,
-            depth: false,
-            attributes: 0,
-            motion: None,
-        };
+        let plan = Plan::coverage_only();
         let line = test_line(LineRule::Midpoint, Number::ONE);
         // Heights that are not multiples of the band, bands of one row, and
         // (None) production's choice: line by line on the small canvas, six

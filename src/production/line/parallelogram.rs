@@ -99,13 +99,7 @@ fn parallelogram_in<E: EdgeInt>(
         corner(g.v1, 1),
         corner(g.v0, 1),
     );
-    let coverage_only = Plan {
-        samples_per_pixel: 1,
-        antialias: None,
-        depth: false,
-        attributes: 0,
-        motion: None,
-    };
+    let coverage_only = Plan::coverage_only();
     let placeholder = Triangle {
         vertices: [0, 1, 2].map(|_| Vertex::at(Number::ZERO, Number::ZERO)),
         interpolation: Interpolation::Linear,

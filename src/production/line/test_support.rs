@@ -65,13 +65,7 @@ pub(super) fn draw_one<E: EdgeInt>(
     canvas: Canvas,
 ) -> Result<Frame, RasterError> {
     let mut frame = frame_for(canvas);
-    let plan = Plan {
-        samples_per_pixel: 1,
-        antialias: None,
-        depth: false,
-        attributes: 0,
-        motion: None,
-    };
+    let plan = Plan::coverage_only();
     let ends = [
         [Fixed(g.v0[0]), Fixed(g.v0[1])],
         [Fixed(g.v1[0]), Fixed(g.v1[1])],

@@ -175,13 +175,7 @@ pub fn draw(
     })?;
     // Production's triangle set-up and traversal, culling off, coverage
     // only.
-    let plan = Plan {
-        samples_per_pixel: 1,
-        antialias: None,
-        depth: false,
-        attributes: 0,
-        motion: None,
-    };
+    let plan = Plan::coverage_only();
     let corner = || Vertex::at(Number::ZERO, Number::ZERO);
     let triangle = Triangle {
         vertices: [corner(), corner(), corner()],
