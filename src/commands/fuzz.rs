@@ -2,7 +2,7 @@
 //! of one rasterizer, shrink it, and write it as a case file.
 
 use super::console::outln;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 
@@ -12,8 +12,8 @@ use crate::explore::fuzz;
 #[derive(Args)]
 pub struct FuzzArgs {
     /// The rasterizer to search for failures of.
-    #[arg(long = "rasterizer", short = 'r')]
-    pub rasterizer: String,
+    #[arg(long = "rasterizer", short = 'r', required_unless_present = "corpus")]
+    pub rasterizer: Option<String>,
     /// Scenes to try.
     #[arg(long, default_value_t = 1000)]
     pub cases: u64,
@@ -35,11 +35,30 @@ pub struct FuzzArgs {
     /// Keep searching until this many failures are shrunk and written.
     #[arg(long, default_value_t = 1)]
     pub max_failures: usize,
+    /// Judge the scene a crash input of the `scene_reference_vs_production`
+    /// fuzz target draws (fuzz/artifacts/…), instead of searching; shrink
+    /// and write it as a case file when the rasterizer fails it.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["cases", "seed", "family", "max_failures"])]
+    pub from_crash: Option<PathBuf>,
+    /// Write the seed corpus of each fuzz target (fuzz/README.md) under
+    /// DIR/<target>/, from the case files in --corpus-cases, and exit.
+    #[arg(long, value_name = "DIR", conflicts_with_all = ["rasterizer", "from_crash"])]
+    pub corpus: Option<PathBuf>,
+    /// The case files --corpus seeds the case_json target with.
+    #[arg(long, value_name = "DIR", default_value = "cases", requires = "corpus")]
+    pub corpus_cases: PathBuf,
 }
 
 /// `rastercheck fuzz`: search, shrink, write the failures as case files.
 pub fn fuzz(args: FuzzArgs) -> Exit {
-    let candidate = match rasterizer_named(&args.rasterizer) {
+    if let Some(dir) = &args.corpus {
+        return write_corpus(dir, &args.corpus_cases);
+    }
+    let Some(rasterizer) = args.rasterizer.clone() else {
+        eprintln!("error: name the rasterizer to fuzz with -r");
+        return Exit::BadInput;
+    };
+    let candidate = match rasterizer_named(&rasterizer) {
         Ok(candidate) => candidate,
         Err(exit) => return exit,
     };
@@ -75,8 +94,18 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
         eprintln!("error: --cases and --max-failures must be at least 1");
         return Exit::BadInput;
     }
+    if let Some(file) = &args.from_crash {
+        return from_crash(
+            candidate.as_ref(),
+            &rasterizer,
+            file,
+            check,
+            args.out,
+            &args.check,
+        );
+    }
     let seed = args.seed.unwrap_or_else(fuzz::clock_seed);
-    let mut command = format!("rastercheck fuzz -r '{}' --seed {seed}", args.rasterizer);
+    let mut command = format!("rastercheck fuzz -r '{rasterizer}' --seed {seed}");
     if let Some(f) = &args.family {
         command += &format!(" --family {f}");
     }
@@ -128,6 +157,104 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
         );
         Exit::NothingJudged
     } else {
+        Exit::Pass
+    }
+}
+
+/// `--corpus DIR`: every fuzz target's seeds.
+fn write_corpus(dir: &Path, cases: &Path) -> Exit {
+    if !cases.is_dir() {
+        eprintln!("error: {}: not a folder of case files", cases.display());
+        return Exit::BadInput;
+    }
+    match fuzz::targets::write_corpus(dir, cases) {
+        Ok(n) => {
+            outln!(
+                "fuzz: wrote {n} seed files under {}/<target>/ for {}",
+                dir.display(),
+                fuzz::targets::TARGETS.join(", ")
+            );
+            Exit::Pass
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            Exit::BadInput
+        }
+    }
+}
+
+/// `--from-crash FILE`: judge, shrink and write the scene a crash input of
+/// the scene target draws.
+fn from_crash(
+    candidate: &dyn crate::rasterizer::Rasterizer,
+    rasterizer: &str,
+    file: &Path,
+    check: Vec<fuzz::Kind>,
+    out: PathBuf,
+    check_name: &Option<String>,
+) -> Exit {
+    let tape = match std::fs::metadata(file).and_then(|m| {
+        if m.len() > 1 << 20 {
+            Err(std::io::Error::other(
+                "larger than 1 MiB; a crash input is not",
+            ))
+        } else {
+            std::fs::read(file)
+        }
+    }) {
+        Ok(tape) => tape,
+        Err(e) => {
+            eprintln!("error: {}: {e}", file.display());
+            return Exit::BadInput;
+        }
+    };
+    let mut command = format!(
+        "rastercheck fuzz -r '{rasterizer}' --from-crash {}",
+        file.display()
+    );
+    if let Some(c) = check_name {
+        command += &format!(" --check {c}");
+    }
+    let options = fuzz::Options {
+        seed: 0,
+        cases: 1,
+        family: None,
+        check,
+        max_failures: 1,
+        out,
+        command,
+    };
+    let label = file.file_name().map_or_else(
+        || file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let summary = match fuzz::from_tape(candidate, &tape, &label, &options, &mut |line| {
+        outln!("{line}")
+    }) {
+        Ok(summary) => summary,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    };
+    if !summary.found.is_empty() {
+        Exit::Fail
+    } else if summary.unsupported > 0 {
+        eprintln!(
+            "error: nothing was judged: {} does not support the scene",
+            candidate.name()
+        );
+        Exit::NothingJudged
+    } else {
+        outln!(
+            "fuzz: {} passes the scene {label} draws{}",
+            candidate.name(),
+            if summary.ignored > 0 {
+                " on the checks asked for"
+            } else {
+                ""
+            }
+        );
         Exit::Pass
     }
 }

@@ -191,8 +191,11 @@ pub fn edge_owned(a: [Fixed; 2], b: [Fixed; 2], rule: FillRule) -> bool {
     // Walking clockwise with y down, the triangle is on the right-hand side:
     // an edge heading east (dy = 0, dx > 0) has it below, so it is a top
     // edge; one heading north (dy < 0) has it to the east, a left edge.
+    // `--cfg rastercheck_wrong_production` plants a bug for the fuzz
+    // smoke test (fuzz/smoke.sh) to find: bottom edges taken for top ones,
+    // so a horizontal edge through sample centres is owned twice.
     if dy == 0 {
-        if dx > 0 {
+        if dx > 0 || cfg!(rastercheck_wrong_production) {
             rule.owns_top()
         } else {
             rule.owns_bottom()

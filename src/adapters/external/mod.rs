@@ -574,6 +574,25 @@ pub fn check_environment() -> Result<(), String> {
     max_output_from_env().map(|_| ())
 }
 
+/// Reads one response line as the adapter does, into a frame for `scene`
+/// drawn under `plan`, or the reason it is refused (an unsupported case, a
+/// reported error, a malformed answer). The `protocol_response` fuzz target
+/// drives it.
+pub fn read_answer(line: &[u8], scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+    let value = parse_response(line).map_err(RasterError::Failed)?;
+    frame_from_response(&value, scene, plan)
+}
+
+/// Reads a line as a hello: `Ok(None)` when it is not one, else the reason
+/// its declared capabilities refuse `scene` drawn under `plan`, if any.
+pub fn read_hello(line: &[u8], scene: &Scene, plan: &Plan) -> Result<Option<String>, String> {
+    let value = parse_response(line)?;
+    if !hello::is_hello(&value) {
+        return Ok(None);
+    }
+    Ok(Hello::parse(&value)?.refuses(scene, plan))
+}
+
 /// `text` cut to about 80 characters (with `…` and the full length when
 /// cut), for echoing a value in a message.
 pub fn shorten(text: &str) -> String {

@@ -154,6 +154,9 @@ pub enum Outcome {
     /// The scene is not a case worth keeping: outside the limits, or a
     /// "mesh" whose triangles overlap or have no area.
     Invalid(String),
+    /// rastercheck itself broke on the scene: the reference panicked. A bug
+    /// to report, not a verdict on the candidate.
+    Broken(String),
     Fail(Failure),
 }
 
@@ -168,7 +171,7 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
         Ok(Ok(r)) => r,
         Ok(Err(why)) => return Outcome::Invalid(why),
         Err(panic) => {
-            return Outcome::Invalid(format!(
+            return Outcome::Broken(format!(
                 "the reference panicked: {}",
                 suite::panic_message(&*panic)
             ))

@@ -72,10 +72,13 @@ mod judge;
 mod rng;
 mod search;
 mod shrink;
+pub mod targets;
 
 pub use case_json::case_json;
-pub use family::{ear_clip, ear_clip_star, generate, winds_one_way, Family};
+pub use family::{
+    ear_clip, ear_clip_star, generate, scene_from_tape, tape_of_case, winds_one_way, Family,
+};
 pub use judge::{evaluate, kinds_named, Failure, Kind, Outcome};
 pub use rng::Rng;
-pub use search::{clock_seed, default_out, search, Found, Options, Summary};
+pub use search::{clock_seed, default_out, from_tape, search, Found, Options, Summary};
 pub use shrink::{shrink, Shrunk, SHRINK_BUDGET};

@@ -8,9 +8,9 @@ use std::path::{Path, PathBuf};
 use dashu_ratio::RBig;
 
 use super::case_json::case_json;
-use super::family::{generate, Family};
+use super::family::{generate, scene_from_tape, Family};
 use super::geometry::num;
-use super::judge::{evaluate, samples_per_pixel, Kind, Outcome};
+use super::judge::{evaluate, samples_per_pixel, Failure, Kind, Outcome};
 use super::rng::Rng;
 use super::shrink::{shrink, Shrunk};
 use crate::plan::Plan;
@@ -124,7 +124,7 @@ fn describe_size(scene: &Scene) -> String {
 fn finished_case(
     candidate: &dyn Rasterizer,
     options: &Options,
-    index: u64,
+    origin: &Origin,
     family: Family,
     original: &Scene,
     kind: Kind,
@@ -132,17 +132,17 @@ fn finished_case(
 ) -> Scene {
     let mut scene = shrunk.scene.clone();
     scene.name = format!(
-        "fuzz_{}_{}_{}_{index}",
+        "fuzz_{}_{}_{}",
         sanitize(candidate.name()),
         kind.name(),
-        options.seed
+        origin.tag
     );
     let reasons = shrunk.failure.reasons_for(kind).join("; ");
     scene.description = format!(
-        "Found by `{}`: case {index} ({} family, seed {}), originally {}, shrunk to {} in {} evaluations. {} fails it: {reasons}. A correct rasterizer {}.",
+        "Found by `{}`: {} ({} family), originally {}, shrunk to {} in {} evaluations. {} fails it: {reasons}. A correct rasterizer {}.",
         options.command,
+        origin.said,
         family.name(),
-        options.seed,
         describe_size(original),
         describe_size(&shrunk.scene),
         shrunk.evaluations,
@@ -221,6 +221,13 @@ pub fn search(
                 ));
                 continue;
             }
+            Outcome::Broken(why) => {
+                log(&format!(
+                    "error: case {index} ({}) skipped: {why} (a bug in rastercheck; please report it)",
+                    family.name()
+                ));
+                continue;
+            }
             Outcome::Fail(f) => f,
         };
         let Some(kind) = failure
@@ -238,37 +245,13 @@ pub fn search(
             describe_size(&scene),
             failure.reasons_for(kind).join("; ")
         ));
-        let shrunk = shrink(&scene, failure, kind, candidate);
-        let case = finished_case(candidate, options, index, family, &scene, kind, &shrunk);
-        let text = case_json(&case);
-        // The file must say what the shrinker saw: read it back and judge
-        // it again.
-        let reread = crate::scene::parse_case(&text, "the shrunk case", &Default::default())
-            .map_err(|e| format!("internal error: the shrunk case does not read back: {e}"))?;
-        match evaluate(&reread, candidate) {
-            Outcome::Fail(f) if f.kinds.contains(&kind) => {}
-            other => {
-                return Err(format!(
-                    "internal error: the shrunk case read back no longer fails {}: {other:?}",
-                    kind.name()
-                ))
-            }
-        }
-        std::fs::create_dir_all(&options.out)
-            .map_err(|e| format!("{}: {e}", options.out.display()))?;
-        let path = options.out.join(format!("{}.json", case.name));
-        std::fs::write(&path, &text).map_err(|e| format!("{}: {e}", path.display()))?;
-        log(&format!(
-            "      shrunk in {} evaluations, {} rounds, {:.0} ms: {}",
-            shrunk.evaluations,
-            shrunk.rounds,
-            shrunk.elapsed.as_secs_f64() * 1000.0,
-            describe_size(&shrunk.scene)
-        ));
-        log(&format!("      wrote {}", path.display()));
-        for reason in shrunk.failure.reasons_for(kind) {
-            log(&format!("        {reason}"));
-        }
+        let origin = Origin {
+            tag: format!("{}_{index}", options.seed),
+            said: format!("case {index} of seed {}", options.seed),
+        };
+        let (path, shrunk) = keep(
+            candidate, options, &origin, family, &scene, failure, kind, log,
+        )?;
         summary.found.push(Found {
             index,
             family,
@@ -281,6 +264,125 @@ pub fn search(
             break;
         }
     }
+    Ok(summary)
+}
+
+/// Where a failing scene came from: a tag for its file name, and words for
+/// its description.
+struct Origin {
+    tag: String,
+    said: String,
+}
+
+/// Shrinks a failure of `kind`, pins the reference's result, reads the case
+/// back and judges it again, and writes it under `options.out`.
+#[allow(clippy::too_many_arguments)]
+fn keep(
+    candidate: &dyn Rasterizer,
+    options: &Options,
+    origin: &Origin,
+    family: Family,
+    scene: &Scene,
+    failure: Failure,
+    kind: Kind,
+    log: &mut dyn FnMut(&str),
+) -> Result<(PathBuf, Shrunk), String> {
+    let shrunk = shrink(scene, failure, kind, candidate);
+    let case = finished_case(candidate, options, origin, family, scene, kind, &shrunk);
+    let text = case_json(&case);
+    // The file must say what the shrinker saw: read it back and judge
+    // it again.
+    let reread = crate::scene::parse_case(&text, "the shrunk case", &Default::default())
+        .map_err(|e| format!("internal error: the shrunk case does not read back: {e}"))?;
+    match evaluate(&reread, candidate) {
+        Outcome::Fail(f) if f.kinds.contains(&kind) => {}
+        other => {
+            return Err(format!(
+                "internal error: the shrunk case read back no longer fails {}: {other:?}",
+                kind.name()
+            ))
+        }
+    }
+    std::fs::create_dir_all(&options.out).map_err(|e| format!("{}: {e}", options.out.display()))?;
+    let path = options.out.join(format!("{}.json", case.name));
+    std::fs::write(&path, &text).map_err(|e| format!("{}: {e}", path.display()))?;
+    log(&format!(
+        "      shrunk in {} evaluations, {} rounds, {:.0} ms: {}",
+        shrunk.evaluations,
+        shrunk.rounds,
+        shrunk.elapsed.as_secs_f64() * 1000.0,
+        describe_size(&shrunk.scene)
+    ));
+    log(&format!("      wrote {}", path.display()));
+    for reason in shrunk.failure.reasons_for(kind) {
+        log(&format!("        {reason}"));
+    }
+    Ok((path, shrunk))
+}
+
+/// A libFuzzer input of the scene target (a tape, [`scene_from_tape`]):
+/// judges `candidate` on the scene it draws and, when it fails a kind
+/// asked for, shrinks and writes it as `search` does. `file` names the
+/// input in the case's description and file name.
+pub fn from_tape(
+    candidate: &dyn Rasterizer,
+    tape: &[u8],
+    file: &str,
+    options: &Options,
+    log: &mut dyn FnMut(&str),
+) -> Result<Summary, String> {
+    let (family, scene) = scene_from_tape(tape);
+    let mut summary = Summary {
+        cases: 1,
+        ..Summary::default()
+    };
+    let failure = match evaluate(&scene, candidate) {
+        Outcome::Pass => {
+            summary.passed = 1;
+            return Ok(summary);
+        }
+        Outcome::Unsupported(_) => {
+            summary.unsupported = 1;
+            return Ok(summary);
+        }
+        Outcome::Invalid(why) | Outcome::Broken(why) => {
+            return Err(format!("{file}: the scene it draws is not judged: {why}"))
+        }
+        Outcome::Fail(f) => f,
+    };
+    let Some(kind) = failure
+        .kinds
+        .iter()
+        .copied()
+        .find(|k| options.check.is_empty() || options.check.contains(k))
+    else {
+        summary.ignored = 1;
+        return Ok(summary);
+    };
+    log(&format!(
+        "FAIL  {file} ({}, {}): {}",
+        family.name(),
+        describe_size(&scene),
+        failure.reasons_for(kind).join("; ")
+    ));
+    let hash = tape.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    let origin = Origin {
+        tag: format!("crash_{:08x}", hash as u32),
+        said: format!("the libFuzzer input {file}"),
+    };
+    let (path, shrunk) = keep(
+        candidate, options, &origin, family, &scene, failure, kind, log,
+    )?;
+    summary.found.push(Found {
+        index: 0,
+        family,
+        kind,
+        path,
+        original: scene,
+        shrunk,
+    });
     Ok(summary)
 }
 

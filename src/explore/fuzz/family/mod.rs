@@ -77,21 +77,48 @@ impl Family {
 /// families in turn) and its scene.
 pub fn generate(seed: u64, index: u64, family: Option<Family>) -> (Family, Scene) {
     let family = family.unwrap_or(Family::ALL[(index % Family::ALL.len() as u64) as usize]);
-    let mut rng = Rng::for_case(seed, index);
+    let mut scene = generate_with(&mut Rng::for_case(seed, index), family);
+    scene.name = format!("fuzz_{}_{seed}_{index}", family.name());
+    (family, scene)
+}
+
+/// The first valid scene of `family` drawn from `rng`.
+fn generate_with(rng: &mut Rng, family: Family) -> Scene {
     loop {
         let scene = match family {
-            Family::Triangles => Some(triangle_scene(&mut rng)),
-            Family::Lines => Some(line_scene(&mut rng)),
-            Family::Meshes => mesh_scene(&mut rng),
-            Family::Polygons => Some(polygon_scene(&mut rng)),
-            Family::Antialias => Some(antialias_scene(&mut rng)),
-            Family::Motion => Some(motion_scene(&mut rng)),
+            Family::Triangles => Some(triangle_scene(rng)),
+            Family::Lines => Some(line_scene(rng)),
+            Family::Meshes => mesh_scene(rng),
+            Family::Polygons => Some(polygon_scene(rng)),
+            Family::Antialias => Some(antialias_scene(rng)),
+            Family::Motion => Some(motion_scene(rng)),
         };
-        if let Some(mut scene) = scene.filter(|s| valid(s).is_ok()) {
-            scene.name = format!("fuzz_{}_{seed}_{index}", family.name());
-            return (family, scene);
+        if let Some(scene) = scene.filter(|s| valid(s).is_ok()) {
+            return scene;
         }
     }
+}
+
+/// The scene a tape of choices draws (`fuzz/`'s scene target): the first
+/// choice picks the family, the rest are the family's own draws
+/// ([`Rng::from_tape`]).
+pub fn scene_from_tape(tape: &[u8]) -> (Family, Scene) {
+    let mut rng = Rng::from_tape(tape);
+    let family = Family::ALL[rng.below(Family::ALL.len() as u64) as usize];
+    let mut scene = generate_with(&mut rng, family);
+    scene.name = format!("fuzz_{}_tape", family.name());
+    (family, scene)
+}
+
+/// The tape from which [`scene_from_tape`] draws case `index` of `seed` in
+/// `family`: a seed for the scene target's corpus.
+pub fn tape_of_case(seed: u64, index: u64, family: Family) -> Vec<u8> {
+    let at = Family::ALL.iter().position(|&f| f == family).unwrap_or(0);
+    let mut tape = vec![at as u8];
+    let mut rng = Rng::for_case(seed, index).recording();
+    generate_with(&mut rng, family);
+    tape.extend_from_slice(rng.recorded());
+    tape
 }
 
 #[cfg(test)]
@@ -107,6 +134,24 @@ mod tests {
             let (_, a) = generate(7, i, None);
             let (_, b) = generate(7, i, None);
             assert_eq!(case_json(&a), case_json(&b));
+        }
+    }
+
+    #[test]
+    fn tapes_draw_the_cases_they_were_recorded_from() {
+        for family in Family::ALL {
+            for i in 0..8 {
+                let (_, mut scene) = generate(21, i, Some(family));
+                let (drawn, mut again) = scene_from_tape(&tape_of_case(21, i, family));
+                assert_eq!(drawn, family);
+                (scene.name, again.name) = (String::new(), String::new());
+                assert_eq!(case_json(&scene), case_json(&again));
+            }
+        }
+        // Any bytes draw a valid scene, the empty tape included.
+        for tape in [&[][..], &[255; 3], &[3, 0, 0, 0, 0, 9]] {
+            let (_, scene) = scene_from_tape(tape);
+            assert!(valid(&scene).is_ok());
         }
     }
 

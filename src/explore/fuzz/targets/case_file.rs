@@ -1,0 +1,41 @@
+//! The `case_json` target: arbitrary bytes into the case reader.
+
+use crate::explore::fuzz::case_json::case_json as write_case;
+use crate::harness::suite;
+use crate::scene::{parse_case, Limits};
+
+/// The reader's limits here: SPEC.md's, with a smaller canvas, fewer
+/// primitives and samples, so that a case the reader accepts runs through
+/// the reference in milliseconds. Over these, the reader must refuse with
+/// an error, which is also checked.
+pub(super) fn limits() -> Limits {
+    Limits {
+        max_canvas_pixels: 64 * 64,
+        max_primitives: 64,
+        max_samples: 1 << 16,
+        max_case_bytes: 1 << 20,
+        ..Limits::default()
+    }
+}
+
+/// Reads `data` as a case file. No input may panic the reader; an accepted
+/// case must write back to a file that reads back as the same case, and
+/// must run through the reference.
+pub fn case_json(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(scene) = parse_case(text, "fuzz.json", &limits()) else {
+        return;
+    };
+    let written = write_case(&scene);
+    match parse_case(&written, "written.json", &limits()) {
+        Ok(again) => assert_eq!(
+            write_case(&again),
+            written,
+            "a case does not read back as written"
+        ),
+        Err(e) => panic!("an accepted case, written back, is refused: {e}\n{written}"),
+    }
+    let _ = suite::run_reference(&scene);
+}

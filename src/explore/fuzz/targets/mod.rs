@@ -1,0 +1,77 @@
+//! The bodies of the coverage-guided fuzz targets in `fuzz/` (cargo-fuzz,
+//! libFuzzer). Each takes libFuzzer's bytes and panics on a finding; the
+//! target files in `fuzz/fuzz_targets/` only call these, so that the same
+//! code runs in unit tests, in `rastercheck fuzz --from-crash`, and under
+//! any engine (libFuzzer, AFL++, OSS-Fuzz's).
+//!
+//! - [`case_json`] (`case_file.rs`): bytes into the case reader. No input
+//!   panics; a case it accepts writes back and reads back as itself, and
+//!   runs through the reference.
+//! - [`scene_reference_vs_production`] (`scene.rs`): bytes as the tape of
+//!   choices of `rastercheck fuzz`'s six families ([`super::scene_from_tape`]):
+//!   ties, far coordinates, every rule, lines, polygons, antialiasing and
+//!   motion, within SPEC.md's limits. Production must equal the reference
+//!   exactly, and a mesh must stay watertight, under the same judge as
+//!   `rastercheck fuzz` ([`super::evaluate`]).
+//! - [`protocol_response`] (`response.rs`): bytes as an external
+//!   rasterizer's answer (a JSON line, an EXR file, or a hello). An answer
+//!   is read into a frame or refused with a reason, never a panic, and its
+//!   memory is bounded by the canvas (libFuzzer's `-rss_limit_mb` and
+//!   `-malloc_limit_mb` catch the rest).
+//! - [`exact_arithmetic`] (`arithmetic.rs`): the reference's i128 fast
+//!   paths against big integers and rationals, and its roundings against
+//!   their definitions.
+//!
+//! [`seeds`] writes each target's seed corpus: the bundled case files, the
+//! tapes of generated cases, and answers built from real frames.
+
+mod arithmetic;
+mod case_file;
+mod response;
+mod scene;
+mod seeds;
+
+pub use arithmetic::exact_arithmetic;
+pub use case_file::case_json;
+pub use response::protocol_response;
+pub use scene::{scene_reference_vs_production, FOUND_BY_SCENE_TARGET};
+pub use seeds::{seeds, write_corpus};
+
+/// The targets, by the names of their files in `fuzz/fuzz_targets/`.
+pub const TARGETS: [&str; 4] = [
+    "case_json",
+    "scene_reference_vs_production",
+    "protocol_response",
+    "exact_arithmetic",
+];
+
+/// Runs target `name` on `data`; `false` for an unknown name.
+pub fn run(name: &str, data: &[u8]) -> bool {
+    match name {
+        "case_json" => case_json(data),
+        "scene_reference_vs_production" => scene_reference_vs_production(data),
+        "protocol_response" => protocol_response(data),
+        "exact_arithmetic" => exact_arithmetic(data),
+        _ => return false,
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every seed of every target runs clean: the corpus a campaign starts
+    /// from holds no finding.
+    #[test]
+    fn every_seed_runs_clean() {
+        for name in TARGETS {
+            let seeds = seeds(name, std::path::Path::new("cases"));
+            assert!(seeds.len() >= 8, "{name}: {} seeds", seeds.len());
+            for (file, data) in &seeds {
+                let ran = std::panic::catch_unwind(|| run(name, data));
+                assert!(matches!(ran, Ok(true)), "{name} on seed {file}");
+            }
+        }
+    }
+}
