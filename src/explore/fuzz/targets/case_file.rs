@@ -2,6 +2,8 @@
 
 use crate::explore::fuzz::case_json::case_json as write_case;
 use crate::harness::suite;
+use crate::production::Production;
+use crate::rasterizer::{RasterError, Rasterizer};
 use crate::scene::{parse_case, Limits};
 
 /// The reader's limits here: SPEC.md's, with a smaller canvas, fewer
@@ -20,7 +22,10 @@ pub(super) fn limits() -> Limits {
 
 /// Reads `data` as a case file. No input may panic the reader; an accepted
 /// case must write back to a file that reads back as the same case, and
-/// must run through the reference.
+/// must run through the reference. Production must then draw it without
+/// an error (a panic is a finding too) and, where nothing moves, cover exactly the reference's
+/// samples with the same owners (values are judged against bounds, not
+/// here; a case's own expectations may be wrong, and are not judged).
 pub fn case_json(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
@@ -37,5 +42,30 @@ pub fn case_json(data: &[u8]) {
         ),
         Err(e) => panic!("an accepted case, written back, is refused: {e}\n{written}"),
     }
-    let _ = suite::run_reference(&scene);
+    let reference = suite::run_reference(&scene);
+    if Production.capabilities().refuses(&scene).is_some() || reference.time.is_some() {
+        return;
+    }
+    match Production.rasterize(&scene, &reference.plan) {
+        Ok(frame) => {
+            let differ = (0..frame.coverage.len().max(reference.frame.coverage.len()))
+                .filter(|&i| {
+                    frame.coverage.get(i) != reference.frame.coverage.get(i)
+                        || frame.last.get(i) != reference.frame.last.get(i)
+                })
+                .count();
+            assert!(
+                differ == 0,
+                "{FOUND_BY_CASE_TARGET}: {differ} samples differ\n{written}"
+            );
+        }
+        Err(RasterError::Unsupported(_)) => {}
+        Err(RasterError::Failed(why)) => {
+            panic!("production breaks on an accepted case: {why}\n{written}")
+        }
+    }
 }
+
+/// What the target's panic message starts with when production and the
+/// reference cover different samples.
+pub const FOUND_BY_CASE_TARGET: &str = "production's coverage differs from the reference's";
