@@ -7,33 +7,17 @@
 //! src/explore/fuzz/targets/); that libFuzzer finds a bug planted in
 //! production is fuzz/smoke.sh's check, which CI runs.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use common::cli::{rastercheck as rastercheck_in, scratch, text};
 use rastercheck::scene::{parse_case, Limits};
 
+/// Runs the binary in the repository root (for `cases/`).
 fn rastercheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!(
-        "rastercheck-fuzz-targets-{name}-{}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
+    rastercheck_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
 
 fn files(dir: &Path) -> Vec<PathBuf> {
@@ -48,7 +32,7 @@ fn files(dir: &Path) -> Vec<PathBuf> {
 /// reader's seeds, byte for byte.
 #[test]
 fn corpus_holds_every_targets_seeds() {
-    let dir = scratch("corpus");
+    let dir = scratch("fuzz-targets-corpus");
     let out = rastercheck(&["fuzz", "--corpus", dir.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     for (target, at_least) in [
@@ -63,7 +47,10 @@ fn corpus_holds_every_targets_seeds() {
     let seed = std::fs::read(dir.join("case_json/triangles_shared_edge_vertical.json")).unwrap();
     assert_eq!(
         seed,
-        std::fs::read("cases/triangles/shared_edge_vertical.json").unwrap()
+        std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles/shared_edge_vertical.json")
+        )
+        .unwrap()
     );
     let missing = rastercheck(&[
         "fuzz",
@@ -81,7 +68,7 @@ fn corpus_holds_every_targets_seeds() {
 /// reproduces and production passes; production passes the input itself.
 #[test]
 fn from_crash_shrinks_the_scene_a_tape_draws() {
-    let dir = scratch("crash");
+    let dir = scratch("fuzz-targets-crash");
     let out = rastercheck(&["fuzz", "--corpus", dir.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out));
     let tapes: Vec<PathBuf> = files(&dir.join("scene_reference_vs_production"))

@@ -188,24 +188,20 @@ mod tests {
     /// tape that runs out goes on without stopping.
     #[test]
     fn tapes_replay_recorded_choices() {
+        let draw = |rng: &mut Rng| -> Vec<u64> {
+            (1..300u64)
+                .map(|i| match i % 4 {
+                    0 => rng.next_u64(),
+                    1 => rng.below(i),
+                    2 => rng.below(1 << (i % 40)),
+                    _ => rng.range(-5, 70_000) as u64,
+                })
+                .collect()
+        };
         let mut rng = Rng::for_case(5, 3).recording();
-        let draws: Vec<u64> = (1..300u64)
-            .map(|i| match i % 4 {
-                0 => rng.next_u64(),
-                1 => rng.below(i),
-                2 => rng.below(1 << (i % 40)),
-                _ => rng.range(-5, 70_000) as u64,
-            })
-            .collect();
+        let draws = draw(&mut rng);
         let mut replay = Rng::from_tape(rng.recorded());
-        let again: Vec<u64> = (1..300u64)
-            .map(|i| match i % 4 {
-                0 => replay.next_u64(),
-                1 => replay.below(i),
-                2 => replay.below(1 << (i % 40)),
-                _ => replay.range(-5, 70_000) as u64,
-            })
-            .collect();
+        let again = draw(&mut replay);
         assert_eq!(draws, again);
         assert!(replay.tape.is_some());
         let mut short = Rng::from_tape(&[7, 1]);

@@ -37,6 +37,18 @@ pub struct Options {
     pub command: String,
 }
 
+impl Options {
+    /// The first of a failure's kinds that `--check` asks for (any, when it
+    /// names none): the kind to shrink for.
+    fn first_asked(&self, failure: &Failure) -> Option<Kind> {
+        failure
+            .kinds
+            .iter()
+            .copied()
+            .find(|k| self.check.is_empty() || self.check.contains(k))
+    }
+}
+
 /// One failure found, shrunk and written.
 #[derive(Clone, Debug)]
 pub struct Found {
@@ -230,12 +242,7 @@ pub fn search(
             }
             Outcome::Fail(f) => f,
         };
-        let Some(kind) = failure
-            .kinds
-            .iter()
-            .copied()
-            .find(|k| options.check.is_empty() || options.check.contains(k))
-        else {
+        let Some(kind) = options.first_asked(&failure) else {
             summary.ignored += 1;
             continue;
         };
@@ -350,12 +357,7 @@ pub fn from_tape(
         }
         Outcome::Fail(f) => f,
     };
-    let Some(kind) = failure
-        .kinds
-        .iter()
-        .copied()
-        .find(|k| options.check.is_empty() || options.check.contains(k))
-    else {
+    let Some(kind) = options.first_asked(&failure) else {
         summary.ignored = 1;
         return Ok(summary);
     };
