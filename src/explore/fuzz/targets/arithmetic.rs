@@ -1,17 +1,20 @@
 //! The `exact_arithmetic` target: the reference's i128 fast paths against
-//! big integers, and its exact roundings against their definitions, all
-//! decided in big rationals.
+//! big integers, its exact roundings against their definitions, and
+//! production's fixed-point snapping against the reference's, all decided
+//! in big rationals.
 
 use arbitrary::Unstructured;
 use dashu_int::ops::Abs;
 use dashu_int::{IBig, UBig};
 use dashu_ratio::RBig;
 
+use crate::production::fixed::Format;
 use crate::reference::exact::{
     fits_fast_path, quotient_to_f64_round_odd, to_f32, ExactInt, I128_COORD_BOUND,
 };
 use crate::reference::grid::orient;
 use crate::reference::triangle::SpanInt;
+use crate::scene::rules::limits::COORD_LIMIT;
 use crate::scene::Number;
 
 /// A coordinate the fast path takes: small, near the bound, or anywhere.
@@ -121,6 +124,33 @@ fn checks(u: &mut Unstructured) -> arbitrary::Result<()> {
         assert!(
             k.numerator() % IBig::from(2u8) == IBig::ZERO,
             "{n}: a tie snapped to odd"
+        );
+    }
+
+    // Production's snapping to fixed point (an i64/i128 path for fractions
+    // whose parts fit i64, big integers otherwise) against the reference's,
+    // on coordinates within SPEC.md's range, with denominators to 2^128.
+    let q = UBig::from(u.int_in_range(1..=u64::MAX)?) << u.int_in_range(0..=64usize)?;
+    let reach = COORD_LIMIT << 20;
+    let t = IBig::from(u.int_in_range(-reach..=reach)?);
+    let p = ((IBig::from(q.clone()) * t) >> 20) + IBig::from(u.int_in_range(-3..=3i8)?);
+    let n = Number::from_rbig(RBig::from_parts(p, q));
+    if n.abs() <= Number::from_int(COORD_LIMIT) {
+        let format = Format::snapped(bits);
+        let scale = RBig::from(IBig::ONE << format.frac_bits as usize);
+        let want = n.snapped(bits).as_rbig() * &scale;
+        assert_eq!(
+            RBig::from(format.snap(&n, bits).0),
+            want,
+            "production snaps {n} to {bits} bits unlike the reference"
+        );
+        let scaled = n.as_rbig() * &scale;
+        let exact = (scaled.denominator() == &UBig::ONE).then(|| scaled.numerator().clone());
+        assert_eq!(
+            format.exact(&n).map(|f| IBig::from(f.0)),
+            exact,
+            "production's exact {n} in {} fraction bits",
+            format.frac_bits
         );
     }
     Ok(())

@@ -19,8 +19,9 @@
 //!   memory is bounded by the canvas (libFuzzer's `-rss_limit_mb` and
 //!   `-malloc_limit_mb` catch the rest).
 //! - [`exact_arithmetic`] (`arithmetic.rs`): the reference's i128 fast
-//!   paths against big integers and rationals, and its roundings against
-//!   their definitions.
+//!   paths against big integers and rationals, its roundings against
+//!   their definitions, and production's fixed-point snapping (an i128
+//!   path and a big-integer one) against the reference's.
 //!
 //! [`seeds`] writes each target's seed corpus: the bundled case files, the
 //! tapes of generated cases, and answers built from real frames.
