@@ -41,11 +41,8 @@ impl Rng {
 
     /// Choices read from `tape`, then SplitMix64 seeded from it (FNV-1a).
     pub fn from_tape(tape: &[u8]) -> Rng {
-        let seed = tape.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
-            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-        });
         Rng {
-            state: seed,
+            state: fnv1a(tape),
             tape: Some((tape.into(), 0)),
             record: None,
         }
@@ -136,6 +133,14 @@ impl Rng {
     pub fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
         &items[self.below(items.len() as u64) as usize]
     }
+}
+
+/// The 64-bit FNV-1a hash of `bytes`: a tape's fallback seed, and the
+/// tag of the case file a crash input becomes.
+pub(super) fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
 }
 
 /// sin and cos by a fixed Taylor polynomial: the same bits on every machine

@@ -11,7 +11,7 @@ use super::case_json::case_json;
 use super::family::{generate, scene_from_tape, Family};
 use super::geometry::num;
 use super::judge::{evaluate, samples_per_pixel, Failure, Kind, Outcome};
-use super::rng::Rng;
+use super::rng::{fnv1a, Rng};
 use super::shrink::{shrink, Shrunk};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
@@ -367,9 +367,7 @@ pub fn from_tape(
         describe_size(&scene),
         failure.reasons_for(kind).join("; ")
     ));
-    let hash = tape.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-    });
+    let hash = fnv1a(tape);
     let origin = Origin {
         tag: format!("crash_{:08x}", hash as u32),
         said: format!("the libFuzzer input {file}"),
