@@ -92,4 +92,38 @@ pub trait Rasterizer: Send + Sync {
     /// Draws the scene's primitives in order, without depth testing; each
     /// sample keeps the values of the last primitive that covered it.
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>;
+
+    /// The method's own draw call for `scene`, set up once so that it can
+    /// be drawn again and again: what `rastercheck bench` times as the
+    /// method's work, apart from what an adapter does around it. `None`
+    /// for a method that has no draw call apart from [`Rasterizer::rasterize`].
+    fn prepare<'a>(
+        &'a self,
+        _scene: &'a Scene,
+        _plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        None
+    }
+}
+
+/// A method's draw call with its input converted and (for a driver)
+/// uploaded, and its targets allocated: the set-up a real application
+/// does once. The bench times [`Prepared::draw`] as the method's own work,
+/// and the set-up and [`Prepared::read_back`] apart from it.
+pub trait Prepared {
+    /// Empties the targets. Untimed, between draws.
+    fn clear(&mut self) -> Result<(), RasterError>;
+
+    /// Draws every primitive into the targets as they stand, and returns
+    /// when the drawing is done (for a driver: from submission to its
+    /// fence). Nothing else is inside the timing.
+    fn draw(&mut self) -> Result<(), RasterError>;
+
+    /// The targets as a frame whose `last` holds each sample's last
+    /// primitive (index + 1, 0 where none), as [`Rasterizer::rasterize`]'s
+    /// frame does; its coverage counts are exact only where the method keeps
+    /// them (a pixmap keeps the last colour, not a count). The bench checks
+    /// that the owners agree with the whole call's, so the draw it timed is
+    /// the one it judged.
+    fn read_back(&mut self) -> Result<Frame, RasterError>;
 }
