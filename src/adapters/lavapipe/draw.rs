@@ -1,94 +1,44 @@
-//! Drawing one frame on lavapipe: the vertex stream uploaded, one render
-//! pass per channel group into targets of the canvas's power-of-two size
-//! (single-sample, or 4× MSAA with each sample spread to its own texel),
-//! everything recorded in one command buffer, submitted, waited for and
-//! read back once. The pipelines are `pipelines.rs`'s; decoding the bytes
-//! is `readback.rs`'s.
+//! Drawing one scene on lavapipe: a [`Drawing`] set up once (the vertex
+//! stream uploaded, targets of the canvas's power-of-two size made,
+//! single-sample or 4× MSAA, and the pipelines chosen), whose passes are
+//! then recorded to clear the targets, draw into them, or both, and whose
+//! targets are read back (a 4× target with each sample spread to its own
+//! texel first). [`Gpu::render`] records it all in one command buffer and
+//! submits, waits for and reads back once; `prepared.rs` runs the phases
+//! one submission each. The pipelines are `pipelines.rs`'s; decoding the
+//! bytes is `readback.rs`'s.
 
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::{Cull, Interpolation, Scene};
+use crate::scene::Scene;
 
 use super::super::gpu::{self, VERTEX_FLOATS};
 use super::device::Gpu;
+use super::pipelines::Unpack;
 use super::readback::{self, copy_out, read_rows};
 
-/// One frame's work on the device: its error scopes, open from before the
-/// first buffer is made until everything is read back, and its vertices.
-struct Work {
-    device: wgpu::Device,
+/// Samples per pixel of an antialiased scene: Vulkan's standard 4×.
+const MSAA: u32 = 4;
+
+/// The error scopes of one submission's work, open from before its first
+/// command (or buffer) is made until it has been waited for.
+pub(super) struct Scopes {
     // Dropped (and so popped) in this order on an early return, the
     // reverse of how they were pushed.
     oom: wgpu::ErrorScopeGuard,
     scope: wgpu::ErrorScopeGuard,
-    vertex_buffer: wgpu::Buffer,
 }
 
-impl Work {
-    /// Opens the error scopes and uploads the vertex stream.
-    fn begin(gpu: &Gpu, vertices: &[f32]) -> Work {
-        let device = gpu.device.clone();
+impl Scopes {
+    pub(super) fn open(device: &wgpu::Device) -> Scopes {
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let oom = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let vertex_buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("vertices"),
-            size: (vertices.len().max(VERTEX_FLOATS) * 4) as u64,
-            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        if !vertices.is_empty() {
-            gpu.queue
-                .write_buffer(&vertex_buffer, 0, f32_bytes(vertices).as_slice());
-        }
-        Work {
-            device,
-            oom,
-            scope,
-            vertex_buffer,
-        }
+        Scopes { oom, scope }
     }
 
-    /// A `width × height` render target of `samples` samples, usable as
-    /// `usage` too.
-    fn target(
-        &self,
-        format: wgpu::TextureFormat,
-        (width, height): (u32, u32),
-        sample_count: u32,
-        usage: wgpu::TextureUsages,
-    ) -> wgpu::Texture {
-        self.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("target"),
-            size: wgpu::Extent3d {
-                width,
-                height,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count,
-            dimension: wgpu::TextureDimension::D2,
-            format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | usage,
-            view_formats: &[],
-        })
-    }
-
-    /// Submits the recorded commands, maps the readback buffers, waits for
-    /// the device, and reports what the error scopes caught.
-    fn finish(
-        self,
-        queue: &wgpu::Queue,
-        encoder: wgpu::CommandEncoder,
-        readbacks: &[&(wgpu::Buffer, u32)],
-    ) -> Result<(), RasterError> {
-        queue.submit([encoder.finish()]);
-        for (buffer, _) in readbacks {
-            buffer.map_async(wgpu::MapMode::Read, .., |_| {});
-        }
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| RasterError::Failed(format!("lavapipe: waiting for the frame: {e}")))?;
+    /// Closes the scopes, with what they caught as the error.
+    fn close(self) -> Result<(), RasterError> {
         if let Some(e) = pollster::block_on(self.oom.pop()) {
             return Err(RasterError::Failed(format!("lavapipe: out of memory: {e}")));
         }
@@ -99,118 +49,123 @@ impl Work {
     }
 }
 
-impl Gpu {
-    /// A command encoder with one render pass recorded per channel group
-    /// over the scene's runs of triangles (the count target too, in group
-    /// 0), into `samples`-sample targets cleared first, scissored to the
-    /// canvas.
-    fn record_groups(
-        &mut self,
-        work: &Work,
-        (count, values): (&wgpu::Texture, &[wgpu::Texture]),
-        runs: &[(Interpolation, u32, u32)],
-        (cull, samples): (Cull, u32),
-        (w, h): (u32, u32),
-    ) -> wgpu::CommandEncoder {
-        let mut encoder = work.device.create_command_encoder(&Default::default());
-        for (g, value) in values.iter().enumerate() {
-            let pipelines: Vec<(wgpu::RenderPipeline, u32, u32)> = runs
-                .iter()
-                .map(|&(mode, a, b)| (self.pipeline(mode, g, cull, samples), a, b))
-                .collect();
-            let count_view = count.create_view(&Default::default());
-            let value_view = value.create_view(&Default::default());
-            let attachments = if g == 0 {
-                vec![cleared(&count_view), cleared(&value_view)]
-            } else {
-                vec![cleared(&value_view)]
-            };
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("rastercheck lavapipe"),
-                color_attachments: &attachments,
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            pass.set_scissor_rect(0, 0, w, h);
-            pass.set_vertex_buffer(0, work.vertex_buffer.slice(..));
-            for (pipeline, a, b) in &pipelines {
-                pass.set_pipeline(pipeline);
-                pass.draw(*a..*b, 0..1);
-            }
-        }
-        encoder
-    }
+/// What recording the passes does to the targets.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Passes {
+    /// Clears them and draws nothing.
+    Clear,
+    /// Draws into them as they stand.
+    Draw,
+    /// Clears them, then draws: the whole call's one frame.
+    ClearAndDraw,
+}
 
-    /// Draws a single-sample scene and reads the canvas back.
-    pub(super) fn render(
+/// One scene set up on the device: its vertex stream uploaded, its targets
+/// made, and the pipeline of every run of triangles in every channel group
+/// chosen, so that its passes can be recorded again and again.
+pub(super) struct Drawing<'a> {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    plan: &'a Plan,
+    vertex_buffer: wgpu::Buffer,
+    /// Per channel group, the pipeline of each run of triangles and the
+    /// run's vertices (first, end).
+    passes: Vec<Vec<(wgpu::RenderPipeline, u32, u32)>>,
+    /// The additive count, and the channel groups.
+    count: wgpu::Texture,
+    values: Vec<wgpu::Texture>,
+    count_format: wgpu::TextureFormat,
+    canvas: (u32, u32),
+    /// 1, or [`MSAA`] for an antialiased scene, whose samples `unpack`
+    /// spreads out before they are read back.
+    samples: u32,
+    unpack: Option<Unpack>,
+}
+
+/// The mapped-to-be buffers one read-back copies the targets into, and the
+/// size of the image they hold (4× wider than the canvas under MSAA).
+pub(super) struct ReadBack {
+    count: (wgpu::Buffer, u32),
+    values: Vec<(wgpu::Buffer, u32)>,
+    size: (u32, u32),
+}
+
+impl Gpu {
+    /// Sets a scene up: uploads its vertex stream (written into the
+    /// queue, so copied by the next submission), makes its targets
+    /// (single-sample, or 4× multisampled for an antialiased plan, whose
+    /// offsets are Vulkan's standard 4×, checked by the caller), and
+    /// chooses its pipelines. Call within [`Scopes`].
+    pub(super) fn set_up<'a>(
         &mut self,
         scene: &Scene,
-        plan: &Plan,
+        plan: &'a Plan,
         bits: u32,
-    ) -> Result<Frame, RasterError> {
+    ) -> Result<Drawing<'a>, RasterError> {
+        let samples = if plan.antialias.is_some() { MSAA } else { 1 };
         let (w, h) = (scene.canvas.width, scene.canvas.height);
         let (tw, th) = gpu::target_size(scene, self.max_side, "the lavapipe adapter")?;
+        if samples > 1 {
+            self.check_msaa(scene, plan)?;
+        }
         let groups = gpu::groups(plan);
         let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
 
-        let work = Work::begin(self, &vertices);
-        let copy = wgpu::TextureUsages::COPY_SRC;
-        let count = work.target(self.count_format, (tw, th), 1, copy);
-        let values: Vec<wgpu::Texture> = (0..groups)
-            .map(|_| work.target(wgpu::TextureFormat::Rgba32Float, (tw, th), 1, copy))
-            .collect();
-
-        let cull = (scene.rules.cull, 1);
-        let mut encoder = self.record_groups(&work, (&count, &values), &runs, cull, (w, h));
-        let readback = |texture: &wgpu::Texture, texel: u32, encoder: &mut wgpu::CommandEncoder| {
-            copy_out(&work.device, encoder, texture, texel, (w, h))
+        let vertex_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("vertices"),
+            size: (vertices.len().max(VERTEX_FLOATS) * 4) as u64,
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        if !vertices.is_empty() {
+            self.queue
+                .write_buffer(&vertex_buffer, 0, f32_bytes(&vertices).as_slice());
+        }
+        let (count_format, value_format, usage) = if samples == 1 {
+            let copy = wgpu::TextureUsages::COPY_SRC;
+            (self.count_format, wgpu::TextureFormat::Rgba32Float, copy)
+        } else {
+            let binding = wgpu::TextureUsages::TEXTURE_BINDING;
+            (self.msaa.count, self.msaa.values, binding)
         };
-        let count_texel = self.count_format.block_copy_size(None).unwrap_or(4);
-        let count_buffer = readback(&count, count_texel, &mut encoder);
-        let value_buffers: Vec<_> = values
-            .iter()
-            .map(|t| readback(t, 16, &mut encoder))
+        let count = target(&self.device, count_format, (tw, th), samples, usage);
+        let values = (0..groups)
+            .map(|_| target(&self.device, value_format, (tw, th), samples, usage))
             .collect();
-        let mapped: Vec<_> = std::iter::once(&count_buffer)
-            .chain(&value_buffers)
-            .collect();
-        work.finish(&self.queue, encoder, &mapped)?;
-
-        let count_bytes = read_rows(&count_buffer, count_texel as usize, (w, h))?;
-        let counts = readback::counts(&count_bytes, self.count_format);
-        let channels = readback::channels(&value_buffers, (w, h))?;
-
-        let mut frame = Frame::new(w, h, plan.depth, plan.attributes);
-        let half = self.count_format != wgpu::TextureFormat::R32Float;
-        readback::fill(&mut frame, &counts, &channels, "sample", |c| {
-            (half && c >= 2048.0).then(|| {
-                "lavapipe: over 2048 triangles cover one sample; the R16Float count saturates"
-                    .to_owned()
+        let cull = scene.rules.cull;
+        let passes = (0..groups)
+            .map(|g| {
+                runs.iter()
+                    .map(|&(mode, a, b)| (self.pipeline(mode, g, cull, samples), a, b))
+                    .collect()
             })
-        })?;
-        Ok(frame)
+            .collect();
+        let unpack = (samples > 1).then(|| self.unpack().clone());
+        Ok(Drawing {
+            device: self.device.clone(),
+            queue: self.queue.clone(),
+            plan,
+            vertex_buffer,
+            passes,
+            count,
+            values,
+            count_format,
+            canvas: (w, h),
+            samples,
+            unpack,
+        })
     }
 
-    /// Draws an antialiased scene into 4× multisampled targets (the plan's
-    /// offsets are Vulkan's standard 4×, checked by the caller), spreads
-    /// each target's samples over a non-multisampled target 4× wider
-    /// (texel (4x + s, y) holds sample s of pixel (x, y), which is slot
-    /// 4·p + s of the frame), reads those back, and box-resolves.
-    pub(super) fn render_msaa(
-        &mut self,
-        scene: &Scene,
-        plan: &Plan,
-        bits: u32,
-    ) -> Result<Frame, RasterError> {
-        const N: u32 = 4;
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let (tw, th) = gpu::target_size(scene, self.max_side, "the lavapipe adapter")?;
-        if u64::from(w) * u64::from(N) > u64::from(self.max_side) {
+    /// Why an antialiased scene cannot be drawn here, if it cannot: its
+    /// samples are read back through a target 4× wider than the canvas, and
+    /// where the adapter multisamples no four-channel f32 format the
+    /// channels hold primitive + 1 only, and only up to 2048.
+    fn check_msaa(&self, scene: &Scene, plan: &Plan) -> Result<(), RasterError> {
+        let w = scene.canvas.width;
+        if u64::from(w) * u64::from(MSAA) > u64::from(self.max_side) {
             return Err(RasterError::Unsupported(format!(
-                "canvas width {w}: its {N} samples per pixel are read back through a target \
-                 {N}× wider, and the lavapipe adapter draws at most {}",
+                "canvas width {w}: its {MSAA} samples per pixel are read back through a target \
+                 {MSAA}× wider, and the lavapipe adapter draws at most {}",
                 self.max_side
             )));
         }
@@ -230,27 +185,92 @@ impl Gpu {
                 )));
             }
         }
-        let groups = gpu::groups(plan);
-        let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
+        Ok(())
+    }
 
-        let work = Work::begin(self, &vertices);
-        let binding = wgpu::TextureUsages::TEXTURE_BINDING;
-        let count = work.target(self.msaa.count, (tw, th), N, binding);
-        let values: Vec<wgpu::Texture> = (0..groups)
-            .map(|_| work.target(self.msaa.values, (tw, th), N, binding))
-            .collect();
+    /// Draws a scene and reads the canvas back: the set-up, the clearing
+    /// draw and the read-back recorded in one command buffer, submitted,
+    /// waited for and read back once.
+    pub(super) fn render(
+        &mut self,
+        scene: &Scene,
+        plan: &Plan,
+        bits: u32,
+    ) -> Result<Frame, RasterError> {
+        let scopes = Scopes::open(&self.device);
+        let drawing = self.set_up(scene, plan, bits)?;
+        let mut encoder = drawing.encoder();
+        drawing.record(&mut encoder, Passes::ClearAndDraw);
+        let read_back = drawing.record_read_back(&mut encoder);
+        drawing.finish(scopes, encoder, Some(&read_back))?;
+        drawing.decode(&read_back)
+    }
+}
 
-        let cull = (scene.rules.cull, N);
-        let mut encoder = self.record_groups(&work, (&count, &values), &runs, cull, (w, h));
+impl Drawing<'_> {
+    pub(super) fn encoder(&self) -> wgpu::CommandEncoder {
+        self.device.create_command_encoder(&Default::default())
+    }
 
-        // Each sample to its own texel: (4x + s, y).
-        let unpack = self.unpack();
-        let wide = (w * N, h);
-        let copy = wgpu::TextureUsages::COPY_SRC;
+    /// Records one render pass per channel group (the count target too, in
+    /// group 0), scissored to the canvas, that clears the targets, draws
+    /// the scene's runs of triangles into them, or both.
+    pub(super) fn record(&self, encoder: &mut wgpu::CommandEncoder, passes: Passes) {
+        let load = if passes == Passes::Draw {
+            wgpu::LoadOp::Load
+        } else {
+            wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT)
+        };
+        for (g, (value, runs)) in self.values.iter().zip(&self.passes).enumerate() {
+            let count_view = self.count.create_view(&Default::default());
+            let value_view = value.create_view(&Default::default());
+            let attachments = if g == 0 {
+                vec![attachment(&count_view, load), attachment(&value_view, load)]
+            } else {
+                vec![attachment(&value_view, load)]
+            };
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("rastercheck lavapipe"),
+                color_attachments: &attachments,
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            if passes == Passes::Clear {
+                continue;
+            }
+            pass.set_scissor_rect(0, 0, self.canvas.0, self.canvas.1);
+            pass.set_vertex_buffer(0, self.vertex_buffer.slice(..));
+            for (pipeline, a, b) in runs {
+                pass.set_pipeline(pipeline);
+                pass.draw(*a..*b, 0..1);
+            }
+        }
+    }
+
+    /// Records the copies of the canvas out of the targets into mappable
+    /// buffers. A 4× target is first spread over a non-multisampled one 4×
+    /// wider (texel (4x + s, y) holds sample s of pixel (x, y), which is
+    /// slot 4·p + s of the frame), and that is copied.
+    pub(super) fn record_read_back(&self, encoder: &mut wgpu::CommandEncoder) -> ReadBack {
+        let Some(unpack) = &self.unpack else {
+            let count_texel = self.count_format.block_copy_size(None).unwrap_or(4);
+            let copy = |texture, texel, encoder: &mut _| {
+                copy_out(&self.device, encoder, texture, texel, self.canvas)
+            };
+            return ReadBack {
+                count: copy(&self.count, count_texel, encoder),
+                values: self.values.iter().map(|t| copy(t, 16, encoder)).collect(),
+                size: self.canvas,
+            };
+        };
+        let wide = (self.canvas.0 * self.samples, self.canvas.1);
         let mut spread = |source: &wgpu::Texture, format, pipeline: &wgpu::RenderPipeline| {
-            let target = work.target(format, wide, 1, copy);
+            let copy = wgpu::TextureUsages::COPY_SRC;
+            let spread = target(&self.device, format, wide, 1, copy);
             let source_view = source.create_view(&Default::default());
-            let bind_group = work.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("rastercheck lavapipe unpack"),
                 layout: &unpack.layout,
                 entries: &[wgpu::BindGroupEntry {
@@ -258,10 +278,11 @@ impl Gpu {
                     resource: wgpu::BindingResource::TextureView(&source_view),
                 }],
             });
-            let target_view = target.create_view(&Default::default());
+            let spread_view = spread.create_view(&Default::default());
+            let clear = wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT);
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("rastercheck lavapipe unpack"),
-                color_attachments: &[cleared(&target_view)],
+                color_attachments: &[attachment(&spread_view, clear)],
                 depth_stencil_attachment: None,
                 timestamp_writes: None,
                 occlusion_query_set: None,
@@ -271,37 +292,85 @@ impl Gpu {
             pass.set_bind_group(0, &bind_group, &[]);
             pass.draw(0..3, 0..1);
             drop(pass);
-            target
+            let texel = if format == wgpu::TextureFormat::R32Float {
+                4
+            } else {
+                16
+            };
+            copy_out(&self.device, encoder, &spread, texel, wide)
         };
-        let count_wide = spread(&count, wgpu::TextureFormat::R32Float, &unpack.single);
-        let values_wide: Vec<wgpu::Texture> = values
-            .iter()
-            .map(|v| spread(v, wgpu::TextureFormat::Rgba32Float, &unpack.quad))
-            .collect();
-        let count_buffer = copy_out(&work.device, &mut encoder, &count_wide, 4, wide);
-        let value_buffers: Vec<_> = values_wide
-            .iter()
-            .map(|t| copy_out(&work.device, &mut encoder, t, 16, wide))
-            .collect();
-        let mapped: Vec<_> = std::iter::once(&count_buffer)
-            .chain(&value_buffers)
-            .collect();
-        work.finish(&self.queue, encoder, &mapped)?;
+        ReadBack {
+            count: spread(&self.count, wgpu::TextureFormat::R32Float, &unpack.single),
+            values: self
+                .values
+                .iter()
+                .map(|v| spread(v, wgpu::TextureFormat::Rgba32Float, &unpack.quad))
+                .collect(),
+            size: wide,
+        }
+    }
 
-        let counts = readback::floats(&read_rows(&count_buffer, 4, wide)?);
-        let channels = readback::channels(&value_buffers, wide)?;
+    /// Submits the recorded commands, maps the read-back buffers if any,
+    /// waits for the device, and reports what the error scopes caught.
+    pub(super) fn finish(
+        &self,
+        scopes: Scopes,
+        encoder: wgpu::CommandEncoder,
+        read_back: Option<&ReadBack>,
+    ) -> Result<(), RasterError> {
+        self.queue.submit([encoder.finish()]);
+        for (buffer, _) in read_back
+            .iter()
+            .flat_map(|r| std::iter::once(&r.count).chain(&r.values))
+        {
+            buffer.map_async(wgpu::MapMode::Read, .., |_| {});
+        }
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| RasterError::Failed(format!("lavapipe: waiting for the frame: {e}")))?;
+        scopes.close()
+    }
 
-        let mut frame = Frame::for_plan(w, h, plan);
-        let count_limit = if self.msaa.count == wgpu::TextureFormat::R32Float {
+    /// The frame a finished read-back holds: counts, last primitives and
+    /// channels, box-resolved under MSAA. A count beyond what its format
+    /// holds exactly is an error.
+    pub(super) fn decode(&self, read_back: &ReadBack) -> Result<Frame, RasterError> {
+        let (w, h) = self.canvas;
+        let count_texel = if self.samples == 1 {
+            self.count_format.block_copy_size(None).unwrap_or(4) as usize
+        } else {
+            4
+        };
+        let count_bytes = read_rows(&read_back.count, count_texel, read_back.size)?;
+        let counts = if self.samples == 1 {
+            readback::counts(&count_bytes, self.count_format)
+        } else {
+            readback::floats(&count_bytes)
+        };
+        let channels = readback::channels(&read_back.values, read_back.size)?;
+
+        let format = self.count_format;
+        if self.samples == 1 {
+            let mut frame = Frame::new(w, h, self.plan.depth, self.plan.attributes);
+            let half = format != wgpu::TextureFormat::R32Float;
+            readback::fill(&mut frame, &counts, &channels, "sample", |c| {
+                (half && c >= 2048.0).then(|| {
+                    "lavapipe: over 2048 triangles cover one sample; the R16Float count saturates"
+                        .to_owned()
+                })
+            })?;
+            return Ok(frame);
+        }
+        let mut frame = Frame::for_plan(w, h, self.plan);
+        let limit = if format == wgpu::TextureFormat::R32Float {
             65535.0
         } else {
             2047.0
         };
-        let count_format = self.msaa.count;
         readback::fill(&mut frame, &counts, &channels, "slot", |c| {
-            (c > count_limit).then(|| {
+            (c > limit).then(|| {
                 format!(
-                    "lavapipe: {c} triangles cover one sample; the {count_format:?} count is \
+                    "lavapipe: {c} triangles cover one sample; the {format:?} count is \
                      exact only up to 2048"
                 )
             })
@@ -311,14 +380,42 @@ impl Gpu {
     }
 }
 
-/// A colour attachment cleared to 0 and stored.
-fn cleared(view: &wgpu::TextureView) -> Option<wgpu::RenderPassColorAttachment<'_>> {
+/// A `width × height` render target of `samples` samples, usable as
+/// `usage` too.
+fn target(
+    device: &wgpu::Device,
+    format: wgpu::TextureFormat,
+    (width, height): (u32, u32),
+    sample_count: u32,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("target"),
+        size: wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | usage,
+        view_formats: &[],
+    })
+}
+
+/// A colour attachment loaded with `load` and stored.
+fn attachment(
+    view: &wgpu::TextureView,
+    load: wgpu::LoadOp<wgpu::Color>,
+) -> Option<wgpu::RenderPassColorAttachment<'_>> {
     Some(wgpu::RenderPassColorAttachment {
         view,
         depth_slice: None,
         resolve_target: None,
         ops: wgpu::Operations {
-            load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+            load,
             store: wgpu::StoreOp::Store,
         },
     })

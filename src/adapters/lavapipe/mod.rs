@@ -111,6 +111,16 @@
 //! One device is created on first use and shared by every case (creating it
 //! takes a while); a mutex serialises the cases that use it. Compiled
 //! pipelines are kept, keyed by interpolation mode, channel group and culling.
+//!
+//! # Set up once, drawn again and again
+//!
+//! A scene is set up once (its vertex stream converted and uploaded, its
+//! targets made, its pipelines chosen) and then cleared, drawn and read
+//! back. `rasterize` records all of it in one command buffer;
+//! [`Rasterizer::prepare`] hands the set-up scene to the bench, which
+//! clears, draws (submission to fence) and reads back one submission at a
+//! time, and so times lavapipe's own draw apart. Both paths share every
+//! step, so the frame the bench judges is the one a case's run draws.
 
 //!
 //! # The rooms
@@ -119,20 +129,24 @@
 //!   refuses the rest, and the shared device;
 //! - `device.rs`: finding lavapipe, creating the device, choosing formats;
 //! - `pipelines.rs` and `shaders.rs`: the render pipelines and their WGSL;
-//! - `draw.rs`: the passes of one frame, single-sample and 4× MSAA;
+//! - `draw.rs`: one scene set up on the device, its passes (clearing,
+//!   drawing, single-sample and 4× MSAA) and its read-back;
+//! - `prepared.rs`: the same scene cleared, drawn and read back one
+//!   submission at a time, for the bench to time the draw apart;
 //! - `readback.rs`: copying targets out and decoding them into a [`Frame`].
 
 mod device;
 mod draw;
 mod pipelines;
+mod prepared;
 mod readback;
 mod shaders;
 
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Mutex, MutexGuard, OnceLock};
 
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::Scene;
 
 use super::gpu;
@@ -154,30 +168,41 @@ impl Rasterizer for Lavapipe {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        if let Some(aa) = &plan.antialias {
-            if let Some(why) = standard_4x_refusal(aa) {
-                return Err(RasterError::Unsupported(why));
-            }
-        } else if plan.samples_per_pixel != 1 {
-            return Err(RasterError::Unsupported(format!(
-                "{} samples per pixel without a sample pattern",
-                plan.samples_per_pixel
-            )));
-        }
-        let bits = gpu::snapping_bits(
-            scene,
-            plan,
-            "wgpu draws only 1-pixel lines, with no choice of the case's line rule",
-            "lavapipe",
-        )?;
+        let bits = accepted(scene, plan)?;
         let gpu = gpu().map_err(|why| RasterError::Failed(why.clone()))?;
-        let mut gpu = gpu.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-        if plan.antialias.is_some() {
-            gpu.render_msaa(scene, plan, bits)
-        } else {
-            gpu.render(scene, plan, bits)
-        }
+        lock(gpu).render(scene, plan, bits)
     }
+
+    /// Everything `rasterize` draws, set up once: see `prepared.rs`.
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepared::prepare(scene, plan).map(|p| Box::new(p) as Box<dyn Prepared + 'a>))
+    }
+}
+
+/// The subpixel bits lavapipe snaps the scene to, or why it cannot draw it:
+/// samples other than Vulkan's standard 4×, a line, unsnapped geometry or
+/// too many attributes.
+fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
+    if let Some(aa) = &plan.antialias {
+        if let Some(why) = standard_4x_refusal(aa) {
+            return Err(RasterError::Unsupported(why));
+        }
+    } else if plan.samples_per_pixel != 1 {
+        return Err(RasterError::Unsupported(format!(
+            "{} samples per pixel without a sample pattern",
+            plan.samples_per_pixel
+        )));
+    }
+    gpu::snapping_bits(
+        scene,
+        plan,
+        "wgpu draws only 1-pixel lines, with no choice of the case's line rule",
+        "lavapipe",
+    )
 }
 
 /// Vulkan's standard 4× sample locations (`standardSampleLocations`), in
@@ -209,8 +234,7 @@ pub fn standard_4x_refusal(aa: &SamplePlan) -> Option<String> {
 /// The multisampled formats this adapter draws 4× MSAA into, as
 /// "count FORMAT, values FORMAT", or why it cannot.
 pub fn msaa_formats() -> Result<String, String> {
-    let gpu = gpu()?;
-    let gpu = gpu.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    let gpu = lock(gpu()?);
     Ok(format!(
         "count {:?}, values {:?}",
         gpu.msaa.count, gpu.msaa.values
@@ -220,14 +244,18 @@ pub fn msaa_formats() -> Result<String, String> {
 /// The adapter wgpu found, as "name (driver, driver info)", or why none was
 /// found. Creates the shared device on first use.
 pub fn adapter_description() -> Result<String, String> {
-    let gpu = gpu()?;
-    let gpu = gpu.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    Ok(gpu.description.clone())
+    Ok(lock(gpu()?).description.clone())
 }
 
 fn gpu() -> Result<&'static Mutex<Gpu>, &'static String> {
     static GPU: OnceLock<Result<Mutex<Gpu>, String>> = OnceLock::new();
     GPU.get_or_init(|| Gpu::new().map(Mutex::new)).as_ref()
+}
+
+/// The shared device, for one case (or one phase of a prepared scene) at a
+/// time; a case that panicked holding it leaves it usable.
+fn lock(gpu: &'static Mutex<Gpu>) -> MutexGuard<'static, Gpu> {
+    gpu.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
 #[cfg(test)]

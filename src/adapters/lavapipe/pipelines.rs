@@ -11,6 +11,7 @@ use super::device::Gpu;
 use super::shaders::{shader, UNPACK_SHADER};
 
 /// The unpacking pass's pipelines and their bind group layout.
+#[derive(Clone)]
 pub(super) struct Unpack {
     pub(super) layout: wgpu::BindGroupLayout,
     /// Into `R32Float` (counts) and `Rgba32Float` (channel groups).
