@@ -77,6 +77,17 @@
 //!   `rastercheck run -r softpipe`), and otherwise insists that the renderer
 //!   is softpipe: where the process already holds llvmpipe it fails, saying
 //!   to start the process with `GALLIUM_DRIVER=softpipe`.
+//!
+//! # Set up once, drawn again and again
+//!
+//! A scene is set up once (its vertex stream converted and uploaded into a
+//! vertex array and buffer of its own, its framebuffer made) and then
+//! cleared, drawn and read back. `rasterize` does it all with the context
+//! held, and deletes it; [`Rasterizer::prepare`] hands the set-up scene to
+//! the bench, which clears, draws (the draw calls and `glFinish`) and reads
+//! back phase by phase, the context locked and made current for each
+//! phase, and so times the driver's own draw apart. Both paths share every
+//! step, so the frame the bench judges is the one a case's run draws.
 
 use std::ffi::c_void;
 use std::sync::{Mutex, OnceLock};
@@ -86,7 +97,7 @@ use khronos_egl as egl;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{Cull, Interpolation, Scene};
 
 /// The name of the adapter that draws with whatever Mesa's GL is.
@@ -120,7 +131,15 @@ impl Rasterizer for Gl {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        draw(scene, plan, false)
+        rasterize(scene, plan, false)
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, false))
     }
 }
 
@@ -134,7 +153,15 @@ impl Rasterizer for Softpipe {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        draw(scene, plan, true)
+        rasterize(scene, plan, true)
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, true))
     }
 }
 
@@ -142,7 +169,10 @@ fn capabilities() -> Capabilities {
     gpu::capabilities(false)
 }
 
-fn draw(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
+/// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
+/// it: several samples per pixel, a line, unsnapped geometry or too many
+/// attributes. For `softpipe`, asks for it if no display exists yet.
+fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
     if plan.samples_per_pixel != 1 {
         return Err(RasterError::Unsupported(
             "multisampling is not wired to the GL adapter yet".to_owned(),
@@ -157,16 +187,38 @@ fn draw(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError
     if softpipe {
         ask_for_softpipe();
     }
+    Ok(bits)
+}
+
+/// Sets the scene up, clears, draws and reads back, with the context held
+/// throughout, and deletes what it set up.
+fn rasterize(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
+    let bits = accepted(scene, plan, softpipe)?;
+    with_context(|gl| {
+        gl.insist_on_softpipe(softpipe)?;
+        // SAFETY: GL calls on the context current on this thread, with
+        // buffers sized to what is read and written.
+        unsafe {
+            let drawing = gl.set_up(scene, plan, bits)?;
+            gl.clear(&drawing);
+            gl.draw(&drawing);
+            let frame = gl.read_back(&drawing);
+            gl.delete(&drawing);
+            frame
+        }
+    })
+}
+
+/// Runs `f` with the shared context locked and current on this thread,
+/// and releases the context after, whatever `f` returns: the cases (and
+/// the phases of a prepared scene) take turns.
+fn with_context<T>(f: impl FnOnce(&GlContext) -> Result<T, RasterError>) -> Result<T, RasterError> {
     let gl = context().map_err(|why| RasterError::Failed(why.clone()))?;
-    let mut gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    if softpipe && !gl.renderer.contains("softpipe") {
-        return Err(RasterError::Failed(format!(
-            "softpipe: this process's GL is {} (Mesa picks one gallium driver per process); \
-             start it with GALLIUM_DRIVER=softpipe",
-            gl.renderer
-        )));
-    }
-    gl.render(scene, plan, bits)
+    let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    gl.bind()?;
+    let result = f(&gl);
+    let _ = gl.egl.make_current(gl.display, None, None, None);
+    result
 }
 
 /// Sets `GALLIUM_DRIVER=softpipe` when no display exists yet and the
@@ -205,8 +257,6 @@ struct GlContext {
     renderer: String,
     version: String,
     max_side: u32,
-    vao: glow::VertexArray,
-    vbo: glow::Buffer,
     programs: [glow::Program; 3],
 }
 
@@ -283,11 +333,11 @@ impl GlContext {
         let (renderer, version, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let made = set_up(&gl, provoking);
+            let made = set_up_context(&gl, provoking);
             (renderer, version, made)
         };
         let _ = egl.make_current(display, None, None, None);
-        let (max_side, vao, vbo, programs) =
+        let (max_side, programs) =
             made.map_err(|e| format!("OpenGL ({renderer}, {version}): {e}"))?;
         Ok(GlContext {
             egl,
@@ -297,10 +347,21 @@ impl GlContext {
             renderer,
             version,
             max_side,
-            vao,
-            vbo,
             programs,
         })
+    }
+
+    /// Fails where `softpipe` is asked for and this process's GL is
+    /// another driver.
+    fn insist_on_softpipe(&self, softpipe: bool) -> Result<(), RasterError> {
+        if softpipe && !self.renderer.contains("softpipe") {
+            return Err(RasterError::Failed(format!(
+                "softpipe: this process's GL is {} (Mesa picks one gallium driver per process); \
+                 start it with GALLIUM_DRIVER=softpipe",
+                self.renderer
+            )));
+        }
+        Ok(())
     }
 
     /// Makes the context current on this thread for one case.
@@ -315,38 +376,86 @@ impl GlContext {
             })
     }
 
-    fn render(&mut self, scene: &Scene, plan: &Plan, bits: u32) -> Result<Frame, RasterError> {
+    fn failed(&self, what: &str) -> RasterError {
+        RasterError::Failed(format!("{}: {what}", self.renderer))
+    }
+
+    /// The first pending GL error as a failure of `what`.
+    unsafe fn check(&self, what: &str) -> Result<(), RasterError> {
+        match gl_error(&self.gl) {
+            Some(e) => Err(self.failed(&format!("{what}: GL error {e:#x}"))),
+            None => Ok(()),
+        }
+    }
+
+    /// Sets a scene up: uploads its vertex stream into a vertex array and
+    /// buffer of its own, and makes a framebuffer of `P × Q` float
+    /// attachments (the count, then the channel groups).
+    unsafe fn set_up<'a>(
+        &self,
+        scene: &Scene,
+        plan: &'a Plan,
+        bits: u32,
+    ) -> Result<Drawing<'a>, RasterError> {
         let (tw, th) = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
         let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
-
-        self.bind()?;
-        // SAFETY: GL calls on the context current on this thread, with
-        // buffers sized to what is read and written.
-        let result = unsafe { self.draw_and_read(scene, plan, &vertices, &runs, groups) };
-        let _ = self.egl.make_current(self.display, None, None, None);
-        result
-    }
-
-    unsafe fn draw_and_read(
-        &self,
-        scene: &Scene,
-        plan: &Plan,
-        vertices: &[f32],
-        runs: &[(Interpolation, u32, u32)],
-        groups: usize,
-    ) -> Result<Frame, RasterError> {
         let gl = &self.gl;
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let (tw, th) = (w.next_power_of_two(), h.next_power_of_two());
-        let failed = |what: &str| RasterError::Failed(format!("{}: {what}", self.renderer));
         let _ = gl_error(gl);
 
-        let fbo = gl.create_framebuffer().map_err(|e| failed(&e))?;
+        let mut drawing = Drawing {
+            plan,
+            canvas: (scene.canvas.width, scene.canvas.height),
+            target: (tw, th),
+            cull: scene.rules.cull,
+            runs,
+            vao: gl.create_vertex_array().map_err(|e| self.failed(&e))?,
+            vbo: None,
+            fbo: None,
+            renderbuffers: Vec::with_capacity(1 + groups),
+        };
+        if let Err(e) = self.make(&mut drawing, &vertices, groups) {
+            self.delete(&drawing);
+            return Err(e);
+        }
+        Ok(drawing)
+    }
+
+    /// Makes the vertex buffer (filled with `vertices`) and the framebuffer
+    /// of `drawing`; what is made before a failure is left for
+    /// [`GlContext::delete`].
+    unsafe fn make(
+        &self,
+        drawing: &mut Drawing,
+        vertices: &[f32],
+        groups: usize,
+    ) -> Result<(), RasterError> {
+        let gl = &self.gl;
+        gl.bind_vertex_array(Some(drawing.vao));
+        let vbo = gl.create_buffer().map_err(|e| self.failed(&e))?;
+        drawing.vbo = Some(vbo);
+        gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+        for i in 0..VERTEX_FLOATS / 4 {
+            gl.enable_vertex_attrib_array(i as u32);
+            gl.vertex_attrib_pointer_f32(
+                i as u32,
+                4,
+                glow::FLOAT,
+                false,
+                (VERTEX_FLOATS * 4) as i32,
+                (i * 16) as i32,
+            );
+        }
+        gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &f32_bytes(vertices), glow::STATIC_DRAW);
+        gl.bind_vertex_array(None);
+
+        let fbo = gl.create_framebuffer().map_err(|e| self.failed(&e))?;
+        drawing.fbo = Some(fbo);
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        let mut renderbuffers = Vec::with_capacity(1 + groups);
+        let (tw, th) = drawing.target;
         for k in 0..=groups {
-            let rb = gl.create_renderbuffer().map_err(|e| failed(&e))?;
+            let rb = gl.create_renderbuffer().map_err(|e| self.failed(&e))?;
+            drawing.renderbuffers.push(rb);
             gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
             let format = if k == 0 { glow::R32F } else { glow::RGBA32F };
             gl.renderbuffer_storage(glow::RENDERBUFFER, format, tw as i32, th as i32);
@@ -356,19 +465,10 @@ impl GlContext {
                 glow::RENDERBUFFER,
                 Some(rb),
             );
-            renderbuffers.push(rb);
         }
-        let cleanup = || {
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-            gl.delete_framebuffer(fbo);
-            for rb in &renderbuffers {
-                gl.delete_renderbuffer(*rb);
-            }
-        };
         let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
         if status != glow::FRAMEBUFFER_COMPLETE {
-            cleanup();
-            return Err(failed(&format!(
+            return Err(self.failed(&format!(
                 "float framebuffer {tw}×{th} incomplete ({status:#x})"
             )));
         }
@@ -376,16 +476,38 @@ impl GlContext {
             .map(|k| glow::COLOR_ATTACHMENT0 + k)
             .collect();
         gl.draw_buffers(&buffers);
+        self.check("setting up")
+    }
+
+    /// Binds `drawing`'s framebuffer, in which its draw buffers are kept.
+    unsafe fn bind_framebuffer(&self, drawing: &Drawing) {
+        self.gl.bind_framebuffer(glow::FRAMEBUFFER, drawing.fbo);
+    }
+
+    /// Clears every attachment of `drawing`.
+    unsafe fn clear(&self, drawing: &Drawing) {
+        let gl = &self.gl;
+        self.bind_framebuffer(drawing);
         gl.disable(glow::SCISSOR_TEST);
-        for k in 0..=groups as u32 {
+        for k in 0..drawing.renderbuffers.len() as u32 {
             gl.clear_buffer_f32_slice(glow::COLOR, k, &[0.0; 4]);
         }
+    }
+
+    /// Issues `drawing`'s draw calls into its attachments as they stand:
+    /// the viewport, scissor, blending and culling its scene asks for (the
+    /// context's state is every case's, so it is set each time), then one
+    /// `glDrawArrays` per run of triangles. Returns without waiting.
+    unsafe fn draw(&self, drawing: &Drawing) {
+        let gl = &self.gl;
+        let ((w, h), (tw, th)) = (drawing.canvas, drawing.target);
+        self.bind_framebuffer(drawing);
         gl.viewport(0, 0, tw as i32, th as i32);
         gl.enable(glow::SCISSOR_TEST);
         gl.scissor(0, (th - h) as i32, w as i32, h as i32);
         gl.disable(glow::BLEND);
         gl.enable_draw_buffer(glow::BLEND, 0);
-        match scene.rules.cull {
+        match drawing.cull {
             Cull::None => gl.disable(glow::CULL_FACE),
             Cull::Clockwise => {
                 gl.enable(glow::CULL_FACE);
@@ -396,10 +518,8 @@ impl GlContext {
                 gl.cull_face(glow::FRONT);
             }
         }
-        gl.bind_vertex_array(Some(self.vao));
-        gl.bind_buffer(glow::ARRAY_BUFFER, Some(self.vbo));
-        gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &f32_bytes(vertices), glow::STREAM_DRAW);
-        for &(mode, a, b) in runs {
+        gl.bind_vertex_array(Some(drawing.vao));
+        for &(mode, a, b) in &drawing.runs {
             let program = match mode {
                 Interpolation::Perspective => self.programs[0],
                 Interpolation::Linear => self.programs[1],
@@ -409,8 +529,18 @@ impl GlContext {
             // Vertex counts are bounded by the primitive limit (SPEC §8).
             gl.draw_arrays(glow::TRIANGLES, a as i32, (b - a) as i32);
         }
+        gl.bind_vertex_array(None);
+    }
 
-        // Read the canvas (the top W × H of the target) back, flipping rows.
+    /// Reads the canvas (the top `W × H` of the attachments) back, flipping
+    /// the rows, into a frame: the counts, the last primitives, and where
+    /// covered the depth and attributes. `glReadPixels` waits for the
+    /// drawing.
+    unsafe fn read_back(&self, drawing: &Drawing) -> Result<Frame, RasterError> {
+        let gl = &self.gl;
+        let ((w, h), th) = (drawing.canvas, drawing.target.1);
+        let groups = drawing.renderbuffers.len() as u32 - 1;
+        self.bind_framebuffer(drawing);
         let n = w as usize * h as usize;
         let read = |k: u32, components: usize| -> Vec<f32> {
             let mut bytes = vec![0u8; n * components * 4];
@@ -440,21 +570,16 @@ impl GlContext {
             out
         };
         let counts = read(0, 1);
-        let values: Vec<Vec<f32>> = (1..=groups as u32).map(|k| read(k, 4)).collect();
-        let error = gl_error(gl);
-        cleanup();
-        if let Some(e) = error {
-            return Err(failed(&format!("GL error {e:#x}")));
-        }
+        let values: Vec<Vec<f32>> = (1..=groups).map(|k| read(k, 4)).collect();
+        self.check("drawing and reading back")?;
 
+        let plan = drawing.plan;
         let mut frame = Frame::new(w, h, plan.depth, plan.attributes);
         let channel = |c: usize, i: usize| values[c / 4][i * 4 + c % 4];
         for i in 0..n {
             let c = counts[i];
             if c.fract() != 0.0 || !(0.0..=65535.0).contains(&c) {
-                return Err(failed(&format!(
-                    "coverage count {c} read back at sample {i}"
-                )));
+                return Err(self.failed(&format!("coverage count {c} read back at sample {i}")));
             }
             frame.coverage[i] = c as u16;
             frame.last[i] = channel(0, i) as u32;
@@ -469,15 +594,131 @@ impl GlContext {
         }
         Ok(frame)
     }
+
+    /// Deletes `drawing`'s objects.
+    unsafe fn delete(&self, drawing: &Drawing) {
+        let gl = &self.gl;
+        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        if let Some(fbo) = drawing.fbo {
+            gl.delete_framebuffer(fbo);
+        }
+        for &rb in &drawing.renderbuffers {
+            gl.delete_renderbuffer(rb);
+        }
+        if let Some(vbo) = drawing.vbo {
+            gl.delete_buffer(vbo);
+        }
+        gl.delete_vertex_array(drawing.vao);
+    }
 }
 
-/// What one context keeps: the largest target side, the vertex array and
-/// buffer, and the three programs.
-type Parts = (u32, glow::VertexArray, glow::Buffer, [glow::Program; 3]);
+/// One scene set up in the shared context: its vertex stream in a vertex
+/// array and buffer of its own, and its framebuffer of float attachments,
+/// so that it can be cleared, drawn and read back again and again while
+/// other cases use the context in between.
+struct Drawing<'a> {
+    plan: &'a Plan,
+    canvas: (u32, u32),
+    /// The attachments' power-of-two size.
+    target: (u32, u32),
+    cull: Cull,
+    /// The runs of consecutive vertices (first, end) of one interpolation
+    /// mode: one draw call each.
+    runs: Vec<(Interpolation, u32, u32)>,
+    vao: glow::VertexArray,
+    vbo: Option<glow::Buffer>,
+    fbo: Option<glow::Framebuffer>,
+    /// The count's, then the channel groups'.
+    renderbuffers: Vec<glow::Renderbuffer>,
+}
 
-/// Sets up the current context: first-vertex provoking, the vertex layout,
-/// the programs and the fixed state.
-unsafe fn set_up(
+/// A scene set up in the shared context, to be cleared, drawn and read back
+/// again and again: the bench's view of the driver's own draw. The context
+/// is locked and made current for each phase, not held between them, so
+/// that a whole call (the bench's own, or another case's) can run in
+/// between; the scene's objects are its own, untouched by it, and deleted
+/// when it is dropped.
+struct PreparedGl<'a> {
+    drawing: Drawing<'a>,
+}
+
+/// Sets `scene` up, its upload finished (`glFinish`) before it returns.
+fn prepare<'a>(
+    scene: &Scene,
+    plan: &'a Plan,
+    softpipe: bool,
+) -> Result<Box<dyn Prepared + 'a>, RasterError> {
+    let bits = accepted(scene, plan, softpipe)?;
+    let drawing = with_context(|gl| {
+        gl.insist_on_softpipe(softpipe)?;
+        // SAFETY: GL calls on the context current on this thread.
+        unsafe {
+            let drawing = gl.set_up(scene, plan, bits)?;
+            gl.gl.finish();
+            Ok(drawing)
+        }
+    })?;
+    Ok(Box::new(PreparedGl { drawing }))
+}
+
+impl PreparedGl<'_> {
+    /// Runs one phase on the drawing, with the context current.
+    fn phase<T>(
+        &self,
+        f: impl FnOnce(&GlContext, &Drawing) -> Result<T, RasterError>,
+    ) -> Result<T, RasterError> {
+        with_context(|gl| f(gl, &self.drawing))
+    }
+}
+
+impl Prepared for PreparedGl<'_> {
+    /// Clears every attachment, and waits (`glFinish`).
+    fn clear(&mut self) -> Result<(), RasterError> {
+        // SAFETY: GL calls on the context current on this thread.
+        self.phase(|gl, drawing| unsafe {
+            gl.clear(drawing);
+            gl.gl.finish();
+            gl.check("clearing")
+        })
+    }
+
+    /// The draw calls into the attachments as they stand (no clear), and
+    /// `glFinish`: the state the draw needs is set too, as the context is
+    /// shared, but nothing is uploaded or read.
+    fn draw(&mut self) -> Result<(), RasterError> {
+        // SAFETY: GL calls on the context current on this thread.
+        self.phase(|gl, drawing| unsafe {
+            gl.draw(drawing);
+            gl.gl.finish();
+            gl.check("drawing")
+        })
+    }
+
+    /// Reads the attachments back as a whole call does (`glReadPixels`
+    /// waits for any drawing still pending).
+    fn read_back(&mut self) -> Result<Frame, RasterError> {
+        // SAFETY: GL calls on the context current on this thread, with
+        // buffers sized to what is read.
+        self.phase(|gl, drawing| unsafe { gl.read_back(drawing) })
+    }
+}
+
+impl Drop for PreparedGl<'_> {
+    fn drop(&mut self) {
+        // SAFETY: deleting the drawing's own objects, the context current.
+        let _ = self.phase(|gl, drawing| {
+            unsafe { gl.delete(drawing) };
+            Ok(())
+        });
+    }
+}
+
+/// What one context keeps: the largest target side and the three programs.
+type Parts = (u32, [glow::Program; 3]);
+
+/// Sets up the current context: first-vertex provoking, the programs and
+/// the fixed state.
+unsafe fn set_up_context(
     gl: &glow::Context,
     provoking: Option<extern "system" fn()>,
 ) -> Result<Parts, String> {
@@ -498,21 +739,6 @@ unsafe fn set_up(
     if draw_buffers < 1 + GROUPS as i32 {
         return Err(format!("only {draw_buffers} draw buffers"));
     }
-    let vao = gl.create_vertex_array()?;
-    let vbo = gl.create_buffer()?;
-    gl.bind_vertex_array(Some(vao));
-    gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
-    for i in 0..VERTEX_FLOATS / 4 {
-        gl.enable_vertex_attrib_array(i as u32);
-        gl.vertex_attrib_pointer_f32(
-            i as u32,
-            4,
-            glow::FLOAT,
-            false,
-            (VERTEX_FLOATS * 4) as i32,
-            (i * 16) as i32,
-        );
-    }
     let programs = [
         program(gl, Interpolation::Perspective)?,
         program(gl, Interpolation::Linear)?,
@@ -527,7 +753,7 @@ unsafe fn set_up(
     if let Some(e) = gl_error(gl) {
         return Err(format!("setting up: GL error {e:#x}"));
     }
-    Ok((max_side, vao, vbo, programs))
+    Ok((max_side, programs))
 }
 
 /// The first pending GL error, clearing the rest.
