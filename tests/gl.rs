@@ -36,8 +36,8 @@ fn available() -> bool {
 mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
-    assert_refuses_lines_and_unsnapped, record_every_triangle_case, square_of, INTERPOLATION,
-    TIE_CASES, WINDING_CASES,
+    assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped,
+    record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::{case, report};
 
@@ -210,6 +210,25 @@ fn softpipe_is_bottom_right_in_its_own_process() {
     };
     assert_eq!(verdict("fill_rule_bottom_right"), "PASS", "{text}");
     assert_eq!(verdict("fill_rule_top_left"), "FAIL", "{text}");
+}
+
+/// The prepared path the bench times draws what `rasterize` draws, and
+/// its draw draws into the attachments as they stand: on overlapping
+/// triangles with depth and attributes in three interpolation modes (three
+/// draw calls), a fan, a culling case, and the bench's own kind of scene.
+#[test]
+fn the_prepared_path_draws_what_rasterize_draws() {
+    if !available() {
+        return;
+    }
+    assert_prepared_draws_as_rasterize(
+        &Gl,
+        &[
+            "triangles/interp_mixed_modes",
+            "triangles/fan_16_center",
+            "triangles/cull_cw_mixed_windings",
+        ],
+    );
 }
 
 #[test]

@@ -30,8 +30,8 @@ fn available() -> bool {
 mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
-    assert_refuses_lines_and_unsnapped, bundled_ids, record_every_triangle_case, square_of,
-    INTERPOLATION, TIE_CASES, WINDING_CASES,
+    assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped, bundled_ids,
+    record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
@@ -177,6 +177,28 @@ fn every_triangle_case_for_the_record() {
         return;
     }
     record_every_triangle_case(&Lavapipe, "lavapipe");
+}
+
+/// The prepared path the bench times draws what `rasterize` draws, and
+/// its draw draws into the targets as they stand: on overlapping triangles
+/// with depth and attributes in three interpolation modes (three draw
+/// calls), a fan, a culling case, two standard 4× cases, and the bench's
+/// own kind of scene.
+#[test]
+fn the_prepared_path_draws_what_rasterize_draws() {
+    if !available() {
+        return;
+    }
+    assert_prepared_draws_as_rasterize(
+        &Lavapipe,
+        &[
+            "triangles/interp_mixed_modes",
+            "triangles/fan_16_center",
+            "triangles/cull_cw_mixed_windings",
+            "antialias/probe_standard4",
+            "antialias/edge_slope_1_3_standard4",
+        ],
+    );
 }
 
 #[test]

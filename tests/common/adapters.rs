@@ -1,16 +1,19 @@
 //! Helpers the driver tests (`gl.rs`, `lavapipe.rs`) share: the bundled case
 //! ids of a family, and the sweeps every driver runs over bundled cases
 //! (each case held to a check, values within the bound, every triangle case
-//! for the record, refusing what it cannot express). Whether a driver is
-//! installed, and its own conventions, stay in its test file.
+//! for the record, refusing what it cannot express, the prepared path
+//! drawing what the whole call draws). Whether a driver is installed, and
+//! its own conventions, stay in its test file.
 
 use std::path::Path;
 
+use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::plan::Plan;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::Scene;
 
-use super::{case, inline, report, run};
+use super::{case, differences, inline, report, run};
 
 /// Tie cases (samples exactly on edges, shared edges, fan centres) written
 /// for top-left, that every driver is held to; each driver adds its own.
@@ -187,4 +190,112 @@ pub fn assert_eight_ties_change_hands(
         "{}",
         suite::describe(&r)
     );
+}
+
+/// The bench's triangle workload at a test's size: 200 random right
+/// triangles of legs 50 on a 256² canvas, many of them overlapping.
+pub fn bench_like_scene() -> Scene {
+    rastercheck::bench::triangle_scene(256, 50, 200, rastercheck::bench::SEED)
+}
+
+/// Where `got` departs from `expected`, named `what`: the first samples
+/// whose count or owner differ, or the value channels that differ; empty
+/// where the frames are equal.
+pub fn frame_departures(what: &str, expected: &Frame, got: &Frame) -> Vec<String> {
+    if (got.width, got.height, got.samples) != (expected.width, expected.height, expected.samples) {
+        return vec![format!(
+            "{what}: {}×{}×{} instead of {}×{}×{}",
+            got.width, got.height, got.samples, expected.width, expected.height, expected.samples
+        )];
+    }
+    let mut departures: Vec<String> = differences(expected, got, "prepared")
+        .into_iter()
+        .map(|d| format!("{what}: {d}"))
+        .collect();
+    if got.depth != expected.depth {
+        departures.push(format!("{what}: the depth differs"));
+    }
+    if got.attributes != expected.attributes {
+        departures.push(format!("{what}: the attributes differ"));
+    }
+    if got.resolved != expected.resolved {
+        departures.push(format!("{what}: the resolved coverage differs"));
+    }
+    departures
+}
+
+/// `candidate`'s prepared path (`Rasterizer::prepare`) draws what its
+/// whole call draws, on each bundled case of `ids` and on
+/// [`bench_like_scene`]: prepare → clear → draw → read back gives
+/// `rasterize`'s frame; a second draw without a clear doubles every
+/// coverage count and keeps the owners and values (the draw draws into the
+/// targets as they stand: a draw that cleared them would give the frame
+/// once, one that drew nothing would give it unchanged); and clear → draw
+/// gives the frame again (the clear empties every target). Each scene must
+/// draw something, and some sample must be covered twice, so that the
+/// counts are tested beyond 0 and 1.
+pub fn assert_prepared_draws_as_rasterize(candidate: &dyn Rasterizer, ids: &[&str]) {
+    let mut scenes: Vec<(&str, Scene)> = ids.iter().map(|&id| (id, case(id))).collect();
+    scenes.push(("bench triangles", bench_like_scene()));
+    let mut failures = Vec::new();
+    let mut overlapped = false;
+    for (id, scene) in &scenes {
+        let plan = Plan::for_scene(scene);
+        let whole = candidate
+            .rasterize(scene, &plan)
+            .unwrap_or_else(|e| panic!("{id}: rasterize: {e}"));
+        assert!(whole.covered_samples() > 0, "{id}: rasterize drew nothing");
+        overlapped |= whole.coverage.iter().any(|&c| c > 1);
+        let mut doubled = whole.clone();
+        doubled.coverage.iter_mut().for_each(|c| *c *= 2);
+        if doubled.resolved.is_some() {
+            doubled.resolve();
+        }
+
+        let mut prepared = candidate
+            .prepare(scene, &plan)
+            .unwrap_or_else(|| panic!("{id}: prepare covers no scene"))
+            .unwrap_or_else(|e| panic!("{id}: prepare: {e}"));
+        let mut read = |draws: usize, clear: bool| {
+            if clear {
+                prepared
+                    .clear()
+                    .unwrap_or_else(|e| panic!("{id}: clear: {e}"));
+            }
+            for _ in 0..draws {
+                prepared
+                    .draw()
+                    .unwrap_or_else(|e| panic!("{id}: draw: {e}"));
+            }
+            prepared
+                .read_back()
+                .unwrap_or_else(|e| panic!("{id}: read_back: {e}"))
+        };
+        let once = read(1, true);
+        let twice = read(1, false);
+        let again = read(1, true);
+        let departures = [
+            frame_departures("clear, draw", &whole, &once),
+            frame_departures("clear, draw, draw", &doubled, &twice),
+            frame_departures("clear, draw, draw, clear, draw", &whole, &again),
+        ]
+        .concat();
+        eprintln!(
+            "{:<5} {id}: {} samples covered, prepared path {}",
+            if departures.is_empty() {
+                "PASS"
+            } else {
+                "FAIL"
+            },
+            whole.covered_samples(),
+            if departures.is_empty() {
+                "equal"
+            } else {
+                "departs"
+            }
+        );
+        failures.extend(departures.into_iter().map(|d| format!("{id}: {d}")));
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(overlapped, "no scene covers a sample twice");
 }
