@@ -70,6 +70,36 @@ impl SampleTests {
     }
 }
 
+/// Adds one cover to every count of a run and makes `last` (index + 1)
+/// their last primitive: two passes the compiler vectorises, a saturating
+/// add and a fill. Where the processor has AVX2 the same code runs
+/// compiled for it, 32 bytes a store instead of SSE2's 16: filling spans
+/// is bound by stores.
+#[inline]
+pub fn cover_run(coverage: &mut [u16], last: &mut [u32], last_index: u32) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has AVX2, as just checked (a cached flag).
+        unsafe { cover_run_avx2(coverage, last, last_index) };
+        return;
+    }
+    cover_run_portable(coverage, last, last_index);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn cover_run_avx2(coverage: &mut [u16], last: &mut [u32], last_index: u32) {
+    cover_run_portable(coverage, last, last_index);
+}
+
+#[inline(always)]
+fn cover_run_portable(coverage: &mut [u16], last: &mut [u32], last_index: u32) {
+    for c in coverage.iter_mut() {
+        *c = c.saturating_add(1);
+    }
+    last.fill(last_index);
+}
+
 impl Frame {
     /// An empty single-sample frame with room for depth and attributes.
     pub fn new(width: u32, height: u32, depth: bool, attributes: usize) -> Frame {
@@ -188,6 +218,17 @@ impl Frame {
         self.last[i] = primitive as u32 + 1;
     }
 
+    /// Records that primitive `primitive` (0-based) covers samples
+    /// `from..to`: [`Frame::hit`] a run at a time ([`cover_run`]).
+    #[inline]
+    pub fn hit_run(&mut self, from: usize, to: usize, primitive: usize) {
+        cover_run(
+            &mut self.coverage[from..to],
+            &mut self.last[from..to],
+            primitive as u32 + 1,
+        );
+    }
+
     /// The box resolve of the samples: each pixel's coverage counts summed
     /// and divided by the sample count: a quotient of two small integers,
     /// rounded once.
@@ -197,6 +238,19 @@ impl Frame {
             .chunks(n)
             .map(|run| run.iter().map(|&c| u32::from(c)).sum::<u32>() as f64 / n as f64)
             .collect()
+    }
+
+    /// Empties every channel, keeping the frame's shape and its memory.
+    pub fn clear(&mut self) {
+        self.coverage.fill(0);
+        self.last.fill(0);
+        for channel in self.depth.iter_mut().chain(&mut self.attributes) {
+            channel.fill(0.0);
+        }
+        for channel in self.resolved.iter_mut().chain(&mut self.time) {
+            channel.fill(0.0);
+        }
+        self.sample_tests = None;
     }
 
     /// Fills `resolved` with the box resolve of the samples.

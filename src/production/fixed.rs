@@ -190,17 +190,64 @@ pub trait EdgeInt:
     + Sync
 {
     fn to_f64(self) -> f64;
+
+    /// The value as an i64, which it must fit (a pixel position).
+    fn to_i64(self) -> i64;
+
+    /// Euclidean quotient and remainder: `self = q·d + r` with
+    /// `0 ≤ r < |d|`.
+    fn div_rem_euclid(self, d: Self) -> (Self, Self);
 }
 
 impl EdgeInt for i64 {
     fn to_f64(self) -> f64 {
         self as f64
     }
+
+    #[inline]
+    fn to_i64(self) -> i64 {
+        self
+    }
+
+    #[inline]
+    fn div_rem_euclid(self, d: i64) -> (i64, i64) {
+        // One hardware division for both, then the remainder made
+        // non-negative (`div_euclid` and `rem_euclid` would divide twice).
+        let (q, r) = (self / d, self % d);
+        if r < 0 {
+            if d > 0 {
+                (q - 1, r + d)
+            } else {
+                (q + 1, r - d)
+            }
+        } else {
+            (q, r)
+        }
+    }
 }
 
 impl EdgeInt for i128 {
     fn to_f64(self) -> f64 {
         self as f64
+    }
+
+    #[inline]
+    fn to_i64(self) -> i64 {
+        i64::try_from(self).expect("a pixel position fits in i64")
+    }
+
+    #[inline]
+    fn div_rem_euclid(self, d: i128) -> (i128, i128) {
+        let (q, r) = (self / d, self % d);
+        if r < 0 {
+            if d > 0 {
+                (q - 1, r + d)
+            } else {
+                (q + 1, r - d)
+            }
+        } else {
+            (q, r)
+        }
     }
 }
 

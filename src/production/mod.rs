@@ -34,8 +34,10 @@ pub mod foils;
 pub mod line;
 pub mod motion;
 pub mod mutants;
+mod placed;
 pub mod polygon;
 pub mod setup;
+mod sweep;
 pub mod tiled;
 pub mod traverse;
 mod triangle;
@@ -45,8 +47,9 @@ use fixed::{EdgeInt, Fixed, Format};
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{LastPixel, LineRule, Number, Primitive, Scene};
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::scene::{Number, Primitive, Scene};
+use placed::{Placed, PreparedFrame};
 
 /// A production method that is a rasterizer of its own (a polygon fill, an
 /// antialiasing method), by its command-line name.
@@ -89,6 +92,23 @@ impl Rasterizer for Production {
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         rasterize_with(scene, plan, Sampling::for_plan(plan))
     }
+
+    /// Any scene without motion: placed once, drawn into one frame.
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        if plan.motion.is_some() {
+            return None;
+        }
+        Some(
+            Placed::new(scene, plan, Sampling::for_plan(plan), |_| true).map(|placed| {
+                let frame = placed.empty_frame();
+                Box::new(PreparedFrame { placed, frame }) as Box<dyn Prepared>
+            }),
+        )
+    }
 }
 
 /// Production's rasterizer with the antialiased scenes' samples decided by
@@ -114,55 +134,10 @@ pub(crate) fn draw_frame(
     sampling: Sampling,
     keep: impl Fn(usize) -> bool,
 ) -> Result<Frame, RasterError> {
-    debug_assert!(plan.motion.is_none());
-    let samples = plan
-        .antialias
-        .as_ref()
-        .map(|plan| Samples { plan, sampling });
-    let format = format_for(scene, samples.as_ref())?;
-    let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
-    if samples.is_none() && !plan.interpolates() {
-        if let Some(lines) = coverage_midpoint_lines(scene, format, &keep) {
-            line::midpoint_lines(&lines, format, scene.canvas, &mut frame);
-            return Ok(frame);
-        }
-    }
-    if format.fits_i64() {
-        draw::<i64>(scene, plan, format, samples.as_ref(), &keep, &mut frame)?;
-    } else {
-        draw::<i128>(scene, plan, format, samples.as_ref(), &keep, &mut frame)?;
-    }
-    if samples.is_some() {
-        frame.resolve();
-    }
+    let placed = Placed::new(scene, plan, sampling, keep)?;
+    let mut frame = placed.empty_frame();
+    placed.draw(&mut frame)?;
     Ok(frame)
-}
-
-/// The primitives `keep` selects, when every one is a `midpoint` line:
-/// drawn coverage only, they go band by band ([`line::midpoint_lines`]).
-fn coverage_midpoint_lines(
-    scene: &Scene,
-    format: Format,
-    keep: &impl Fn(usize) -> bool,
-) -> Option<Vec<(usize, line::Geometry, LastPixel)>> {
-    let mut lines = Vec::new();
-    for (index, primitive) in scene.primitives.iter().enumerate() {
-        if !keep(index) {
-            continue;
-        }
-        let Primitive::Line(l) = primitive else {
-            return None;
-        };
-        if l.rule != LineRule::Midpoint {
-            return None;
-        }
-        let ends = l
-            .vertices
-            .each_ref()
-            .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]);
-        lines.push((index, line::Geometry::new(ends), l.last_pixel));
-    }
-    Some(lines)
 }
 
 /// The fixed-point format production draws `scene` in: the snapping grid
@@ -195,56 +170,6 @@ pub(crate) fn place(scene: &Scene, format: Format, n: &Number) -> Fixed {
             .exact(n)
             .expect("format_for checked every coordinate"),
     }
-}
-
-fn draw<E: EdgeInt>(
-    scene: &Scene,
-    plan: &Plan,
-    format: Format,
-    samples: Option<&Samples>,
-    keep: &impl Fn(usize) -> bool,
-    frame: &mut Frame,
-) -> Result<(), RasterError> {
-    let offsets = samples.map(|s| s.offsets_in(format));
-    let target = Target {
-        canvas: scene.canvas,
-        rows_from: 0,
-    };
-    for (index, primitive) in scene.primitives.iter().enumerate() {
-        if index % 64 == 0 {
-            // The per-case time limit, polled every few primitives.
-            crate::deadline::check();
-        }
-        if !keep(index) {
-            continue;
-        }
-        let points = match primitive {
-            Primitive::Triangle(t) => t
-                .vertices
-                .each_ref()
-                .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]),
-            Primitive::Line(l) => {
-                let [a, b] = l
-                    .vertices
-                    .each_ref()
-                    .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]);
-                [a, b, b]
-            }
-            Primitive::Polygon(_) => [[Fixed(0); 2]; 3],
-        };
-        draw_primitive::<E>(
-            scene,
-            plan,
-            format,
-            samples,
-            offsets.as_deref(),
-            index,
-            points,
-            target,
-            frame,
-        )?;
-    }
-    Ok(())
 }
 
 /// Where a primitive is drawn: into a frame of `canvas`'s size holding the

@@ -21,12 +21,11 @@ use rayon::prelude::*;
 
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
-use super::setup::{self, Footprint};
-use super::traverse::{self, Sink};
+use super::sweep::{band_rows, sweep, Rows};
 use super::{draw_primitive, format_for, place, Production, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{Canvas, Primitive, Scene};
 
 /// Pixel rows per band: small enough that two threads share even a small
@@ -56,37 +55,13 @@ impl Rasterizer for Tiled {
             // Production's time loop, whose rows run on the current pool.
             return Production.rasterize(scene, plan);
         }
-        if scene.has_polygons() || i64::from(scene.canvas.height) > SAFE {
+        let Some((samples, format, points)) = placed(scene, plan)? else {
             return Production.rasterize(scene, plan);
-        }
-        let sampling = Sampling::for_plan(plan);
-        let samples = plan
-            .antialias
-            .as_ref()
-            .map(|plan| Samples { plan, sampling });
-        let format = format_for(scene, samples.as_ref())?;
-        // Place every vertex (the costly part for small triangles) in
-        // parallel; a line's second end is repeated.
-        let points: Vec<[[Fixed; 2]; 3]> = scene
-            .primitives
-            .par_iter()
-            .map(|p| {
-                let at = |v: &crate::scene::Vertex| {
-                    [place(scene, format, &v.x), place(scene, format, &v.y)]
-                };
-                match p {
-                    Primitive::Triangle(t) => t.vertices.each_ref().map(at),
-                    Primitive::Line(l) => {
-                        let [a, b] = l.vertices.each_ref().map(at);
-                        [a, b, b]
-                    }
-                    Primitive::Polygon(_) => unreachable!("polygons are drawn by production"),
-                }
-            })
-            .collect();
-        let limit = SAFE * format.one();
-        if points.iter().flatten().flatten().any(|c| c.0.abs() > limit) {
-            return Production.rasterize(scene, plan);
+        };
+        if swept(scene, plan) {
+            let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+            draw_swept(scene, format, &points, &mut frame);
+            return Ok(frame);
         }
         // One bit of integer range more than production's: a band moves
         // vertices by up to the canvas's height.
@@ -95,6 +70,105 @@ impl Rasterizer for Tiled {
         } else {
             draw::<i128>(scene, plan, format, samples.as_ref(), &points)
         }
+    }
+
+    /// Coverage-only triangle scenes, the sweep's: placed once, drawn into
+    /// one frame.
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        if plan.motion.is_some() || !swept(scene, plan) {
+            return None;
+        }
+        let (_, format, points) = match placed(scene, plan) {
+            Ok(Some(placed)) => placed,
+            Ok(None) => return None,
+            Err(e) => return Some(Err(e)),
+        };
+        let frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+        Some(Ok(Box::new(PreparedSweep {
+            scene,
+            format,
+            points,
+            frame,
+        })))
+    }
+}
+
+/// Whether a scene is drawn by the sweep: triangles only, coverage only,
+/// one sample per pixel.
+fn swept(scene: &Scene, plan: &Plan) -> bool {
+    plan.antialias.is_none()
+        && !plan.interpolates()
+        && scene
+            .primitives
+            .iter()
+            .all(|p| matches!(p, Primitive::Triangle(_)))
+}
+
+/// The scene's samples, format and every primitive's vertices in it (a
+/// line's second end repeated), placed in parallel (the costly part for
+/// small triangles); `None` for a scene production draws alone.
+#[allow(clippy::type_complexity)]
+fn placed<'a>(
+    scene: &'a Scene,
+    plan: &'a Plan,
+) -> Result<Option<(Option<Samples<'a>>, Format, Vec<[[Fixed; 2]; 3]>)>, RasterError> {
+    if scene.has_polygons() || i64::from(scene.canvas.height) > SAFE {
+        return Ok(None);
+    }
+    let sampling = Sampling::for_plan(plan);
+    let samples = plan
+        .antialias
+        .as_ref()
+        .map(|plan| Samples { plan, sampling });
+    let format = format_for(scene, samples.as_ref())?;
+    let points: Vec<[[Fixed; 2]; 3]> = scene
+        .primitives
+        .par_iter()
+        .map(|p| {
+            let at =
+                |v: &crate::scene::Vertex| [place(scene, format, &v.x), place(scene, format, &v.y)];
+            match p {
+                Primitive::Triangle(t) => t.vertices.each_ref().map(at),
+                Primitive::Line(l) => {
+                    let [a, b] = l.vertices.each_ref().map(at);
+                    [a, b, b]
+                }
+                Primitive::Polygon(_) => unreachable!("polygons are drawn by production"),
+            }
+        })
+        .collect();
+    let limit = SAFE * format.one();
+    if points.iter().flatten().flatten().any(|c| c.0.abs() > limit) {
+        return Ok(None);
+    }
+    Ok(Some((samples, format, points)))
+}
+
+/// The sweep's draw with the scene placed once and one frame reused.
+struct PreparedSweep<'a> {
+    scene: &'a Scene,
+    format: Format,
+    points: Vec<[[Fixed; 2]; 3]>,
+    frame: Frame,
+}
+
+impl Prepared for PreparedSweep<'_> {
+    fn clear(&mut self) -> Result<(), RasterError> {
+        self.frame.clear();
+        Ok(())
+    }
+
+    fn draw(&mut self) -> Result<(), RasterError> {
+        draw_swept(self.scene, self.format, &self.points, &mut self.frame);
+        Ok(())
+    }
+
+    fn read_back(&mut self) -> Result<Frame, RasterError> {
+        Ok(self.frame.clone())
     }
 }
 
@@ -158,14 +232,6 @@ fn draw<E: EdgeInt>(
         }
     }
     let mut frame = Frame::for_plan(canvas.width, canvas.height, plan);
-    let triangles_only = scene
-        .primitives
-        .iter()
-        .all(|p| matches!(p, Primitive::Triangle(_)));
-    if samples.is_none() && !plan.interpolates() && triangles_only {
-        draw_coverage::<E>(scene, plan, format, points, &bins, &mut frame);
-        return Ok(frame);
-    }
     let offsets = samples.map(|s| s.offsets_in(format));
     let width = canvas.width as usize;
     let slots = width * BAND as usize * frame.samples as usize;
@@ -253,80 +319,40 @@ fn draw<E: EdgeInt>(
     Ok(frame)
 }
 
-/// Coverage-only triangles, the common case: each band's traversal writes
-/// straight into its rows of the frame, with nothing to copy.
-fn draw_coverage<E: EdgeInt>(
-    scene: &Scene,
-    plan: &Plan,
-    format: Format,
-    points: &[[[Fixed; 2]; 3]],
-    bins: &[Vec<u32>],
-    frame: &mut Frame,
-) {
+/// Coverage-only triangles, the common case: the frame cut into regions of
+/// whole sweep bands, each swept on its own ([`sweep`]) straight into its
+/// rows of the frame. A triangle is set up once in every region it
+/// reaches; more regions than threads keep both threads busy to the end.
+fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: &mut Frame) {
     let canvas = scene.canvas;
     let width = canvas.width as usize;
-    let rows = (width * BAND as usize).max(1);
+    let placed: Vec<(usize, [[Fixed; 2]; 3])> = points.iter().copied().enumerate().collect();
+    let band = band_rows(canvas.width) as usize;
+    let threads = rayon::current_num_threads().max(1);
+    let bands = (canvas.height as usize).div_ceil(band);
+    let region = band * bands.div_ceil(REGIONS_PER_THREAD * threads).max(1);
+    let slots = (width * region).max(1);
     frame
         .coverage
-        .par_chunks_mut(rows)
-        .zip(frame.last.par_chunks_mut(rows))
+        .par_chunks_mut(slots)
+        .zip(frame.last.par_chunks_mut(slots))
         .enumerate()
-        .for_each(|(b, (coverage, last))| {
-            let rows_from = b as u32 * BAND;
-            let band_canvas = Canvas {
-                width: canvas.width,
-                height: BAND.min(canvas.height - rows_from),
-            };
-            let shift = i64::from(rows_from) * format.one();
-            let mut sink = BandSink {
+        .with_max_len(1)
+        .for_each(|(r, (coverage, last))| {
+            let rows = Rows {
                 coverage,
                 last,
                 width,
-                index: 0,
+                rows_from: (r * region) as i64,
             };
-            for &p in &bins[b] {
-                let p = p as usize;
-                let Primitive::Triangle(triangle) = &scene.primitives[p] else {
-                    continue;
-                };
-                let moved = points[p].map(|[x, y]| [x, Fixed(y.0 - shift)]);
-                let Some(setup) = setup::setup_in::<E>(
-                    moved,
-                    triangle,
-                    format,
-                    scene.rules.fill_rule,
-                    scene.rules.cull,
-                    band_canvas,
-                    plan,
-                    |_, _| None,
-                    Footprint::Centres,
-                ) else {
-                    continue;
-                };
-                sink.index = p as u32 + 1;
-                traverse::traverse(&setup, &mut sink);
+            // The sweep moves no vertex: production's integers suffice.
+            if format.fits_i64() {
+                sweep::<i64>(scene, format, &placed, rows);
+            } else {
+                sweep::<i128>(scene, format, &placed, rows);
             }
         });
 }
 
-/// Writes covered pixels into one band's rows of the coverage and
-/// last-primitive buffers, as `Frame::hit` does.
-struct BandSink<'a> {
-    coverage: &'a mut [u16],
-    last: &'a mut [u32],
-    width: usize,
-    /// The primitive, 1-based.
-    index: u32,
-}
-
-impl Sink for BandSink<'_> {
-    #[inline]
-    fn span(&mut self, y: i64, x0: i64, x1: i64) {
-        let row = y as usize * self.width;
-        let run = row + x0 as usize..row + x1 as usize;
-        for c in &mut self.coverage[run.clone()] {
-            *c = c.saturating_add(1);
-        }
-        self.last[run].fill(self.index);
-    }
-}
+/// Regions per thread of the coverage-only sweep.
+const REGIONS_PER_THREAD: usize = 4;

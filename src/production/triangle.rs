@@ -68,12 +68,19 @@ struct FrameSink<'a, E> {
 }
 
 impl<E: EdgeInt> Sink for FrameSink<'_, E> {
+    #[inline]
+    fn ahead(&mut self, y: i64, x0: i64, x1: i64) {
+        let row = y as usize * self.frame.width as usize;
+        let run = row + x0 as usize..row + x1 as usize;
+        traverse::prefetch(&self.frame.coverage[run.clone()]);
+        traverse::prefetch(&self.frame.last[run]);
+    }
+
     fn span(&mut self, y: i64, x0: i64, x1: i64) {
         let width = self.frame.width as usize;
         let row = y as usize * width;
-        for x in x0..x1 {
-            self.frame.hit(row + x as usize, self.index);
-        }
+        self.frame
+            .hit_run(row + x0 as usize, row + x1 as usize, self.index);
         if matches!(self.setup.shading, Shading::None) {
             return;
         }

@@ -16,8 +16,8 @@
 //! negative at all four means every sample is strictly outside. Only the
 //! remaining pixels, which an edge touches, are tested sample by sample,
 //! and the mask is the same as full supersampling's. The same test on an
-//! 8 × 8 block's square first ([`super::traverse::BLOCK`], as traversal
-//! does) settles whole blocks without looking at their pixels. Covered
+//! 8 × 8 block's square first ([`BLOCK`]) settles whole blocks without
+//! looking at their pixels. Covered
 //! pixels still have every sample written (depth and attributes are per
 //! sample), so the cost of the tests grows with the edge pixels, that of
 //! the writes with the area. A non-strict
@@ -34,12 +34,14 @@ pub mod resolve;
 
 use super::fixed::{EdgeInt, Format};
 use super::setup::{Shading, TriangleSetup};
-use super::traverse::BLOCK;
 use super::Method;
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
+
+/// Side of a square block of pixels settled from its corners, in pixels.
+pub const BLOCK: i64 = 8;
 
 /// The antialiasing methods that are rasterizers of their own.
 pub fn methods() -> Vec<Method> {

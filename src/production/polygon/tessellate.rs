@@ -225,8 +225,7 @@ impl Coverage<'_> {
 impl Sink for Coverage<'_> {
     fn span(&mut self, y: i64, x0: i64, x1: i64) {
         let row = y as usize * self.frame.width as usize;
-        for x in x0 as usize..x1 as usize {
-            self.frame.hit(row + x, self.index);
-        }
+        self.frame
+            .hit_run(row + x0 as usize, row + x1 as usize, self.index);
     }
 }
