@@ -110,7 +110,7 @@ pub trait Rasterizer: Send + Sync {
 /// uploaded, and its targets allocated: the set-up a real application
 /// does once. The bench times [`Prepared::draw`] as the method's own work,
 /// and the set-up and [`Prepared::read_back`] apart from it.
-pub trait Prepared {
+pub trait Prepared: Send {
     /// Empties the targets. Untimed, between draws.
     fn clear(&mut self) -> Result<(), RasterError>;
 
@@ -126,4 +126,16 @@ pub trait Prepared {
     /// that the owners agree with the whole call's, so the draw it timed is
     /// the one it judged.
     fn read_back(&mut self) -> Result<Frame, RasterError>;
+}
+
+/// A frame from a buffer of each pixel's last primitive (index + 1, 0 where
+/// none), as a prepared draw into a colour target reads back: `last` is
+/// the buffer, and every covered pixel counts one cover.
+pub fn owners_frame(width: u32, height: u32, owners: &[u32]) -> Frame {
+    let mut frame = Frame::new(width, height, false, 0);
+    frame.last.copy_from_slice(owners);
+    for (count, &owner) in frame.coverage.iter_mut().zip(owners) {
+        *count = u16::from(owner > 0);
+    }
+    frame
 }

@@ -37,15 +37,16 @@
 //! one sample per pixel.
 
 use dashu_ratio::RBig;
+use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
 use euc::{DepthStrategy, Interpolate, Pipeline, Target};
 
 use super::float_input::{culled, f32_of, single_sample, snapped_triangle, to_f32, triangles_only};
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{owners_frame, Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::rules::limits::MAX_ATTRIBUTES;
-use crate::scene::{Interpolation, Scene};
+use crate::scene::{Interpolation, Scene, Triangle};
 
 /// euc 0.5.3's triangle rasterizer.
 pub struct Euc;
@@ -156,32 +157,12 @@ impl Rasterizer for Euc {
         let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
         let mut color = Recorder::new(width, height, Varyings::default());
         let mut depth = Recorder::new(width, height, f32::INFINITY);
-        let (w_canvas, h_canvas) = (RBig::from(width), RBig::from(height));
-        let two = RBig::from(2u8);
-        for (index, triangle) in scene.triangles() {
-            let exact = snapped_triangle(triangle, scene.rules.subpixel_bits);
-            if culled(&exact, scene.rules.cull) {
-                continue;
-            }
-            let perspective = triangle.interpolation == Interpolation::Perspective;
+        for (index, triangle, clips) in clip_triangles(scene) {
             let vertices: Vec<Vertex> = triangle
                 .vertices
                 .iter()
-                .zip(&exact)
-                .map(|(v, [x, y])| {
-                    let w = if perspective {
-                        v.w.as_rbig().clone()
-                    } else {
-                        RBig::ONE
-                    };
-                    let x_ndc = &two * x / &w_canvas - RBig::ONE;
-                    let y_ndc = RBig::ONE - &two * y / &h_canvas;
-                    let clip = [
-                        to_f32(&(x_ndc * &w)),
-                        to_f32(&(y_ndc * &w)),
-                        to_f32(&(v.z.as_rbig() * &w)),
-                        to_f32(&w),
-                    ];
+                .zip(clips)
+                .map(|(v, clip)| {
                     let mut values = Varyings::default();
                     for (slot, a) in values.0.iter_mut().zip(&v.attributes) {
                         *slot = f32_of(a);
@@ -224,5 +205,132 @@ impl Rasterizer for Euc {
             }
         }
         Ok(frame)
+    }
+
+    /// Coverage-only scenes: every triangle in one `Pipeline::draw` call
+    /// into a reused `Buffer2d` of primitive numbers, with no depth buffer.
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        if plan.interpolates() {
+            return None;
+        }
+        let ready = || -> Result<Box<dyn Prepared>, RasterError> {
+            triangles_only(scene, "euc")?;
+            single_sample(plan, "euc")?;
+            let vertices = clip_triangles(scene)
+                .flat_map(|(index, _, clips)| clips.map(|clip| (clip, index as u32 + 1)))
+                .collect();
+            let size = [scene.canvas.width as usize, scene.canvas.height as usize];
+            Ok(Box::new(PreparedDraw {
+                vertices,
+                target: Buffer2d::new(size, 0),
+            }))
+        };
+        Some(ready())
+    }
+}
+
+/// Each drawn triangle (culled ones left out) with its vertices' clip
+/// positions: snapped exactly to the case's grid, mapped to NDC and scaled
+/// by w, each rounded once to f32.
+fn clip_triangles(scene: &Scene) -> impl Iterator<Item = (usize, &Triangle, [[f32; 4]; 3])> {
+    let (w_canvas, h_canvas) = (
+        RBig::from(scene.canvas.width),
+        RBig::from(scene.canvas.height),
+    );
+    let two = RBig::from(2u8);
+    scene.triangles().filter_map(move |(index, triangle)| {
+        let exact = snapped_triangle(triangle, scene.rules.subpixel_bits);
+        if culled(&exact, scene.rules.cull) {
+            return None;
+        }
+        let perspective = triangle.interpolation == Interpolation::Perspective;
+        let clips = std::array::from_fn(|k| {
+            let (v, [x, y]) = (&triangle.vertices[k], &exact[k]);
+            let w = if perspective {
+                v.w.as_rbig().clone()
+            } else {
+                RBig::ONE
+            };
+            let x_ndc = &two * x / &w_canvas - RBig::ONE;
+            let y_ndc = RBig::ONE - &two * y / &h_canvas;
+            [
+                to_f32(&(x_ndc * &w)),
+                to_f32(&(y_ndc * &w)),
+                to_f32(&(v.z.as_rbig() * &w)),
+                to_f32(&w),
+            ]
+        });
+        Some((index, triangle, clips))
+    })
+}
+
+/// A primitive's number (index + 1), the same at its three vertices, so
+/// interpolating it gives it back unchanged.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Number(u32);
+
+impl Interpolate for Number {
+    fn lerp2(a: Self, _: Self, _: f32, _: f32) -> Self {
+        a
+    }
+
+    fn lerp3(a: Self, _: Self, _: Self, _: f32, _: f32, _: f32) -> Self {
+        a
+    }
+}
+
+/// The coverage-only pipeline: the fragment is its primitive's number.
+struct NumberPipeline;
+
+impl Pipeline for NumberPipeline {
+    type Vertex = ([f32; 4], u32);
+    type VsOut = Number;
+    type Pixel = u32;
+
+    fn vert(&self, vertex: &([f32; 4], u32)) -> ([f32; 4], Number) {
+        (vertex.0, Number(vertex.1))
+    }
+
+    fn frag(&self, number: &Number) -> u32 {
+        number.0
+    }
+
+    fn get_depth_strategy(&self) -> DepthStrategy {
+        DepthStrategy::None
+    }
+}
+
+/// euc's draw call with the vertices converted once and its target reused.
+struct PreparedDraw {
+    vertices: Vec<([f32; 4], u32)>,
+    target: Buffer2d<u32>,
+}
+
+impl Prepared for PreparedDraw {
+    fn clear(&mut self) -> Result<(), RasterError> {
+        self.target.clear(0);
+        Ok(())
+    }
+
+    fn draw(&mut self) -> Result<(), RasterError> {
+        NumberPipeline.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+            &self.vertices,
+            &mut self.target,
+            None,
+        );
+        Ok(())
+    }
+
+    fn read_back(&mut self) -> Result<Frame, RasterError> {
+        let [width, height] = self.target.size();
+        Ok(owners_frame(
+            width as u32,
+            height as u32,
+            self.target.as_ref(),
+        ))
     }
 }
