@@ -113,7 +113,9 @@ impl Declared {
                 coverage_error: None,
                 exact: true,
                 peak_heap,
-                empty_frame: None,
+                whole_call: None,
+                set_up: None,
+                read_back: None,
                 note: match (frame, k) {
                     (Err(why), _) => why,
                     (Ok(_), 0) => format!("production on this scene, drawn in turn with `{DECLARED}`"),

@@ -89,7 +89,9 @@ pub(super) fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload 
             coverage_error: None,
             exact: k == 0,
             peak_heap: peaks[k],
-            empty_frame: None,
+            whole_call: None,
+            set_up: None,
+            read_back: None,
             note: if k == 0 {
                 "error against the reference".to_owned()
             } else {

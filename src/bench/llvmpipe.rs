@@ -1,13 +1,9 @@
 //! llvmpipe behind a GPU API (`lavapipe`, `gl`): which methods are drivers,
-//! their marginal cost above the fixed per-frame cost, and
-//! `LP_NUM_THREADS`, pinned to one rasterizer thread before any driver
+//! and `LP_NUM_THREADS`, pinned to one rasterizer thread before any driver
 //! starts. The llvmpipe targets are judged in `targets.rs`.
 
-use super::model::Measured;
-
 /// Whether a method is llvmpipe behind a GPU API: warmed up before the
-/// rounds (its device, context and pipelines are created on first use) and
-/// also timed on an empty canvas, for its marginal cost.
+/// rounds (its device, context and pipelines are created on first use).
 pub(super) fn is_driver(name: &str) -> bool {
     DRIVERS.iter().any(|(n, _)| *n == name)
 }
@@ -17,20 +13,6 @@ pub const DRIVERS: [(&str, &str); 2] = [
     ("lavapipe", "lavapipe (Vulkan) through wgpu"),
     ("gl", "Mesa's OpenGL through EGL surfaceless"),
 ];
-
-/// The name of a driver's marginal row.
-pub fn marginal_name(driver: &str) -> String {
-    format!("{driver}, marginal")
-}
-
-/// The time per item above a method's fixed per-frame cost:
-/// (its frame − the same call on an empty canvas) / items, in seconds.
-/// `None` when not measured or not above the noise (≤ 0).
-pub fn marginal_per_item(m: &Measured) -> Option<f64> {
-    let full = m.per_item?.as_secs_f64();
-    let empty = m.empty_frame?.as_secs_f64() / m.timed_items.max(1) as f64;
-    (full > empty).then_some(full - empty)
-}
 
 /// The command that measures the llvmpipe rows.
 pub const LLVMPIPE_COMMAND: &str = "cargo run --release --features lavapipe,gl -- bench";

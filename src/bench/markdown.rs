@@ -91,12 +91,24 @@ impl Report {
             } else {
                 "Mtri/s"
             };
+            // Workloads whose methods have draw calls timed apart show the
+            // whole call and the adapter's overhead beside them.
+            let calls = w.methods.iter().any(|m| m.whole_call.is_some());
+            let (time_head, call_heads, call_rule) = if calls {
+                (
+                    "draw call per item",
+                    " whole call per item | adapter overhead |",
+                    "---|---|",
+                )
+            } else {
+                ("time per item", "", "")
+            };
             let _ = writeln!(
                 md,
-                "| method | time per item | {per_second} | Mpix/s | × `{}` | error ({}) | peak heap | note |",
+                "| method | {time_head} | {per_second} | Mpix/s | × `{}` |{call_heads} error ({}) | peak heap | note |",
                 w.baseline, w.error_unit
             );
-            let _ = writeln!(md, "|---|---|---|---|---|---|---|---|");
+            let _ = writeln!(md, "|---|---|---|---|---|{call_rule}---|---|---|");
             for m in &w.methods {
                 let (time, rate, mpix) = match m.per_item {
                     Some(d) if d.as_nanos() > 0 => {
@@ -127,9 +139,19 @@ impl Report {
                     (None, Some(_)) if !self.memory_counted => "not measured".to_owned(),
                     (None, _) => "—".to_owned(),
                 };
+                let call_cells = match (calls, m.whole_call, m.overhead()) {
+                    (false, _, _) => String::new(),
+                    (true, Some(whole), Some(overhead)) => format!(
+                        " {} | {} ({:.0}%) |",
+                        time_text(whole),
+                        time_text(overhead),
+                        100.0 * overhead.as_secs_f64() / whole.as_secs_f64().max(1e-12)
+                    ),
+                    (true, _, _) => " — | — |".to_owned(),
+                };
                 let _ = writeln!(
                     md,
-                    "| `{}` | {time} | {rate} | {mpix} | {ratio} | {error} | {heap} | {} |",
+                    "| `{}` | {time} | {rate} | {mpix} | {ratio} |{call_cells} {error} | {heap} | {} |",
                     m.method, m.note
                 );
             }
@@ -142,6 +164,31 @@ impl Report {
              mean length). Triangle errors are samples whose coverage count or last primitive \
              differs from the exact reference's frame for the whole workload, out of the \
              reference's covered samples (counted with multiplicity).\n"
+        );
+        let _ = writeln!(md, "## How each method is timed\n");
+        let _ = writeln!(
+            md,
+            "As Blend2D's `bl_bench` does: every method draws the same seeded shapes on the \
+             same canvas; each is warmed up before the rounds (a driver creates its device and \
+             pipelines then); the methods take turns in interleaved rounds, so that drift in \
+             the machine's speed hits them alike; each figure is the median of the rounds; \
+             and each claim is a ratio between methods measured side by side, per size.\n"
+        );
+        let _ = writeln!(
+            md,
+            "A method is timed at its own work. Where it has a draw call apart from its \
+             adapter (`Rasterizer::prepare`), the scene is converted into the method's own \
+             input once (production: vertices snapped into its fixed point; tiny-skia: paths \
+             built; euc: clip-space vertices; a driver: its vertex stream uploaded), its \
+             targets are allocated once and cleared before each draw, untimed, and only the \
+             draw is timed: every triangle into the targets as they stand, and for a driver \
+             from submission to the fence. Read-back is timed apart. The frame each draw call \
+             reads back must name the same last primitive at every sample as the whole call \
+             that was judged (each row's note says so). “×” compares draw calls with draw \
+             calls, and whole calls with whole calls where a row has no draw call apart; the \
+             whole call (`Rasterizer::rasterize`: conversion, upload, draw, read-back into a \
+             new frame) and the adapter's overhead, whole call minus draw call, have columns \
+             of their own.\n"
         );
         let _ = writeln!(md, "## Performance targets\n");
         let _ = writeln!(md, "| target | measured | status | note |");
@@ -164,13 +211,10 @@ impl Report {
         }
         let _ = writeln!(
             md,
-            "- Adapters (tiny-skia, euc, and lavapipe and gl where built in) are timed through \
-             rastercheck's adapters: converting the scene and reading their pixels back into a \
-             frame is included. The llvmpipe adapters create their device (or EGL context) and \
-             pipelines once per process, on an untimed first draw; every timed call still \
-             builds the vertex stream, uploads it, allocates and clears the targets, draws, \
-             copies them back and fills a frame. Their `, marginal` rows subtract the same \
-             call on the same canvas with no triangles."
+            "- Adapters (tiny-skia, euc, and lavapipe and gl where built in) have their whole \
+             call through rastercheck's adapter timed too (converting the scene, and reading \
+             their pixels back into a frame); the llvmpipe adapters create their device (or \
+             EGL context) and pipelines once per process, on an untimed first draw."
         );
         let _ = writeln!(
             md,

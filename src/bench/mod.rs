@@ -9,10 +9,12 @@
 //! One file a stage, in the order a run crosses them: `sizes.rs` (how big a
 //! run is), `workloads.rs` (the seeded scenes), `foils.rs` and `methods.rs`
 //! (what is measured), `timing.rs` (medians, pools, the parallel ceiling),
+//! `draw_call.rs` (a method's own draw call, timed apart from its adapter),
 //! one file per workload family (`triangles.rs` with `declared.rs`,
 //! `lines.rs`, `antialias.rs`, `motion.rs` with `translation.rs`), scored by
 //! `score.rs`; `llvmpipe.rs` and `machine.rs` (the drivers and the machine),
-//! `targets.rs` (judging), then the writers `markdown.rs` and `chart.rs`
+//! `suite.rs` (the bundled cases through production), `targets.rs`
+//! (judging), then the writers `markdown.rs` and `chart.rs`
 //! (with `text.rs`), all from the result model in `model.rs`. Peak heap is
 //! `memory.rs`'s counting allocator.
 
@@ -22,6 +24,7 @@ use std::time::Instant;
 mod antialias;
 mod chart;
 mod declared;
+mod draw_call;
 mod foils;
 mod lines;
 mod llvmpipe;
@@ -33,6 +36,7 @@ mod model;
 mod motion;
 mod score;
 mod sizes;
+mod suite;
 mod targets;
 mod text;
 mod timing;
@@ -42,7 +46,7 @@ mod workloads;
 
 pub use declared::{DECLARED, PAIRED};
 pub use foils::{NaiveBbox, PlainMidpoint};
-pub use llvmpipe::{lp_num_threads, marginal_name, marginal_per_item, DRIVERS, LLVMPIPE_COMMAND};
+pub use llvmpipe::{lp_num_threads, DRIVERS, LLVMPIPE_COMMAND};
 pub use methods::{triangle_methods, MOTION_BASELINE};
 pub use model::{Measured, Report, Target, Workload};
 pub use score::time_error;
@@ -141,8 +145,15 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
     let (leg, count, _) = sizes.motion;
     progress(&format!("motion blur: {count} moving triangles, L={leg}"));
     workloads.push(measure_motion(&sizes, &mut notes));
+    progress("the bundled suite through production");
+    let suite = suite::measure_suite(sizes.repetitions);
     let (machine, cores) = machine();
-    let targets = targets(&workloads, options.quick, lp_num_threads.as_ref());
+    let targets = targets(
+        &workloads,
+        options.quick,
+        lp_num_threads.as_ref(),
+        suite.as_ref(),
+    );
     Report {
         quick: options.quick,
         machine,

@@ -9,9 +9,23 @@ use std::time::Duration;
 #[derive(Clone, Debug)]
 pub struct Measured {
     pub method: String,
-    /// Median time per item (triangle or line); `None` when the method could
-    /// not run, with the reason in `note`.
+    /// Median time per item (triangle or line) of the method's own work:
+    /// its draw call alone where it has one ([`Prepared::draw`], see
+    /// `whole_call`), else the whole call. `None` when the method could not
+    /// run, with the reason in `note`.
+    ///
+    /// [`Prepared::draw`]: crate::rasterizer::Prepared::draw
     pub per_item: Option<Duration>,
+    /// Where `per_item` is the draw call alone: the median time per item of
+    /// the whole call (`Rasterizer::rasterize`: converting the scene,
+    /// uploading it, drawing, reading a frame back). The difference is the
+    /// adapter's overhead.
+    pub whole_call: Option<Duration>,
+    /// Where `per_item` is the draw call alone: the set-up of one frame
+    /// (converting the scene and, for a driver, uploading it) and the
+    /// median read-back of one frame, each timed apart from the draw.
+    pub set_up: Option<Duration>,
+    pub read_back: Option<Duration>,
     /// Items the timing was taken on.
     pub timed_items: usize,
     /// Mismatched samples (triangles) or lines whose pixel set differs
@@ -24,24 +38,38 @@ pub struct Measured {
     /// Peak heap bytes of one extra, untimed run (see
     /// [`memory`](super::memory)); `None` when not measured.
     pub peak_heap: Option<u64>,
-    /// The same call's median time for the whole frame on the same canvas
-    /// with no primitives: its fixed per-frame cost, where measured.
-    pub empty_frame: Option<Duration>,
     pub note: String,
 }
 
 impl Measured {
+    /// A row timed on its whole call only, nothing of it measured yet.
+    pub(super) fn whole(method: &str, per_item: Duration, timed_items: usize) -> Measured {
+        Measured {
+            per_item: Some(per_item),
+            timed_items,
+            note: String::new(),
+            ..Measured::not_run(method, String::new())
+        }
+    }
+
+    /// The adapter's overhead per item: the whole call minus the draw.
+    pub fn overhead(&self) -> Option<Duration> {
+        Some(self.whole_call?.saturating_sub(self.per_item?))
+    }
+
     /// A method that could not run on a workload, and why.
     pub(super) fn not_run(method: &str, why: String) -> Measured {
         Measured {
             method: method.to_owned(),
             per_item: None,
+            whole_call: None,
+            set_up: None,
+            read_back: None,
             timed_items: 0,
             errors: None,
             coverage_error: None,
             exact: false,
             peak_heap: None,
-            empty_frame: None,
             note: why,
         }
     }
@@ -80,10 +108,16 @@ impl Workload {
         self.methods.iter().find(|m| m.method == name)
     }
 
-    /// How many times faster `a` is than `b`.
+    /// How many times faster `a` is than `b`, like for like: their draw
+    /// calls alone when both have one, else their whole calls.
     pub fn ratio(&self, a: &str, b: &str) -> Option<f64> {
-        let ta = self.method(a)?.per_item?.as_secs_f64();
-        let tb = self.method(b)?.per_item?.as_secs_f64();
+        let (a, b) = (self.method(a)?, self.method(b)?);
+        let draws = a.whole_call.is_some() && b.whole_call.is_some();
+        let time = |m: &Measured| match draws {
+            true => m.per_item,
+            false => m.whole_call.or(m.per_item),
+        };
+        let (ta, tb) = (time(a)?.as_secs_f64(), time(b)?.as_secs_f64());
         (ta > 0.0).then(|| tb / ta)
     }
 }

@@ -94,7 +94,9 @@ pub(super) fn measure_motion(sizes: &Sizes, notes: &mut Vec<String>) -> Workload
                         coverage_error: Some(time_error(&exact, &time)),
                         exact: false,
                         peak_heap,
-                        empty_frame: None,
+                        whole_call: None,
+                        set_up: None,
+                        read_back: None,
                         note,
                     }
                 }

@@ -6,13 +6,13 @@
 use std::time::{Duration, Instant};
 
 use super::declared::Declared;
-use super::llvmpipe::{is_driver, lp_num_threads, marginal_name, marginal_per_item};
+use super::draw_call::DrawCall;
+use super::llvmpipe::{is_driver, lp_num_threads};
 use super::memory;
 use super::methods::{is_exact, triangle_methods};
 use super::model::{Measured, Workload};
 use super::score::mismatched;
 use super::sizes::Sizes;
-use super::text::time_text;
 use super::timing::{median, OnPool, ParallelCeiling, TILED_THREADS};
 use super::workloads::{triangle_scene, SEED};
 use crate::frame::Frame;
@@ -47,7 +47,7 @@ pub(super) fn measure_triangles(
         .unwrap_or(usize::MAX);
     let tiled = (tiled_at != usize::MAX)
         .then(|| OnPool::new(Box::new(crate::production::tiled::Tiled), TILED_THREADS));
-    let draw = |k: usize, r: &dyn Rasterizer, scene: &Scene| match tiled
+    let whole = |k: usize, r: &dyn Rasterizer, scene: &Scene| match tiled
         .as_ref()
         .filter(|_| k == tiled_at)
     {
@@ -58,17 +58,17 @@ pub(super) fn measure_triangles(
             (result, started.elapsed())
         }
     };
-    // The fixed per-frame cost of production and the drivers: the same
-    // call on the same canvas with no triangles.
-    let empty = subset(&s, 0);
-    let with_empty = |name: &str| name == "production" || is_driver(name);
-    let mut empty_times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
     let mut ceiling = ParallelCeiling::new(sizes.ceiling_steps);
     // Drivers create their device and pipelines on first use: once here,
     // untimed.
     for (_, r) in methods.iter().filter(|(name, _)| is_driver(name)) {
         std::hint::black_box(r.rasterize(&s, &plan).ok());
     }
+    // Each method's own draw call, set up once (timed once, apart).
+    let mut draws: Vec<Option<DrawCall>> = methods
+        .iter()
+        .map(|(_, r)| DrawCall::prepare(r.as_ref(), &s, &plan))
+        .collect();
     let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];
     let mut frames: Vec<Result<Frame, String>> = vec![Err(String::new()); methods.len()];
     let reference_scene = subset(&s, reference_count);
@@ -79,15 +79,16 @@ pub(super) fn measure_triangles(
             if rep > 0 && frames[k].is_err() {
                 continue;
             }
-            let (result, elapsed) = draw(k, r.as_ref(), &s);
+            let (result, elapsed) = whole(k, r.as_ref(), &s);
             times[k].push(elapsed);
             if rep == 0 {
                 frames[k] = result.map_err(|e| e.to_string());
             }
-            if with_empty(name) && frames[k].is_ok() {
-                let (result, elapsed) = draw(k, r.as_ref(), &empty);
-                empty_times[k].push(elapsed);
-                std::hint::black_box(result.ok());
+            if let Some(call) = draws[k].as_mut() {
+                if let Err(e) = call.round(tiled.as_ref().filter(|_| k == tiled_at)) {
+                    notes.push(format!("L={leg}: `{name}`'s draw call failed: {e}"));
+                    draws[k] = None;
+                }
             }
             if name == "production" {
                 declared.round(rep, r.as_ref());
@@ -108,7 +109,7 @@ pub(super) fn measure_triangles(
         .map(|(k, (_, r))| {
             frames[k]
                 .is_ok()
-                .then(|| memory::peak(|| draw(k, r.as_ref(), &s)).1)
+                .then(|| memory::peak(|| whole(k, r.as_ref(), &s)).1)
                 .flatten()
         })
         .collect();
@@ -118,64 +119,52 @@ pub(super) fn measure_triangles(
         .map_or([None, None], |(_, r)| declared.peaks(r.as_ref()));
     let mut measured: Vec<Measured> = Vec::new();
     for (k, (((name, _), times), frame)) in methods.iter().zip(times).zip(frames).enumerate() {
-        let empty_frame = (!empty_times[k].is_empty()).then(|| median(empty_times[k].clone()));
         let row = match frame {
-            Ok(frame) => Measured {
-                method: name.clone(),
-                per_item: Some(median(times) / count as u32),
-                timed_items: count,
-                errors: Some((mismatched(&exact, &frame), covered)),
-                coverage_error: None,
-                exact: is_exact(name),
-                peak_heap: peaks[k],
-                empty_frame,
-                note: match empty_frame {
-                    Some(e) if is_driver(name) => format!(
-                        "LP_NUM_THREADS={}; the whole call: vertex stream, upload, draw, \
-                         read-back of the targets into a frame ({} per frame on an empty canvas)",
+            Ok(frame) => {
+                let whole_call = median(times) / count as u32;
+                let mut row = Measured {
+                    errors: Some((mismatched(&exact, &frame), covered)),
+                    exact: is_exact(name),
+                    peak_heap: peaks[k],
+                    ..Measured::whole(name, whole_call, count)
+                };
+                match draws[k].take().map(|call| call.finish(&frame)) {
+                    Some(Ok(call)) => {
+                        row.per_item = Some(call.draw / count as u32);
+                        row.whole_call = Some(whole_call);
+                        row.set_up = Some(call.set_up);
+                        row.read_back = Some(call.read_back);
+                        row.note = call.note(name);
+                    }
+                    Some(Err(e)) => {
+                        row.note =
+                            format!("its draw call could not be timed ({e}): the whole call");
+                    }
+                    None => {
+                        row.note = "no draw call apart from the whole call".to_owned();
+                    }
+                }
+                if is_driver(name) {
+                    row.note = format!(
+                        "LP_NUM_THREADS={}; {}",
                         lp_num_threads().unwrap_or_else(|| "unset".to_owned()),
-                        time_text(e)
-                    ),
-                    Some(e) => format!("{} per frame on an empty canvas", time_text(e)),
-                    None => String::new(),
-                },
-            },
+                        row.note
+                    );
+                }
+                row
+            }
             Err(why) => Measured {
                 exact: is_exact(name),
                 ..Measured::not_run(name, why)
             },
         };
-        let marginal = is_driver(name)
-            .then(|| marginal_per_item(&row).zip(row.empty_frame))
-            .flatten()
-            .map(|(t, e)| Measured {
-                method: marginal_name(name),
-                per_item: Some(Duration::from_secs_f64(t)),
-                timed_items: count,
-                errors: row.errors,
-                coverage_error: None,
-                exact: false,
-                peak_heap: None,
-                empty_frame: None,
-                note: format!(
-                    "`{name}`'s time minus its {} on the same canvas with no triangles \
-                     (clearing and reading back the targets, filling the frame), per triangle",
-                    time_text(e)
-                ),
-            });
         measured.push(row);
-        measured.extend(marginal);
     }
     measured.extend(declared.rows(&exact, covered, count, declared_peaks));
     measured.push(Measured {
-        method: "reference".to_owned(),
-        per_item: Some(median(reference_times) / reference_count as u32),
-        timed_items: reference_count,
         errors: Some((0, covered)),
-        coverage_error: None,
         exact: true,
         peak_heap: reference_peak,
-        empty_frame: None,
         note: if reference_count < count {
             format!(
                 "timed on the first {reference_count} of the {count} triangles; \
@@ -184,6 +173,11 @@ pub(super) fn measure_triangles(
         } else {
             String::new()
         },
+        ..Measured::whole(
+            "reference",
+            median(reference_times) / reference_count as u32,
+            reference_count,
+        )
     });
     if reference_count < count {
         notes.push(format!(
