@@ -10,6 +10,12 @@
 //! samples, last primitives and values of its rows that production writes.
 //! The bands are drawn on the current rayon pool and copied into the frame.
 //!
+//! Coverage-only triangles, the commonest scene, take the sweep instead
+//! (`sweep.rs`, production's own road for them): the frame is cut into a
+//! few regions per thread of whole sweep bands, and each region is swept
+//! on its own straight into its rows of the frame ([`Tiled::prepare`]
+//! places the scene once for that road).
+//!
 //! What this module does not do: polygons (a scene with one is drawn by
 //! production alone, on one thread), scenes in which something moves
 //! (production's time loop draws them, its rows in parallel), and coordinates or canvases beyond
