@@ -81,7 +81,7 @@ impl<'a> Placed<'a> {
                     .collect(),
             )
         } else {
-            let placed = kept()
+            let placed: Vec<(usize, [[Fixed; 2]; 3])> = kept()
                 .map(|(index, p)| {
                     let points = match p {
                         Primitive::Triangle(t) => t.vertices.each_ref().map(at),
@@ -95,7 +95,7 @@ impl<'a> Placed<'a> {
                 })
                 .collect();
             let triangle = |p: &Primitive| matches!(p, Primitive::Triangle(_));
-            if coverage_only && kept().all(|(_, p)| triangle(p)) {
+            if coverage_only && kept().all(|(_, p)| triangle(p)) && tall(&placed, format) {
                 Kept::Triangles(placed)
             } else {
                 Kept::Primitives(placed)
@@ -181,6 +181,25 @@ impl<'a> Placed<'a> {
     pub(crate) fn empty_frame(&self) -> Frame {
         Frame::for_plan(self.scene.canvas.width, self.scene.canvas.height, self.plan)
     }
+}
+
+/// Triangles at least this many pixel rows tall on average are swept: the
+/// sweep keeps the frame's rows in the cache while every triangle over them
+/// is drawn, which pays once triangles overlap (as large ones do); it
+/// costs a little per triangle, which small ones, scattered and drawn
+/// once each, do not win back. The result is the same either way.
+const SWEEP_ROWS: i64 = 16;
+
+/// Whether the triangles are [`SWEEP_ROWS`] tall on average.
+fn tall(triangles: &[(usize, [[Fixed; 2]; 3])], format: Format) -> bool {
+    let rows: i64 = triangles
+        .iter()
+        .map(|(_, v)| {
+            let ys = v.map(|p| p[1].0);
+            (ys.iter().max().unwrap() - ys.iter().min().unwrap()) / format.one()
+        })
+        .sum();
+    !triangles.is_empty() && rows >= SWEEP_ROWS * triangles.len() as i64
 }
 
 /// Production's draw with the scene placed once and one frame reused:

@@ -18,7 +18,7 @@ use super::setup::{self, Footprint};
 use super::traverse::{self, Sink, Walker};
 use crate::frame::cover_run;
 use crate::plan::Plan;
-use crate::scene::{Primitive, Scene};
+use crate::scene::{Interpolation, Number, Scene, Triangle, Vertex};
 
 /// The bytes of counts and owners one band keeps in the cache: half a
 /// typical 512 KiB second-level cache.
@@ -41,8 +41,8 @@ pub(crate) struct Rows<'a> {
 }
 
 /// Draws the triangles `points` holds (primitive index and vertices in
-/// `format`, in scene order; every primitive a triangle) into `rows`,
-/// coverage only, band by band.
+/// `format`, in scene order; every one a triangle of `scene`) into
+/// `rows`, coverage only, band by band.
 pub(crate) fn sweep<E: EdgeInt>(
     scene: &Scene,
     format: Format,
@@ -56,75 +56,67 @@ pub(crate) fn sweep<E: EdgeInt>(
     let (first_row, end_row) = (rows.rows_from, rows.rows_from + height);
     let band = band_rows(scene.canvas.width);
     let bands = (height + band - 1) / band;
-    // Each triangle set up once, in scene order, and binned by the band
-    // of its first row: each bin in scene order.
-    let plan = Plan::coverage_only();
-    let mut walkers: Vec<(u32, Walker<E>)> = Vec::with_capacity(points.len());
-    let mut bins: Vec<Vec<u32>> = (0..bands).map(|_| Vec::new()).collect();
-    for (k, &(index, vertices)) in points.iter().enumerate() {
-        if k % 256 == 0 {
-            crate::deadline::check();
-        }
-        // Rows wholly above or below these rows: nothing to set up. A
-        // row's centre lies within a pixel of the vertices' extent.
-        let one = format.one();
+    // Each triangle binned by the band of its first row, from its
+    // vertices (each bin in scene order), and set up when the sweep gets
+    // there, so that its walker is hot when first walked.
+    let one = format.one();
+    let mut bins: Vec<Vec<(usize, [[Fixed; 2]; 3])>> = (0..bands).map(|_| Vec::new()).collect();
+    for &(index, vertices) in points {
+        // A row's centre lies within a pixel of the vertices' extent.
         let ys = vertices.map(|v| v[1].0.div_euclid(one));
-        let (top, bottom) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
-        if bottom + 1 < first_row || *top > end_row {
+        let (top, bottom) = (*ys.iter().min().unwrap(), *ys.iter().max().unwrap());
+        if bottom + 1 < first_row || top > end_row {
             continue;
         }
-        let Primitive::Triangle(triangle) = &scene.primitives[index] else {
-            unreachable!("the sweep draws triangles only");
-        };
-        let Some(setup) = setup::setup_in::<E>(
-            vertices,
-            triangle,
-            format,
-            scene.rules.fill_rule,
-            scene.rules.cull,
-            scene.canvas,
-            &plan,
-            |_, _| None,
-            Footprint::Centres,
-        ) else {
-            continue;
-        };
-        if setup.bounds.y1 <= first_row || setup.bounds.y0 >= end_row {
-            continue;
-        }
-        let Some(walker) = Walker::new(&setup, first_row) else {
-            continue;
-        };
-        let b = ((walker.row() - first_row) / band) as usize;
-        if b < bins.len() {
-            bins[b].push(walkers.len() as u32);
-            walkers.push((index as u32 + 1, walker));
+        let b = ((top - 1).max(first_row) - first_row) / band;
+        if let Some(bin) = bins.get_mut(b as usize) {
+            bin.push((index, vertices));
         }
     }
-    // The walkers stay where they are; the bands pass their places round.
+    // Coverage only: set-up never reads a vertex's values, so the scene's
+    // primitives (large, and far apart in memory) are not touched again.
+    let plan = Plan::coverage_only();
+    let unshaded = Triangle {
+        vertices: std::array::from_fn(|_| Vertex::at(Number::ZERO, Number::ZERO)),
+        interpolation: Interpolation::Linear,
+    };
     let mut sink = RowSink { rows, number: 0 };
-    let mut active: Vec<u32> = Vec::new();
-    let mut next: Vec<u32> = Vec::new();
+    let mut active: Vec<(u32, Walker<E>)> = Vec::new();
+    let mut next: Vec<(u32, Walker<E>)> = Vec::new();
     for (b, entering) in bins.iter().enumerate() {
         crate::deadline::check();
         let until = (first_row + (b as i64 + 1) * band).min(end_row);
         // The triangles still walking and those starting here, merged in
-        // scene order (the order of their places).
+        // scene order.
         next.clear();
-        let mut entering = entering.iter().copied().peekable();
-        for &walking in &active {
-            while let Some(new) = entering.next_if(|&new| new < walking) {
-                next.push(new);
+        let mut walking = active.drain(..).peekable();
+        for &(index, vertices) in entering {
+            let number = index as u32 + 1;
+            while let Some(w) = walking.next_if(|w| w.0 < number) {
+                next.push(w);
             }
-            next.push(walking);
+            let walker = setup::setup_in::<E>(
+                vertices,
+                &unshaded,
+                format,
+                scene.rules.fill_rule,
+                scene.rules.cull,
+                scene.canvas,
+                &plan,
+                |_, _| None,
+                Footprint::Centres,
+            )
+            .and_then(|setup| Walker::new(&setup, first_row));
+            if let Some(walker) = walker {
+                next.push((number, walker));
+            }
         }
-        next.extend(entering);
-        next.retain(|&k| {
-            let (number, walker) = &mut walkers[k as usize];
+        next.extend(walking);
+        for (number, walker) in &mut next {
             sink.number = *number;
             walker.walk(until, &mut sink);
-            !walker.done()
-        });
+        }
+        next.retain(|(_, walker)| !walker.done());
         std::mem::swap(&mut active, &mut next);
     }
 }

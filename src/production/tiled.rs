@@ -361,4 +361,4 @@ fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: 
 }
 
 /// Regions per thread of the coverage-only sweep.
-const REGIONS_PER_THREAD: usize = 4;
+const REGIONS_PER_THREAD: usize = 8;
