@@ -256,6 +256,49 @@ mod tests {
     use super::*;
 
     #[test]
+    fn euclidean_division_is_exact() {
+        // Against i128's: near 2^52, near whole quotients, negative
+        // dividends and divisors, and the whole i64 range. (A float
+        // estimate corrected by the exact remainder was tried, and was
+        // slower: without SSE4.1, `floor` is a library call.)
+        let mut x = 0x6469_7669_6465_u64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let edge = 1i64 << 52;
+        let mut checked = 0;
+        for _ in 0..200_000 {
+            let d = match next() % 4 {
+                0 => (next() % 1000) as i64 + 1,
+                1 => edge - 1 - (next() % 1000) as i64,
+                2 => (next() >> 12) as i64 + 1,
+                _ => (next() >> 2) as i64 + 1,
+            };
+            let n = match next() % 4 {
+                0 => (next() >> 11) as i64 - (1 << 52),
+                1 => {
+                    // q·d - 1, q·d, q·d + 1 for a q that keeps them in range.
+                    let q = (next() % (edge as u64 / d as u64 + 1)) as i64;
+                    q.saturating_mul(d) + (next() % 3) as i64 - 1
+                }
+                2 => edge - 1 - (next() % 3) as i64,
+                _ => next() as i64,
+            };
+            let (q, r) = n.div_rem_euclid(d);
+            let want = (i128::from(n).div_euclid(i128::from(d)), i128::from(n).rem_euclid(i128::from(d)));
+            assert_eq!((i128::from(q), i128::from(r)), want, "{n} / {d}");
+            let (q, r) = n.div_rem_euclid(-d);
+            let want = (i128::from(n).div_euclid(-i128::from(d)), i128::from(n).rem_euclid(-i128::from(d)));
+            assert_eq!((i128::from(q), i128::from(r)), want, "{n} / -{d}");
+            checked += 1;
+        }
+        assert_eq!(checked, 200_000);
+    }
+
+    #[test]
     fn snapping_ties_go_to_even() {
         let f = Format::snapped(0);
         let n = |s: &str| Number::from_string(s).unwrap();
