@@ -288,10 +288,16 @@ mod tests {
                 _ => next() as i64,
             };
             let (q, r) = n.div_rem_euclid(d);
-            let want = (i128::from(n).div_euclid(i128::from(d)), i128::from(n).rem_euclid(i128::from(d)));
+            let want = (
+                i128::from(n).div_euclid(i128::from(d)),
+                i128::from(n).rem_euclid(i128::from(d)),
+            );
             assert_eq!((i128::from(q), i128::from(r)), want, "{n} / {d}");
             let (q, r) = n.div_rem_euclid(-d);
-            let want = (i128::from(n).div_euclid(-i128::from(d)), i128::from(n).rem_euclid(-i128::from(d)));
+            let want = (
+                i128::from(n).div_euclid(-i128::from(d)),
+                i128::from(n).rem_euclid(-i128::from(d)),
+            );
             assert_eq!((i128::from(q), i128::from(r)), want, "{n} / -{d}");
             checked += 1;
         }

@@ -9,7 +9,7 @@
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
 use super::line::{self, Geometry};
-use super::sweep::{sweep, Rows};
+use super::sweep::{band_for, sweep, Rows};
 use super::{draw_primitive, format_for, place, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -34,7 +34,8 @@ enum Kept {
     /// ([`line::midpoint_lines`]).
     MidpointLines(Vec<(usize, Geometry, LastPixel)>),
     /// Coverage-only triangles, one sample per pixel: swept band by band
-    /// ([`sweep`]). The vertices as in `Primitives`.
+    /// ([`sweep`]; one band of the whole frame for small triangles). The
+    /// vertices as in `Primitives`.
     Triangles(Vec<(usize, [[Fixed; 2]; 3])>),
     /// Primitives by index, with their vertices (a line's two ends, the
     /// second repeated; nothing for a polygon, which places its own).
@@ -95,7 +96,7 @@ impl<'a> Placed<'a> {
                 })
                 .collect();
             let triangle = |p: &Primitive| matches!(p, Primitive::Triangle(_));
-            if coverage_only && kept().all(|(_, p)| triangle(p)) && tall(&placed, format) {
+            if coverage_only && kept().all(|(_, p)| triangle(p)) {
                 Kept::Triangles(placed)
             } else {
                 Kept::Primitives(placed)
@@ -127,10 +128,11 @@ impl<'a> Placed<'a> {
                     width: self.scene.canvas.width as usize,
                     rows_from: 0,
                 };
+                let band = band_for(triangles, self.format);
                 if self.format.fits_i64() {
-                    sweep::<i64>(self.scene, self.format, triangles, rows);
+                    sweep::<i64>(self.scene, self.format, triangles, rows, band);
                 } else {
-                    sweep::<i128>(self.scene, self.format, triangles, rows);
+                    sweep::<i128>(self.scene, self.format, triangles, rows, band);
                 }
                 return Ok(());
             }
@@ -181,25 +183,6 @@ impl<'a> Placed<'a> {
     pub(crate) fn empty_frame(&self) -> Frame {
         Frame::for_plan(self.scene.canvas.width, self.scene.canvas.height, self.plan)
     }
-}
-
-/// Triangles at least this many pixel rows tall on average are swept: the
-/// sweep keeps the frame's rows in the cache while every triangle over them
-/// is drawn, which pays once triangles overlap (as large ones do); it
-/// costs a little per triangle, which small ones, scattered and drawn
-/// once each, do not win back. The result is the same either way.
-const SWEEP_ROWS: i64 = 16;
-
-/// Whether the triangles are [`SWEEP_ROWS`] tall on average.
-fn tall(triangles: &[(usize, [[Fixed; 2]; 3])], format: Format) -> bool {
-    let rows: i64 = triangles
-        .iter()
-        .map(|(_, v)| {
-            let ys = v.map(|p| p[1].0);
-            (ys.iter().max().unwrap() - ys.iter().min().unwrap()) / format.one()
-        })
-        .sum();
-    !triangles.is_empty() && rows >= SWEEP_ROWS * triangles.len() as i64
 }
 
 /// Production's draw with the scene placed once and one frame reused:

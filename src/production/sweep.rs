@@ -31,6 +31,42 @@ pub(crate) fn band_rows(width: u32) -> i64 {
     (BAND_BYTES / per_row).clamp(1, 64) as i64
 }
 
+/// How many rows a band of the sweep takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Band {
+    /// As many as the cache holds ([`band_rows`]): for triangles that
+    /// overlap, tall ones.
+    Cached,
+    /// All the rows at once: each triangle drawn whole in scene order, for
+    /// small ones scattered over the frame.
+    Whole,
+}
+
+/// Triangles at least this many pixel rows tall on average are swept in
+/// cached bands: the sweep keeps the frame's rows in the cache while every
+/// triangle over them is drawn, which pays once triangles overlap (as
+/// large ones do); it costs a little per triangle, which small ones,
+/// scattered and drawn once each, do not win back. The result is the same
+/// either way.
+const SWEEP_ROWS: i64 = 16;
+
+/// The band for `triangles`: [`Band::Cached`] when they are
+/// [`SWEEP_ROWS`] tall on average.
+pub(crate) fn band_for(triangles: &[(usize, [[Fixed; 2]; 3])], format: Format) -> Band {
+    let rows: i64 = triangles
+        .iter()
+        .map(|(_, v)| {
+            let ys = v.map(|p| p[1].0);
+            (ys.iter().max().unwrap() - ys.iter().min().unwrap()) / format.one()
+        })
+        .sum();
+    if !triangles.is_empty() && rows >= SWEEP_ROWS * triangles.len() as i64 {
+        Band::Cached
+    } else {
+        Band::Whole
+    }
+}
+
 /// The frame's counts and owners for rows `rows_from..` (as many as the
 /// slices hold), `width` pixels wide.
 pub(crate) struct Rows<'a> {
@@ -48,13 +84,17 @@ pub(crate) fn sweep<E: EdgeInt>(
     format: Format,
     points: &[(usize, [[Fixed; 2]; 3])],
     rows: Rows<'_>,
+    band: Band,
 ) {
     let height = (rows.coverage.len() / rows.width.max(1)) as i64;
     if height == 0 {
         return;
     }
     let (first_row, end_row) = (rows.rows_from, rows.rows_from + height);
-    let band = band_rows(scene.canvas.width);
+    let band = match band {
+        Band::Cached => band_rows(scene.canvas.width),
+        Band::Whole => height,
+    };
     let bands = (height + band - 1) / band;
     // Each triangle binned by the band of its first row, from its
     // vertices (each bin in scene order), and set up when the sweep gets
@@ -87,13 +127,22 @@ pub(crate) fn sweep<E: EdgeInt>(
         crate::deadline::check();
         let until = (first_row + (b as i64 + 1) * band).min(end_row);
         // The triangles still walking and those starting here, merged in
-        // scene order.
+        // scene order, each walked through the band as it comes (a new
+        // one right after its set-up, while it is in the cache); those
+        // that go on below are kept.
         next.clear();
+        let mut walk = |number: u32, mut walker: Walker<E>, next: &mut Vec<(u32, Walker<E>)>| {
+            sink.number = number;
+            walker.walk(until, &mut sink);
+            if !walker.done() {
+                next.push((number, walker));
+            }
+        };
         let mut walking = active.drain(..).peekable();
         for &(index, vertices) in entering {
             let number = index as u32 + 1;
-            while let Some(w) = walking.next_if(|w| w.0 < number) {
-                next.push(w);
+            while let Some((n, w)) = walking.next_if(|w| w.0 < number) {
+                walk(n, w, &mut next);
             }
             let walker = setup::setup_in::<E>(
                 vertices,
@@ -108,15 +157,12 @@ pub(crate) fn sweep<E: EdgeInt>(
             )
             .and_then(|setup| Walker::new(&setup, first_row));
             if let Some(walker) = walker {
-                next.push((number, walker));
+                walk(number, walker, &mut next);
             }
         }
-        next.extend(walking);
-        for (number, walker) in &mut next {
-            sink.number = *number;
-            walker.walk(until, &mut sink);
+        for (n, w) in walking {
+            walk(n, w, &mut next);
         }
-        next.retain(|(_, walker)| !walker.done());
         std::mem::swap(&mut active, &mut next);
     }
 }

@@ -27,7 +27,7 @@ use rayon::prelude::*;
 
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
-use super::sweep::{band_rows, sweep, Rows};
+use super::sweep::{band_for, band_rows, sweep, Rows};
 use super::{draw_primitive, format_for, place, Production, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -333,6 +333,7 @@ fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: 
     let canvas = scene.canvas;
     let width = canvas.width as usize;
     let placed: Vec<(usize, [[Fixed; 2]; 3])> = points.iter().copied().enumerate().collect();
+    let road = band_for(&placed, format);
     let band = band_rows(canvas.width) as usize;
     let threads = rayon::current_num_threads().max(1);
     let bands = (canvas.height as usize).div_ceil(band);
@@ -353,9 +354,9 @@ fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: 
             };
             // The sweep moves no vertex: production's integers suffice.
             if format.fits_i64() {
-                sweep::<i64>(scene, format, &placed, rows);
+                sweep::<i64>(scene, format, &placed, rows, road);
             } else {
-                sweep::<i128>(scene, format, &placed, rows);
+                sweep::<i128>(scene, format, &placed, rows, road);
             }
         });
 }
