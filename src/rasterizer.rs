@@ -93,6 +93,13 @@ pub trait Rasterizer: Send + Sync {
     /// sample keeps the values of the last primitive that covered it.
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>;
 
+    /// What the program behind this rasterizer says it is, once it has
+    /// said so: an external program's hello names itself and its version
+    /// (SPEC.md §12.7). Reports show it beside the name it was given.
+    fn declared(&self) -> Option<String> {
+        None
+    }
+
     /// The method's own draw call for `scene`, set up once so that it can
     /// be drawn again and again: what `rastercheck bench` times as the
     /// method's work, apart from what an adapter does around it. `None`

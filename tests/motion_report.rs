@@ -81,6 +81,7 @@ fn write_report(dir: &Path, outcomes: &[CaseOutcome]) -> (PathBuf, Value) {
             .map(|n| RasterizerInfo {
                 name: (*n).to_owned(),
                 foil: false,
+                declared: None,
             })
             .collect(),
         LimitsInfo::of(&Limits::default()),

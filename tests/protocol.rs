@@ -282,3 +282,18 @@ fn names_hold_in_matrix_and_baseline() {
     assert_eq!(out.status.code(), Some(0), "{t}");
     assert!(t.contains("0 regressions"), "{t}");
 }
+
+/// The name and version a program's hello declares reach report.json,
+/// beside the name the run gave it; a program that says no hello (v1)
+/// declares nothing.
+#[test]
+fn the_hello_names_the_program_in_the_report() {
+    let (_, report, t, _) = run("declared", "toy=", "", &CASES[..2]);
+    let info = &report["rasterizers"][0];
+    assert_eq!(info["name"], "toy", "{t}");
+    assert_eq!(info["declared"], "python-example 2", "{info}");
+    let (_, report, t, _) = run("declared-v1", "toy=", "--v1", &CASES[..2]);
+    let info = &report["rasterizers"][0];
+    assert_eq!(info["name"], "toy", "{t}");
+    assert!(info.get("declared").is_none(), "{info}");
+}

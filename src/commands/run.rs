@@ -121,6 +121,7 @@ pub fn run(args: RunArgs) -> Exit {
             .map(|c| RasterizerInfo {
                 name: c.name().to_owned(),
                 foil: c.is_foil(),
+                declared: None,
             })
             .collect(),
         LimitsInfo::of(&limits),
@@ -208,6 +209,9 @@ pub fn run(args: RunArgs) -> Exit {
             },
         )
         .collect();
+    for (info, candidate) in report.rasterizers.iter_mut().zip(&candidates) {
+        info.declared = candidate.declared();
+    }
     let stopped = crate::stop::requested();
     report.complete = stopped.is_none();
     report.tally();

@@ -42,6 +42,10 @@ pub struct Tool {
 pub struct RasterizerInfo {
     pub name: String,
     pub foil: bool,
+    /// What the program says it is (its hello's name and version), when
+    /// it said so during the run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub declared: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]

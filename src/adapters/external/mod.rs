@@ -193,6 +193,8 @@ pub struct External {
     /// Whether a process of this program wrote no hello: later processes
     /// are not waited for (a hello that comes later is still read).
     said_no_hello: AtomicBool,
+    /// The name and version the first hello declared.
+    declared: Mutex<Option<String>>,
 }
 
 impl External {
@@ -208,6 +210,7 @@ impl External {
             pool: persistent.then(|| Mutex::new(Vec::new())),
             next_id: AtomicU64::new(1),
             said_no_hello: AtomicBool::new(false),
+            declared: Mutex::new(None),
         }
     }
 
@@ -347,6 +350,11 @@ impl External {
             return Err(failed(why, &worker.stderr, mark));
         }
         if let Some(Ok(hello)) = &worker.hello {
+            let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
+            if declared.is_none() {
+                *declared = hello.title();
+            }
+            drop(declared);
             if let Some(why) = hello.refuses(scene, plan) {
                 // Never sent: the program said it cannot draw it.
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
@@ -521,6 +529,13 @@ impl Rasterizer for External {
             motion_blur: false,
             ..Capabilities::everything()
         }
+    }
+
+    fn declared(&self) -> Option<String> {
+        self.declared
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -72,6 +72,7 @@ fn report(rasterizers: &[&str]) -> Report {
             .map(|n| RasterizerInfo {
                 name: (*n).into(),
                 foil: false,
+                declared: None,
             })
             .collect(),
         LimitsInfo {
