@@ -1,7 +1,7 @@
 //! Fixed-point coordinates and the bit-width limits that keep edge functions
 //! from overflowing.
 
-use std::ops::{Add, BitOr, Mul, Sub};
+use std::ops::{Add, BitOr, Div, Mul, Rem, Sub};
 
 use dashu_int::ops::{BitTest, PowerOfTwo};
 use dashu_int::IBig;
@@ -185,6 +185,8 @@ pub trait EdgeInt:
     + Add<Output = Self>
     + Sub<Output = Self>
     + Mul<Output = Self>
+    + Div<Output = Self>
+    + Rem<Output = Self>
     + BitOr<Output = Self>
     + Send
     + Sync
@@ -196,7 +198,22 @@ pub trait EdgeInt:
 
     /// Euclidean quotient and remainder: `self = q·d + r` with
     /// `0 ≤ r < |d|`.
-    fn div_rem_euclid(self, d: Self) -> (Self, Self);
+    #[inline]
+    fn div_rem_euclid(self, d: Self) -> (Self, Self) {
+        // One hardware division for both, then the remainder made
+        // non-negative (`div_euclid` and `rem_euclid` would divide twice).
+        let (q, r) = (self / d, self % d);
+        let (zero, one) = (Self::default(), Self::from(1));
+        if r < zero {
+            if d > zero {
+                (q - one, r + d)
+            } else {
+                (q + one, r - d)
+            }
+        } else {
+            (q, r)
+        }
+    }
 }
 
 impl EdgeInt for i64 {
@@ -208,22 +225,6 @@ impl EdgeInt for i64 {
     fn to_i64(self) -> i64 {
         self
     }
-
-    #[inline]
-    fn div_rem_euclid(self, d: i64) -> (i64, i64) {
-        // One hardware division for both, then the remainder made
-        // non-negative (`div_euclid` and `rem_euclid` would divide twice).
-        let (q, r) = (self / d, self % d);
-        if r < 0 {
-            if d > 0 {
-                (q - 1, r + d)
-            } else {
-                (q + 1, r - d)
-            }
-        } else {
-            (q, r)
-        }
-    }
 }
 
 impl EdgeInt for i128 {
@@ -234,20 +235,6 @@ impl EdgeInt for i128 {
     #[inline]
     fn to_i64(self) -> i64 {
         i64::try_from(self).expect("a pixel position fits in i64")
-    }
-
-    #[inline]
-    fn div_rem_euclid(self, d: i128) -> (i128, i128) {
-        let (q, r) = (self / d, self % d);
-        if r < 0 {
-            if d > 0 {
-                (q - 1, r + d)
-            } else {
-                (q + 1, r - d)
-            }
-        } else {
-            (q, r)
-        }
     }
 }
 
