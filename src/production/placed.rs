@@ -9,7 +9,7 @@
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
 use super::line::{self, Geometry};
-use super::sweep::{band_for, sweep, Rows};
+use super::sweep::{Rows, Swept};
 use super::{draw_primitive, format_for, place, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -36,7 +36,7 @@ enum Kept {
     /// Coverage-only triangles, one sample per pixel: swept band by band
     /// ([`sweep`]; one band of the whole frame for small triangles). The
     /// vertices as in `Primitives`.
-    Triangles(Vec<(usize, [[Fixed; 2]; 3])>),
+    Triangles(Swept),
     /// Primitives by index, with their vertices (a line's two ends, the
     /// second repeated; nothing for a polygon, which places its own).
     Primitives(Vec<(usize, [[Fixed; 2]; 3])>),
@@ -97,7 +97,7 @@ impl<'a> Placed<'a> {
                 .collect();
             let triangle = |p: &Primitive| matches!(p, Primitive::Triangle(_));
             if coverage_only && kept().all(|(_, p)| triangle(p)) {
-                Kept::Triangles(placed)
+                Kept::Triangles(Swept::new(format, placed))
             } else {
                 Kept::Primitives(placed)
             }
@@ -121,19 +121,14 @@ impl<'a> Placed<'a> {
                 line::midpoint_lines(lines, self.format, self.scene.canvas, frame);
                 return Ok(());
             }
-            Kept::Triangles(triangles) => {
+            Kept::Triangles(swept) => {
                 let rows = Rows {
                     coverage: &mut frame.coverage,
                     last: &mut frame.last,
                     width: self.scene.canvas.width as usize,
                     rows_from: 0,
                 };
-                let band = band_for(triangles, self.format);
-                if self.format.fits_i64() {
-                    sweep::<i64>(self.scene, self.format, triangles, rows, band);
-                } else {
-                    sweep::<i128>(self.scene, self.format, triangles, rows, band);
-                }
+                swept.draw(self.scene, rows);
                 return Ok(());
             }
             Kept::Primitives(primitives) => {

@@ -33,7 +33,7 @@ pub(crate) fn band_rows(width: u32) -> i64 {
 
 /// How many rows a band of the sweep takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Band {
+enum Band {
     /// As many as the cache holds ([`band_rows`]): for triangles that
     /// overlap, tall ones.
     Cached,
@@ -50,9 +50,40 @@ pub(crate) enum Band {
 /// either way.
 const SWEEP_ROWS: i64 = 16;
 
+/// Coverage-only triangles ready to be swept: their vertices in `format`
+/// (each with its primitive's index, in scene order) and the band their
+/// height calls for, both decided once, before any draw.
+pub(crate) struct Swept {
+    format: Format,
+    triangles: Vec<(usize, [[Fixed; 2]; 3])>,
+    band: Band,
+}
+
+impl Swept {
+    pub(crate) fn new(format: Format, triangles: Vec<(usize, [[Fixed; 2]; 3])>) -> Swept {
+        let band = band_for(&triangles, format);
+        Swept {
+            format,
+            triangles,
+            band,
+        }
+    }
+
+    /// Sweeps the triangles of `scene` into `rows`, in the narrowest
+    /// integers that hold the format's edge functions (the sweep moves no
+    /// vertex).
+    pub(crate) fn draw(&self, scene: &Scene, rows: Rows<'_>) {
+        if self.format.fits_i64() {
+            sweep::<i64>(scene, self.format, &self.triangles, rows, self.band);
+        } else {
+            sweep::<i128>(scene, self.format, &self.triangles, rows, self.band);
+        }
+    }
+}
+
 /// The band for `triangles`: [`Band::Cached`] when they are
 /// [`SWEEP_ROWS`] tall on average.
-pub(crate) fn band_for(triangles: &[(usize, [[Fixed; 2]; 3])], format: Format) -> Band {
+fn band_for(triangles: &[(usize, [[Fixed; 2]; 3])], format: Format) -> Band {
     let rows: i64 = triangles
         .iter()
         .map(|(_, v)| {
@@ -79,7 +110,7 @@ pub(crate) struct Rows<'a> {
 /// Draws the triangles `points` holds (primitive index and vertices in
 /// `format`, in scene order; every one a triangle of `scene`) into
 /// `rows`, coverage only, band by band.
-pub(crate) fn sweep<E: EdgeInt>(
+fn sweep<E: EdgeInt>(
     scene: &Scene,
     format: Format,
     points: &[(usize, [[Fixed; 2]; 3])],

@@ -27,7 +27,7 @@ use rayon::prelude::*;
 
 use super::antialias::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
-use super::sweep::{band_for, band_rows, sweep, Rows};
+use super::sweep::{band_rows, Rows, Swept};
 use super::{draw_primitive, format_for, place, Production, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -66,7 +66,7 @@ impl Rasterizer for Tiled {
         };
         if swept(scene, plan) {
             let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
-            draw_swept(scene, format, &points, &mut frame);
+            draw_swept(scene, &for_sweep(format, &points), &mut frame);
             return Ok(frame);
         }
         // One bit of integer range more than production's: a band moves
@@ -96,8 +96,7 @@ impl Rasterizer for Tiled {
         let frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
         Some(Ok(Box::new(PreparedSweep {
             scene,
-            format,
-            points,
+            swept: for_sweep(format, &points),
             frame,
         })))
     }
@@ -157,8 +156,7 @@ fn placed<'a>(
 /// The sweep's draw with the scene placed once and one frame reused.
 struct PreparedSweep<'a> {
     scene: &'a Scene,
-    format: Format,
-    points: Vec<[[Fixed; 2]; 3]>,
+    swept: Swept,
     frame: Frame,
 }
 
@@ -169,7 +167,7 @@ impl Prepared for PreparedSweep<'_> {
     }
 
     fn draw(&mut self) -> Result<(), RasterError> {
-        draw_swept(self.scene, self.format, &self.points, &mut self.frame);
+        draw_swept(self.scene, &self.swept, &mut self.frame);
         Ok(())
     }
 
@@ -329,11 +327,9 @@ fn draw<E: EdgeInt>(
 /// whole sweep bands, each swept on its own ([`sweep`]) straight into its
 /// rows of the frame. A triangle is set up once in every region it
 /// reaches; more regions than threads keep both threads busy to the end.
-fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: &mut Frame) {
+fn draw_swept(scene: &Scene, swept: &Swept, frame: &mut Frame) {
     let canvas = scene.canvas;
     let width = canvas.width as usize;
-    let placed: Vec<(usize, [[Fixed; 2]; 3])> = points.iter().copied().enumerate().collect();
-    let road = band_for(&placed, format);
     let band = band_rows(canvas.width) as usize;
     let threads = rayon::current_num_threads().max(1);
     let bands = (canvas.height as usize).div_ceil(band);
@@ -352,13 +348,13 @@ fn draw_swept(scene: &Scene, format: Format, points: &[[[Fixed; 2]; 3]], frame: 
                 width,
                 rows_from: (r * region) as i64,
             };
-            // The sweep moves no vertex: production's integers suffice.
-            if format.fits_i64() {
-                sweep::<i64>(scene, format, &placed, rows, road);
-            } else {
-                sweep::<i128>(scene, format, &placed, rows, road);
-            }
+            swept.draw(scene, rows);
         });
+}
+
+/// Every primitive (all triangles) with its index, ready to be swept.
+fn for_sweep(format: Format, points: &[[[Fixed; 2]; 3]]) -> Swept {
+    Swept::new(format, points.iter().copied().enumerate().collect())
 }
 
 /// Regions per thread of the coverage-only sweep.
