@@ -202,11 +202,6 @@ impl<E: EdgeInt> Walker<E> {
         })
     }
 
-    /// The first row not yet walked.
-    pub fn row(&self) -> i64 {
-        self.y
-    }
-
     /// Whether every row has been walked.
     pub fn done(&self) -> bool {
         self.y >= self.y1
@@ -303,6 +298,21 @@ mod tests {
         got.sort_by_key(|&(x, y)| (y, x));
         let want = pixels_inside(&s);
         assert_eq!(got, want, "{units:?} at {bits} bits, {rule:?}");
+        // Started below the box's top and walked three rows at a time, as
+        // a sweep resumes it band by band: the same pixels of those rows.
+        let from = s.bounds.y0 + (s.bounds.y1 - s.bounds.y0) / 3;
+        let mut pieces = Collect(Vec::new());
+        if let Some(mut walker) = Walker::new(&s, from) {
+            let mut until = from;
+            while !walker.done() {
+                until += 3;
+                walker.walk(until, &mut pieces);
+            }
+        }
+        let mut got = pieces.0;
+        got.sort_by_key(|&(x, y)| (y, x));
+        let below: Vec<_> = want.iter().copied().filter(|&(_, y)| y >= from).collect();
+        assert_eq!(got, below, "{units:?} from row {from}, in pieces");
         want.len()
     }
 
