@@ -399,7 +399,8 @@ impl GlContext {
     ) -> Result<Drawing<'a>, RasterError> {
         let (tw, th) = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
-        let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
+        let gpu::Stream { vertices, runs } =
+            gpu::Stream::new(scene, &gpu::Placement::at_centres(bits, (tw, th)));
         let gl = &self.gl;
         let _ = gl_error(gl);
 
@@ -519,7 +520,12 @@ impl GlContext {
             }
         }
         gl.bind_vertex_array(Some(drawing.vao));
-        for &(mode, a, b) in &drawing.runs {
+        for run in &drawing.runs {
+            // The adapter refuses lines and polygons (`accepted`).
+            let gpu::Draw::Triangles(mode) = run.draw else {
+                continue;
+            };
+            let (a, b) = (run.first, run.end);
             let program = match mode {
                 Interpolation::Perspective => self.programs[0],
                 Interpolation::Linear => self.programs[1],
@@ -624,7 +630,7 @@ struct Drawing<'a> {
     cull: Cull,
     /// The runs of consecutive vertices (first, end) of one interpolation
     /// mode: one draw call each.
-    runs: Vec<(Interpolation, u32, u32)>,
+    runs: Vec<gpu::Run>,
     vao: glow::VertexArray,
     vbo: Option<glow::Buffer>,
     fbo: Option<glow::Framebuffer>,

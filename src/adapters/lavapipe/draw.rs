@@ -109,7 +109,8 @@ impl Gpu {
             self.check_msaa(scene, plan)?;
         }
         let groups = gpu::groups(plan);
-        let (vertices, runs) = gpu::vertex_stream(scene, bits, (tw, th));
+        let gpu::Stream { vertices, runs } =
+            gpu::Stream::new(scene, &gpu::Placement::at_centres(bits, (tw, th)));
 
         let vertex_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("vertices"),
@@ -135,8 +136,14 @@ impl Gpu {
         let cull = scene.rules.cull;
         let passes = (0..groups)
             .map(|g| {
+                // The adapter refuses lines and polygons (`accepted`).
                 runs.iter()
-                    .map(|&(mode, a, b)| (self.pipeline(mode, g, cull, samples), a, b))
+                    .filter_map(|run| match run.draw {
+                        gpu::Draw::Triangles(mode) => {
+                            Some((self.pipeline(mode, g, cull, samples), run.first, run.end))
+                        }
+                        _ => None,
+                    })
                     .collect()
             })
             .collect();

@@ -8,10 +8,16 @@
 //! `(x_ndc·w, y_ndc·w, w/2, w)` so the driver's perspective division sees
 //! the vertex's w.
 
-use super::float_input::{f32_of, snapped, to_f32};
+mod passes;
+mod stream;
+
+#[allow(unused_imports)] // the shifted passes are wired next
+pub(crate) use passes::shifts;
+pub(crate) use stream::{Draw, Placement, Run, Stream, VERTEX_FLOATS};
+
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError};
-use crate::scene::{Interpolation, Primitive, Scene};
+use crate::scene::{Primitive, Scene};
 
 /// Attributes a vertex can carry through the pipelines.
 pub(crate) const MAX_ATTRIBUTES: usize = 16;
@@ -19,9 +25,6 @@ pub(crate) const MAX_ATTRIBUTES: usize = 16;
 pub(crate) const CHANNELS: usize = 2 + MAX_ATTRIBUTES;
 /// Four-channel targets needed for every channel.
 pub(crate) const GROUPS: usize = CHANNELS.div_ceil(4);
-/// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
-/// attributes (16).
-pub(crate) const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
 
 /// What a GPU API adapter draws: triangles snapped to the case's grid,
 /// with depth and attributes; antialiased scenes where its multisampling
@@ -92,38 +95,4 @@ pub(crate) fn groups(plan: &Plan) -> usize {
     };
     debug_assert!(groups <= GROUPS);
     groups
-}
-
-/// Every triangle's vertices as `VERTEX_FLOATS` floats each, and the runs of
-/// consecutive vertices (first, end) whose triangles share an
-/// interpolation mode, so each run is one draw call.
-pub(crate) fn vertex_stream(
-    scene: &Scene,
-    bits: u32,
-    target: (u32, u32),
-) -> (Vec<f32>, Vec<(Interpolation, u32, u32)>) {
-    let mut vertices: Vec<f32> = Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS);
-    let mut runs: Vec<(Interpolation, u32, u32)> = Vec::new();
-    let (sx, sy) = (2.0 / target.0 as f32, 2.0 / target.1 as f32);
-    for (i, t) in scene.triangles() {
-        for v in &t.vertices {
-            let x = to_f32(&snapped(&v.x, Some(bits)));
-            let y = to_f32(&snapped(&v.y, Some(bits)));
-            let wv = f32_of(&v.w);
-            let (xn, yn) = (x * sx - 1.0, 1.0 - y * sy);
-            vertices.extend([xn * wv, yn * wv, 0.5 * wv, wv]);
-            vertices.extend([(i + 1) as f32, f32_of(&v.z), 0.0, 0.0]);
-            let mut attrs = [0f32; MAX_ATTRIBUTES];
-            for (slot, a) in attrs.iter_mut().zip(&v.attributes) {
-                *slot = f32_of(a);
-            }
-            vertices.extend(attrs);
-        }
-        let first = (vertices.len() / VERTEX_FLOATS) as u32 - 3;
-        match runs.last_mut() {
-            Some((mode, _, end)) if *mode == t.interpolation => *end = first + 3,
-            _ => runs.push((t.interpolation, first, first + 3)),
-        }
-    }
-    (vertices, runs)
 }

@@ -1,0 +1,216 @@
+//! A scene as the GPU adapters upload it: one vertex stream of every
+//! primitive in scene order, cut into runs that each need one pipeline
+//! state (a draw call).
+//!
+//! - A triangle is three vertices; consecutive triangles of one
+//!   interpolation mode share a run.
+//! - A line is two vertices; consecutive lines of one rule, width and
+//!   interpolation share a run.
+//! - A polygon is drawn by **stencil then cover**, as GPU vector renderers
+//!   draw paths: a [`Draw::Stencil`] run of fan triangles (each contour's
+//!   first vertex joined to each of its edges) that counts every sample's
+//!   winding number in the stencil buffer, then a [`Draw::Cover`] run of
+//!   two triangles over the polygon's box, one pixel wider on every side,
+//!   that writes the polygon where the stencil says the fill rule fills
+//!   and clears the stencil behind it.
+//!
+//! Why the fan is exact. Every fan triangle adds its orientation's sign to
+//! the winding of the samples it covers, so a sample's sum is its winding
+//! number. A sample on an inner fan edge lies on the edge of two fan
+//! triangles: on opposite sides of it, the driver's tie rule gives it to
+//! exactly one; on the same side, the two have opposite orientations and
+//! the rule gives it to both or to neither, which adds 0. A sample on an
+//! outer edge is decided by the driver's tie rule, which is SPEC §14.1's
+//! nudge when the rule is top-left. So the stencil holds each sample's
+//! winding number (modulo 256) under the driver's own rule.
+//!
+//! Positions are the snapped vertices plus a shift, both exact, rounded
+//! once to f32: the shift moves a sample slot's offset onto the pixel
+//! centre for a shifted pass (`passes.rs`).
+
+use dashu_ratio::RBig;
+
+use super::super::float_input::{f32_of, snapped, to_f32};
+use super::MAX_ATTRIBUTES;
+use crate::scene::{Interpolation, LineRule, Polygon, PolygonFill, Primitive, Scene, Vertex};
+
+/// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
+/// attributes (16).
+pub(crate) const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
+
+/// The pipeline state a run of vertices is drawn with.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Draw {
+    /// Triangles whose attributes are interpolated as the mode says.
+    Triangles(Interpolation),
+    /// Lines of one rule and width.
+    Lines {
+        rule: LineRule,
+        width: f32,
+        interpolation: Interpolation,
+    },
+    /// A polygon's fan triangles, counted into the stencil buffer only.
+    Stencil(PolygonFill),
+    /// Two triangles over a stencilled polygon's box, drawn where the
+    /// stencil fills under the rule, and clearing the stencil.
+    Cover(PolygonFill),
+}
+
+/// Consecutive vertices `first..end` drawn with one pipeline state.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Run {
+    pub draw: Draw,
+    pub first: u32,
+    pub end: u32,
+}
+
+/// Every primitive's vertices, `VERTEX_FLOATS` floats each, and its runs.
+pub(crate) struct Stream {
+    pub vertices: Vec<f32>,
+    pub runs: Vec<Run>,
+}
+
+/// How a stream places the scene on the target.
+pub(crate) struct Placement {
+    /// The case's subpixel bits: each position is snapped to them.
+    pub bits: u32,
+    /// The target's size: positions map to clip space over it.
+    pub target: (u32, u32),
+    /// Added to every snapped position, in pixels (exact).
+    pub shift: [RBig; 2],
+}
+
+impl Placement {
+    /// No shift: pixel centres sample the scene.
+    pub(crate) fn at_centres(bits: u32, target: (u32, u32)) -> Placement {
+        Placement {
+            bits,
+            target,
+            shift: [RBig::ZERO, RBig::ZERO],
+        }
+    }
+}
+
+impl Stream {
+    /// The scene's primitives in scene order, placed.
+    pub(crate) fn new(scene: &Scene, place: &Placement) -> Stream {
+        let mut stream = Stream {
+            vertices: Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS),
+            runs: Vec::new(),
+        };
+        for (i, primitive) in scene.primitives.iter().enumerate() {
+            let id = (i + 1) as f32;
+            match primitive {
+                Primitive::Triangle(t) => {
+                    for v in &t.vertices {
+                        stream.vertex(v, id, place);
+                    }
+                    stream.close(Draw::Triangles(t.interpolation), 3);
+                }
+                Primitive::Line(l) => {
+                    for v in &l.vertices {
+                        stream.vertex(v, id, place);
+                    }
+                    let draw = Draw::Lines {
+                        rule: l.rule,
+                        width: f32_of(&l.width),
+                        interpolation: l.interpolation,
+                    };
+                    stream.close(draw, 2);
+                }
+                Primitive::Polygon(p) => stream.polygon(p, id, place),
+            }
+        }
+        stream
+    }
+
+    /// Appends one vertex: position, `[id, depth, 0, 0]`, attributes.
+    fn vertex(&mut self, v: &Vertex, id: f32, place: &Placement) {
+        let [x, y] = self.position(&v.x, &v.y, place);
+        let w = f32_of(&v.w);
+        self.vertices.extend([x * w, y * w, 0.5 * w, w]);
+        self.vertices.extend([id, f32_of(&v.z), 0.0, 0.0]);
+        let mut attributes = [0f32; MAX_ATTRIBUTES];
+        for (slot, a) in attributes.iter_mut().zip(&v.attributes) {
+            *slot = f32_of(a);
+        }
+        self.vertices.extend(attributes);
+    }
+
+    /// A snapped, shifted position in normalised device coordinates:
+    /// `x · 2/P − 1`, `1 − y · 2/Q` (y down on screen), exact in f32 for
+    /// 8-bit coordinates of magnitude under 2^15.
+    fn position(
+        &self,
+        x: &crate::scene::Number,
+        y: &crate::scene::Number,
+        place: &Placement,
+    ) -> [f32; 2] {
+        let x = to_f32(&(snapped(x, Some(place.bits)) + &place.shift[0]));
+        let y = to_f32(&(snapped(y, Some(place.bits)) + &place.shift[1]));
+        let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
+        [x * sx - 1.0, 1.0 - y * sy]
+    }
+
+    /// Appends a bare vertex at a position in pixels (a cover's corner).
+    fn corner(&mut self, x: f32, y: f32, id: f32, place: &Placement) {
+        let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
+        self.vertices.extend([x * sx - 1.0, 1.0 - y * sy, 0.5, 1.0]);
+        self.vertices.extend([id, 0.0, 0.0, 0.0]);
+        self.vertices.extend([0f32; MAX_ATTRIBUTES]);
+    }
+
+    /// A polygon's fan into the stencil, then its cover.
+    fn polygon(&mut self, p: &Polygon, id: f32, place: &Placement) {
+        let mut fan = 0;
+        for contour in p.contours() {
+            for pair in contour[1..].windows(2) {
+                for v in [&contour[0], &pair[0], &pair[1]] {
+                    self.vertex(v, id, place);
+                }
+                fan += 3;
+            }
+        }
+        if fan > 0 {
+            self.close(Draw::Stencil(p.fill), fan);
+        }
+        // The box of the snapped vertices, a pixel wider on every side, so
+        // that no sample the polygon covers lies on the cover's border.
+        let (mut lo, mut hi) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
+        for v in &p.vertices {
+            for (axis, c) in [&v.x, &v.y].into_iter().enumerate() {
+                let c = to_f32(&(snapped(c, Some(place.bits)) + &place.shift[axis]));
+                lo[axis] = lo[axis].min(c.floor() - 1.0);
+                hi[axis] = hi[axis].max(c.ceil() + 1.0);
+            }
+        }
+        let corners = [
+            (lo[0], lo[1]),
+            (hi[0], lo[1]),
+            (lo[0], hi[1]),
+            (hi[0], lo[1]),
+            (hi[0], hi[1]),
+            (lo[0], hi[1]),
+        ];
+        for (x, y) in corners {
+            self.corner(x, y, id, place);
+        }
+        self.close(Draw::Cover(p.fill), 6);
+    }
+
+    /// Ends a primitive of `n` vertices drawn as `draw`: joins the last
+    /// run when it has the same state (covers never join: each clears the
+    /// stencil its own fan set), or starts a run.
+    fn close(&mut self, draw: Draw, n: u32) {
+        let end = (self.vertices.len() / VERTEX_FLOATS) as u32;
+        let joins = !matches!(draw, Draw::Stencil(_) | Draw::Cover(_));
+        match self.runs.last_mut() {
+            Some(run) if joins && run.draw == draw => run.end = end,
+            _ => self.runs.push(Run {
+                draw,
+                first: end - n,
+                end,
+            }),
+        }
+    }
+}
