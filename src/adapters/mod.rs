@@ -19,12 +19,13 @@ pub mod external;
     feature = "euc",
     feature = "vello",
     feature = "lavapipe",
-    feature = "gl"
+    feature = "gl",
+    feature = "vulkan"
 ))]
 mod float_input;
 #[cfg(feature = "gl")]
 pub mod gl;
-#[cfg(any(feature = "lavapipe", feature = "gl"))]
+#[cfg(any(feature = "lavapipe", feature = "gl", feature = "vulkan"))]
 mod gpu;
 #[cfg(feature = "lavapipe")]
 pub mod lavapipe;
@@ -32,6 +33,8 @@ pub mod lavapipe;
 pub mod tiny_skia;
 #[cfg(feature = "vello")]
 pub mod vello;
+#[cfg(feature = "vulkan")]
+pub mod vulkan;
 
 use crate::rasterizer::Rasterizer;
 
@@ -40,6 +43,8 @@ use crate::rasterizer::Rasterizer;
 pub fn names() -> Vec<&'static str> {
     #[allow(unused_mut)]
     let mut names = Vec::new();
+    #[cfg(feature = "vulkan")]
+    names.push(vulkan::NAME);
     #[cfg(feature = "lavapipe")]
     names.push(lavapipe::NAME);
     #[cfg(feature = "gl")]
@@ -57,6 +62,10 @@ pub fn names() -> Vec<&'static str> {
 /// `external:PROGRAM [ARGS]` and `external-persistent:PROGRAM [ARGS]`
 /// (split on whitespace; SPEC.md §12).
 pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
+    #[cfg(feature = "vulkan")]
+    if name == vulkan::NAME {
+        return Some(Box::new(vulkan::Vulkan));
+    }
     #[cfg(feature = "lavapipe")]
     if name == lavapipe::NAME {
         return Some(Box::new(lavapipe::Lavapipe));

@@ -1,0 +1,254 @@
+//! Finding a Vulkan device and creating it: the loader, the instance, the
+//! physical device (`RASTERCHECK_VULKAN_DEVICE`, or the first GPU, or the
+//! first device), what it offers for rasterization, and the logical
+//! device with the features this adapter uses.
+
+use std::ffi::CStr;
+
+use ash::vk;
+
+/// What the device offers that decides what it can draw.
+#[derive(Clone, Debug)]
+pub(super) struct Offers {
+    /// `subPixelPrecisionBits`: the grid vertices snap to.
+    pub subpixel_bits: u32,
+    /// `maxFramebufferWidth` and height, the smaller, and `maxImageDimension2D`.
+    pub max_side: u32,
+    /// VK_EXT_line_rasterization's (or VK_KHR's) modes, when enabled.
+    pub bresenham_lines: bool,
+    pub rectangular_lines: bool,
+    /// `strictLines`: whether DEFAULT lines are rectangles rather than
+    /// parallelograms.
+    pub strict_lines: bool,
+    pub wide_lines: bool,
+    pub line_width_range: [f32; 2],
+    pub line_width_granularity: f32,
+    /// A depth-stencil format with stencil that can be an attachment.
+    pub stencil_format: vk::Format,
+}
+
+/// The device this adapter draws with, created once.
+pub(super) struct Device {
+    /// Keeps the loader loaded while the device lives.
+    _entry: ash::Entry,
+    pub instance: ash::Instance,
+    physical: vk::PhysicalDevice,
+    pub device: ash::Device,
+    pub queue: vk::Queue,
+    pub family: u32,
+    pub memory: vk::PhysicalDeviceMemoryProperties,
+    /// "NAME (DRIVER DRIVER_INFO, Vulkan X.Y.Z)".
+    pub description: String,
+    pub offers: Offers,
+}
+
+/// What to install when no loader or driver is found.
+pub(super) const INSTALL_HINT: &str =
+    "install libvulkan1 and a driver (Debian: mesa-vulkan-drivers for lavapipe)";
+
+impl Device {
+    pub(super) fn new() -> Result<Device, String> {
+        // SAFETY: loading libvulkan runs its initialisers, as any Vulkan
+        // program does.
+        let entry = unsafe { ash::Entry::load() }
+            .map_err(|e| format!("no Vulkan loader ({e}): {INSTALL_HINT}"))?;
+        let app = vk::ApplicationInfo::default()
+            .application_name(c"rastercheck")
+            .api_version(vk::API_VERSION_1_2);
+        let info = vk::InstanceCreateInfo::default().application_info(&app);
+        // SAFETY: a valid create info; the instance is destroyed in Drop.
+        let instance = unsafe { entry.create_instance(&info, None) }
+            .map_err(|e| format!("creating a Vulkan instance: {e}: {INSTALL_HINT}"))?;
+        match unsafe { Self::on(entry.clone(), instance.clone()) } {
+            Ok(device) => Ok(device),
+            Err(e) => {
+                // SAFETY: nothing made from the instance outlives this.
+                unsafe { instance.destroy_instance(None) };
+                Err(e)
+            }
+        }
+    }
+
+    unsafe fn on(entry: ash::Entry, instance: ash::Instance) -> Result<Device, String> {
+        let physical = choose(&instance)?;
+        let properties = instance.get_physical_device_properties(physical);
+        let name = properties
+            .device_name_as_c_str()
+            .map(|c| c.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let extensions: Vec<String> = instance
+            .enumerate_device_extension_properties(physical)
+            .map_err(|e| format!("{name}: listing extensions: {e}"))?
+            .iter()
+            .filter_map(|e| e.extension_name_as_c_str().ok())
+            .map(|c| c.to_string_lossy().into_owned())
+            .collect();
+        let has = |ext: &CStr| extensions.iter().any(|e| e.as_bytes() == ext.to_bytes());
+        let line_ext = [
+            ash::khr::line_rasterization::NAME,
+            ash::ext::line_rasterization::NAME,
+        ]
+        .into_iter()
+        .find(|e| has(e));
+
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut properties2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        instance.get_physical_device_properties2(physical, &mut properties2);
+        let c_text = |r: Result<&CStr, _>| r.map(|c: &CStr| c.to_string_lossy().into_owned());
+        let driver_name = c_text(driver.driver_name_as_c_str()).unwrap_or_default();
+        let driver_info = c_text(driver.driver_info_as_c_str()).unwrap_or_default();
+        let v = properties.api_version;
+        let description = format!(
+            "{name} ({driver_name} {driver_info}, Vulkan {}.{}.{})",
+            vk::api_version_major(v),
+            vk::api_version_minor(v),
+            vk::api_version_patch(v)
+        );
+
+        let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default();
+        let mut features2 = vk::PhysicalDeviceFeatures2::default();
+        if line_ext.is_some() {
+            features2 = features2.push_next(&mut lines);
+        }
+        instance.get_physical_device_features2(physical, &mut features2);
+        let wide_lines = features2.features.wide_lines == vk::TRUE;
+        let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
+
+        let family = instance
+            .get_physical_device_queue_family_properties(physical)
+            .iter()
+            .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
+            .ok_or_else(|| format!("{name}: no graphics queue"))? as u32;
+        let priorities = [1.0];
+        let queues = [vk::DeviceQueueCreateInfo::default()
+            .queue_family_index(family)
+            .queue_priorities(&priorities)];
+        let enabled = vk::PhysicalDeviceFeatures::default().wide_lines(wide_lines);
+        let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
+            .bresenham_lines(bresenham == vk::TRUE)
+            .rectangular_lines(rectangular == vk::TRUE);
+        let names: Vec<*const std::ffi::c_char> = line_ext.iter().map(|e| e.as_ptr()).collect();
+        let mut info = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_features(&enabled)
+            .enabled_extension_names(&names);
+        if line_ext.is_some() {
+            info = info.push_next(&mut enable_lines);
+        }
+        let device = instance
+            .create_device(physical, &info, None)
+            .map_err(|e| format!("{name}: creating the device: {e}"))?;
+        let queue = device.get_device_queue(family, 0);
+        let memory = instance.get_physical_device_memory_properties(physical);
+
+        let limits = properties.limits;
+        let stencil_format = [
+            vk::Format::S8_UINT,
+            vk::Format::D24_UNORM_S8_UINT,
+            vk::Format::D32_SFLOAT_S8_UINT,
+        ]
+        .into_iter()
+        .find(|&f| {
+            instance
+                .get_physical_device_format_properties(physical, f)
+                .optimal_tiling_features
+                .contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT)
+        })
+        .unwrap_or(vk::Format::UNDEFINED);
+        let offers = Offers {
+            subpixel_bits: limits.sub_pixel_precision_bits,
+            max_side: limits
+                .max_framebuffer_width
+                .min(limits.max_framebuffer_height)
+                .min(limits.max_image_dimension2_d),
+            bresenham_lines: bresenham == vk::TRUE,
+            rectangular_lines: rectangular == vk::TRUE,
+            strict_lines: limits.strict_lines == vk::TRUE,
+            wide_lines,
+            line_width_range: limits.line_width_range,
+            line_width_granularity: limits.line_width_granularity,
+            stencil_format,
+        };
+        Ok(Device {
+            _entry: entry,
+            instance,
+            physical,
+            device,
+            queue,
+            family,
+            memory,
+            description,
+            offers,
+        })
+    }
+
+    /// A memory type index that `bits` allows and that has `flags`.
+    pub(super) fn memory_type(&self, bits: u32, flags: vk::MemoryPropertyFlags) -> Option<u32> {
+        (0..self.memory.memory_type_count).find(|&i| {
+            bits & (1 << i) != 0
+                && self.memory.memory_types[i as usize]
+                    .property_flags
+                    .contains(flags)
+        })
+    }
+
+    /// Whether `format` can be a colour attachment that blends.
+    pub(super) fn blends(&self, format: vk::Format) -> bool {
+        // SAFETY: a valid physical device.
+        unsafe {
+            self.instance
+                .get_physical_device_format_properties(self.physical, format)
+        }
+        .optimal_tiling_features
+        .contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND)
+    }
+}
+
+impl Drop for Device {
+    fn drop(&mut self) {
+        // SAFETY: the device is idle once waited for; nothing made from it
+        // outlives it (the pipelines are destroyed by their owner first).
+        unsafe {
+            let _ = self.device.device_wait_idle();
+            self.device.destroy_device(None);
+            self.instance.destroy_instance(None);
+        }
+    }
+}
+
+/// The physical device: the one whose name contains
+/// `RASTERCHECK_VULKAN_DEVICE` (case-insensitive), else the first that is
+/// not a CPU, else the first.
+unsafe fn choose(instance: &ash::Instance) -> Result<vk::PhysicalDevice, String> {
+    let devices = instance
+        .enumerate_physical_devices()
+        .map_err(|e| format!("listing Vulkan devices: {e}"))?;
+    let named: Vec<(vk::PhysicalDevice, String, vk::PhysicalDeviceType)> = devices
+        .iter()
+        .map(|&d| {
+            let p = instance.get_physical_device_properties(d);
+            let name = p
+                .device_name_as_c_str()
+                .map(|c| c.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            (d, name, p.device_type)
+        })
+        .collect();
+    if let Ok(wanted) = std::env::var("RASTERCHECK_VULKAN_DEVICE") {
+        let lower = wanted.to_lowercase();
+        return named
+            .iter()
+            .find(|(_, name, _)| name.to_lowercase().contains(&lower))
+            .map(|(d, _, _)| *d)
+            .ok_or_else(|| {
+                let all: Vec<&str> = named.iter().map(|(_, n, _)| n.as_str()).collect();
+                format!("RASTERCHECK_VULKAN_DEVICE={wanted} names none of the devices {all:?}")
+            });
+    }
+    named
+        .iter()
+        .find(|(_, _, kind)| *kind != vk::PhysicalDeviceType::CPU)
+        .or(named.first())
+        .map(|(d, _, _)| *d)
+        .ok_or_else(|| format!("no Vulkan device: {INSTALL_HINT}"))
+}

@@ -1,0 +1,485 @@
+//! Drawing one scene: its passes' vertex streams uploaded into one buffer,
+//! targets of the canvas's power-of-two size made, every pass recorded in
+//! one command buffer (each cleared, drawn, and copied out into its own
+//! part of a host-visible buffer), submitted, waited for, and decoded into
+//! the frame: pass s fills sample slot s of every pixel.
+//!
+//! Everything made here is destroyed when the [`Drawing`] drops, on every
+//! path, failures included.
+
+use ash::vk;
+
+use super::super::gpu::{self, Placement, Stream, VERTEX_FLOATS};
+use super::device::Device;
+use super::pipelines::{Pipelines, COUNT_FORMAT, VALUE_FORMAT};
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::RasterError;
+use crate::scene::Scene;
+
+/// What one scene needs on the device; destroyed on drop.
+struct Drawing<'d> {
+    gpu: &'d Device,
+    images: Vec<(vk::Image, vk::ImageView, vk::DeviceMemory)>,
+    buffers: Vec<(vk::Buffer, vk::DeviceMemory)>,
+    framebuffer: vk::Framebuffer,
+    pool: vk::CommandPool,
+    fence: vk::Fence,
+}
+
+/// Draws `scene` once per shift (one pass per sample slot; one unshifted
+/// pass without antialiasing) and reads the frame back.
+pub(super) fn render(
+    gpu: &Device,
+    pipelines: &mut Pipelines,
+    scene: &Scene,
+    plan: &Plan,
+    bits: u32,
+    shifts: Vec<[dashu_ratio::RBig; 2]>,
+) -> Result<Frame, RasterError> {
+    let failed = |e: String| RasterError::Failed(format!("vulkan: {e}"));
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let target = gpu::target_size(scene, gpu.offers.max_side, "this Vulkan device")?;
+    let groups = gpu::groups(plan);
+    let mut drawing = Drawing {
+        gpu,
+        images: Vec::new(),
+        buffers: Vec::new(),
+        framebuffer: vk::Framebuffer::null(),
+        pool: vk::CommandPool::null(),
+        fence: vk::Fence::null(),
+    };
+
+    // Every pass's stream, one after another in one vertex buffer.
+    let streams: Vec<Stream> = shifts
+        .into_iter()
+        .map(|shift| {
+            Stream::new(
+                scene,
+                &Placement {
+                    bits,
+                    target,
+                    shift,
+                },
+            )
+        })
+        .collect();
+    let vertices: Vec<f32> = streams
+        .iter()
+        .flat_map(|s| s.vertices.iter().copied())
+        .collect();
+    let vertex_bytes = (vertices.len().max(VERTEX_FLOATS) * 4) as u64;
+    let (vertex_buffer, vertex_memory) = drawing
+        .buffer(vertex_bytes, vk::BufferUsageFlags::VERTEX_BUFFER)
+        .map_err(failed)?;
+    // SAFETY: host-visible, coherent memory of at least this size.
+    unsafe { write(gpu, vertex_memory, &vertices) }.map_err(failed)?;
+
+    let pixels = u64::from(w) * u64::from(h);
+    let (count_bytes, pass_bytes) = layout(pixels as usize, groups);
+    let (count_bytes, pass_bytes) = (count_bytes as u64, pass_bytes as u64);
+    let read_bytes = pass_bytes * streams.len() as u64;
+    let (read_buffer, read_memory) = drawing
+        .buffer(read_bytes, vk::BufferUsageFlags::TRANSFER_DST)
+        .map_err(failed)?;
+
+    let render_pass = pipelines.render_pass(groups).map_err(failed)?;
+    let colour = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
+    let mut views = Vec::with_capacity(groups + 2);
+    views.push(
+        drawing
+            .image(COUNT_FORMAT, target, colour)
+            .map_err(failed)?,
+    );
+    for _ in 0..groups {
+        views.push(
+            drawing
+                .image(VALUE_FORMAT, target, colour)
+                .map_err(failed)?,
+        );
+    }
+    let stencil = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+    views.push(
+        drawing
+            .image(gpu.offers.stencil_format, target, stencil)
+            .map_err(failed)?,
+    );
+    let info = vk::FramebufferCreateInfo::default()
+        .render_pass(render_pass)
+        .attachments(&views)
+        .width(target.0)
+        .height(target.1)
+        .layers(1);
+    // SAFETY: valid views of images of this size.
+    drawing.framebuffer =
+        unsafe { gpu.device.create_framebuffer(&info, None) }.map_err(|e| failed(e.to_string()))?;
+
+    // The pipelines of every run, chosen before recording.
+    let mut passes = Vec::with_capacity(streams.len());
+    let mut base = 0u64;
+    for stream in &streams {
+        let mut runs = Vec::with_capacity(stream.runs.len());
+        for run in &stream.runs {
+            let pipeline = pipelines
+                .pipeline(run.draw, scene.rules.cull, groups)
+                .map_err(failed)?;
+            runs.push((pipeline, run.first, run.end));
+        }
+        passes.push((base, runs));
+        base += (stream.vertices.len() * 4) as u64;
+    }
+
+    // SAFETY: every handle recorded is alive until the fence is waited for
+    // and the drawing dropped.
+    unsafe {
+        let d = &gpu.device;
+        let info = vk::CommandPoolCreateInfo::default().queue_family_index(gpu.family);
+        drawing.pool = d
+            .create_command_pool(&info, None)
+            .map_err(|e| failed(e.to_string()))?;
+        let info = vk::CommandBufferAllocateInfo::default()
+            .command_pool(drawing.pool)
+            .level(vk::CommandBufferLevel::PRIMARY)
+            .command_buffer_count(1);
+        let cb = d
+            .allocate_command_buffers(&info)
+            .map_err(|e| failed(e.to_string()))?[0];
+        let begin = vk::CommandBufferBeginInfo::default()
+            .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+        d.begin_command_buffer(cb, &begin)
+            .map_err(|e| failed(e.to_string()))?;
+        let mut clears = vec![vk::ClearValue::default(); groups + 1];
+        clears.push(vk::ClearValue {
+            depth_stencil: vk::ClearDepthStencilValue {
+                depth: 0.0,
+                stencil: 0,
+            },
+        });
+        let canvas = vk::Rect2D {
+            offset: vk::Offset2D { x: 0, y: 0 },
+            extent: vk::Extent2D {
+                width: w,
+                height: h,
+            },
+        };
+        for (s, (offset, runs)) in passes.iter().enumerate() {
+            let begin = vk::RenderPassBeginInfo::default()
+                .render_pass(render_pass)
+                .framebuffer(drawing.framebuffer)
+                .render_area(vk::Rect2D {
+                    offset: vk::Offset2D { x: 0, y: 0 },
+                    extent: vk::Extent2D {
+                        width: target.0,
+                        height: target.1,
+                    },
+                })
+                .clear_values(&clears);
+            d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
+            let viewport = vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: target.0 as f32,
+                height: target.1 as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            };
+            d.cmd_set_viewport(cb, 0, &[viewport]);
+            d.cmd_set_scissor(cb, 0, &[canvas]);
+            d.cmd_bind_vertex_buffers(cb, 0, &[vertex_buffer], &[*offset]);
+            for &(pipeline, first, end) in runs {
+                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
+                d.cmd_draw(cb, end - first, 1, first, 0);
+            }
+            d.cmd_end_render_pass(cb);
+            let mut at = pass_bytes * s as u64;
+            for (i, &(image, _, _)) in drawing.images[..=groups].iter().enumerate() {
+                let region = vk::BufferImageCopy {
+                    buffer_offset: at,
+                    buffer_row_length: 0,
+                    buffer_image_height: 0,
+                    image_subresource: vk::ImageSubresourceLayers {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        mip_level: 0,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    },
+                    image_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
+                    image_extent: vk::Extent3D {
+                        width: w,
+                        height: h,
+                        depth: 1,
+                    },
+                };
+                d.cmd_copy_image_to_buffer(
+                    cb,
+                    image,
+                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                    read_buffer,
+                    &[region],
+                );
+                at += if i == 0 { count_bytes } else { pixels * 16 };
+            }
+        }
+        let to_host = vk::MemoryBarrier::default()
+            .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+            .dst_access_mask(vk::AccessFlags::HOST_READ);
+        d.cmd_pipeline_barrier(
+            cb,
+            vk::PipelineStageFlags::TRANSFER,
+            vk::PipelineStageFlags::HOST,
+            vk::DependencyFlags::empty(),
+            &[to_host],
+            &[],
+            &[],
+        );
+        d.end_command_buffer(cb)
+            .map_err(|e| failed(e.to_string()))?;
+        drawing.fence = d
+            .create_fence(&vk::FenceCreateInfo::default(), None)
+            .map_err(|e| failed(e.to_string()))?;
+        let buffers = [cb];
+        let submit = vk::SubmitInfo::default().command_buffers(&buffers);
+        d.queue_submit(gpu.queue, &[submit], drawing.fence)
+            .map_err(|e| failed(format!("submitting: {e}")))?;
+        d.wait_for_fences(&[drawing.fence], true, u64::MAX)
+            .map_err(|e| failed(format!("waiting for the frame: {e}")))?;
+    }
+
+    // SAFETY: the fence is signalled: the copies are done and visible.
+    let bytes = unsafe { read(gpu, read_memory, read_bytes) }.map_err(failed)?;
+    decode(&bytes, scene, plan, groups, streams.len())
+}
+
+/// The bytes of one pass's counts, and of the whole pass (counts, then
+/// each channel group), in the read-back buffer: every copy starts on a
+/// multiple of 16 bytes, the largest texel.
+fn layout(pixels: usize, groups: usize) -> (usize, usize) {
+    let count = (pixels * 4).next_multiple_of(16);
+    (count, count + pixels * 16 * groups)
+}
+
+/// The frame pass s's part of the read-back fills, slot s of each pixel.
+fn decode(
+    bytes: &[u8],
+    scene: &Scene,
+    plan: &Plan,
+    groups: usize,
+    passes: usize,
+) -> Result<Frame, RasterError> {
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let pixels = w as usize * h as usize;
+    let mut frame = Frame::for_plan(w, h, plan);
+    let slots = frame.samples as usize;
+    debug_assert_eq!(slots, passes);
+    let float =
+        |at: usize| f32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
+    let (count_bytes, pass_bytes) = layout(pixels, groups);
+    for s in 0..passes {
+        let base = s * pass_bytes;
+        for p in 0..pixels {
+            let slot = p * slots + s;
+            let count = float(base + p * 4);
+            if count.fract() != 0.0 || !(0.0..=65535.0).contains(&count) {
+                return Err(RasterError::Failed(format!(
+                    "vulkan: coverage count {count} read back at pixel {p}, pass {s}"
+                )));
+            }
+            let channel = |c: usize| {
+                let (g, k) = (c / 4, c % 4);
+                float(base + count_bytes + g * pixels * 16 + p * 16 + k * 4)
+            };
+            frame.coverage[slot] = count as u16;
+            frame.last[slot] = channel(0) as u32;
+            if count > 0.0 {
+                if let Some(depth) = &mut frame.depth {
+                    depth[slot] = f64::from(channel(1));
+                }
+                for (k, a) in frame.attributes.iter_mut().enumerate() {
+                    a[slot] = f64::from(channel(2 + k));
+                }
+            }
+        }
+    }
+    if plan.antialias.is_some() {
+        frame.resolve();
+    }
+    Ok(frame)
+}
+
+impl Drawing<'_> {
+    /// A host-visible, coherent buffer of `size` bytes.
+    fn buffer(
+        &mut self,
+        size: u64,
+        usage: vk::BufferUsageFlags,
+    ) -> Result<(vk::Buffer, vk::DeviceMemory), String> {
+        let d = &self.gpu.device;
+        let info = vk::BufferCreateInfo::default()
+            .size(size)
+            .usage(usage)
+            .sharing_mode(vk::SharingMode::EXCLUSIVE);
+        // SAFETY: valid create infos; what is made is kept for Drop.
+        unsafe {
+            let buffer = d.create_buffer(&info, None).map_err(|e| e.to_string())?;
+            let needs = d.get_buffer_memory_requirements(buffer);
+            let host =
+                vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+            let memory = match self.memory(needs, host) {
+                Ok(memory) => memory,
+                Err(e) => {
+                    d.destroy_buffer(buffer, None);
+                    return Err(e);
+                }
+            };
+            self.buffers.push((buffer, memory));
+            d.bind_buffer_memory(buffer, memory, 0)
+                .map_err(|e| e.to_string())?;
+            Ok((buffer, memory))
+        }
+    }
+
+    /// A `size` 2D image of `format` in device memory, and its view.
+    fn image(
+        &mut self,
+        format: vk::Format,
+        (width, height): (u32, u32),
+        usage: vk::ImageUsageFlags,
+    ) -> Result<vk::ImageView, String> {
+        let d = &self.gpu.device;
+        let info = vk::ImageCreateInfo::default()
+            .image_type(vk::ImageType::TYPE_2D)
+            .format(format)
+            .extent(vk::Extent3D {
+                width,
+                height,
+                depth: 1,
+            })
+            .mip_levels(1)
+            .array_layers(1)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .tiling(vk::ImageTiling::OPTIMAL)
+            .usage(usage)
+            .initial_layout(vk::ImageLayout::UNDEFINED);
+        let aspect = if usage.contains(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT) {
+            if format == vk::Format::S8_UINT {
+                vk::ImageAspectFlags::STENCIL
+            } else {
+                vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
+            }
+        } else {
+            vk::ImageAspectFlags::COLOR
+        };
+        // SAFETY: valid create infos; what is made is kept for Drop.
+        unsafe {
+            let image = d.create_image(&info, None).map_err(|e| e.to_string())?;
+            let needs = d.get_image_memory_requirements(image);
+            let memory = match self.memory(needs, vk::MemoryPropertyFlags::DEVICE_LOCAL) {
+                Ok(memory) => memory,
+                Err(e) => {
+                    d.destroy_image(image, None);
+                    return Err(e);
+                }
+            };
+            self.images.push((image, vk::ImageView::null(), memory));
+            d.bind_image_memory(image, memory, 0)
+                .map_err(|e| e.to_string())?;
+            let view = vk::ImageViewCreateInfo::default()
+                .image(image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(format)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: aspect,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                });
+            let view = d
+                .create_image_view(&view, None)
+                .map_err(|e| e.to_string())?;
+            if let Some(last) = self.images.last_mut() {
+                last.1 = view;
+            }
+            Ok(view)
+        }
+    }
+
+    unsafe fn memory(
+        &self,
+        needs: vk::MemoryRequirements,
+        flags: vk::MemoryPropertyFlags,
+    ) -> Result<vk::DeviceMemory, String> {
+        let index = self
+            .gpu
+            .memory_type(needs.memory_type_bits, flags)
+            .or_else(|| {
+                self.gpu
+                    .memory_type(needs.memory_type_bits, vk::MemoryPropertyFlags::empty())
+            })
+            .ok_or("no memory type fits")?;
+        let info = vk::MemoryAllocateInfo::default()
+            .allocation_size(needs.size)
+            .memory_type_index(index);
+        self.gpu
+            .device
+            .allocate_memory(&info, None)
+            .map_err(|e| format!("allocating {} bytes: {e}", needs.size))
+    }
+}
+
+/// Copies `values` into host-visible memory.
+unsafe fn write(gpu: &Device, memory: vk::DeviceMemory, values: &[f32]) -> Result<(), String> {
+    if values.is_empty() {
+        return Ok(());
+    }
+    let bytes = std::mem::size_of_val(values);
+    let to = gpu
+        .device
+        .map_memory(memory, 0, bytes as u64, vk::MemoryMapFlags::empty())
+        .map_err(|e| e.to_string())?;
+    std::ptr::copy_nonoverlapping(values.as_ptr().cast::<u8>(), to.cast::<u8>(), bytes);
+    gpu.device.unmap_memory(memory);
+    Ok(())
+}
+
+/// The first `size` bytes of host-visible memory.
+unsafe fn read(gpu: &Device, memory: vk::DeviceMemory, size: u64) -> Result<Vec<u8>, String> {
+    let from = gpu
+        .device
+        .map_memory(memory, 0, size, vk::MemoryMapFlags::empty())
+        .map_err(|e| e.to_string())?;
+    let bytes = std::slice::from_raw_parts(from.cast::<u8>(), size as usize).to_vec();
+    gpu.device.unmap_memory(memory);
+    Ok(bytes)
+}
+
+impl Drop for Drawing<'_> {
+    fn drop(&mut self) {
+        let d = &self.gpu.device;
+        // SAFETY: the submission (if any) is waited for; on an early
+        // return, wait for the device before destroying what it may use.
+        unsafe {
+            let _ = d.device_wait_idle();
+            if self.fence != vk::Fence::null() {
+                d.destroy_fence(self.fence, None);
+            }
+            if self.pool != vk::CommandPool::null() {
+                d.destroy_command_pool(self.pool, None);
+            }
+            if self.framebuffer != vk::Framebuffer::null() {
+                d.destroy_framebuffer(self.framebuffer, None);
+            }
+            for &(image, view, memory) in &self.images {
+                if view != vk::ImageView::null() {
+                    d.destroy_image_view(view, None);
+                }
+                d.destroy_image(image, None);
+                d.free_memory(memory, None);
+            }
+            for &(buffer, memory) in &self.buffers {
+                d.destroy_buffer(buffer, None);
+                d.free_memory(memory, None);
+            }
+        }
+    }
+}

@@ -1,0 +1,241 @@
+//! `vulkan`: any installed Vulkan driver, through raw Vulkan (ash), not
+//! wgpu's portable subset (cargo feature `vulkan`; system package
+//! `libvulkan1` and a driver: `mesa-vulkan-drivers` for lavapipe, which is
+//! what CI has; a GPU's own driver where one is installed).
+//!
+//! # Which device
+//!
+//! The one whose name contains `RASTERCHECK_VULKAN_DEVICE`
+//! (case-insensitive) if that is set; else the first device that is not a
+//! CPU; else the first (lavapipe, where Mesa is all there is). Reports
+//! name it, with its driver and version ([`Rasterizer::declared`]).
+//!
+//! # What is drawn, and how it is read back
+//!
+//! As in the `lavapipe` (wgpu) adapter: every primitive in scene order,
+//! with no depth test, into float targets of the canvas's power-of-two
+//! size, in one render pass with one subpass:
+//!
+//! - **count** (`R32_SFLOAT`, additive blending): covers per sample;
+//! - **channel groups** (`R32G32B32A32_SFLOAT`, no blending, so the last
+//!   primitive in submission order wins): `[primitive + 1, depth,
+//!   attribute 0, …]` four at a time, all of them in the same pass
+//!   (multiple render targets);
+//! - **stencil**, for polygons (below).
+//!
+//! Positions are the shared stream's (`gpu/stream.rs`): snapped to the
+//! case's grid exactly and rounded once to f32, exact for 8 subpixel bits.
+//! The device then snaps to its own `subPixelPrecisionBits`; a case at
+//! more bits is snapped twice and shows it, and a case with
+//! `subpixel_bits: null` is unsupported. Depth is the case's `z` as a
+//! `noperspective` varying; attributes are varyings with the case's
+//! interpolation; flat ones take the first vertex (Vulkan's default
+//! provoking vertex, the case's rule).
+//!
+//! # Rules
+//!
+//! - **Fill rule**: the device's own (top-left); a case under another rule
+//!   reports the device's departures from it. **Culling**: front face
+//!   counter-clockwise in framebuffer coordinates (y down, as the case's),
+//!   `cull: ccw` culls front faces and `cull: cw` back faces.
+//! - **Lines** (VK_EXT_line_rasterization / VK_KHR_line_rasterization):
+//!   `diamond-exit` is `BRESENHAM` (Vulkan's Bresenham lines are the
+//!   diamond-exit rule); `rectangle` is `RECTANGULAR`; `parallelogram` is
+//!   `DEFAULT` on a device without `strictLines` (whose non-strict lines
+//!   are parallelograms swept along the minor axis), unsupported on one
+//!   with it. A width other than 1 needs `wideLines`, inside
+//!   `lineWidthRange`, on a multiple of `lineWidthGranularity`. No mode
+//!   draws `midpoint`: such cases are unsupported, and say so.
+//! - **Polygons**: stencil then cover (`gpu/stream.rs` explains why the fan
+//!   is exact under the device's tie rule), even-odd and nonzero.
+//!
+//! # Antialiasing: shifted passes
+//!
+//! Every sample pattern is drawn as one single-sample pass per sample slot,
+//! the scene shifted by the pixel centre minus the slot's offset
+//! (`gpu/passes.rs`): pass s's pixel centres decide slot s. This is exact
+//! when every offset lies on the device's subpixel grid, and unsupported
+//! otherwise, with that reason. Results are labelled "shifted passes" in
+//! the adapter's declared description.
+//!
+//! # Motion
+//!
+//! Moving scenes are not drawn (unsupported): see the closing notes.
+//!
+//! # The rooms
+//!
+//! - this file: the [`Rasterizer`] impl, what a device can draw and why it
+//!   refuses the rest, and the shared device;
+//! - `device.rs`: the loader, the instance, choosing and creating the
+//!   device, what it offers;
+//! - `shaders.rs`: WGSL compiled to SPIR-V by naga;
+//! - `pipelines.rs`: render passes and pipelines (lines, stencil, cover);
+//! - `draw.rs`: one scene's passes recorded, submitted, read back, decoded.
+
+mod device;
+mod draw;
+mod pipelines;
+mod shaders;
+
+use std::sync::{Mutex, MutexGuard, OnceLock};
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{LineRule, Primitive, Scene};
+
+use super::gpu;
+use device::{Device, Offers};
+use pipelines::Pipelines;
+
+/// The name on the command line and in reports.
+pub const NAME: &str = "vulkan";
+
+/// Any Vulkan driver, through ash.
+pub struct Vulkan;
+
+impl Rasterizer for Vulkan {
+    fn name(&self) -> &str {
+        NAME
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            ideal_geometry: false,
+            motion_blur: false,
+            ..Capabilities::everything()
+        }
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let shared = shared().map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
+        let mut shared = lock(shared);
+        let Shared { device, pipelines } = &mut *shared;
+        let bits = accepted(scene, plan, &device.offers)?;
+        let shifts = match &plan.antialias {
+            Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)
+                .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,
+            None => vec![Default::default()],
+        };
+        draw::render(device, pipelines, scene, plan, bits, shifts)
+    }
+
+    /// The device, its driver and version, once the device is made.
+    fn declared(&self) -> Option<String> {
+        let shared = shared().ok()?;
+        let description = lock(shared).device.description.clone();
+        Some(format!("{description}; antialiasing by shifted passes"))
+    }
+}
+
+/// The device's description, or why there is none. Creates the shared
+/// device on first use.
+pub fn device_description() -> Result<String, String> {
+    Ok(lock(shared()?).device.description.clone())
+}
+
+/// The subpixel bits the scene is snapped to, or why the device cannot
+/// draw it: unsnapped geometry, too many attributes, a line rule or width
+/// it has no mode for, a polygon without a stencil format.
+fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterError> {
+    let unsupported = |why: String| Err(RasterError::Unsupported(why));
+    for primitive in &scene.primitives {
+        match primitive {
+            Primitive::Line(line) => {
+                if let Some(why) = line_refusal(line.rule, &line.width, offers) {
+                    return unsupported(format!("{} line: {why}", line.rule.name()));
+                }
+            }
+            Primitive::Polygon(_) if offers.stencil_format == ash::vk::Format::UNDEFINED => {
+                return unsupported("polygons: the device has no stencil attachment format".into());
+            }
+            _ => {}
+        }
+    }
+    let Some(bits) = scene.rules.subpixel_bits else {
+        return unsupported(format!(
+            "unsnapped geometry (subpixel_bits: null): the device snaps to {} subpixel bits",
+            offers.subpixel_bits
+        ));
+    };
+    if plan.attributes > gpu::MAX_ATTRIBUTES {
+        return unsupported(format!(
+            "{} attributes (this adapter carries at most {})",
+            plan.attributes,
+            gpu::MAX_ATTRIBUTES
+        ));
+    }
+    Ok(bits)
+}
+
+/// Why the device has no line mode for this rule and width, if it has none.
+fn line_refusal(rule: LineRule, width: &crate::scene::Number, offers: &Offers) -> Option<String> {
+    let mode_missing = match rule {
+        LineRule::Midpoint => {
+            return Some("no Vulkan line mode draws the midpoint rule".to_owned());
+        }
+        LineRule::DiamondExit => (!offers.bresenham_lines)
+            .then_some("the device offers no Bresenham (diamond-exit) lines"),
+        LineRule::Rectangle => {
+            (!offers.rectangular_lines).then_some("the device offers no rectangular lines")
+        }
+        LineRule::Parallelogram => offers.strict_lines.then_some(
+            "the device has strictLines: its DEFAULT lines are rectangles, not parallelograms",
+        ),
+    };
+    if let Some(why) = mode_missing {
+        return Some(why.to_owned());
+    }
+    let w = super::float_input::f32_of(width);
+    if w == 1.0 {
+        return None;
+    }
+    let [lo, hi] = offers.line_width_range;
+    let steps = (w - lo) / offers.line_width_granularity.max(f32::MIN_POSITIVE);
+    let exact = dashu_ratio::RBig::try_from(w).is_ok_and(|back| &back == width.as_rbig());
+    if !offers.wide_lines || w < lo || w > hi || steps.fract() != 0.0 || !exact {
+        return Some(format!(
+            "width {}: the device draws widths {lo} to {hi} in steps of {}{}",
+            width.to_exact_string(),
+            offers.line_width_granularity,
+            if offers.wide_lines {
+                ""
+            } else {
+                " (no wideLines)"
+            }
+        ));
+    }
+    None
+}
+
+/// The device and its kept pipelines, made once and shared by every case.
+struct Shared {
+    // Dropped in this order: the pipelines before their device.
+    pipelines: Pipelines,
+    device: Device,
+}
+
+fn shared() -> Result<&'static Mutex<Shared>, &'static String> {
+    static SHARED: OnceLock<Result<Mutex<Shared>, String>> = OnceLock::new();
+    SHARED
+        .get_or_init(|| {
+            let device = Device::new()?;
+            if !device.blends(pipelines::COUNT_FORMAT) {
+                return Err(format!(
+                    "{}: R32_SFLOAT does not blend, and the coverage count needs it",
+                    device.description
+                ));
+            }
+            let pipelines = Pipelines::new(&device)?;
+            Ok(Mutex::new(Shared { pipelines, device }))
+        })
+        .as_ref()
+}
+
+/// The shared device, for one case at a time; a case that panicked
+/// holding it leaves it usable.
+fn lock(shared: &'static Mutex<Shared>) -> MutexGuard<'static, Shared> {
+    shared
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}

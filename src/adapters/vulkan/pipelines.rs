@@ -1,0 +1,383 @@
+//! The render passes and graphics pipelines, made on first use and kept.
+//!
+//! One render pass per number of channel groups: the count (`R32_SFLOAT`,
+//! additive blending), the groups (`R32G32B32A32_SFLOAT`, no blending: the
+//! last primitive in submission order wins, as Vulkan's primitive order
+//! guarantees) and a stencil attachment, all cleared on load and left for
+//! copying out. One pipeline per run state ([`Draw`]), culling and group
+//! count:
+//!
+//! - triangles: the case's culling, front face counter-clockwise;
+//! - lines: the line mode the rule maps to (`vulkan/mod.rs`), the line's
+//!   width, never culled;
+//! - a polygon's stencil fan: no colour written, every face counted into
+//!   the stencil (nonzero: front faces increment and back faces decrement,
+//!   wrapping; even-odd: invert);
+//! - its cover: colour written where the stencil fills (nonzero: any bit;
+//!   even-odd: the low bit), and the stencil cleared behind it.
+
+use std::collections::HashMap;
+
+use ash::vk;
+
+use super::super::gpu::{Draw, VERTEX_FLOATS};
+use super::device::Device;
+use super::shaders;
+use crate::scene::{Cull, Interpolation, LineRule, PolygonFill};
+
+/// The count's format and the channel groups'.
+pub(super) const COUNT_FORMAT: vk::Format = vk::Format::R32_SFLOAT;
+pub(super) const VALUE_FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
+
+/// What a pipeline is made for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct Key {
+    draw: DrawKey,
+    cull: Cull,
+    groups: usize,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum DrawKey {
+    Triangles(Interpolation),
+    Lines(LineRule, u32, Interpolation),
+    Stencil(PolygonFill),
+    Cover(PolygonFill),
+}
+
+/// The kept render passes and pipelines, destroyed with their owner.
+pub(super) struct Pipelines {
+    device: ash::Device,
+    layout: vk::PipelineLayout,
+    passes: HashMap<usize, vk::RenderPass>,
+    modules: HashMap<(Interpolation, usize), vk::ShaderModule>,
+    pipelines: HashMap<Key, vk::Pipeline>,
+    stencil_format: vk::Format,
+}
+
+impl Pipelines {
+    pub(super) fn new(gpu: &Device) -> Result<Pipelines, String> {
+        let info = vk::PipelineLayoutCreateInfo::default();
+        // SAFETY: a valid device and create info.
+        let layout = unsafe { gpu.device.create_pipeline_layout(&info, None) }
+            .map_err(|e| format!("creating a pipeline layout: {e}"))?;
+        Ok(Pipelines {
+            device: gpu.device.clone(),
+            layout,
+            passes: HashMap::new(),
+            modules: HashMap::new(),
+            pipelines: HashMap::new(),
+            stencil_format: gpu.offers.stencil_format,
+        })
+    }
+
+    /// The render pass of `groups` channel groups.
+    pub(super) fn render_pass(&mut self, groups: usize) -> Result<vk::RenderPass, String> {
+        if let Some(&pass) = self.passes.get(&groups) {
+            return Ok(pass);
+        }
+        let colour = |format| {
+            vk::AttachmentDescription::default()
+                .format(format)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .load_op(vk::AttachmentLoadOp::CLEAR)
+                .store_op(vk::AttachmentStoreOp::STORE)
+                .initial_layout(vk::ImageLayout::UNDEFINED)
+                .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+        };
+        let mut attachments = vec![colour(COUNT_FORMAT)];
+        attachments.extend((0..groups).map(|_| colour(VALUE_FORMAT)));
+        attachments.push(
+            vk::AttachmentDescription::default()
+                .format(self.stencil_format)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .load_op(vk::AttachmentLoadOp::CLEAR)
+                .store_op(vk::AttachmentStoreOp::DONT_CARE)
+                .stencil_load_op(vk::AttachmentLoadOp::CLEAR)
+                .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
+                .initial_layout(vk::ImageLayout::UNDEFINED)
+                .final_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
+        );
+        let colour_refs: Vec<vk::AttachmentReference> = (0..=groups as u32)
+            .map(|i| vk::AttachmentReference {
+                attachment: i,
+                layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+            })
+            .collect();
+        let stencil_ref = vk::AttachmentReference {
+            attachment: groups as u32 + 1,
+            layout: vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+        };
+        let subpasses = [vk::SubpassDescription::default()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&colour_refs)
+            .depth_stencil_attachment(&stencil_ref)];
+        let attachment_stages = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT
+            | vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS
+            | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS;
+        let attachment_access = vk::AccessFlags::COLOR_ATTACHMENT_WRITE
+            | vk::AccessFlags::COLOR_ATTACHMENT_READ
+            | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE
+            | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_READ;
+        // The previous pass's copies read the targets before this pass
+        // clears them; this pass's copies wait for its drawing.
+        let dependencies = [
+            vk::SubpassDependency {
+                src_subpass: vk::SUBPASS_EXTERNAL,
+                dst_subpass: 0,
+                src_stage_mask: vk::PipelineStageFlags::TRANSFER | attachment_stages,
+                dst_stage_mask: attachment_stages,
+                src_access_mask: vk::AccessFlags::TRANSFER_READ | attachment_access,
+                dst_access_mask: attachment_access,
+                dependency_flags: vk::DependencyFlags::empty(),
+            },
+            vk::SubpassDependency {
+                src_subpass: 0,
+                dst_subpass: vk::SUBPASS_EXTERNAL,
+                src_stage_mask: attachment_stages,
+                dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+                src_access_mask: attachment_access,
+                dst_access_mask: vk::AccessFlags::TRANSFER_READ,
+                dependency_flags: vk::DependencyFlags::empty(),
+            },
+        ];
+        let info = vk::RenderPassCreateInfo::default()
+            .attachments(&attachments)
+            .subpasses(&subpasses)
+            .dependencies(&dependencies);
+        // SAFETY: a valid device and create info.
+        let pass = unsafe { self.device.create_render_pass(&info, None) }
+            .map_err(|e| format!("creating a render pass: {e}"))?;
+        self.passes.insert(groups, pass);
+        Ok(pass)
+    }
+
+    /// The pipeline of a run drawn as `draw`, under `cull`, into `groups`
+    /// channel groups.
+    pub(super) fn pipeline(
+        &mut self,
+        draw: Draw,
+        cull: Cull,
+        groups: usize,
+    ) -> Result<vk::Pipeline, String> {
+        let key = Key {
+            draw: match draw {
+                Draw::Triangles(mode) => DrawKey::Triangles(mode),
+                Draw::Lines {
+                    rule,
+                    width,
+                    interpolation,
+                } => DrawKey::Lines(rule, width.to_bits(), interpolation),
+                Draw::Stencil(fill) => DrawKey::Stencil(fill),
+                Draw::Cover(fill) => DrawKey::Cover(fill),
+            },
+            cull: match draw {
+                Draw::Triangles(_) => cull,
+                _ => Cull::None,
+            },
+            groups,
+        };
+        if let Some(&pipeline) = self.pipelines.get(&key) {
+            return Ok(pipeline);
+        }
+        let pipeline = self.make(key)?;
+        self.pipelines.insert(key, pipeline);
+        Ok(pipeline)
+    }
+
+    fn module(&mut self, mode: Interpolation, groups: usize) -> Result<vk::ShaderModule, String> {
+        if let Some(&module) = self.modules.get(&(mode, groups)) {
+            return Ok(module);
+        }
+        let words = shaders::spirv(mode, groups)?;
+        let info = vk::ShaderModuleCreateInfo::default().code(&words);
+        // SAFETY: valid SPIR-V from naga.
+        let module = unsafe { self.device.create_shader_module(&info, None) }
+            .map_err(|e| format!("creating a shader module: {e}"))?;
+        self.modules.insert((mode, groups), module);
+        Ok(module)
+    }
+
+    fn make(&mut self, key: Key) -> Result<vk::Pipeline, String> {
+        let mode = match key.draw {
+            DrawKey::Triangles(mode) | DrawKey::Lines(_, _, mode) => mode,
+            DrawKey::Stencil(_) | DrawKey::Cover(_) => Interpolation::Linear,
+        };
+        let module = self.module(mode, key.groups)?;
+        let render_pass = self.render_pass(key.groups)?;
+        let stages = [
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::VERTEX)
+                .module(module)
+                .name(c"vs"),
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::FRAGMENT)
+                .module(module)
+                .name(c"fs"),
+        ];
+        let bindings = [vk::VertexInputBindingDescription {
+            binding: 0,
+            stride: (VERTEX_FLOATS * 4) as u32,
+            input_rate: vk::VertexInputRate::VERTEX,
+        }];
+        let attributes: Vec<vk::VertexInputAttributeDescription> = (0..VERTEX_FLOATS as u32 / 4)
+            .map(|i| vk::VertexInputAttributeDescription {
+                location: i,
+                binding: 0,
+                format: vk::Format::R32G32B32A32_SFLOAT,
+                offset: i * 16,
+            })
+            .collect();
+        let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
+            .vertex_binding_descriptions(&bindings)
+            .vertex_attribute_descriptions(&attributes);
+        let lines = matches!(key.draw, DrawKey::Lines(..));
+        let assembly = vk::PipelineInputAssemblyStateCreateInfo::default().topology(if lines {
+            vk::PrimitiveTopology::LINE_LIST
+        } else {
+            vk::PrimitiveTopology::TRIANGLE_LIST
+        });
+        let viewport = vk::PipelineViewportStateCreateInfo::default()
+            .viewport_count(1)
+            .scissor_count(1);
+        let cull_mode = match key.cull {
+            Cull::None => vk::CullModeFlags::NONE,
+            Cull::Clockwise => vk::CullModeFlags::BACK,
+            Cull::CounterClockwise => vk::CullModeFlags::FRONT,
+        };
+        let (width, line_mode) = match key.draw {
+            DrawKey::Lines(rule, width, _) => (f32::from_bits(width), Some(line_mode(rule))),
+            _ => (1.0, None),
+        };
+        let mut line_state = vk::PipelineRasterizationLineStateCreateInfoKHR::default()
+            .line_rasterization_mode(line_mode.unwrap_or_default());
+        let mut raster = vk::PipelineRasterizationStateCreateInfo::default()
+            .polygon_mode(vk::PolygonMode::FILL)
+            .cull_mode(cull_mode)
+            .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
+            .line_width(width);
+        if line_mode.is_some_and(|m| m != vk::LineRasterizationModeKHR::DEFAULT) {
+            raster = raster.push_next(&mut line_state);
+        }
+        let multisample = vk::PipelineMultisampleStateCreateInfo::default()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        let always = vk::StencilOpState {
+            fail_op: vk::StencilOp::KEEP,
+            pass_op: vk::StencilOp::KEEP,
+            depth_fail_op: vk::StencilOp::KEEP,
+            compare_op: vk::CompareOp::ALWAYS,
+            compare_mask: 0xff,
+            write_mask: 0xff,
+            reference: 0,
+        };
+        let (front, back, stencil_test) = match key.draw {
+            DrawKey::Stencil(PolygonFill::NonZero) => (
+                vk::StencilOpState {
+                    pass_op: vk::StencilOp::INCREMENT_AND_WRAP,
+                    ..always
+                },
+                vk::StencilOpState {
+                    pass_op: vk::StencilOp::DECREMENT_AND_WRAP,
+                    ..always
+                },
+                true,
+            ),
+            DrawKey::Stencil(PolygonFill::EvenOdd) => {
+                let invert = vk::StencilOpState {
+                    pass_op: vk::StencilOp::INVERT,
+                    ..always
+                };
+                (invert, invert, true)
+            }
+            DrawKey::Cover(fill) => {
+                let cover = vk::StencilOpState {
+                    pass_op: vk::StencilOp::ZERO,
+                    compare_op: vk::CompareOp::NOT_EQUAL,
+                    compare_mask: if fill == PolygonFill::EvenOdd {
+                        0x01
+                    } else {
+                        0xff
+                    },
+                    ..always
+                };
+                (cover, cover, true)
+            }
+            _ => (always, always, false),
+        };
+        let depth_stencil = vk::PipelineDepthStencilStateCreateInfo::default()
+            .stencil_test_enable(stencil_test)
+            .front(front)
+            .back(back);
+        let writes = if matches!(key.draw, DrawKey::Stencil(_)) {
+            vk::ColorComponentFlags::empty()
+        } else {
+            vk::ColorComponentFlags::RGBA
+        };
+        let mut blends = vec![vk::PipelineColorBlendAttachmentState::default()
+            .blend_enable(true)
+            .src_color_blend_factor(vk::BlendFactor::ONE)
+            .dst_color_blend_factor(vk::BlendFactor::ONE)
+            .color_blend_op(vk::BlendOp::ADD)
+            .src_alpha_blend_factor(vk::BlendFactor::ONE)
+            .dst_alpha_blend_factor(vk::BlendFactor::ONE)
+            .alpha_blend_op(vk::BlendOp::ADD)
+            .color_write_mask(writes)];
+        blends
+            .extend((0..key.groups).map(|_| {
+                vk::PipelineColorBlendAttachmentState::default().color_write_mask(writes)
+            }));
+        let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blends);
+        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+        let info = vk::GraphicsPipelineCreateInfo::default()
+            .stages(&stages)
+            .vertex_input_state(&vertex_input)
+            .input_assembly_state(&assembly)
+            .viewport_state(&viewport)
+            .rasterization_state(&raster)
+            .multisample_state(&multisample)
+            .depth_stencil_state(&depth_stencil)
+            .color_blend_state(&blend)
+            .dynamic_state(&dynamic)
+            .layout(self.layout)
+            .render_pass(render_pass)
+            .subpass(0);
+        // SAFETY: every state above lives until this call returns.
+        let pipelines = unsafe {
+            self.device
+                .create_graphics_pipelines(vk::PipelineCache::null(), &[info], None)
+        }
+        .map_err(|(_, e)| format!("creating a pipeline for {key:?}: {e}"))?;
+        Ok(pipelines[0])
+    }
+}
+
+/// The line mode a line rule maps to (`vulkan/mod.rs` refuses the rules a
+/// device cannot draw first): `diamond-exit` is BRESENHAM, `rectangle`
+/// RECTANGULAR, `parallelogram` DEFAULT on a device without `strictLines`.
+fn line_mode(rule: LineRule) -> vk::LineRasterizationModeKHR {
+    match rule {
+        LineRule::DiamondExit => vk::LineRasterizationModeKHR::BRESENHAM,
+        LineRule::Rectangle => vk::LineRasterizationModeKHR::RECTANGULAR,
+        LineRule::Parallelogram | LineRule::Midpoint => vk::LineRasterizationModeKHR::DEFAULT,
+    }
+}
+
+impl Drop for Pipelines {
+    fn drop(&mut self) {
+        // SAFETY: the device is idle (every submission is waited for), and
+        // nothing else holds these objects.
+        unsafe {
+            for &p in self.pipelines.values() {
+                self.device.destroy_pipeline(p, None);
+            }
+            for &m in self.modules.values() {
+                self.device.destroy_shader_module(m, None);
+            }
+            for &p in self.passes.values() {
+                self.device.destroy_render_pass(p, None);
+            }
+            self.device.destroy_pipeline_layout(self.layout, None);
+        }
+    }
+}
