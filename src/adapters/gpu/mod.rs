@@ -10,10 +10,13 @@
 
 mod passes;
 mod stream;
+mod time;
 
 #[allow(unused_imports)] // the shifted passes are wired next
 pub(crate) use passes::shifts;
 pub(crate) use stream::{Draw, Placement, Run, Stream, VERTEX_FLOATS};
+#[allow(unused_imports)] // the vulkan adapter's
+pub(crate) use time::{time_draws, TimeDraws};
 
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError};

@@ -78,6 +78,10 @@ pub(crate) struct Placement {
     pub target: (u32, u32),
     /// Added to every snapped position, in pixels (exact).
     pub shift: [RBig; 2],
+    /// The instant τ ∈ [0, 1] a moving vertex is placed at:
+    /// (1 − τ)·snap(from) + τ·snap(to), exactly (SPEC.md §15.1), before
+    /// the one rounding to f32. Static vertices ignore it.
+    pub time: RBig,
 }
 
 impl Placement {
@@ -87,7 +91,28 @@ impl Placement {
             bits,
             target,
             shift: [RBig::ZERO, RBig::ZERO],
+            time: RBig::ZERO,
         }
+    }
+}
+
+impl Placement {
+    /// A vertex's position in pixels, exact: snapped, at the instant if it
+    /// moves, shifted.
+    fn pixels(&self, v: &Vertex) -> [RBig; 2] {
+        let from = [&v.x, &v.y].map(|c| snapped(c, Some(self.bits)));
+        let at = match v.to.as_deref() {
+            Some(to) if v.moves() => {
+                let to = to.each_ref().map(|c| snapped(c, Some(self.bits)));
+                let [a, b] = from;
+                let [c, d] = to;
+                let rest = RBig::ONE - &self.time;
+                [&rest * a + &self.time * c, &rest * b + &self.time * d]
+            }
+            _ => from,
+        };
+        let [x, y] = at;
+        [x + &self.shift[0], y + &self.shift[1]]
     }
 }
 
@@ -126,7 +151,7 @@ impl Stream {
 
     /// Appends one vertex: position, `[id, depth, 0, 0]`, attributes.
     fn vertex(&mut self, v: &Vertex, id: f32, place: &Placement) {
-        let [x, y] = self.position(&v.x, &v.y, place);
+        let [x, y] = self.position(v, place);
         let w = f32_of(&v.w);
         self.vertices.extend([x * w, y * w, 0.5 * w, w]);
         self.vertices.extend([id, f32_of(&v.z), 0.0, 0.0]);
@@ -137,17 +162,12 @@ impl Stream {
         self.vertices.extend(attributes);
     }
 
-    /// A snapped, shifted position in normalised device coordinates:
-    /// `x · 2/P − 1`, `1 − y · 2/Q` (y down on screen), exact in f32 for
-    /// 8-bit coordinates of magnitude under 2^15.
-    fn position(
-        &self,
-        x: &crate::scene::Number,
-        y: &crate::scene::Number,
-        place: &Placement,
-    ) -> [f32; 2] {
-        let x = to_f32(&(snapped(x, Some(place.bits)) + &place.shift[0]));
-        let y = to_f32(&(snapped(y, Some(place.bits)) + &place.shift[1]));
+    /// A snapped, shifted position (at the placement's instant, if the
+    /// vertex moves) in normalised device coordinates: `x · 2/P − 1`,
+    /// `1 − y · 2/Q` (y down on screen), exact in f32 for 8-bit
+    /// coordinates of magnitude under 2^15.
+    fn position(&self, v: &Vertex, place: &Placement) -> [f32; 2] {
+        let [x, y] = place.pixels(v).map(|c| to_f32(&c));
         let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
         [x * sx - 1.0, 1.0 - y * sy]
     }
@@ -178,8 +198,8 @@ impl Stream {
         // that no sample the polygon covers lies on the cover's border.
         let (mut lo, mut hi) = ([f32::INFINITY; 2], [f32::NEG_INFINITY; 2]);
         for v in &p.vertices {
-            for (axis, c) in [&v.x, &v.y].into_iter().enumerate() {
-                let c = to_f32(&(snapped(c, Some(place.bits)) + &place.shift[axis]));
+            for (axis, c) in place.pixels(v).into_iter().enumerate() {
+                let c = to_f32(&c);
                 lo[axis] = lo[axis].min(c.floor() - 1.0);
                 hi[axis] = hi[axis].max(c.ceil() + 1.0);
             }

@@ -27,16 +27,46 @@ struct Drawing<'d> {
     fence: vk::Fence,
 }
 
-/// Draws `scene` once per shift (one pass per sample slot; one unshifted
-/// pass without antialiasing) and reads the frame back.
+/// What one scene's command buffer draws: every placement's stream, and
+/// each render pass's draws, as (scissor, stream). Pass s's read-back
+/// fills slot s of every pixel ([`slots`]), or one pass's counts make a
+/// moving scene's time coverage ([`time`]).
+pub(super) struct Job {
+    pub streams: Vec<Stream>,
+    pub passes: Vec<Vec<(vk::Rect2D, usize)>>,
+}
+
+impl Job {
+    /// One pass per placement, each drawn over the whole canvas.
+    pub(super) fn per_placement(scene: &Scene, placements: &[Placement]) -> Job {
+        let canvas = rect(0, 0, scene.canvas.width, scene.canvas.height);
+        Job {
+            streams: placements.iter().map(|p| Stream::new(scene, p)).collect(),
+            passes: (0..placements.len()).map(|i| vec![(canvas, i)]).collect(),
+        }
+    }
+}
+
+/// A scissor rectangle.
+pub(super) fn rect(x: u32, y: u32, width: u32, height: u32) -> vk::Rect2D {
+    vk::Rect2D {
+        offset: vk::Offset2D {
+            x: x as i32,
+            y: y as i32,
+        },
+        extent: vk::Extent2D { width, height },
+    }
+}
+
+/// Records and runs a job, and returns what each pass read back: its
+/// counts, then its channel groups (see [`layout`]).
 pub(super) fn render(
     gpu: &Device,
     pipelines: &mut Pipelines,
     scene: &Scene,
     plan: &Plan,
-    bits: u32,
-    shifts: Vec<[dashu_ratio::RBig; 2]>,
-) -> Result<Frame, RasterError> {
+    job: &Job,
+) -> Result<Vec<u8>, RasterError> {
     let failed = |e: String| RasterError::Failed(format!("vulkan: {e}"));
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let target = gpu::target_size(scene, gpu.offers.max_side, "this Vulkan device")?;
@@ -50,20 +80,8 @@ pub(super) fn render(
         fence: vk::Fence::null(),
     };
 
-    // Every pass's stream, one after another in one vertex buffer.
-    let streams: Vec<Stream> = shifts
-        .into_iter()
-        .map(|shift| {
-            Stream::new(
-                scene,
-                &Placement {
-                    bits,
-                    target,
-                    shift,
-                },
-            )
-        })
-        .collect();
+    // Every stream, one after another in one vertex buffer.
+    let streams = &job.streams;
     let vertices: Vec<f32> = streams
         .iter()
         .flat_map(|s| s.vertices.iter().copied())
@@ -78,7 +96,7 @@ pub(super) fn render(
     let pixels = u64::from(w) * u64::from(h);
     let (count_bytes, pass_bytes) = layout(pixels as usize, groups);
     let (count_bytes, pass_bytes) = (count_bytes as u64, pass_bytes as u64);
-    let read_bytes = pass_bytes * streams.len() as u64;
+    let read_bytes = pass_bytes * job.passes.len() as u64;
     let (read_buffer, read_memory) = drawing
         .buffer(read_bytes, vk::BufferUsageFlags::TRANSFER_DST)
         .map_err(failed)?;
@@ -114,10 +132,11 @@ pub(super) fn render(
     drawing.framebuffer =
         unsafe { gpu.device.create_framebuffer(&info, None) }.map_err(|e| failed(e.to_string()))?;
 
-    // The pipelines of every run, chosen before recording.
-    let mut passes = Vec::with_capacity(streams.len());
+    // Each stream's place in the vertex buffer and the pipelines of its
+    // runs, chosen before recording.
+    let mut placed = Vec::with_capacity(streams.len());
     let mut base = 0u64;
-    for stream in &streams {
+    for stream in streams {
         let mut runs = Vec::with_capacity(stream.runs.len());
         for run in &stream.runs {
             let pipeline = pipelines
@@ -125,7 +144,7 @@ pub(super) fn render(
                 .map_err(failed)?;
             runs.push((pipeline, run.first, run.end));
         }
-        passes.push((base, runs));
+        placed.push((base, runs));
         base += (stream.vertices.len() * 4) as u64;
     }
 
@@ -155,14 +174,7 @@ pub(super) fn render(
                 stencil: 0,
             },
         });
-        let canvas = vk::Rect2D {
-            offset: vk::Offset2D { x: 0, y: 0 },
-            extent: vk::Extent2D {
-                width: w,
-                height: h,
-            },
-        };
-        for (s, (offset, runs)) in passes.iter().enumerate() {
+        for (s, draws) in job.passes.iter().enumerate() {
             let begin = vk::RenderPassBeginInfo::default()
                 .render_pass(render_pass)
                 .framebuffer(drawing.framebuffer)
@@ -184,11 +196,18 @@ pub(super) fn render(
                 max_depth: 1.0,
             };
             d.cmd_set_viewport(cb, 0, &[viewport]);
-            d.cmd_set_scissor(cb, 0, &[canvas]);
-            d.cmd_bind_vertex_buffers(cb, 0, &[vertex_buffer], &[*offset]);
-            for &(pipeline, first, end) in runs {
-                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
-                d.cmd_draw(cb, end - first, 1, first, 0);
+            let mut bound = vk::Pipeline::null();
+            for &(scissor, stream) in draws {
+                let (offset, runs) = &placed[stream];
+                d.cmd_set_scissor(cb, 0, &[scissor]);
+                d.cmd_bind_vertex_buffers(cb, 0, &[vertex_buffer], &[*offset]);
+                for &(pipeline, first, end) in runs {
+                    if pipeline != bound {
+                        d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
+                        bound = pipeline;
+                    }
+                    d.cmd_draw(cb, end - first, 1, first, 0);
+                }
             }
             d.cmd_end_render_pass(cb);
             let mut at = pass_bytes * s as u64;
@@ -246,8 +265,7 @@ pub(super) fn render(
     }
 
     // SAFETY: the fence is signalled: the copies are done and visible.
-    let bytes = unsafe { read(gpu, read_memory, read_bytes) }.map_err(failed)?;
-    decode(&bytes, scene, plan, groups, streams.len())
+    unsafe { read(gpu, read_memory, read_bytes) }.map_err(failed)
 }
 
 /// The bytes of one pass's counts, and of the whole pass (counts, then
@@ -258,32 +276,36 @@ fn layout(pixels: usize, groups: usize) -> (usize, usize) {
     (count, count + pixels * 16 * groups)
 }
 
-/// The frame pass s's part of the read-back fills, slot s of each pixel.
-fn decode(
-    bytes: &[u8],
-    scene: &Scene,
-    plan: &Plan,
-    groups: usize,
-    passes: usize,
-) -> Result<Frame, RasterError> {
+/// The f32 at byte `at`.
+fn float(bytes: &[u8], at: usize) -> f32 {
+    f32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
+}
+
+/// A count read back, checked: a whole number of covers, at most `limit`.
+fn count(bytes: &[u8], at: usize, limit: f32, p: usize) -> Result<f32, RasterError> {
+    let count = float(bytes, at);
+    if count.fract() != 0.0 || !(0.0..=limit).contains(&count) {
+        return Err(RasterError::Failed(format!(
+            "vulkan: coverage count {count} read back at pixel {p}"
+        )));
+    }
+    Ok(count)
+}
+
+/// The frame whose slot s of each pixel pass s read back; box-resolved
+/// when the scene antialiases.
+pub(super) fn slots(bytes: &[u8], scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let pixels = w as usize * h as usize;
     let mut frame = Frame::for_plan(w, h, plan);
     let slots = frame.samples as usize;
-    debug_assert_eq!(slots, passes);
-    let float =
-        |at: usize| f32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
-    let (count_bytes, pass_bytes) = layout(pixels, groups);
-    for s in 0..passes {
+    let (count_bytes, pass_bytes) = layout(pixels, gpu::groups(plan));
+    let float = |at: usize| float(bytes, at);
+    for s in 0..slots {
         let base = s * pass_bytes;
         for p in 0..pixels {
             let slot = p * slots + s;
-            let count = float(base + p * 4);
-            if count.fract() != 0.0 || !(0.0..=65535.0).contains(&count) {
-                return Err(RasterError::Failed(format!(
-                    "vulkan: coverage count {count} read back at pixel {p}, pass {s}"
-                )));
-            }
+            let count = count(bytes, base + p * 4, 65535.0, p)?;
             let channel = |c: usize| {
                 let (g, k) = (c / 4, c % 4);
                 float(base + count_bytes + g * pixels * 16 + p * 16 + k * 4)
@@ -304,6 +326,16 @@ fn decode(
         frame.resolve();
     }
     Ok(frame)
+}
+
+/// The time coverage of a moving scene from its one pass's counts: each
+/// pixel's covered tests over its `tests` tests.
+pub(super) fn time(bytes: &[u8], scene: &Scene, tests: u32) -> Result<Frame, RasterError> {
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let time = (0..w as usize * h as usize)
+        .map(|p| Ok(f64::from(count(bytes, p * 4, 16_777_216.0, p)?) / f64::from(tests)))
+        .collect::<Result<Vec<f64>, RasterError>>()?;
+    Ok(Frame::time_only(w, h, time))
 }
 
 impl Drawing<'_> {
