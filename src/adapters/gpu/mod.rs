@@ -12,11 +12,10 @@ mod passes;
 mod stream;
 mod time;
 
-#[allow(unused_imports)] // the shifted passes are wired next
 pub(crate) use passes::shifts;
+#[allow(unused_imports)] // `Run` is the gl adapter's
 pub(crate) use stream::{Draw, Placement, Run, Stream, VERTEX_FLOATS};
-#[allow(unused_imports)] // the vulkan adapter's
-pub(crate) use time::{time_draws, TimeDraws};
+pub(crate) use time::time_draws;
 
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError};
@@ -32,6 +31,7 @@ pub(crate) const GROUPS: usize = CHANNELS.div_ceil(4);
 /// What a GPU API adapter draws: triangles snapped to the case's grid,
 /// with depth and attributes; antialiased scenes where its multisampling
 /// is wired (`antialias`). No polygons, no motion.
+#[cfg_attr(not(any(feature = "lavapipe", feature = "gl")), allow(dead_code))]
 pub(crate) fn capabilities(antialias: bool) -> Capabilities {
     Capabilities {
         ideal_geometry: false,
@@ -46,6 +46,7 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
 /// draw the scene: a line (`lines` says why, in the adapter's words),
 /// unsnapped geometry (the `driver` snaps to 8 bits), or more attributes
 /// than the pipelines carry.
+#[cfg_attr(not(any(feature = "lavapipe", feature = "gl")), allow(dead_code))]
 pub(crate) fn snapping_bits(
     scene: &Scene,
     plan: &Plan,

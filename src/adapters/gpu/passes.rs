@@ -21,7 +21,7 @@ use crate::plan::SamplePlan;
 /// The shift of each sample slot's pass, in pixels, or why the pattern
 /// cannot be drawn exactly by a driver that snaps to `driver_bits`: an
 /// offset off its subpixel grid.
-#[allow(dead_code)]
+#[cfg_attr(not(feature = "vulkan"), allow(dead_code))]
 pub(crate) fn shifts(aa: &SamplePlan, driver_bits: u32) -> Result<Vec<[RBig; 2]>, String> {
     let unit = 1u64 << aa.position_bits;
     aa.offsets

@@ -8,7 +8,7 @@ use std::ffi::CStr;
 use ash::vk;
 
 /// What the device offers that decides what it can draw.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub(super) struct Offers {
     /// `subPixelPrecisionBits`: the grid vertices snap to.
     pub subpixel_bits: u32,
