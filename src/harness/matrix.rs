@@ -38,6 +38,7 @@ pub fn default_rows() -> Vec<String> {
         "tiny-skia",
         "euc",
         PYTHON_EXAMPLE,
+        "vulkan",
         "lavapipe",
         "gl",
     ]
@@ -46,7 +47,8 @@ pub fn default_rows() -> Vec<String> {
 }
 
 /// Built-in adapters a build may leave out, with the feature that has them.
-const OPTIONAL: [(&str, &str); 6] = [
+const OPTIONAL: [(&str, &str); 7] = [
+    ("vulkan", "vulkan"),
     ("lavapipe", "lavapipe"),
     ("gl", "gl"),
     ("softpipe", "gl"),
@@ -581,6 +583,7 @@ impl Matrix {
         let features: Vec<&str> = [
             ("tiny-skia", cfg!(feature = "tiny-skia")),
             ("euc", cfg!(feature = "euc")),
+            ("vulkan", cfg!(feature = "vulkan")),
             ("lavapipe", cfg!(feature = "lavapipe")),
             ("gl", cfg!(feature = "gl")),
             ("vello", cfg!(feature = "vello")),
