@@ -35,7 +35,6 @@ pub(crate) struct TimeDraws {
 
 /// The draws of a moving scene on a `width × height` canvas, its spatial
 /// samples given by their shifts, or why there would be too many.
-#[cfg_attr(not(feature = "vulkan"), allow(dead_code))]
 pub(crate) fn time_draws(
     motion: &MotionPlan,
     (width, height): (u32, u32),
