@@ -1,0 +1,226 @@
+//! `gl` and `softpipe`: Mesa's OpenGL rasterizers on the CPU (llvmpipe, or
+//! softpipe with `GALLIUM_DRIVER=softpipe`), driven through EGL on the
+//! surfaceless platform with glow (cargo feature `gl`; system packages
+//! `libegl1 libegl-mesa0 libgl1-mesa-dri`).
+//!
+//! # What is drawn, and how it is read back
+//!
+//! The structure is the `lavapipe` adapter's. A case's triangles are drawn in
+//! scene order, with no depth test, into the float colour attachments of one
+//! framebuffer object, in one pass, and read back into a [`Frame`]:
+//!
+//! - **count** (`R32F`, additive blending `1 + dst`, enabled on this draw
+//!   buffer only): how many triangles cover each sample;
+//! - **channel groups** (`RGBA32F`, no blending, so the last triangle in
+//!   submission order wins, as GL's primitive order guarantees): the channels
+//!   `[primitive + 1, depth, attribute 0, …, attribute 15]` four at a time, as
+//!   many attachments as the plan needs (at most five; GL 3.3 has at least
+//!   eight draw buffers).
+//!
+//! The primitive index (+ 1, exact in f32 up to 2^24) is a `flat` varying and
+//! doubles as the coverage marker of the last writer. Depth is the case's `z`
+//! as a `noperspective` varying, not the depth buffer. Attributes are
+//! varyings with the case's interpolation: `smooth` (perspective),
+//! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
+//! last; the adapter sets `glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)`
+//! (core since GL 3.2), the case's rule. Consecutive triangles of one
+//! interpolation mode share one draw call.
+//!
+//! # Positions: exact to the 8-bit grid
+//!
+//! As in `lavapipe`: coordinates are snapped to the case's `subpixel_bits`
+//! (ties to even) and rounded to f32 (exact for b ≤ 8); the attachments are
+//! `P × Q`, the powers of two at or above the canvas size; the viewport is
+//! the whole `P × Q`, and
+//!
+//! ```text
+//! x_ndc = x · 2/P − 1,   y_ndc = 1 − y · 2/Q      (y down on screen)
+//! clip  = (x_ndc · w, y_ndc · w, w / 2, w)
+//! ```
+//!
+//! GL's window y points up, so a screen row y lands on window row Q − 1 − y:
+//! the canvas is the top `W × H` of the target (window rows Q − H … Q − 1),
+//! the scissor and `glReadPixels` take that rectangle, and its rows, which
+//! come back bottom-up, are flipped. The viewport transform back is exact for
+//! snapped coordinates, as in `lavapipe`; llvmpipe then snaps to its own 8
+//! subpixel bits, so cases with b > 8 are snapped twice and cases with
+//! `subpixel_bits: null` are unsupported.
+//!
+//! # Rules
+//!
+//! - **Fill rule**: the driver's own, not the case's. Mesa's GL draws into an
+//!   FBO with gallium's y-down memory order equal to GL's window y, so its
+//!   top-left rule reads, in the case's y-down terms, as **bottom-left**
+//!   (left and bottom edges include their samples); softpipe's reads as
+//!   bottom-right. A case under another rule reports the departures.
+//! - **Culling**: GL reads the winding in window coordinates (y up); the
+//!   case's is on screen (y down), and the read-back flip makes the two the
+//!   same picture, so the winding seen is the same: (0,0), (1,0), (0,1) is
+//!   clockwise in both. With `glFrontFace(GL_CCW)`, `cull: cw` culls
+//!   `GL_BACK` and `cull: ccw` culls `GL_FRONT`. w > 0 keeps the winding.
+//! - **Lines**: unsupported (GL's lines have no choice of the case's rule).
+//!   **MSAA**: not yet.
+//!
+//! # One context per process, and softpipe
+//!
+//! One EGL display and context is created on first use and shared by every
+//! case; a mutex serialises the cases, and each case makes the context
+//! current on its own thread and releases it after. Mesa picks the gallium
+//! driver (llvmpipe or softpipe) from `GALLIUM_DRIVER` when the display is
+//! initialised, and the surfaceless platform gives one display per process,
+//! so a process holds one of the two, never both:
+//!
+//! - `gl` draws with whatever the display is (llvmpipe unless the process
+//!   was started with `GALLIUM_DRIVER` set) and names it in its messages;
+//! - `softpipe` sets `GALLIUM_DRIVER=softpipe` when it is the first to
+//!   create the display and `GALLIUM_DRIVER` is unset (the case in a
+//!   `rastercheck run -r softpipe`), and otherwise insists that the renderer
+//!   is softpipe: where the process already holds llvmpipe it fails, saying
+//!   to start the process with `GALLIUM_DRIVER=softpipe`.
+//!
+//! # Set up once, drawn again and again
+//!
+//! A scene is set up once (its vertex stream converted and uploaded into a
+//! vertex array and buffer of its own, its framebuffer made) and then
+//! cleared, drawn and read back. `rasterize` does it all with the context
+//! held, and deletes it; [`Rasterizer::prepare`] hands the set-up scene to
+//! the bench, which clears, draws (the draw calls and `glFinish`) and reads
+//! back phase by phase, the context locked and made current for each
+//! phase, and so times the driver's own draw apart. Both paths share every
+//! step, so the frame the bench judges is the one a case's run draws.
+//!
+//! # The rooms
+//!
+//! - this file: the [`Rasterizer`] impls, what Mesa's GL can draw and why
+//!   it refuses the rest;
+//! - `context.rs`: the shared EGL display and context, made on first use,
+//!   locked and made current per case, and its fixed state;
+//! - `shaders.rs`: the programs, one per interpolation mode;
+//! - `drawing.rs`: one scene set up in the context (vertex buffer,
+//!   framebuffer), cleared, drawn and deleted;
+//! - `readback.rs`: the attachments read back into a [`Frame`];
+//! - `prepared.rs`: the same scene cleared, drawn and read back one phase
+//!   at a time, for the bench to time the draw apart.
+
+mod context;
+mod drawing;
+mod prepared;
+mod readback;
+mod shaders;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::scene::Scene;
+
+use super::gpu;
+use context::{ask_for_softpipe, context, with_context};
+use prepared::prepare;
+
+/// The name of the adapter that draws with whatever Mesa's GL is.
+pub const NAME: &str = "gl";
+/// The name of the adapter that insists on softpipe.
+pub const SOFTPIPE: &str = "softpipe";
+
+/// Mesa's OpenGL through EGL: llvmpipe, or whatever `GALLIUM_DRIVER` names.
+pub struct Gl;
+
+/// Mesa's softpipe through EGL (see the module's notes on one driver per
+/// process).
+pub struct Softpipe;
+
+impl Rasterizer for Gl {
+    fn name(&self) -> &str {
+        NAME
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        rasterize(scene, plan, false)
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, false))
+    }
+}
+
+impl Rasterizer for Softpipe {
+    fn name(&self) -> &str {
+        SOFTPIPE
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        rasterize(scene, plan, true)
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, true))
+    }
+}
+
+fn capabilities() -> Capabilities {
+    gpu::capabilities(false)
+}
+
+/// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
+/// it: several samples per pixel, a line, unsnapped geometry or too many
+/// attributes. For `softpipe`, asks for it if no display exists yet.
+pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
+    if plan.samples_per_pixel != 1 {
+        return Err(RasterError::Unsupported(
+            "multisampling is not wired to the GL adapter yet".to_owned(),
+        ));
+    }
+    let bits = gpu::snapping_bits(
+        scene,
+        plan,
+        "GL's lines have no choice of the case's line rule",
+        "Mesa's GL",
+    )?;
+    if softpipe {
+        ask_for_softpipe();
+    }
+    Ok(bits)
+}
+
+/// Sets the scene up, clears, draws and reads back, with the context held
+/// throughout, and deletes what it set up.
+fn rasterize(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
+    let bits = accepted(scene, plan, softpipe)?;
+    with_context(|gl| {
+        gl.insist_on_softpipe(softpipe)?;
+        // SAFETY: GL calls on the context current on this thread, with
+        // buffers sized to what is read and written.
+        unsafe {
+            let drawing = gl.set_up(scene, plan, bits)?;
+            gl.clear(&drawing);
+            gl.draw(&drawing);
+            let frame = gl.read_back(&drawing);
+            gl.delete(&drawing);
+            frame
+        }
+    })
+}
+
+/// The renderer (`GL_RENDERER`, `GL_VERSION`), or why there is none. Creates
+/// the shared context on first use.
+pub fn renderer_description() -> Result<String, String> {
+    let gl = context()?;
+    let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    Ok(format!("{} ({})", gl.renderer, gl.version))
+}
