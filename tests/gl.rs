@@ -2,8 +2,8 @@
 //! exact reference, on the triangle cases it can express; and softpipe, in a
 //! process of its own (Mesa picks one gallium driver per process). Needs the
 //! `gl` feature and the system packages `libegl1 libegl-mesa0
-//! libgl1-mesa-dri`; without a display each test says it skipped, and never
-//! passes by drawing nothing.
+//! libgl1-mesa-dri`; without a display each test says it skipped (under
+//! `CI=true` it fails instead), and never passes by drawing nothing.
 #![cfg(feature = "gl")]
 
 use std::path::Path;
@@ -11,6 +11,8 @@ use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
 use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::plan::Plan;
+use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{FillRule, Scene};
 
 /// Whether llvmpipe is here; prints why not once per test.
@@ -25,6 +27,10 @@ fn available() -> bool {
             false
         }
         Err(why) => {
+            assert!(
+                std::env::var("CI").as_deref() != Ok("true"),
+                "CI=true and no EGL/GL driver: install libegl1 libegl-mesa0 libgl1-mesa-dri ({why})"
+            );
             eprintln!(
                 "skipped: no EGL/GL driver (install libegl1 libegl-mesa0 libgl1-mesa-dri): {why}"
             );
@@ -39,7 +45,7 @@ use common::adapters::{
     assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped,
     record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
-use common::{case, report};
+use common::{case, inline, report};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
@@ -227,6 +233,8 @@ fn the_prepared_path_draws_what_rasterize_draws() {
             "triangles/interp_mixed_modes",
             "triangles/fan_16_center",
             "triangles/cull_cw_mixed_windings",
+            "polygons/pentagram_nonzero",
+            "lines/diamond_star_16",
         ],
     );
 }
@@ -239,4 +247,127 @@ fn is_listed_by_name() {
     assert_eq!(r.name(), "gl");
     let r = rastercheck::adapters::by_name("softpipe").expect("registered");
     assert_eq!(r.name(), "softpipe");
+}
+
+/// Polygons by stencil then cover: the bundled polygon cases (even-odd and
+/// nonzero, self-intersecting, with holes), held to the driver's rule,
+/// match the reference sample for sample; under top-left, a star with
+/// vertices on sample centres fails on exactly those ties.
+#[test]
+fn polygons_by_stencil_then_cover_match_the_reference() {
+    if !available() {
+        return;
+    }
+    let ids = [
+        "polygons/bowtie_even_odd",
+        "polygons/bowtie_nonzero",
+        "polygons/concave_arrow",
+        "polygons/concave_comb",
+        "polygons/double_loop_even_odd",
+        "polygons/double_loop_nonzero",
+        "polygons/hole_reversed_nonzero",
+        "polygons/hole_same_even_odd",
+        "polygons/hole_same_nonzero",
+        "polygons/pentagram_even_odd",
+        "polygons/pentagram_nonzero",
+        "polygons/star_on_centres_bottom_left",
+    ];
+    assert_each(&ids, &Gl, bottom_left, |_, run, line, failures| {
+        if run.verdict != Verdict::Pass {
+            failures.push(line.to_owned());
+        }
+    });
+    let (reference, top_left) = run(&case("polygons/star_on_centres_top_left"));
+    eprintln!(
+        "{}",
+        report("star_on_centres_top_left", &reference, &top_left)
+    );
+    assert!(matches!(top_left.verdict, Verdict::Fail(_)));
+}
+
+/// Each cover clears the stencil its fan set: the same even-odd pentagram
+/// drawn three times, then a nonzero one, covers each inside sample four
+/// times, owned by the last; a stencil left behind would invert the
+/// second pentagram's parity and draw it nowhere.
+#[test]
+fn each_polygon_starts_from_a_clear_stencil() {
+    if !available() {
+        return;
+    }
+    let star = r#"[[8, 1], [12.41015625, 14.56640625], [0.8671875, 6.18359375],
+                   [15.1328125, 6.18359375], [3.58984375, 14.56640625]]"#;
+    let scene = inline(&format!(
+        r#"{{"name": "stars", "canvas": {{"width": 16, "height": 16}},
+            "rules": {{"fill_rule": "bottom-left"}},
+            "primitives": [{{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "nonzero"}}]}}"#
+    ));
+    let (reference, r) = run(&scene);
+    assert_eq!(
+        r.verdict,
+        Verdict::Pass,
+        "{}",
+        report("stars", &reference, &r)
+    );
+    let frame = r.frame.as_ref().expect("a frame");
+    assert!(frame.coverage.iter().any(|&c| c == 4));
+    assert!(frame.coverage.iter().all(|&c| c != 3));
+}
+
+/// `diamond-exit` lines are drawn with `GL_LINES` at width 1 and judged:
+/// lines with no sample, diamond corner or endpoint on a tie match the
+/// reference; the worked example, all ties, is judged too (GL breaks ties
+/// by its own perturbation, in y-up window coordinates), and fails.
+#[test]
+fn diamond_exit_lines_are_drawn_and_judged() {
+    if !available() {
+        return;
+    }
+    let scene = inline(
+        r#"{"name": "lines", "canvas": {"width": 32, "height": 32},
+            "primitives": [
+              {"line": [[1.25, 1.125], [29.75, 9.125]], "rule": "diamond-exit"},
+              {"line": [[30.25, 2.375], [3.125, 28.75]], "rule": "diamond-exit"},
+              {"line": [[5.25, 30.125], [9.875, 12.3125]], "rule": "diamond-exit"},
+              {"line": [[12.125, 20.25], [28.25, 26.875]], "rule": "diamond-exit"}]}"#,
+    );
+    let (reference, r) = run(&scene);
+    assert_eq!(
+        r.verdict,
+        Verdict::Pass,
+        "{}",
+        report("lines", &reference, &r)
+    );
+    assert!(reference.frame.covered_samples() > 60);
+    let (reference, r) = run(&case("lines/diamond_exit_worked_example"));
+    eprintln!("{}", report("diamond_exit_worked_example", &reference, &r));
+    assert!(matches!(r.verdict, Verdict::Fail(_)), "{:?}", r.verdict);
+}
+
+/// The line rules GL does not draw are refused with the reason.
+#[test]
+fn refuses_the_line_rules_gl_does_not_draw() {
+    if !available() {
+        return;
+    }
+    for (rule, extra, why) in [
+        ("midpoint", "", "midpoint"),
+        (
+            "parallelogram",
+            r#", "width": 2"#,
+            "diamond-exit line's fragments",
+        ),
+        ("rectangle", r#", "width": 2"#, "multisampled"),
+    ] {
+        let scene = inline(&format!(
+            r#"{{"name": "l", "canvas": {{"width": 8, "height": 8}},
+                "primitives": [{{"line": [[0.5, 0.5], [7.5, 3.5]], "rule": "{rule}"{extra}}}]}}"#
+        ));
+        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+            Err(e) => assert!(e.to_string().contains(why), "{rule}: {e}"),
+            Ok(_) => panic!("{rule} lines drawn"),
+        }
+    }
 }

@@ -5,13 +5,14 @@
 //!
 //! # What is drawn, and how it is read back
 //!
-//! The structure is the `lavapipe` adapter's. A case's triangles are drawn in
-//! scene order, with no depth test, into the float colour attachments of one
-//! framebuffer object, in one pass, and read back into a [`Frame`]:
+//! The structure is the `lavapipe` adapter's. A case's primitives
+//! (triangles, `diamond-exit` lines, polygons) are drawn in scene order,
+//! with no depth test, into the float colour attachments of one
+//! framebuffer object, and read back into a [`Frame`]:
 //!
 //! - **count** (`R32F`, additive blending `1 + dst`, enabled on this draw
-//!   buffer only): how many triangles cover each sample;
-//! - **channel groups** (`RGBA32F`, no blending, so the last triangle in
+//!   buffer only): how many primitives cover each sample;
+//! - **channel groups** (`RGBA32F`, no blending, so the last primitive in
 //!   submission order wins, as GL's primitive order guarantees): the channels
 //!   `[primitive + 1, depth, attribute 0, …, attribute 15]` four at a time, as
 //!   many attachments as the plan needs (at most five; GL 3.3 has at least
@@ -23,8 +24,19 @@
 //! varyings with the case's interpolation: `smooth` (perspective),
 //! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
 //! last; the adapter sets `glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)`
-//! (core since GL 3.2), the case's rule. Consecutive triangles of one
-//! interpolation mode share one draw call.
+//! (core since GL 3.2), the case's rule, for triangles and lines alike.
+//! Consecutive triangles of one interpolation mode share one draw call, as
+//! do consecutive lines of one rule, width and mode (`gpu::Stream`).
+//!
+//! A polygon is drawn by **stencil then cover** (`drawing.rs`): its fan
+//! counts each sample's winding number into an 8-bit stencil buffer
+//! (`DEPTH24_STENCIL8`, cleared with the targets), colour writes off,
+//! nonzero by `GL_INCR_WRAP` on front faces and `GL_DECR_WRAP` on back
+//! faces, even-odd by `GL_INVERT`; then two triangles over its box write
+//! it where the stencil says its fill rule fills and set the stencil back
+//! to 0. Neither run is culled. `gpu::Stream`'s notes say why the fan is
+//! exact under the driver's tie rule; a polygon's samples carry z = 0 and
+//! no attributes, as the reference's do.
 //!
 //! # Positions: exact to the 8-bit grid
 //!
@@ -58,8 +70,16 @@
 //!   same picture, so the winding seen is the same: (0,0), (1,0), (0,1) is
 //!   clockwise in both. With `glFrontFace(GL_CCW)`, `cull: cw` culls
 //!   `GL_BACK` and `cull: ccw` culls `GL_FRONT`. w > 0 keeps the winding.
-//! - **Lines**: unsupported (GL's lines have no choice of the case's rule).
-//!   **MSAA**: not yet.
+//! - **Lines** (`lines.rs`): `diamond-exit` is `GL_LINES` at width 1, GL's
+//!   aliased line (GL 4.6 §14.5.1), drawn under GL's own tie convention
+//!   (endpoints perturbed by −(ε, ε²) in y-up window coordinates, which
+//!   reads, y down, as left and down), not D3D11's: a case at a tie
+//!   reports the departures, as with the fill rule. llvmpipe interpolates
+//!   a line's attributes along its major axis, not by GL's projection.
+//!   `parallelogram`, `rectangle` and `midpoint` are unsupported, each with
+//!   its reason.
+//! - **Polygons**: the winding under the driver's tie rule (bottom-left),
+//!   counted in the stencil; the case's fill rule is not faked either.
 //!
 //! # One context per process, and softpipe
 //!
@@ -96,14 +116,20 @@
 //! - `context.rs`: the shared EGL display and context, made on first use,
 //!   locked and made current per case, and its fixed state;
 //! - `shaders.rs`: the programs, one per interpolation mode;
+//! - `lines.rs`: which line rules GL draws, and why not the others;
+//! - `passes.rs`: the passes a scene is drawn in (one, or one per sample
+//!   slot), each in a tile of the framebuffer;
 //! - `drawing.rs`: one scene set up in the context (vertex buffer,
-//!   framebuffer), cleared, drawn and deleted;
+//!   framebuffer, stencil), cleared, drawn run by run with each run's
+//!   state, and deleted;
 //! - `readback.rs`: the attachments read back into a [`Frame`];
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
 //!   at a time, for the bench to time the draw apart.
 
 mod context;
 mod drawing;
+mod lines;
+mod passes;
 mod prepared;
 mod readback;
 mod shaders;
@@ -173,25 +199,27 @@ impl Rasterizer for Softpipe {
     }
 }
 
+/// What Mesa's GL draws here: triangles, `diamond-exit` lines (`lines.rs`
+/// refuses the other rules) and polygons by stencil then cover, snapped
+/// to the case's grid; no antialiasing yet, no motion.
 fn capabilities() -> Capabilities {
-    gpu::capabilities(false)
+    Capabilities {
+        polygons: true,
+        ..gpu::capabilities(false)
+    }
 }
 
 /// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
-/// it: several samples per pixel, a line, unsnapped geometry or too many
-/// attributes. For `softpipe`, asks for it if no display exists yet.
+/// it: several samples per pixel, a line rule GL does not draw
+/// (`lines.rs`), unsnapped geometry or too many attributes. For
+/// `softpipe`, asks for it if no display exists yet.
 pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
     if plan.samples_per_pixel != 1 {
         return Err(RasterError::Unsupported(
             "multisampling is not wired to the GL adapter yet".to_owned(),
         ));
     }
-    let bits = gpu::snapping_bits(
-        scene,
-        plan,
-        "GL's lines have no choice of the case's line rule",
-        "Mesa's GL",
-    )?;
+    let bits = gpu::snapping_bits(scene, plan, lines::refusal, "Mesa's GL")?;
     if softpipe {
         ask_for_softpipe();
     }
