@@ -10,9 +10,10 @@ use std::path::Path;
 use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
+use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, CandidateRun, Verdict};
 use rastercheck::plan::Plan;
-use rastercheck::rasterizer::Rasterizer;
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{FillRule, Scene};
 
 /// Whether llvmpipe is here; prints why not once per test.
@@ -235,6 +236,7 @@ fn the_prepared_path_draws_what_rasterize_draws() {
             "triangles/cull_cw_mixed_windings",
             "polygons/pentagram_nonzero",
             "lines/diamond_star_16",
+            "polygons/pentagram_nonzero_aa_standard16",
         ],
     );
 }
@@ -368,6 +370,156 @@ fn refuses_the_line_rules_gl_does_not_draw() {
         match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
             Err(e) => assert!(e.to_string().contains(why), "{rule}: {e}"),
             Ok(_) => panic!("{rule} lines drawn"),
+        }
+    }
+}
+
+/// A triangle around sample `offset` (in 2^-`bits` pixel) of pixel (1, 1),
+/// reaching 1/64 pixel before it on both axes and 1/32 after: the sample
+/// strictly inside, no other sample of the pattern within reach of a tie.
+fn around(offset: [u32; 2], bits: u32, antialias: &str) -> Scene {
+    let unit = f64::from(1u32 << bits);
+    let (x, y) = (
+        1.0 + f64::from(offset[0]) / unit,
+        1.0 + f64::from(offset[1]) / unit,
+    );
+    let (a, b) = (1.0 / 64.0, 1.0 / 32.0);
+    inline(&format!(
+        r#"{{"name": "around", "canvas": {{"width": 4, "height": 4}},
+            "effects": {{"antialias": {antialias}}},
+            "primitives": [{{"triangle": [[{}, {}], [{}, {}], [{}, {}]]}}]}}"#,
+        x - a,
+        y - a,
+        x + b,
+        y - a,
+        x - a,
+        y + b
+    ))
+}
+
+/// Shifted passes: a tiny triangle around sample i of a pixel lights slot
+/// i of that pixel and nothing else, for every slot of the standard 4x,
+/// 8x and 16x patterns, a 64-sample grid and a stratified pattern, as the
+/// reference's mask does; so each pass is drawn with its own slot's shift, and written to its own
+/// slot.
+#[test]
+fn shifted_passes_light_each_slot_at_its_own_offset() {
+    if !available() {
+        return;
+    }
+    let mut failures = Vec::new();
+    for antialias in [
+        r#"{"samples": 4}"#,
+        r#"{"samples": 8}"#,
+        r#"{"samples": 16}"#,
+        r#"{"samples": 64, "pattern": "grid"}"#,
+        r#"{"samples": 16, "pattern": "stratified", "seed": 7}"#,
+    ] {
+        let plan = Plan::for_scene(&around([0, 0], 8, antialias));
+        let aa = plan.antialias.clone().expect("antialiased");
+        for (i, &offset) in aa.offsets.iter().enumerate() {
+            let scene = around(offset, aa.position_bits, antialias);
+            let (reference, r) = run(&scene);
+            let frame = r.frame.as_ref().expect("gl drew a frame");
+            let lit: Vec<usize> = (0..frame.sample_count())
+                .filter(|&k| frame.coverage[k] > 0)
+                .collect();
+            let slot = frame.index(1, 1) + i;
+            let c = &r.metrics.as_ref().expect("judged").coverage;
+            if lit != [slot] || (c.missing, c.extra, c.wrong_owner) != (0, 0, 0) {
+                failures.push(format!(
+                    "{antialias} sample {i} at {offset:?}: slots {lit:?} lit, not [{slot}]; {}",
+                    report("around", &reference, &r)
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Gl with each pixel's slots rotated by one in its frame: what passes
+/// drawn each with the next slot's shift would give.
+struct RotatedShifts;
+
+impl Rasterizer for RotatedShifts {
+    fn name(&self) -> &str {
+        "gl-rotated-shifts"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Gl.capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut frame = Gl.rasterize(scene, plan)?;
+        let n = frame.samples as usize;
+        for p in 0..frame.pixel_count() {
+            frame.coverage[p * n..(p + 1) * n].rotate_left(1);
+            frame.last[p * n..(p + 1) * n].rotate_left(1);
+        }
+        frame.resolve();
+        Ok(frame)
+    }
+}
+
+/// The checks catch a wrong shift: antialiased cases gl passes, with each
+/// slot holding the next slot's pass, fail (the mask is compared sample by
+/// sample, though the resolved coverage of each pixel is unchanged).
+#[test]
+fn a_wrong_shift_is_caught() {
+    if !available() {
+        return;
+    }
+    for id in [
+        "antialias/edge_slope_1_2_standard16",
+        "polygons/pentagram_nonzero_aa_standard16",
+    ] {
+        let scene = case(id);
+        let (reference, right) = run(&scene);
+        assert_eq!(
+            right.verdict,
+            Verdict::Pass,
+            "{}",
+            report(id, &reference, &right)
+        );
+        let wrong = suite::run_candidate(&scene, &reference, &RotatedShifts);
+        eprintln!("{}", report(id, &reference, &wrong));
+        assert!(
+            matches!(wrong.verdict, Verdict::Fail(_)),
+            "{id}: {:?}",
+            wrong.verdict
+        );
+    }
+}
+
+/// Shifted passes are refused where they would not be exact: offsets off
+/// the driver's 8-bit grid, and vertices finer than it (Mesa's rounding to
+/// 8 bits, ties to even, does not commute with a shift).
+#[test]
+fn refuses_shifted_passes_that_would_not_be_exact() {
+    if !available() {
+        return;
+    }
+    for (rules, antialias, why) in [
+        (
+            r#"{"subpixel_bits": 8}"#,
+            r#"{"samples": 4, "pattern": "random", "seed": 3, "position_bits": 12}"#,
+            "off the driver's grid",
+        ),
+        (
+            r#"{"subpixel_bits": 10}"#,
+            r#"{"samples": 4}"#,
+            "ties to even",
+        ),
+    ] {
+        let scene = inline(&format!(
+            r#"{{"name": "t", "canvas": {{"width": 4, "height": 4}}, "rules": {rules},
+                "effects": {{"antialias": {antialias}}},
+                "primitives": [{{"triangle": [[0.3, 0.2], [3.7, 1.1], [1.2, 3.9]]}}]}}"#
+        ));
+        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+            Err(RasterError::Unsupported(e)) => assert!(e.contains(why), "{antialias}: {e}"),
+            other => panic!("{antialias}: {:?}", other.map(|f| f.covered_samples())),
         }
     }
 }

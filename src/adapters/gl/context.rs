@@ -46,6 +46,14 @@ pub(super) fn ask_for_softpipe() {
 
 static CONTEXT: OnceLock<Result<Mutex<GlContext>, String>> = OnceLock::new();
 
+/// The renderer, "`GL_RENDERER` (`GL_VERSION`)", where this process has
+/// made its context; nothing is made.
+pub(super) fn existing_description() -> Option<String> {
+    let gl = CONTEXT.get()?.as_ref().ok()?;
+    let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    Some(format!("{} ({})", gl.renderer, gl.version))
+}
+
 pub(super) fn context() -> Result<&'static Mutex<GlContext>, &'static String> {
     CONTEXT
         .get_or_init(|| GlContext::new().map(Mutex::new))

@@ -41,9 +41,11 @@
 //! # Positions: exact to the 8-bit grid
 //!
 //! As in `lavapipe`: coordinates are snapped to the case's `subpixel_bits`
-//! (ties to even) and rounded to f32 (exact for b ≤ 8); the attachments are
-//! `P × Q`, the powers of two at or above the canvas size; the viewport is
-//! the whole `P × Q`, and
+//! (ties to even) and rounded to f32 (exact for b ≤ 8); each pass is drawn
+//! in a tile of `P × Q` texels of the attachments (one tile without
+//! antialiasing), P and Q the powers of two at or above the canvas size;
+//! the viewport is the whole tile (an integer offset in the framebuffer,
+//! which keeps the transform exact), and
 //!
 //! ```text
 //! x_ndc = x · 2/P − 1,   y_ndc = 1 − y · 2/Q      (y down on screen)
@@ -51,7 +53,7 @@
 //! ```
 //!
 //! GL's window y points up, so a screen row y lands on window row Q − 1 − y:
-//! the canvas is the top `W × H` of the target (window rows Q − H … Q − 1),
+//! the canvas is the top `W × H` of the tile (its window rows Q − H … Q − 1),
 //! the scissor and `glReadPixels` take that rectangle, and its rows, which
 //! come back bottom-up, are flipped. The viewport transform back is exact for
 //! snapped coordinates, as in `lavapipe`; llvmpipe then snaps to its own 8
@@ -80,6 +82,24 @@
 //!   its reason.
 //! - **Polygons**: the winding under the driver's tie rule (bottom-left),
 //!   counted in the stencil; the case's fill rule is not faked either.
+//!
+//! # Antialiasing: shifted passes, not the driver's MSAA
+//!
+//! An antialiased scene is drawn as one single-sample pass per sample slot
+//! (`passes.rs`, with `gpu::shifts`): pass s draws the scene moved by the
+//! exact shift that brings slot s's offset onto the pixel centre, so its
+//! pixel (x, y) is slot s of pixel (x, y), with depth and attributes
+//! interpolated there; it is read into slot s (`p · N + s`) and the frame
+//! is box resolved ([`Frame::resolve`]). Any pattern is drawn so, as long
+//! as every offset lies on llvmpipe's 1/256 grid and the case's vertices
+//! do too (`subpixel_bits` ≤ 8): otherwise the shift would not commute
+//! with the driver's snapping, and the case is unsupported with that
+//! reason. The passes are tiles of one framebuffer, cleared, drawn and
+//! read back together. The verdicts judge the driver's single-sample
+//! rasterizer at the pattern's positions, not its multisampling: the
+//! adapter says so where reports show what a rasterizer declares
+//! ([`Rasterizer::declared`]: the renderer and "antialiasing by shifted
+//! passes"). llvmpipe's own multisampling is not used.
 //!
 //! # One context per process, and softpipe
 //!
@@ -168,6 +188,10 @@ impl Rasterizer for Gl {
         rasterize(scene, plan, false)
     }
 
+    fn declared(&self) -> Option<String> {
+        declared()
+    }
+
     fn prepare<'a>(
         &'a self,
         scene: &'a Scene,
@@ -190,6 +214,10 @@ impl Rasterizer for Softpipe {
         rasterize(scene, plan, true)
     }
 
+    fn declared(&self) -> Option<String> {
+        declared()
+    }
+
     fn prepare<'a>(
         &'a self,
         scene: &'a Scene,
@@ -201,12 +229,23 @@ impl Rasterizer for Softpipe {
 
 /// What Mesa's GL draws here: triangles, `diamond-exit` lines (`lines.rs`
 /// refuses the other rules) and polygons by stencil then cover, snapped
-/// to the case's grid; no antialiasing yet, no motion.
+/// to the case's grid; antialiased scenes by shifted passes
+/// (`passes.rs`); no motion.
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
-        ..gpu::capabilities(false)
+        ..gpu::capabilities(true)
     }
+}
+
+/// What the reports show beside the adapter's name, once the context
+/// exists: the renderer, and that antialiased cases are drawn by shifted
+/// passes, not by the driver's multisampling.
+fn declared() -> Option<String> {
+    let description = context::existing_description()?;
+    Some(format!(
+        "{description}; antialiasing by shifted passes (one single-sample pass per sample slot)"
+    ))
 }
 
 /// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
@@ -214,10 +253,11 @@ fn capabilities() -> Capabilities {
 /// (`lines.rs`), unsnapped geometry or too many attributes. For
 /// `softpipe`, asks for it if no display exists yet.
 pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
-    if plan.samples_per_pixel != 1 {
-        return Err(RasterError::Unsupported(
-            "multisampling is not wired to the GL adapter yet".to_owned(),
-        ));
+    if plan.antialias.is_none() && plan.samples_per_pixel != 1 {
+        return Err(RasterError::Unsupported(format!(
+            "{} samples per pixel without a sample pattern",
+            plan.samples_per_pixel
+        )));
     }
     let bits = gpu::snapping_bits(scene, plan, lines::refusal, "Mesa's GL")?;
     if softpipe {
