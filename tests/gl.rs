@@ -2,15 +2,18 @@
 //! exact reference, on the triangle cases it can express; and softpipe, in a
 //! process of its own (Mesa picks one gallium driver per process). Needs the
 //! `gl` feature and the system packages `libegl1 libegl-mesa0
-//! libgl1-mesa-dri`; without a display each test says it skipped, and never
-//! passes by drawing nothing.
+//! libgl1-mesa-dri`; without a display each test says it skipped (under
+//! `CI=true` it fails instead), and never passes by drawing nothing.
 #![cfg(feature = "gl")]
 
 use std::path::Path;
 use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
+use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::plan::Plan;
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{FillRule, Scene};
 
 /// Whether llvmpipe is here; prints why not once per test.
@@ -25,6 +28,10 @@ fn available() -> bool {
             false
         }
         Err(why) => {
+            assert!(
+                std::env::var("CI").as_deref() != Ok("true"),
+                "CI=true and no EGL/GL driver: install libegl1 libegl-mesa0 libgl1-mesa-dri ({why})"
+            );
             eprintln!(
                 "skipped: no EGL/GL driver (install libegl1 libegl-mesa0 libgl1-mesa-dri): {why}"
             );
@@ -39,7 +46,7 @@ use common::adapters::{
     assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped,
     record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
-use common::{case, report};
+use common::{case, inline, report};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
@@ -227,6 +234,9 @@ fn the_prepared_path_draws_what_rasterize_draws() {
             "triangles/interp_mixed_modes",
             "triangles/fan_16_center",
             "triangles/cull_cw_mixed_windings",
+            "polygons/pentagram_nonzero",
+            "lines/diamond_star_16",
+            "polygons/pentagram_nonzero_aa_standard16",
         ],
     );
 }
@@ -239,4 +249,277 @@ fn is_listed_by_name() {
     assert_eq!(r.name(), "gl");
     let r = rastercheck::adapters::by_name("softpipe").expect("registered");
     assert_eq!(r.name(), "softpipe");
+}
+
+/// Polygons by stencil then cover: the bundled polygon cases (even-odd and
+/// nonzero, self-intersecting, with holes), held to the driver's rule,
+/// match the reference sample for sample; under top-left, a star with
+/// vertices on sample centres fails on exactly those ties.
+#[test]
+fn polygons_by_stencil_then_cover_match_the_reference() {
+    if !available() {
+        return;
+    }
+    let ids = [
+        "polygons/bowtie_even_odd",
+        "polygons/bowtie_nonzero",
+        "polygons/concave_arrow",
+        "polygons/concave_comb",
+        "polygons/double_loop_even_odd",
+        "polygons/double_loop_nonzero",
+        "polygons/hole_reversed_nonzero",
+        "polygons/hole_same_even_odd",
+        "polygons/hole_same_nonzero",
+        "polygons/pentagram_even_odd",
+        "polygons/pentagram_nonzero",
+        "polygons/star_on_centres_bottom_left",
+    ];
+    assert_each(&ids, &Gl, bottom_left, |_, run, line, failures| {
+        if run.verdict != Verdict::Pass {
+            failures.push(line.to_owned());
+        }
+    });
+    let (reference, top_left) = run(&case("polygons/star_on_centres_top_left"));
+    eprintln!(
+        "{}",
+        report("star_on_centres_top_left", &reference, &top_left)
+    );
+    assert!(matches!(top_left.verdict, Verdict::Fail(_)));
+}
+
+/// Each cover clears the stencil its fan set: the same even-odd pentagram
+/// drawn three times, then a nonzero one, covers each inside sample four
+/// times, owned by the last; a stencil left behind would invert the
+/// second pentagram's parity and draw it nowhere.
+#[test]
+fn each_polygon_starts_from_a_clear_stencil() {
+    if !available() {
+        return;
+    }
+    let star = r#"[[8, 1], [12.41015625, 14.56640625], [0.8671875, 6.18359375],
+                   [15.1328125, 6.18359375], [3.58984375, 14.56640625]]"#;
+    let scene = inline(&format!(
+        r#"{{"name": "stars", "canvas": {{"width": 16, "height": 16}},
+            "rules": {{"fill_rule": "bottom-left"}},
+            "primitives": [{{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "even-odd"}},
+                           {{"polygon": {star}, "fill": "nonzero"}}]}}"#
+    ));
+    let (reference, r) = run(&scene);
+    assert_eq!(
+        r.verdict,
+        Verdict::Pass,
+        "{}",
+        report("stars", &reference, &r)
+    );
+    let frame = r.frame.as_ref().expect("a frame");
+    assert!(frame.coverage.iter().any(|&c| c == 4));
+    assert!(frame.coverage.iter().all(|&c| c != 3));
+}
+
+/// `diamond-exit` lines are drawn with `GL_LINES` at width 1 and judged:
+/// lines with no sample, diamond corner or endpoint on a tie match the
+/// reference; the worked example, all ties, is judged too (GL breaks ties
+/// by its own perturbation, in y-up window coordinates), and fails.
+#[test]
+fn diamond_exit_lines_are_drawn_and_judged() {
+    if !available() {
+        return;
+    }
+    let scene = inline(
+        r#"{"name": "lines", "canvas": {"width": 32, "height": 32},
+            "primitives": [
+              {"line": [[1.25, 1.125], [29.75, 9.125]], "rule": "diamond-exit"},
+              {"line": [[30.25, 2.375], [3.125, 28.75]], "rule": "diamond-exit"},
+              {"line": [[5.25, 30.125], [9.875, 12.3125]], "rule": "diamond-exit"},
+              {"line": [[12.125, 20.25], [28.25, 26.875]], "rule": "diamond-exit"}]}"#,
+    );
+    let (reference, r) = run(&scene);
+    assert_eq!(
+        r.verdict,
+        Verdict::Pass,
+        "{}",
+        report("lines", &reference, &r)
+    );
+    assert!(reference.frame.covered_samples() > 60);
+    let (reference, r) = run(&case("lines/diamond_exit_worked_example"));
+    eprintln!("{}", report("diamond_exit_worked_example", &reference, &r));
+    assert!(matches!(r.verdict, Verdict::Fail(_)), "{:?}", r.verdict);
+}
+
+/// The line rules GL does not draw are refused with the reason.
+#[test]
+fn refuses_the_line_rules_gl_does_not_draw() {
+    if !available() {
+        return;
+    }
+    for (rule, extra, why) in [
+        ("midpoint", "", "midpoint"),
+        (
+            "parallelogram",
+            r#", "width": 2"#,
+            "diamond-exit line's fragments",
+        ),
+        ("rectangle", r#", "width": 2"#, "multisampled"),
+    ] {
+        let scene = inline(&format!(
+            r#"{{"name": "l", "canvas": {{"width": 8, "height": 8}},
+                "primitives": [{{"line": [[0.5, 0.5], [7.5, 3.5]], "rule": "{rule}"{extra}}}]}}"#
+        ));
+        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+            Err(e) => assert!(e.to_string().contains(why), "{rule}: {e}"),
+            Ok(_) => panic!("{rule} lines drawn"),
+        }
+    }
+}
+
+/// A triangle around sample `offset` (in 2^-`bits` pixel) of pixel (1, 1),
+/// reaching 1/64 pixel before it on both axes and 1/32 after: the sample
+/// strictly inside, no other sample of the pattern within reach of a tie.
+fn around(offset: [u32; 2], bits: u32, antialias: &str) -> Scene {
+    let unit = f64::from(1u32 << bits);
+    let (x, y) = (
+        1.0 + f64::from(offset[0]) / unit,
+        1.0 + f64::from(offset[1]) / unit,
+    );
+    let (a, b) = (1.0 / 64.0, 1.0 / 32.0);
+    inline(&format!(
+        r#"{{"name": "around", "canvas": {{"width": 4, "height": 4}},
+            "effects": {{"antialias": {antialias}}},
+            "primitives": [{{"triangle": [[{}, {}], [{}, {}], [{}, {}]]}}]}}"#,
+        x - a,
+        y - a,
+        x + b,
+        y - a,
+        x - a,
+        y + b
+    ))
+}
+
+/// Shifted passes: a tiny triangle around sample i of a pixel lights slot
+/// i of that pixel and nothing else, for every slot of the standard 4x,
+/// 8x and 16x patterns, a 64-sample grid and a stratified pattern, as the
+/// reference's mask does; so each pass is drawn with its own slot's shift, and written to its own
+/// slot.
+#[test]
+fn shifted_passes_light_each_slot_at_its_own_offset() {
+    if !available() {
+        return;
+    }
+    let mut failures = Vec::new();
+    for antialias in [
+        r#"{"samples": 4}"#,
+        r#"{"samples": 8}"#,
+        r#"{"samples": 16}"#,
+        r#"{"samples": 64, "pattern": "grid"}"#,
+        r#"{"samples": 16, "pattern": "stratified", "seed": 7}"#,
+    ] {
+        let plan = Plan::for_scene(&around([0, 0], 8, antialias));
+        let aa = plan.antialias.clone().expect("antialiased");
+        for (i, &offset) in aa.offsets.iter().enumerate() {
+            let scene = around(offset, aa.position_bits, antialias);
+            let (reference, r) = run(&scene);
+            let frame = r.frame.as_ref().expect("gl drew a frame");
+            let lit: Vec<usize> = (0..frame.sample_count())
+                .filter(|&k| frame.coverage[k] > 0)
+                .collect();
+            let slot = frame.index(1, 1) + i;
+            let c = &r.metrics.as_ref().expect("judged").coverage;
+            if lit != [slot] || (c.missing, c.extra, c.wrong_owner) != (0, 0, 0) {
+                failures.push(format!(
+                    "{antialias} sample {i} at {offset:?}: slots {lit:?} lit, not [{slot}]; {}",
+                    report("around", &reference, &r)
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Gl with each pixel's slots rotated by one in its frame: what passes
+/// drawn each with the next slot's shift would give.
+struct RotatedShifts;
+
+impl Rasterizer for RotatedShifts {
+    fn name(&self) -> &str {
+        "gl-rotated-shifts"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Gl.capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut frame = Gl.rasterize(scene, plan)?;
+        let n = frame.samples as usize;
+        for p in 0..frame.pixel_count() {
+            frame.coverage[p * n..(p + 1) * n].rotate_left(1);
+            frame.last[p * n..(p + 1) * n].rotate_left(1);
+        }
+        frame.resolve();
+        Ok(frame)
+    }
+}
+
+/// The checks catch a wrong shift: antialiased cases gl passes, with each
+/// slot holding the next slot's pass, fail (the mask is compared sample by
+/// sample, though the resolved coverage of each pixel is unchanged).
+#[test]
+fn a_wrong_shift_is_caught() {
+    if !available() {
+        return;
+    }
+    for id in [
+        "antialias/edge_slope_1_2_standard16",
+        "polygons/pentagram_nonzero_aa_standard16",
+    ] {
+        let scene = case(id);
+        let (reference, right) = run(&scene);
+        assert_eq!(
+            right.verdict,
+            Verdict::Pass,
+            "{}",
+            report(id, &reference, &right)
+        );
+        let wrong = suite::run_candidate(&scene, &reference, &RotatedShifts);
+        eprintln!("{}", report(id, &reference, &wrong));
+        assert!(
+            matches!(wrong.verdict, Verdict::Fail(_)),
+            "{id}: {:?}",
+            wrong.verdict
+        );
+    }
+}
+
+/// Shifted passes are refused where they would not be exact: offsets off
+/// the driver's 8-bit grid, and vertices finer than it (Mesa's rounding to
+/// 8 bits, ties to even, does not commute with a shift).
+#[test]
+fn refuses_shifted_passes_that_would_not_be_exact() {
+    if !available() {
+        return;
+    }
+    for (rules, antialias, why) in [
+        (
+            r#"{"subpixel_bits": 8}"#,
+            r#"{"samples": 4, "pattern": "random", "seed": 3, "position_bits": 12}"#,
+            "off the driver's grid",
+        ),
+        (
+            r#"{"subpixel_bits": 10}"#,
+            r#"{"samples": 4}"#,
+            "ties to even",
+        ),
+    ] {
+        let scene = inline(&format!(
+            r#"{{"name": "t", "canvas": {{"width": 4, "height": 4}}, "rules": {rules},
+                "effects": {{"antialias": {antialias}}},
+                "primitives": [{{"triangle": [[0.3, 0.2], [3.7, 1.1], [1.2, 3.9]]}}]}}"#
+        ));
+        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+            Err(RasterError::Unsupported(e)) => assert!(e.contains(why), "{antialias}: {e}"),
+            other => panic!("{antialias}: {:?}", other.map(|f| f.covered_samples())),
+        }
+    }
 }

@@ -22,7 +22,7 @@ pub(crate) use time::time_draws;
 
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError};
-use crate::scene::{Primitive, Scene};
+use crate::scene::{Line, Primitive, Scene};
 
 /// Attributes a vertex can carry through the pipelines.
 pub(crate) const MAX_ATTRIBUTES: usize = 16;
@@ -46,22 +46,23 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
 }
 
 /// The subpixel bits a GPU API adapter snaps the scene to, or why it cannot
-/// draw the scene: a line (`lines` says why, in the adapter's words),
-/// unsnapped geometry (the `driver` snaps to 8 bits), or more attributes
-/// than the pipelines carry.
+/// draw the scene: a line the adapter refuses (`lines` says why, in the
+/// adapter's words, or `None` for a line it draws), unsnapped geometry
+/// (the `driver` snaps to 8 bits), or more attributes than the pipelines
+/// carry.
 #[cfg_attr(not(any(feature = "lavapipe", feature = "gl")), allow(dead_code))]
 pub(crate) fn snapping_bits(
     scene: &Scene,
     plan: &Plan,
-    lines: &str,
+    lines: impl Fn(&Line) -> Option<String>,
     driver: &str,
 ) -> Result<u32, RasterError> {
-    if scene
-        .primitives
-        .iter()
-        .any(|p| matches!(p, Primitive::Line(_)))
-    {
-        return Err(RasterError::Unsupported(format!("lines: {lines}")));
+    for primitive in &scene.primitives {
+        if let Primitive::Line(line) = primitive {
+            if let Some(why) = lines(line) {
+                return Err(RasterError::Unsupported(format!("lines: {why}")));
+            }
+        }
     }
     let Some(bits) = scene.rules.subpixel_bits else {
         return Err(RasterError::Unsupported(format!(

@@ -200,7 +200,9 @@ fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
     gpu::snapping_bits(
         scene,
         plan,
-        "wgpu draws only 1-pixel lines, with no choice of the case's line rule",
+        |_| {
+            Some("wgpu draws only 1-pixel lines, with no choice of the case's line rule".to_owned())
+        },
         "lavapipe",
     )
 }

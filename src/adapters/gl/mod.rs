@@ -1,0 +1,294 @@
+//! `gl` and `softpipe`: Mesa's OpenGL rasterizers on the CPU (llvmpipe, or
+//! softpipe with `GALLIUM_DRIVER=softpipe`), driven through EGL on the
+//! surfaceless platform with glow (cargo feature `gl`; system packages
+//! `libegl1 libegl-mesa0 libgl1-mesa-dri`).
+//!
+//! # What is drawn, and how it is read back
+//!
+//! The structure is the `lavapipe` adapter's. A case's primitives
+//! (triangles, `diamond-exit` lines, polygons) are drawn in scene order,
+//! with no depth test, into the float colour attachments of one
+//! framebuffer object, and read back into a [`Frame`]:
+//!
+//! - **count** (`R32F`, additive blending `1 + dst`, enabled on this draw
+//!   buffer only): how many primitives cover each sample;
+//! - **channel groups** (`RGBA32F`, no blending, so the last primitive in
+//!   submission order wins, as GL's primitive order guarantees): the channels
+//!   `[primitive + 1, depth, attribute 0, …, attribute 15]` four at a time, as
+//!   many attachments as the plan needs (at most five; GL 3.3 has at least
+//!   eight draw buffers).
+//!
+//! The primitive index (+ 1, exact in f32 up to 2^24) is a `flat` varying and
+//! doubles as the coverage marker of the last writer. Depth is the case's `z`
+//! as a `noperspective` varying, not the depth buffer. Attributes are
+//! varyings with the case's interpolation: `smooth` (perspective),
+//! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
+//! last; the adapter sets `glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)`
+//! (core since GL 3.2), the case's rule, for triangles and lines alike.
+//! Consecutive triangles of one interpolation mode share one draw call, as
+//! do consecutive lines of one rule, width and mode (`gpu::Stream`).
+//!
+//! A polygon is drawn by **stencil then cover** (`drawing.rs`): its fan
+//! counts each sample's winding number into an 8-bit stencil buffer
+//! (`DEPTH24_STENCIL8`, cleared with the targets), colour writes off,
+//! nonzero by `GL_INCR_WRAP` on front faces and `GL_DECR_WRAP` on back
+//! faces, even-odd by `GL_INVERT`; then two triangles over its box write
+//! it where the stencil says its fill rule fills and set the stencil back
+//! to 0. Neither run is culled. `gpu::Stream`'s notes say why the fan is
+//! exact under the driver's tie rule; a polygon's samples carry z = 0 and
+//! no attributes, as the reference's do.
+//!
+//! # Positions: exact to the 8-bit grid
+//!
+//! As in `lavapipe`: coordinates are snapped to the case's `subpixel_bits`
+//! (ties to even) and rounded to f32 (exact for b ≤ 8); each pass is drawn
+//! in a tile of `P × Q` texels of the attachments (one tile without
+//! antialiasing), P and Q the powers of two at or above the canvas size;
+//! the viewport is the whole tile (an integer offset in the framebuffer,
+//! which keeps the transform exact), and
+//!
+//! ```text
+//! x_ndc = x · 2/P − 1,   y_ndc = 1 − y · 2/Q      (y down on screen)
+//! clip  = (x_ndc · w, y_ndc · w, w / 2, w)
+//! ```
+//!
+//! GL's window y points up, so a screen row y lands on window row Q − 1 − y:
+//! the canvas is the top `W × H` of the tile (its window rows Q − H … Q − 1),
+//! the scissor and `glReadPixels` take that rectangle, and its rows, which
+//! come back bottom-up, are flipped. The viewport transform back is exact for
+//! snapped coordinates, as in `lavapipe`; llvmpipe then snaps to its own 8
+//! subpixel bits, so cases with b > 8 are snapped twice and cases with
+//! `subpixel_bits: null` are unsupported.
+//!
+//! # Rules
+//!
+//! - **Fill rule**: the driver's own, not the case's. Mesa's GL draws into an
+//!   FBO with gallium's y-down memory order equal to GL's window y, so its
+//!   top-left rule reads, in the case's y-down terms, as **bottom-left**
+//!   (left and bottom edges include their samples); softpipe's reads as
+//!   bottom-right. A case under another rule reports the departures.
+//! - **Culling**: GL reads the winding in window coordinates (y up); the
+//!   case's is on screen (y down), and the read-back flip makes the two the
+//!   same picture, so the winding seen is the same: (0,0), (1,0), (0,1) is
+//!   clockwise in both. With `glFrontFace(GL_CCW)`, `cull: cw` culls
+//!   `GL_BACK` and `cull: ccw` culls `GL_FRONT`. w > 0 keeps the winding.
+//! - **Lines** (`lines.rs`): `diamond-exit` is `GL_LINES` at width 1, GL's
+//!   aliased line (GL 4.6 §14.5.1), drawn under GL's own tie convention
+//!   (endpoints perturbed by −(ε, ε²) in y-up window coordinates, which
+//!   reads, y down, as left and down), not D3D11's: a case at a tie
+//!   reports the departures, as with the fill rule. llvmpipe interpolates
+//!   a line's attributes along its major axis, not by GL's projection.
+//!   `parallelogram`, `rectangle` and `midpoint` are unsupported, each with
+//!   its reason.
+//! - **Polygons**: the winding under the driver's tie rule (bottom-left),
+//!   counted in the stencil; the case's fill rule is not faked either.
+//!
+//! # Antialiasing: shifted passes, not the driver's MSAA
+//!
+//! An antialiased scene is drawn as one single-sample pass per sample slot
+//! (`passes.rs`, with `gpu::shifts`): pass s draws the scene moved by the
+//! exact shift that brings slot s's offset onto the pixel centre, so its
+//! pixel (x, y) is slot s of pixel (x, y), with depth and attributes
+//! interpolated there; it is read into slot s (`p · N + s`) and the frame
+//! is box resolved ([`Frame::resolve`]). Any pattern is drawn so, as long
+//! as every offset lies on llvmpipe's 1/256 grid and the case's vertices
+//! do too (`subpixel_bits` ≤ 8): otherwise the shift would not commute
+//! with the driver's snapping, and the case is unsupported with that
+//! reason. The passes are tiles of one framebuffer, cleared, drawn and
+//! read back together. The verdicts judge the driver's single-sample
+//! rasterizer at the pattern's positions, not its multisampling: the
+//! adapter says so where reports show what a rasterizer declares
+//! ([`Rasterizer::declared`]: the renderer and "antialiasing by shifted
+//! passes"). llvmpipe's own multisampling is not used.
+//!
+//! # One context per process, and softpipe
+//!
+//! One EGL display and context is created on first use and shared by every
+//! case; a mutex serialises the cases, and each case makes the context
+//! current on its own thread and releases it after. Mesa picks the gallium
+//! driver (llvmpipe or softpipe) from `GALLIUM_DRIVER` when the display is
+//! initialised, and the surfaceless platform gives one display per process,
+//! so a process holds one of the two, never both:
+//!
+//! - `gl` draws with whatever the display is (llvmpipe unless the process
+//!   was started with `GALLIUM_DRIVER` set) and names it in its messages;
+//! - `softpipe` sets `GALLIUM_DRIVER=softpipe` when it is the first to
+//!   create the display and `GALLIUM_DRIVER` is unset (the case in a
+//!   `rastercheck run -r softpipe`), and otherwise insists that the renderer
+//!   is softpipe: where the process already holds llvmpipe it fails, saying
+//!   to start the process with `GALLIUM_DRIVER=softpipe`.
+//!
+//! # Set up once, drawn again and again
+//!
+//! A scene is set up once (its vertex stream converted and uploaded into a
+//! vertex array and buffer of its own, its framebuffer made) and then
+//! cleared, drawn and read back. `rasterize` does it all with the context
+//! held, and deletes it; [`Rasterizer::prepare`] hands the set-up scene to
+//! the bench, which clears, draws (the draw calls and `glFinish`) and reads
+//! back phase by phase, the context locked and made current for each
+//! phase, and so times the driver's own draw apart. Both paths share every
+//! step, so the frame the bench judges is the one a case's run draws.
+//!
+//! # The rooms
+//!
+//! - this file: the [`Rasterizer`] impls, what Mesa's GL can draw and why
+//!   it refuses the rest;
+//! - `context.rs`: the shared EGL display and context, made on first use,
+//!   locked and made current per case, and its fixed state;
+//! - `shaders.rs`: the programs, one per interpolation mode;
+//! - `lines.rs`: which line rules GL draws, and why not the others;
+//! - `passes.rs`: the passes a scene is drawn in (one, or one per sample
+//!   slot), each in a tile of the framebuffer;
+//! - `drawing.rs`: one scene set up in the context (vertex buffer,
+//!   framebuffer, stencil), cleared, drawn run by run with each run's
+//!   state, and deleted;
+//! - `readback.rs`: the attachments read back into a [`Frame`];
+//! - `prepared.rs`: the same scene cleared, drawn and read back one phase
+//!   at a time, for the bench to time the draw apart.
+
+mod context;
+mod drawing;
+mod lines;
+mod passes;
+mod prepared;
+mod readback;
+mod shaders;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::scene::Scene;
+
+use super::gpu;
+use context::{ask_for_softpipe, context, with_context};
+use prepared::prepare;
+
+/// The name of the adapter that draws with whatever Mesa's GL is.
+pub const NAME: &str = "gl";
+/// The name of the adapter that insists on softpipe.
+pub const SOFTPIPE: &str = "softpipe";
+
+/// Mesa's OpenGL through EGL: llvmpipe, or whatever `GALLIUM_DRIVER` names.
+pub struct Gl;
+
+/// Mesa's softpipe through EGL (see the module's notes on one driver per
+/// process).
+pub struct Softpipe;
+
+impl Rasterizer for Gl {
+    fn name(&self) -> &str {
+        NAME
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        rasterize(scene, plan, false)
+    }
+
+    fn declared(&self) -> Option<String> {
+        declared()
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, false))
+    }
+}
+
+impl Rasterizer for Softpipe {
+    fn name(&self) -> &str {
+        SOFTPIPE
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        rasterize(scene, plan, true)
+    }
+
+    fn declared(&self) -> Option<String> {
+        declared()
+    }
+
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepare(scene, plan, true))
+    }
+}
+
+/// What Mesa's GL draws here: triangles, `diamond-exit` lines (`lines.rs`
+/// refuses the other rules) and polygons by stencil then cover, snapped
+/// to the case's grid; antialiased scenes by shifted passes
+/// (`passes.rs`); no motion.
+fn capabilities() -> Capabilities {
+    Capabilities {
+        polygons: true,
+        ..gpu::capabilities(true)
+    }
+}
+
+/// What the reports show beside the adapter's name, once the context
+/// exists: the renderer, and that antialiased cases are drawn by shifted
+/// passes, not by the driver's multisampling.
+fn declared() -> Option<String> {
+    let description = context::existing_description()?;
+    Some(format!(
+        "{description}; antialiasing by shifted passes (one single-sample pass per sample slot)"
+    ))
+}
+
+/// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
+/// it: several samples per pixel, a line rule GL does not draw
+/// (`lines.rs`), unsnapped geometry or too many attributes. For
+/// `softpipe`, asks for it if no display exists yet.
+pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
+    if plan.antialias.is_none() && plan.samples_per_pixel != 1 {
+        return Err(RasterError::Unsupported(format!(
+            "{} samples per pixel without a sample pattern",
+            plan.samples_per_pixel
+        )));
+    }
+    let bits = gpu::snapping_bits(scene, plan, lines::refusal, "Mesa's GL")?;
+    if softpipe {
+        ask_for_softpipe();
+    }
+    Ok(bits)
+}
+
+/// Sets the scene up, clears, draws and reads back, with the context held
+/// throughout, and deletes what it set up.
+fn rasterize(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
+    let bits = accepted(scene, plan, softpipe)?;
+    with_context(|gl| {
+        gl.insist_on_softpipe(softpipe)?;
+        // SAFETY: GL calls on the context current on this thread, with
+        // buffers sized to what is read and written.
+        unsafe {
+            let drawing = gl.set_up(scene, plan, bits)?;
+            gl.clear(&drawing);
+            gl.draw(&drawing);
+            let frame = gl.read_back(&drawing);
+            gl.delete(&drawing);
+            frame
+        }
+    })
+}
+
+/// The renderer (`GL_RENDERER`, `GL_VERSION`), or why there is none. Creates
+/// the shared context on first use.
+pub fn renderer_description() -> Result<String, String> {
+    let gl = context()?;
+    let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    Ok(format!("{} ({})", gl.renderer, gl.version))
+}
