@@ -82,9 +82,8 @@ pub(super) fn layout(
     for (k, shift) in shifts.into_iter().enumerate() {
         let k = k as u32;
         let place = gpu::Placement {
-            bits,
-            target: tile,
             shift,
+            ..gpu::Placement::at_centres(bits, tile)
         };
         let stream = gpu::Stream::new(scene, &place);
         let base = (layout.vertices.len() / VERTEX_FLOATS) as u32;
