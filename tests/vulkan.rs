@@ -13,6 +13,10 @@ use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{time::limits::TIME_ONE, PolygonFill, Primitive, Scene};
 
+/// The adapter as `-r vulkan` makes it: native MSAA where the device has
+/// the pattern, shifted passes otherwise.
+const VULKAN: Vulkan = Vulkan { passes_only: false };
+
 mod common;
 use common::adapters::{
     assert_each, assert_interpolation_within_the_bound, bundled_ids, INTERPOLATION, TIE_CASES,
@@ -37,7 +41,7 @@ fn available() -> bool {
 }
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, suite::CandidateRun) {
-    common::run(scene, &Vulkan)
+    common::run(scene, &VULKAN)
 }
 
 #[test]
@@ -47,7 +51,7 @@ fn matches_the_reference_on_top_left_tie_and_winding_cases() {
     }
     assert_each(
         &[TIE_CASES, WINDING_CASES].concat(),
-        &Vulkan,
+        &VULKAN,
         |_| {},
         |_, run, line, failures| {
             if run.verdict != Verdict::Pass {
@@ -62,7 +66,7 @@ fn interpolation_is_within_the_bound() {
     if !available() {
         return;
     }
-    assert_interpolation_within_the_bound(INTERPOLATION, &Vulkan, "vulkan", |_| {});
+    assert_interpolation_within_the_bound(INTERPOLATION, &VULKAN, "vulkan", |_| {});
 }
 
 /// Every bundled polygon case written for top-left (the device's own tie
@@ -81,7 +85,7 @@ fn polygons_by_stencil_then_cover_match_the_reference() {
     let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
     assert_each(
         &ids,
-        &Vulkan,
+        &VULKAN,
         |_| {},
         |_, run, line, failures| {
             if run.verdict != Verdict::Pass {
@@ -102,7 +106,7 @@ impl Rasterizer for FillSwapped {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Vulkan.capabilities()
+        VULKAN.capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -115,7 +119,7 @@ impl Rasterizer for FillSwapped {
                 };
             }
         }
-        Vulkan.rasterize(&scene, plan)
+        VULKAN.rasterize(&scene, plan)
     }
 }
 
@@ -149,13 +153,17 @@ fn a_wrong_stencil_test_fails() {
     );
 }
 
-/// A tiny square around each sample of an 8-sample n-rooks pattern, in
-/// pixel (i, 0) for sample i; shifted passes must light exactly slot i of
-/// pixel i. The pattern is no driver's native one.
-fn probe_scene() -> Scene {
-    let pattern = r#"{"samples": 8, "pattern": "n-rooks", "seed": 7, "position_bits": 4}"#;
+/// The patterns the probes use: 8× n-rooks (no device's native pattern:
+/// shifted passes) and standard 4× (native MSAA where the device offers
+/// 4×, lavapipe among them).
+const N_ROOKS_8: &str = r#"{"samples": 8, "pattern": "n-rooks", "seed": 7, "position_bits": 4}"#;
+const STANDARD_4: &str = r#"{"samples": 4, "pattern": "standard"}"#;
+
+/// A tiny square around each sample of `pattern` (n samples), in pixel
+/// (i, 0) for sample i: the adapter must light exactly slot i of pixel i.
+fn probe_scene(pattern: &str, n: u32) -> Scene {
     let probe = inline(&format!(
-        r#"{{"name": "offsets", "canvas": {{"width": 8, "height": 1}},
+        r#"{{"name": "offsets", "canvas": {{"width": {n}, "height": 1}},
             "effects": {{"antialias": {pattern}}},
             "primitives": [{{"triangle": [[0, 0], [1, 0], [0, 1]]}}]}}"#
     ));
@@ -164,7 +172,12 @@ fn probe_scene() -> Scene {
         .iter()
         .enumerate()
         .flat_map(|(i, [sx, sy])| {
-            let (cx, cy) = (i as f64 + f64::from(*sx) / 16.0, f64::from(*sy) / 16.0);
+            let unit = if pattern.contains("position_bits") {
+                16.0
+            } else {
+                256.0
+            };
+            let (cx, cy) = (i as f64 + f64::from(*sx) / unit, f64::from(*sy) / unit);
             let (l, r, t, b) = (cx - 0.03125, cx + 0.03125, cy - 0.03125, cy + 0.03125);
             [
                 format!(r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#),
@@ -173,7 +186,7 @@ fn probe_scene() -> Scene {
         })
         .collect();
     inline(&format!(
-        r#"{{"name": "probe", "canvas": {{"width": 8, "height": 1}},
+        r#"{{"name": "probe", "canvas": {{"width": {n}, "height": 1}},
             "rules": {{"subpixel_bits": 8}}, "effects": {{"antialias": {pattern}}},
             "primitives": [{}],
             "expect": {{"max_coverage_error": 0.25, "max_coverage_rms": 0.25}}}}"#,
@@ -181,26 +194,52 @@ fn probe_scene() -> Scene {
     ))
 }
 
+/// Each probe lights exactly its own slot, through `vulkan` (native 4×
+/// where offered, shifted passes for n-rooks) and `vulkan-passes`.
 #[test]
-fn shifted_passes_light_exactly_the_probed_slot() {
+fn each_probe_lights_exactly_the_probed_slot() {
     if !available() {
         return;
     }
-    let scene = probe_scene();
-    let (reference, run) = run(&scene);
-    let frame = run.frame.as_ref().expect("vulkan drew a frame");
-    let lit: Vec<String> = (0..frame.sample_count())
-        .filter(|&i| frame.coverage[i] > 0)
-        .map(|i| sample_name(frame, i))
-        .collect();
-    let expected: Vec<String> = (0..8).map(|i| format!("({i},0)#{i}")).collect();
-    assert_eq!(lit, expected);
-    assert_eq!(
-        run.verdict,
-        Verdict::Pass,
-        "{}",
-        report("probe", &reference, &run)
-    );
+    let passes = Vulkan { passes_only: true };
+    for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
+        for candidate in [&VULKAN, &passes] {
+            let scene = probe_scene(pattern, n);
+            let (reference, run) = common::run(&scene, candidate);
+            let frame = run.frame.as_ref().expect("vulkan drew a frame");
+            let lit: Vec<String> = (0..frame.sample_count())
+                .filter(|&i| frame.coverage[i] > 0)
+                .map(|i| sample_name(frame, i))
+                .collect();
+            let expected: Vec<String> = (0..n).map(|i| format!("({i},0)#{i}")).collect();
+            assert_eq!(lit, expected, "{} {pattern}", candidate.name());
+            assert_eq!(
+                run.verdict,
+                Verdict::Pass,
+                "{}",
+                report("probe", &reference, &run)
+            );
+        }
+    }
+}
+
+/// lavapipe offers 4×: the standard 4× probe is multisampled natively, and
+/// the declared description says which counts are.
+#[test]
+fn standard_4x_is_drawn_natively_where_offered() {
+    if !available() {
+        return;
+    }
+    let declared = VULKAN.declared().unwrap();
+    eprintln!("{declared}");
+    let passes = Vulkan { passes_only: true }.declared().unwrap();
+    assert!(passes.contains("shifted passes only"), "{passes}");
+    if vulkan::device_description().is_ok_and(|d| d.contains("llvmpipe")) {
+        assert!(
+            declared.contains("native MSAA at the standard locations (4x)"),
+            "{declared}"
+        );
+    }
 }
 
 /// The adapter with each pixel's slots read back in reverse: the probe
@@ -213,11 +252,11 @@ impl Rasterizer for SlotsReversed {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Vulkan.capabilities()
+        VULKAN.capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = Vulkan.rasterize(scene, plan)?;
+        let mut frame = VULKAN.rasterize(scene, plan)?;
         let n = frame.samples as usize;
         frame.coverage.chunks_mut(n).for_each(<[u16]>::reverse);
         frame.last.chunks_mut(n).for_each(<[u32]>::reverse);
@@ -230,14 +269,16 @@ fn a_readback_in_the_wrong_slot_order_fails() {
     if !available() {
         return;
     }
-    let scene = probe_scene();
-    let reference = suite::run_reference(&scene);
-    let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed);
-    assert!(
-        matches!(wrong.verdict, Verdict::Fail(_)),
-        "{:?}",
-        wrong.verdict
-    );
+    for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
+        let scene = probe_scene(pattern, n);
+        let reference = suite::run_reference(&scene);
+        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed);
+        let verdict = &wrong.verdict;
+        assert!(
+            matches!(verdict, Verdict::Fail(_)),
+            "{pattern}: {verdict:?}"
+        );
+    }
 }
 
 /// Every bundled antialiased case whose offsets lie on the device's grid
@@ -279,7 +320,7 @@ fn moving_cases_by_time_passes_pass() {
     let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
     assert_each(
         &ids,
-        &Vulkan,
+        &VULKAN,
         |_| {},
         |_, run, line, failures| {
             if matches!(run.verdict, Verdict::Fail(_) | Verdict::Error(_)) {
@@ -300,7 +341,7 @@ impl Rasterizer for WholeShutter {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Vulkan.capabilities()
+        VULKAN.capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -308,7 +349,7 @@ impl Rasterizer for WholeShutter {
         if let Some(motion) = &mut plan.motion {
             motion.blur.shutter = [0, TIME_ONE];
         }
-        Vulkan.rasterize(scene, &plan)
+        VULKAN.rasterize(scene, &plan)
     }
 }
 
@@ -320,7 +361,7 @@ fn wrong_instants_fail() {
     let id = "motion/shutter_quarter_to_three_quarters";
     let scene = case(id);
     let reference = suite::run_reference(&scene);
-    let right = suite::run_candidate(&scene, &reference, &Vulkan);
+    let right = suite::run_candidate(&scene, &reference, &VULKAN);
     assert_eq!(
         right.verdict,
         Verdict::Pass,
@@ -387,7 +428,7 @@ fn the_report_names_the_device_and_driver() {
     if !available() {
         return;
     }
-    let declared = Vulkan.declared().expect("a device is made");
+    let declared = VULKAN.declared().expect("a device is made");
     assert!(declared.contains("Vulkan 1."), "{declared}");
     assert!(declared.contains("shifted passes"), "{declared}");
     assert!(rastercheck::adapters::names().contains(&vulkan::NAME));

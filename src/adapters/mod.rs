@@ -44,7 +44,7 @@ pub fn names() -> Vec<&'static str> {
     #[allow(unused_mut)]
     let mut names = Vec::new();
     #[cfg(feature = "vulkan")]
-    names.push(vulkan::NAME);
+    names.extend([vulkan::NAME, vulkan::PASSES_NAME]);
     #[cfg(feature = "lavapipe")]
     names.push(lavapipe::NAME);
     #[cfg(feature = "gl")]
@@ -63,8 +63,9 @@ pub fn names() -> Vec<&'static str> {
 /// (split on whitespace; SPEC.md §12).
 pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
     #[cfg(feature = "vulkan")]
-    if name == vulkan::NAME {
-        return Some(Box::new(vulkan::Vulkan));
+    if name == vulkan::NAME || name == vulkan::PASSES_NAME {
+        let passes_only = name == vulkan::PASSES_NAME;
+        return Some(Box::new(vulkan::Vulkan { passes_only }));
     }
     #[cfg(feature = "lavapipe")]
     if name == lavapipe::NAME {

@@ -25,6 +25,15 @@ pub(super) struct Offers {
     pub line_width_granularity: f32,
     /// A depth-stencil format with stencil that can be an attachment.
     pub stencil_format: vk::Format,
+    /// Sample counts a float colour target can be drawn with and then
+    /// sampled (for the per-sample read-back), with a stencil beside it.
+    pub msaa_counts: vk::SampleCountFlags,
+    /// `standardSampleLocations`: multisampled targets sample at the
+    /// standard locations, sample index i at location i.
+    pub standard_locations: bool,
+    /// `sampleRateShading`: depth and attributes interpolated at each
+    /// sample of a multisampled target.
+    pub sample_rate_shading: bool,
 }
 
 /// The device this adapter draws with, created once.
@@ -111,7 +120,9 @@ impl Device {
             features2 = features2.push_next(&mut lines);
         }
         instance.get_physical_device_features2(physical, &mut features2);
-        let wide_lines = features2.features.wide_lines == vk::TRUE;
+        let base = features2.features;
+        let wide_lines = base.wide_lines == vk::TRUE;
+        let sample_rate_shading = base.sample_rate_shading == vk::TRUE;
         let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
 
         let family = instance
@@ -123,7 +134,9 @@ impl Device {
         let queues = [vk::DeviceQueueCreateInfo::default()
             .queue_family_index(family)
             .queue_priorities(&priorities)];
-        let enabled = vk::PhysicalDeviceFeatures::default().wide_lines(wide_lines);
+        let enabled = vk::PhysicalDeviceFeatures::default()
+            .wide_lines(wide_lines)
+            .sample_rate_shading(sample_rate_shading);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
             .bresenham_lines(bresenham == vk::TRUE)
             .rectangular_lines(rectangular == vk::TRUE);
@@ -168,6 +181,11 @@ impl Device {
             line_width_range: limits.line_width_range,
             line_width_granularity: limits.line_width_granularity,
             stencil_format,
+            msaa_counts: limits.framebuffer_color_sample_counts
+                & limits.sampled_image_color_sample_counts
+                & limits.framebuffer_stencil_sample_counts,
+            standard_locations: limits.standard_sample_locations == vk::TRUE,
+            sample_rate_shading,
         };
         Ok(Device {
             _entry: entry,

@@ -12,6 +12,7 @@ use ash::vk;
 use super::super::gpu::{self, Placement, Stream, VERTEX_FLOATS};
 use super::device::Device;
 use super::pipelines::{Pipelines, COUNT_FORMAT, VALUE_FORMAT};
+use super::unpack::Unpack;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -22,7 +23,8 @@ struct Drawing<'d> {
     gpu: &'d Device,
     images: Vec<(vk::Image, vk::ImageView, vk::DeviceMemory)>,
     buffers: Vec<(vk::Buffer, vk::DeviceMemory)>,
-    framebuffer: vk::Framebuffer,
+    framebuffers: Vec<vk::Framebuffer>,
+    descriptors: vk::DescriptorPool,
     pool: vk::CommandPool,
     fence: vk::Fence,
 }
@@ -34,6 +36,9 @@ struct Drawing<'d> {
 pub(super) struct Job {
     pub streams: Vec<Stream>,
     pub passes: Vec<Vec<(vk::Rect2D, usize)>>,
+    /// Samples per pixel of the targets: 1, or the count of native
+    /// multisampling (one pass, read back sample by sample).
+    pub samples: u32,
 }
 
 impl Job {
@@ -43,6 +48,7 @@ impl Job {
         Job {
             streams: placements.iter().map(|p| Stream::new(scene, p)).collect(),
             passes: (0..placements.len()).map(|i| vec![(canvas, i)]).collect(),
+            samples: 1,
         }
     }
 }
@@ -63,6 +69,7 @@ pub(super) fn rect(x: u32, y: u32, width: u32, height: u32) -> vk::Rect2D {
 pub(super) fn render(
     gpu: &Device,
     pipelines: &mut Pipelines,
+    unpack: &mut Unpack,
     scene: &Scene,
     plan: &Plan,
     job: &Job,
@@ -75,7 +82,8 @@ pub(super) fn render(
         gpu,
         images: Vec::new(),
         buffers: Vec::new(),
-        framebuffer: vk::Framebuffer::null(),
+        framebuffers: Vec::new(),
+        descriptors: vk::DescriptorPool::null(),
         pool: vk::CommandPool::null(),
         fence: vk::Fence::null(),
     };
@@ -93,7 +101,10 @@ pub(super) fn render(
     // SAFETY: host-visible, coherent memory of at least this size.
     unsafe { write(gpu, vertex_memory, &vertices) }.map_err(failed)?;
 
-    let pixels = u64::from(w) * u64::from(h);
+    // Under native multisampling the one pass is read back through targets
+    // n times wider: n "pixels" a pixel, in slot order.
+    let n = job.samples;
+    let pixels = u64::from(w) * u64::from(h) * u64::from(n);
     let (count_bytes, pass_bytes) = layout(pixels as usize, groups);
     let (count_bytes, pass_bytes) = (count_bytes as u64, pass_bytes as u64);
     let read_bytes = pass_bytes * job.passes.len() as u64;
@@ -101,36 +112,49 @@ pub(super) fn render(
         .buffer(read_bytes, vk::BufferUsageFlags::TRANSFER_DST)
         .map_err(failed)?;
 
-    let render_pass = pipelines.render_pass(groups).map_err(failed)?;
-    let colour = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
+    let render_pass = pipelines.render_pass(groups, n).map_err(failed)?;
+    let read_from = if n == 1 {
+        vk::ImageUsageFlags::TRANSFER_SRC
+    } else {
+        vk::ImageUsageFlags::SAMPLED
+    };
+    let colour = vk::ImageUsageFlags::COLOR_ATTACHMENT | read_from;
+    let formats: Vec<vk::Format> = std::iter::once(COUNT_FORMAT)
+        .chain(std::iter::repeat_n(VALUE_FORMAT, groups))
+        .collect();
     let mut views = Vec::with_capacity(groups + 2);
-    views.push(
-        drawing
-            .image(COUNT_FORMAT, target, colour)
-            .map_err(failed)?,
-    );
-    for _ in 0..groups {
-        views.push(
-            drawing
-                .image(VALUE_FORMAT, target, colour)
-                .map_err(failed)?,
-        );
+    for &format in &formats {
+        views.push(drawing.image(format, target, colour, n).map_err(failed)?);
     }
     let stencil = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+    let stencil_format = gpu.offers.stencil_format;
     views.push(
         drawing
-            .image(gpu.offers.stencil_format, target, stencil)
+            .image(stencil_format, target, stencil, n)
             .map_err(failed)?,
     );
-    let info = vk::FramebufferCreateInfo::default()
-        .render_pass(render_pass)
-        .attachments(&views)
-        .width(target.0)
-        .height(target.1)
-        .layers(1);
-    // SAFETY: valid views of images of this size.
-    drawing.framebuffer =
-        unsafe { gpu.device.create_framebuffer(&info, None) }.map_err(|e| failed(e.to_string()))?;
+    let framebuffer = drawing
+        .framebuffer(render_pass, &views, target)
+        .map_err(failed)?;
+
+    // Under multisampling: a wide single-sample target per attachment,
+    // and the descriptor set that lets the read-back pass sample it.
+    let mut spreads = Vec::new();
+    if n > 1 {
+        let wide = (w * n, h);
+        let sets = drawing
+            .descriptor_sets(unpack, &views[..=groups])
+            .map_err(failed)?;
+        for (i, &format) in formats.iter().enumerate() {
+            let usage = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
+            let view = drawing.image(format, wide, usage, 1).map_err(failed)?;
+            let image = drawing.images.last().map(|i| i.0).unwrap_or_default();
+            let pass = unpack.render_pass(format).map_err(failed)?;
+            let pipeline = unpack.pipeline(format, n).map_err(failed)?;
+            let framebuffer = drawing.framebuffer(pass, &[view], wide).map_err(failed)?;
+            spreads.push((pass, pipeline, framebuffer, sets[i], image));
+        }
+    }
 
     // Each stream's place in the vertex buffer and the pipelines of its
     // runs, chosen before recording.
@@ -140,7 +164,7 @@ pub(super) fn render(
         let mut runs = Vec::with_capacity(stream.runs.len());
         for run in &stream.runs {
             let pipeline = pipelines
-                .pipeline(run.draw, scene.rules.cull, groups)
+                .pipeline(run.draw, scene.rules.cull, groups, n)
                 .map_err(failed)?;
             runs.push((pipeline, run.first, run.end));
         }
@@ -177,7 +201,7 @@ pub(super) fn render(
         for (s, draws) in job.passes.iter().enumerate() {
             let begin = vk::RenderPassBeginInfo::default()
                 .render_pass(render_pass)
-                .framebuffer(drawing.framebuffer)
+                .framebuffer(framebuffer)
                 .render_area(vk::Rect2D {
                     offset: vk::Offset2D { x: 0, y: 0 },
                     extent: vk::Extent2D {
@@ -211,7 +235,7 @@ pub(super) fn render(
             }
             d.cmd_end_render_pass(cb);
             let mut at = pass_bytes * s as u64;
-            for (i, &(image, _, _)) in drawing.images[..=groups].iter().enumerate() {
+            let copy = |image, width, at| {
                 let region = vk::BufferImageCopy {
                     buffer_offset: at,
                     buffer_row_length: 0,
@@ -224,18 +248,50 @@ pub(super) fn render(
                     },
                     image_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
                     image_extent: vk::Extent3D {
-                        width: w,
+                        width,
                         height: h,
                         depth: 1,
                     },
                 };
-                d.cmd_copy_image_to_buffer(
+                let layout = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+                d.cmd_copy_image_to_buffer(cb, image, layout, read_buffer, &[region]);
+            };
+            if n == 1 {
+                for (i, &(image, _, _)) in drawing.images[..=groups].iter().enumerate() {
+                    copy(image, w, at);
+                    at += if i == 0 { count_bytes } else { pixels * 16 };
+                }
+                continue;
+            }
+            let wide = rect(0, 0, w * n, h);
+            for (i, &(pass, pipeline, framebuffer, set, image)) in spreads.iter().enumerate() {
+                let begin = vk::RenderPassBeginInfo::default()
+                    .render_pass(pass)
+                    .framebuffer(framebuffer)
+                    .render_area(wide);
+                d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
+                let viewport = vk::Viewport {
+                    x: 0.0,
+                    y: 0.0,
+                    width: (w * n) as f32,
+                    height: h as f32,
+                    min_depth: 0.0,
+                    max_depth: 1.0,
+                };
+                d.cmd_set_viewport(cb, 0, &[viewport]);
+                d.cmd_set_scissor(cb, 0, &[wide]);
+                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
+                d.cmd_bind_descriptor_sets(
                     cb,
-                    image,
-                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                    read_buffer,
-                    &[region],
+                    vk::PipelineBindPoint::GRAPHICS,
+                    unpack.layout,
+                    0,
+                    &[set],
+                    &[],
                 );
+                d.cmd_draw(cb, 3, 1, 0, 0);
+                d.cmd_end_render_pass(cb);
+                copy(image, w * n, at);
                 at += if i == 0 { count_bytes } else { pixels * 16 };
             }
         }
@@ -292,19 +348,25 @@ fn count(bytes: &[u8], at: usize, limit: f32, p: usize) -> Result<f32, RasterErr
     Ok(count)
 }
 
-/// The frame whose slot s of each pixel pass s read back; box-resolved
-/// when the scene antialiases.
-pub(super) fn slots(bytes: &[u8], scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+/// The frame whose slot s of each pixel pass s read back, or, under
+/// native multisampling (`job.samples` > 1), whose slots the one pass's
+/// wide targets hold in order; box-resolved when the scene antialiases.
+pub(super) fn slots(
+    bytes: &[u8],
+    scene: &Scene,
+    plan: &Plan,
+    job: &Job,
+) -> Result<Frame, RasterError> {
     let (w, h) = (scene.canvas.width, scene.canvas.height);
-    let pixels = w as usize * h as usize;
     let mut frame = Frame::for_plan(w, h, plan);
     let slots = frame.samples as usize;
+    let pixels = w as usize * h as usize * job.samples as usize;
     let (count_bytes, pass_bytes) = layout(pixels, gpu::groups(plan));
     let float = |at: usize| float(bytes, at);
-    for s in 0..slots {
+    for s in 0..job.passes.len() {
         let base = s * pass_bytes;
         for p in 0..pixels {
-            let slot = p * slots + s;
+            let slot = if job.samples > 1 { p } else { p * slots + s };
             let count = count(bytes, base + p * 4, 65535.0, p)?;
             let channel = |c: usize| {
                 let (g, k) = (c / 4, c % 4);
@@ -376,6 +438,7 @@ impl Drawing<'_> {
         format: vk::Format,
         (width, height): (u32, u32),
         usage: vk::ImageUsageFlags,
+        samples: u32,
     ) -> Result<vk::ImageView, String> {
         let d = &self.gpu.device;
         let info = vk::ImageCreateInfo::default()
@@ -388,7 +451,7 @@ impl Drawing<'_> {
             })
             .mip_levels(1)
             .array_layers(1)
-            .samples(vk::SampleCountFlags::TYPE_1)
+            .samples(vk::SampleCountFlags::from_raw(samples))
             .tiling(vk::ImageTiling::OPTIMAL)
             .usage(usage)
             .initial_layout(vk::ImageLayout::UNDEFINED);
@@ -433,6 +496,70 @@ impl Drawing<'_> {
                 last.1 = view;
             }
             Ok(view)
+        }
+    }
+
+    /// A framebuffer of `views` of `size`.
+    fn framebuffer(
+        &mut self,
+        render_pass: vk::RenderPass,
+        views: &[vk::ImageView],
+        (width, height): (u32, u32),
+    ) -> Result<vk::Framebuffer, String> {
+        let info = vk::FramebufferCreateInfo::default()
+            .render_pass(render_pass)
+            .attachments(views)
+            .width(width)
+            .height(height)
+            .layers(1);
+        // SAFETY: valid views of images at least this size.
+        let framebuffer = unsafe { self.gpu.device.create_framebuffer(&info, None) }
+            .map_err(|e| e.to_string())?;
+        self.framebuffers.push(framebuffer);
+        Ok(framebuffer)
+    }
+
+    /// One descriptor set per multisampled view, for the read-back pass.
+    fn descriptor_sets(
+        &mut self,
+        unpack: &Unpack,
+        views: &[vk::ImageView],
+    ) -> Result<Vec<vk::DescriptorSet>, String> {
+        let d = &self.gpu.device;
+        let sizes = [vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::SAMPLED_IMAGE,
+            descriptor_count: views.len() as u32,
+        }];
+        let info = vk::DescriptorPoolCreateInfo::default()
+            .max_sets(views.len() as u32)
+            .pool_sizes(&sizes);
+        // SAFETY: valid create infos; the pool is destroyed in Drop, and
+        // the views outlive the sets.
+        unsafe {
+            self.descriptors = d
+                .create_descriptor_pool(&info, None)
+                .map_err(|e| e.to_string())?;
+            let layouts = vec![unpack.set_layout; views.len()];
+            let info = vk::DescriptorSetAllocateInfo::default()
+                .descriptor_pool(self.descriptors)
+                .set_layouts(&layouts);
+            let sets = d
+                .allocate_descriptor_sets(&info)
+                .map_err(|e| e.to_string())?;
+            for (&set, &view) in sets.iter().zip(views) {
+                let images = [vk::DescriptorImageInfo {
+                    sampler: vk::Sampler::null(),
+                    image_view: view,
+                    image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
+                }];
+                let write = vk::WriteDescriptorSet::default()
+                    .dst_set(set)
+                    .dst_binding(0)
+                    .descriptor_type(vk::DescriptorType::SAMPLED_IMAGE)
+                    .image_info(&images);
+                d.update_descriptor_sets(&[write], &[]);
+            }
+            Ok(sets)
         }
     }
 
@@ -498,8 +625,11 @@ impl Drop for Drawing<'_> {
             if self.pool != vk::CommandPool::null() {
                 d.destroy_command_pool(self.pool, None);
             }
-            if self.framebuffer != vk::Framebuffer::null() {
-                d.destroy_framebuffer(self.framebuffer, None);
+            for &framebuffer in &self.framebuffers {
+                d.destroy_framebuffer(framebuffer, None);
+            }
+            if self.descriptors != vk::DescriptorPool::null() {
+                d.destroy_descriptor_pool(self.descriptors, None);
             }
             for &(image, view, memory) in &self.images {
                 if view != vk::ImageView::null() {

@@ -49,14 +49,28 @@
 //! - **Polygons**: stencil then cover (`gpu/stream.rs` explains why the fan
 //!   is exact under the device's tie rule), even-odd and nonzero.
 //!
-//! # Antialiasing: shifted passes
+//! # Antialiasing: native MSAA, or shifted passes
 //!
-//! Every sample pattern is drawn as one single-sample pass per sample slot,
-//! the scene shifted by the pixel centre minus the slot's offset
-//! (`gpu/passes.rs`): pass s's pixel centres decide slot s. This is exact
-//! when every offset lies on the device's subpixel grid, and unsupported
-//! otherwise, with that reason. Results are labelled "shifted passes" in
-//! the adapter's declared description.
+//! - **Native MSAA** where the plan's offsets are exactly the standard
+//!   locations of a count the device multisamples (with
+//!   `standardSampleLocations`, and `sampleRateShading` when depth or
+//!   attributes are interpolated, at each sample), for scenes without
+//!   lines (Vulkan draws multisampled lines as rectangles, whatever the
+//!   rule): one pass into multisampled targets, read back sample by sample
+//!   through a pass that spreads sample s of pixel (x, y) to texel
+//!   (n·x + s, y) of a target n times wider (`unpack.rs`). Vulkan's sample
+//!   index s is standard location s, which is the frame's slot s; a probe
+//!   on each location checks it (`tests/vulkan.rs`).
+//! - **Shifted passes** for every other pattern (`gpu/passes.rs`): one
+//!   single-sample pass per sample slot, the scene shifted by the pixel
+//!   centre minus the slot's offset, so that pass s's pixel centres decide
+//!   slot s. Exact when every offset lies on the device's subpixel grid;
+//!   unsupported otherwise, with that reason.
+//!
+//! `vulkan-passes` is the same adapter drawing every pattern by shifted
+//! passes, so that the device's multisampling and its single-sample
+//! rasterization can be compared on the same cases. The declared
+//! description in reports says which counts are native.
 //!
 //! # Motion: time passes
 //!
@@ -78,33 +92,89 @@
 //!   device, what it offers;
 //! - `shaders.rs`: WGSL compiled to SPIR-V by naga;
 //! - `pipelines.rs`: render passes and pipelines (lines, stencil, cover);
-//! - `draw.rs`: one scene's passes recorded, submitted, read back, decoded.
+//! - `draw.rs`: one scene's passes recorded, submitted, read back, decoded;
+//! - `unpack.rs`: the pass that reads a multisampled target back sample by
+//!   sample.
 
 mod device;
 mod draw;
 mod pipelines;
 mod shaders;
+mod unpack;
 
 use std::sync::{Mutex, MutexGuard, OnceLock};
 
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{LineRule, Primitive, Scene};
+use crate::scene::{Antialias, LineRule, Pattern, Primitive, Scene};
 
 use super::gpu::{self, Placement};
 use device::{Device, Offers};
 use pipelines::Pipelines;
+use unpack::Unpack;
 
 /// The name on the command line and in reports.
 pub const NAME: &str = "vulkan";
 
+/// The name of the adapter that draws every sample pattern by shifted
+/// passes, never natively: the same device, to compare the two.
+pub const PASSES_NAME: &str = "vulkan-passes";
+
 /// Any Vulkan driver, through ash.
-pub struct Vulkan;
+pub struct Vulkan {
+    /// Shifted passes even where the device multisamples the pattern.
+    pub passes_only: bool,
+}
+
+/// Whether the device multisamples `n` samples natively at the standard
+/// locations, read back sample by sample.
+fn native_offered(offers: &Offers, n: u32) -> bool {
+    offers.standard_locations
+        && offers
+            .msaa_counts
+            .contains(ash::vk::SampleCountFlags::from_raw(n))
+}
+
+/// The sample count to multisample the scene with natively, if any: its
+/// offsets are exactly the standard locations of a count the device
+/// offers (checked offset by offset, not by the pattern's name), it has no
+/// lines (multisampled Vulkan lines are rectangles, whatever their rule),
+/// per-sample interpolation is there if the plan interpolates, and the
+/// read-back target (n times the canvas's width) fits.
+fn native_samples(scene: &Scene, plan: &Plan, offers: &Offers, passes_only: bool) -> Option<u32> {
+    let aa = plan.antialias.as_ref()?;
+    let n = aa.offsets.len() as u32;
+    let standard = Antialias {
+        samples: n,
+        pattern: Pattern::Standard,
+        seed: 0,
+        adaptive: false,
+        position_bits: aa.position_bits,
+    };
+    let fits = u64::from(scene.canvas.width) * u64::from(n) <= u64::from(offers.max_side);
+    let lines = scene
+        .primitives
+        .iter()
+        .any(|p| matches!(p, Primitive::Line(_)));
+    (!passes_only
+        && matches!(n, 2 | 4 | 8 | 16)
+        && native_offered(offers, n)
+        && standard.offsets() == aa.offsets
+        && !lines
+        && (offers.sample_rate_shading || !plan.interpolates())
+        && plan.motion.is_none()
+        && fits)
+        .then_some(n)
+}
 
 impl Rasterizer for Vulkan {
     fn name(&self) -> &str {
-        NAME
+        if self.passes_only {
+            PASSES_NAME
+        } else {
+            NAME
+        }
     }
 
     fn capabilities(&self) -> Capabilities {
@@ -117,7 +187,11 @@ impl Rasterizer for Vulkan {
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let shared = shared().map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
         let mut shared = lock(shared);
-        let Shared { device, pipelines } = &mut *shared;
+        let Shared {
+            device,
+            pipelines,
+            unpack,
+        } = &mut *shared;
         let bits = accepted(scene, plan, &device.offers)?;
         let target = gpu::target_size(scene, device.offers.max_side, "this Vulkan device")?;
         let shifts = match &plan.antialias {
@@ -125,6 +199,19 @@ impl Rasterizer for Vulkan {
                 .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,
             None => vec![Default::default()],
         };
+        if let Some(n) = native_samples(scene, plan, &device.offers, self.passes_only) {
+            let canvas = draw::rect(0, 0, scene.canvas.width, scene.canvas.height);
+            let job = draw::Job {
+                streams: vec![gpu::Stream::new(
+                    scene,
+                    &Placement::at_centres(bits, target),
+                )],
+                passes: vec![vec![(canvas, 0)]],
+                samples: n,
+            };
+            let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
+            return draw::slots(&bytes, scene, plan, &job);
+        }
         let Some(motion) = &plan.motion else {
             let placements: Vec<Placement> = shifts
                 .into_iter()
@@ -134,8 +221,8 @@ impl Rasterizer for Vulkan {
                 })
                 .collect();
             let job = draw::Job::per_placement(scene, &placements);
-            let bytes = draw::render(device, pipelines, scene, plan, &job)?;
-            return draw::slots(&bytes, scene, plan);
+            let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
+            return draw::slots(&bytes, scene, plan, &job);
         };
         let canvas = (scene.canvas.width, scene.canvas.height);
         let tests = shifts.len() as u32 * motion.blur.samples;
@@ -152,17 +239,39 @@ impl Rasterizer for Vulkan {
                 .iter()
                 .map(|&(p, stream)| (draw::rect(p % canvas.0, p / canvas.0, 1, 1), stream))
                 .collect()],
+            samples: 1,
         };
-        let bytes = draw::render(device, pipelines, scene, plan, &job)?;
+        let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
         draw::time(&bytes, scene, tests)
     }
 
-    /// The device, its driver and version, once the device is made.
+    /// The device, its driver and version, once the device is made, and
+    /// how samples and instants are drawn.
     fn declared(&self) -> Option<String> {
         let shared = shared().ok()?;
-        let description = lock(shared).device.description.clone();
+        let shared = lock(shared);
+        let offers = &shared.device.offers;
+        let sampling = if self.passes_only {
+            "antialiasing by shifted passes only".to_owned()
+        } else {
+            let counts: Vec<String> = [2u32, 4, 8, 16]
+                .into_iter()
+                .filter(|&n| native_offered(offers, n))
+                .map(|n| format!("{n}x"))
+                .collect();
+            format!(
+                "antialiasing by native MSAA at the standard locations ({}), \
+                 by shifted passes otherwise",
+                if counts.is_empty() {
+                    "none offered".to_owned()
+                } else {
+                    counts.join(", ")
+                }
+            )
+        };
         Some(format!(
-            "{description}; antialiasing by shifted passes, motion by time passes"
+            "{}; {sampling}; motion by time passes",
+            shared.device.description
         ))
     }
 }
@@ -251,6 +360,7 @@ fn line_refusal(rule: LineRule, width: &crate::scene::Number, offers: &Offers) -
 struct Shared {
     // Dropped in this order: the pipelines before their device.
     pipelines: Pipelines,
+    unpack: Unpack,
     device: Device,
 }
 
@@ -266,7 +376,12 @@ fn shared() -> Result<&'static Mutex<Shared>, &'static String> {
                 ));
             }
             let pipelines = Pipelines::new(&device)?;
-            Ok(Mutex::new(Shared { pipelines, device }))
+            let unpack = Unpack::new(&device.device)?;
+            Ok(Mutex::new(Shared {
+                pipelines,
+                unpack,
+                device,
+            }))
         })
         .as_ref()
 }

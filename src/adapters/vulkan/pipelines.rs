@@ -35,6 +35,7 @@ struct Key {
     draw: DrawKey,
     cull: Cull,
     groups: usize,
+    samples: u32,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -49,8 +50,8 @@ enum DrawKey {
 pub(super) struct Pipelines {
     device: ash::Device,
     layout: vk::PipelineLayout,
-    passes: HashMap<usize, vk::RenderPass>,
-    modules: HashMap<(Interpolation, usize), vk::ShaderModule>,
+    passes: HashMap<(usize, u32), vk::RenderPass>,
+    modules: HashMap<(Interpolation, usize, bool), vk::ShaderModule>,
     pipelines: HashMap<Key, vk::Pipeline>,
     stencil_format: vk::Format,
 }
@@ -71,26 +72,38 @@ impl Pipelines {
         })
     }
 
-    /// The render pass of `groups` channel groups.
-    pub(super) fn render_pass(&mut self, groups: usize) -> Result<vk::RenderPass, String> {
-        if let Some(&pass) = self.passes.get(&groups) {
+    /// The render pass of `groups` channel groups at `samples` samples
+    /// per pixel: single-sample targets are left for copying out,
+    /// multisampled ones for the read-back pass to sample.
+    pub(super) fn render_pass(
+        &mut self,
+        groups: usize,
+        samples: u32,
+    ) -> Result<vk::RenderPass, String> {
+        if let Some(&pass) = self.passes.get(&(groups, samples)) {
             return Ok(pass);
         }
+        let count = vk::SampleCountFlags::from_raw(samples);
+        let left = if samples == 1 {
+            vk::ImageLayout::TRANSFER_SRC_OPTIMAL
+        } else {
+            vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
+        };
         let colour = |format| {
             vk::AttachmentDescription::default()
                 .format(format)
-                .samples(vk::SampleCountFlags::TYPE_1)
+                .samples(count)
                 .load_op(vk::AttachmentLoadOp::CLEAR)
                 .store_op(vk::AttachmentStoreOp::STORE)
                 .initial_layout(vk::ImageLayout::UNDEFINED)
-                .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+                .final_layout(left)
         };
         let mut attachments = vec![colour(COUNT_FORMAT)];
         attachments.extend((0..groups).map(|_| colour(VALUE_FORMAT)));
         attachments.push(
             vk::AttachmentDescription::default()
                 .format(self.stencil_format)
-                .samples(vk::SampleCountFlags::TYPE_1)
+                .samples(count)
                 .load_op(vk::AttachmentLoadOp::CLEAR)
                 .store_op(vk::AttachmentStoreOp::DONT_CARE)
                 .stencil_load_op(vk::AttachmentLoadOp::CLEAR)
@@ -135,9 +148,10 @@ impl Pipelines {
                 src_subpass: 0,
                 dst_subpass: vk::SUBPASS_EXTERNAL,
                 src_stage_mask: attachment_stages,
-                dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+                dst_stage_mask: vk::PipelineStageFlags::TRANSFER
+                    | vk::PipelineStageFlags::FRAGMENT_SHADER,
                 src_access_mask: attachment_access,
-                dst_access_mask: vk::AccessFlags::TRANSFER_READ,
+                dst_access_mask: vk::AccessFlags::TRANSFER_READ | vk::AccessFlags::SHADER_READ,
                 dependency_flags: vk::DependencyFlags::empty(),
             },
         ];
@@ -148,17 +162,18 @@ impl Pipelines {
         // SAFETY: a valid device and create info.
         let pass = unsafe { self.device.create_render_pass(&info, None) }
             .map_err(|e| format!("creating a render pass: {e}"))?;
-        self.passes.insert(groups, pass);
+        self.passes.insert((groups, samples), pass);
         Ok(pass)
     }
 
     /// The pipeline of a run drawn as `draw`, under `cull`, into `groups`
-    /// channel groups.
+    /// channel groups of `samples` samples per pixel.
     pub(super) fn pipeline(
         &mut self,
         draw: Draw,
         cull: Cull,
         groups: usize,
+        samples: u32,
     ) -> Result<vk::Pipeline, String> {
         let key = Key {
             draw: match draw {
@@ -176,6 +191,7 @@ impl Pipelines {
                 _ => Cull::None,
             },
             groups,
+            samples,
         };
         if let Some(&pipeline) = self.pipelines.get(&key) {
             return Ok(pipeline);
@@ -185,16 +201,22 @@ impl Pipelines {
         Ok(pipeline)
     }
 
-    fn module(&mut self, mode: Interpolation, groups: usize) -> Result<vk::ShaderModule, String> {
-        if let Some(&module) = self.modules.get(&(mode, groups)) {
+    fn module(
+        &mut self,
+        mode: Interpolation,
+        groups: usize,
+        per_sample: bool,
+    ) -> Result<vk::ShaderModule, String> {
+        let key = (mode, groups, per_sample);
+        if let Some(&module) = self.modules.get(&key) {
             return Ok(module);
         }
-        let words = shaders::spirv(mode, groups)?;
+        let words = shaders::spirv(mode, groups, per_sample)?;
         let info = vk::ShaderModuleCreateInfo::default().code(&words);
         // SAFETY: valid SPIR-V from naga.
         let module = unsafe { self.device.create_shader_module(&info, None) }
             .map_err(|e| format!("creating a shader module: {e}"))?;
-        self.modules.insert((mode, groups), module);
+        self.modules.insert(key, module);
         Ok(module)
     }
 
@@ -203,8 +225,8 @@ impl Pipelines {
             DrawKey::Triangles(mode) | DrawKey::Lines(_, _, mode) => mode,
             DrawKey::Stencil(_) | DrawKey::Cover(_) => Interpolation::Linear,
         };
-        let module = self.module(mode, key.groups)?;
-        let render_pass = self.render_pass(key.groups)?;
+        let module = self.module(mode, key.groups, key.samples > 1)?;
+        let render_pass = self.render_pass(key.groups, key.samples)?;
         let stages = [
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::VERTEX)
@@ -260,7 +282,7 @@ impl Pipelines {
             raster = raster.push_next(&mut line_state);
         }
         let multisample = vk::PipelineMultisampleStateCreateInfo::default()
-            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+            .rasterization_samples(vk::SampleCountFlags::from_raw(key.samples));
         let always = vk::StencilOpState {
             fail_op: vk::StencilOp::KEEP,
             pass_op: vk::StencilOp::KEEP,

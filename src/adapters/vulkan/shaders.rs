@@ -12,14 +12,47 @@ use crate::scene::Interpolation;
 
 use super::super::gpu::MAX_ATTRIBUTES;
 
-/// The SPIR-V of the module with entry points `vs` and `fs`.
-pub(super) fn spirv(mode: Interpolation, groups: usize) -> Result<Vec<u32>, String> {
-    let source = wgsl(mode, groups);
+/// The SPIR-V of the module with entry points `vs` and `fs`; `per_sample`
+/// interpolates depth and the non-flat attributes at each sample of a
+/// multisampled target (`@interpolate(…, sample)`, which also runs the
+/// fragment shader once per sample).
+pub(super) fn spirv(
+    mode: Interpolation,
+    groups: usize,
+    per_sample: bool,
+) -> Result<Vec<u32>, String> {
+    compile(&wgsl(mode, groups, per_sample))
+}
+
+/// The SPIR-V of the read-back pass of an `n`-sample target: texel
+/// (n·x + s, y) of a single-sample target n times wider gets sample s of
+/// pixel (x, y) (`textureLoad` with sample index s).
+pub(super) fn unpack_spirv(n: u32) -> Result<Vec<u32>, String> {
+    compile(&format!(
+        "@group(0) @binding(0) var source: texture_multisampled_2d<f32>;
+
+@vertex
+fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {{
+    // (-1, -1), (3, -1), (-1, 3): one triangle over the whole target.
+    return vec4<f32>(f32(i32(i & 1u) * 4 - 1), f32(i32(i >> 1u) * 4 - 1), 0.0, 1.0);
+}}
+
+@fragment
+fn fs(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {{
+    let texel = vec2<i32>(floor(p.xy));
+    return textureLoad(source, vec2<i32>(texel.x / {n}, texel.y), texel.x % {n});
+}}
+"
+    ))
+}
+
+fn compile(source: &str) -> Result<Vec<u32>, String> {
     let module =
-        naga::front::wgsl::parse_str(&source).map_err(|e| format!("WGSL: {}", e.message()))?;
+        naga::front::wgsl::parse_str(source).map_err(|e| format!("WGSL: {}", e.message()))?;
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::empty(),
+        // `@interpolate(…, sample)`: the adapter enables sampleRateShading.
+        naga::valid::Capabilities::MULTISAMPLED_SHADING,
     )
     .validate(&module)
     .map_err(|e| format!("validating WGSL: {e}"))?;
@@ -31,8 +64,12 @@ pub(super) fn spirv(mode: Interpolation, groups: usize) -> Result<Vec<u32>, Stri
         .map_err(|e| format!("writing SPIR-V: {e}"))
 }
 
-fn wgsl(mode: Interpolation, groups: usize) -> String {
-    let qualifier = mode.name();
+fn wgsl(mode: Interpolation, groups: usize, per_sample: bool) -> String {
+    let (qualifier, depth) = match (mode, per_sample) {
+        (Interpolation::Flat, true) => ("flat".to_owned(), "linear, sample"),
+        (_, true) => (format!("{}, sample", mode.name()), "linear, sample"),
+        (_, false) => (mode.name().to_owned(), "linear"),
+    };
     let mut channels = vec!["v.prim".to_owned(), "v.depth".to_owned()];
     for k in 0..MAX_ATTRIBUTES {
         channels.push(format!("v.a{}.{}", k / 4, ["x", "y", "z", "w"][k % 4]));
@@ -58,7 +95,7 @@ fn wgsl(mode: Interpolation, groups: usize) -> String {
 struct Varyings {{
     @builtin(position) position: vec4<f32>,
     @location(0) @interpolate(flat) prim: f32,
-    @location(1) @interpolate(linear) depth: f32,
+    @location(1) @interpolate({depth}) depth: f32,
     @location(2) @interpolate({qualifier}) a0: vec4<f32>,
     @location(3) @interpolate({qualifier}) a1: vec4<f32>,
     @location(4) @interpolate({qualifier}) a2: vec4<f32>,
@@ -94,9 +131,18 @@ mod tests {
             Interpolation::Flat,
         ] {
             for groups in 1..=5 {
-                let words = spirv(mode, groups).unwrap();
-                assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
+                for per_sample in [false, true] {
+                    let words = spirv(mode, groups, per_sample).unwrap();
+                    assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
+                }
             }
+        }
+    }
+
+    #[test]
+    fn the_unpack_pass_compiles() {
+        for n in [2, 4, 8, 16] {
+            assert_eq!(unpack_spirv(n).unwrap()[0], 0x0723_0203);
         }
     }
 }

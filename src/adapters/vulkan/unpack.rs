@@ -1,0 +1,185 @@
+//! Reading a multisampled target back sample by sample: a pass that draws
+//! one triangle over a single-sample target n times wider than the canvas,
+//! whose texel (n·x + s, y) loads sample s of pixel (x, y) of the
+//! multisampled target (`shaders::unpack_spirv`). Vulkan's sample index s
+//! is the frame's slot s (the caller checks the device's locations), so
+//! the wide target read row by row is the frame's slot order (n·p + s).
+//! The render pass, pipeline layout and pipelines are made on first use
+//! and kept.
+
+use std::collections::HashMap;
+
+use ash::vk;
+
+use super::shaders;
+
+/// The kept objects of the read-back pass, destroyed with their owner.
+pub(super) struct Unpack {
+    device: ash::Device,
+    pub set_layout: vk::DescriptorSetLayout,
+    pub layout: vk::PipelineLayout,
+    passes: HashMap<vk::Format, vk::RenderPass>,
+    modules: HashMap<u32, vk::ShaderModule>,
+    pipelines: HashMap<(vk::Format, u32), vk::Pipeline>,
+}
+
+impl Unpack {
+    pub(super) fn new(device: &ash::Device) -> Result<Unpack, String> {
+        let bindings = [vk::DescriptorSetLayoutBinding::default()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::SAMPLED_IMAGE)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings);
+        // SAFETY: valid create infos; destroyed in Drop.
+        unsafe {
+            let set_layout = device
+                .create_descriptor_set_layout(&info, None)
+                .map_err(|e| format!("creating a descriptor set layout: {e}"))?;
+            let layouts = [set_layout];
+            let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&layouts);
+            let layout = match device.create_pipeline_layout(&info, None) {
+                Ok(layout) => layout,
+                Err(e) => {
+                    device.destroy_descriptor_set_layout(set_layout, None);
+                    return Err(format!("creating a pipeline layout: {e}"));
+                }
+            };
+            Ok(Unpack {
+                device: device.clone(),
+                set_layout,
+                layout,
+                passes: HashMap::new(),
+                modules: HashMap::new(),
+                pipelines: HashMap::new(),
+            })
+        }
+    }
+
+    /// The render pass of one single-sample `format` target, left for
+    /// copying out.
+    pub(super) fn render_pass(&mut self, format: vk::Format) -> Result<vk::RenderPass, String> {
+        if let Some(&pass) = self.passes.get(&format) {
+            return Ok(pass);
+        }
+        let attachments = [vk::AttachmentDescription::default()
+            .format(format)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .load_op(vk::AttachmentLoadOp::DONT_CARE)
+            .store_op(vk::AttachmentStoreOp::STORE)
+            .initial_layout(vk::ImageLayout::UNDEFINED)
+            .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)];
+        let refs = [vk::AttachmentReference {
+            attachment: 0,
+            layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        }];
+        let subpasses = [vk::SubpassDescription::default()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&refs)];
+        let dependencies = [vk::SubpassDependency {
+            src_subpass: 0,
+            dst_subpass: vk::SUBPASS_EXTERNAL,
+            src_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            dst_stage_mask: vk::PipelineStageFlags::TRANSFER,
+            src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+            dst_access_mask: vk::AccessFlags::TRANSFER_READ,
+            dependency_flags: vk::DependencyFlags::empty(),
+        }];
+        let info = vk::RenderPassCreateInfo::default()
+            .attachments(&attachments)
+            .subpasses(&subpasses)
+            .dependencies(&dependencies);
+        // SAFETY: a valid device and create info.
+        let pass = unsafe { self.device.create_render_pass(&info, None) }
+            .map_err(|e| format!("creating the read-back render pass: {e}"))?;
+        self.passes.insert(format, pass);
+        Ok(pass)
+    }
+
+    /// The pipeline that spreads an `n`-sample target into `format`.
+    pub(super) fn pipeline(&mut self, format: vk::Format, n: u32) -> Result<vk::Pipeline, String> {
+        if let Some(&pipeline) = self.pipelines.get(&(format, n)) {
+            return Ok(pipeline);
+        }
+        let render_pass = self.render_pass(format)?;
+        let module = match self.modules.get(&n) {
+            Some(&module) => module,
+            None => {
+                let words = shaders::unpack_spirv(n)?;
+                let info = vk::ShaderModuleCreateInfo::default().code(&words);
+                // SAFETY: valid SPIR-V from naga.
+                let module = unsafe { self.device.create_shader_module(&info, None) }
+                    .map_err(|e| format!("creating a shader module: {e}"))?;
+                self.modules.insert(n, module);
+                module
+            }
+        };
+        let stages = [
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::VERTEX)
+                .module(module)
+                .name(c"vs"),
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::FRAGMENT)
+                .module(module)
+                .name(c"fs"),
+        ];
+        let vertex_input = vk::PipelineVertexInputStateCreateInfo::default();
+        let assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
+            .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+        let viewport = vk::PipelineViewportStateCreateInfo::default()
+            .viewport_count(1)
+            .scissor_count(1);
+        let raster = vk::PipelineRasterizationStateCreateInfo::default()
+            .polygon_mode(vk::PolygonMode::FILL)
+            .cull_mode(vk::CullModeFlags::NONE)
+            .line_width(1.0);
+        let multisample = vk::PipelineMultisampleStateCreateInfo::default()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        let blends = [vk::PipelineColorBlendAttachmentState::default()
+            .color_write_mask(vk::ColorComponentFlags::RGBA)];
+        let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blends);
+        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+        let info = vk::GraphicsPipelineCreateInfo::default()
+            .stages(&stages)
+            .vertex_input_state(&vertex_input)
+            .input_assembly_state(&assembly)
+            .viewport_state(&viewport)
+            .rasterization_state(&raster)
+            .multisample_state(&multisample)
+            .color_blend_state(&blend)
+            .dynamic_state(&dynamic)
+            .layout(self.layout)
+            .render_pass(render_pass)
+            .subpass(0);
+        // SAFETY: every state above lives until this call returns.
+        let pipelines = unsafe {
+            self.device
+                .create_graphics_pipelines(vk::PipelineCache::null(), &[info], None)
+        }
+        .map_err(|(_, e)| format!("creating the read-back pipeline: {e}"))?;
+        self.pipelines.insert((format, n), pipelines[0]);
+        Ok(pipelines[0])
+    }
+}
+
+impl Drop for Unpack {
+    fn drop(&mut self) {
+        // SAFETY: the device is idle, and nothing else holds these objects.
+        unsafe {
+            for &p in self.pipelines.values() {
+                self.device.destroy_pipeline(p, None);
+            }
+            for &m in self.modules.values() {
+                self.device.destroy_shader_module(m, None);
+            }
+            for &p in self.passes.values() {
+                self.device.destroy_render_pass(p, None);
+            }
+            self.device.destroy_pipeline_layout(self.layout, None);
+            self.device
+                .destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}
