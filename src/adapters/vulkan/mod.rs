@@ -194,24 +194,20 @@ impl Rasterizer for Vulkan {
         } = &mut *shared;
         let bits = accepted(scene, plan, &device.offers)?;
         let target = gpu::target_size(scene, device.offers.max_side, "this Vulkan device")?;
-        let shifts = match &plan.antialias {
-            Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)
-                .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,
-            None => vec![Default::default()],
-        };
+        let centres = Placement::at_centres(bits, target);
         if let Some(n) = native_samples(scene, plan, &device.offers, self.passes_only) {
-            let canvas = draw::rect(0, 0, scene.canvas.width, scene.canvas.height);
             let job = draw::Job {
-                streams: vec![gpu::Stream::new(
-                    scene,
-                    &Placement::at_centres(bits, target),
-                )],
-                passes: vec![vec![(canvas, 0)]],
                 samples: n,
+                ..draw::Job::per_placement(scene, &[centres])
             };
             let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
             return draw::slots(&bytes, scene, plan, &job);
         }
+        let shifts = match &plan.antialias {
+            Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)
+                .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,
+            None => vec![centres.shift.clone()],
+        };
         let Some(motion) = &plan.motion else {
             let placements: Vec<Placement> = shifts
                 .into_iter()
@@ -225,7 +221,6 @@ impl Rasterizer for Vulkan {
             return draw::slots(&bytes, scene, plan, &job);
         };
         let canvas = (scene.canvas.width, scene.canvas.height);
-        let tests = shifts.len() as u32 * motion.blur.samples;
         let time = gpu::time_draws(motion, canvas, bits, target, &shifts)
             .map_err(|why| RasterError::Unsupported(format!("time passes: {why}")))?;
         let job = draw::Job {
@@ -242,7 +237,7 @@ impl Rasterizer for Vulkan {
             samples: 1,
         };
         let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
-        draw::time(&bytes, scene, tests)
+        draw::time(&bytes, scene, shifts.len() as u32 * motion.blur.samples)
     }
 
     /// The device, its driver and version, once the device is made, and
