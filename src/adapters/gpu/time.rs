@@ -55,6 +55,7 @@ pub(crate) fn time_draws(
     let mut placements = Vec::new();
     let mut draws = Vec::with_capacity(tests as usize);
     for p in 0..width * height {
+        crate::deadline::check();
         let times = blur.pixel_times(u64::from(p), m);
         for (j, &u) in times.iter().enumerate() {
             let s = j / blur.samples as usize;

@@ -227,7 +227,10 @@ impl Rasterizer for Vulkan {
             streams: time
                 .placements
                 .iter()
-                .map(|p| gpu::Stream::new(scene, p))
+                .map(|p| {
+                    crate::deadline::check();
+                    gpu::Stream::new(scene, p)
+                })
                 .collect(),
             passes: vec![time
                 .draws
