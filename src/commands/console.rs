@@ -98,8 +98,9 @@ pub(crate) fn print_outcome(
         if quiet && matches!(result.verdict, Verdict::Pass | Verdict::Unsupported(_)) {
             continue;
         }
+        let method = result.method.map(|m| format!(" ({m})")).unwrap_or_default();
         outln!(
-            "{} {id:width$}  {}  {}",
+            "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),
             result.rasterizer,
             suite::describe(result)

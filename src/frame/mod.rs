@@ -48,6 +48,10 @@ pub struct Frame {
     pub time: Option<Vec<f64>>,
     /// What a sample method spent on its time loop, when it counts it.
     pub sample_tests: Option<SampleTests>,
+    /// How the rasterizer drew this frame, when it has several ways and
+    /// says which (a GPU adapter: "native MSAA", "shifted passes", "time
+    /// passes"); reports show it beside the verdict.
+    pub method: Option<&'static str>,
 }
 
 /// Sample tests of moving primitives: every (instant, sample) a method
@@ -172,6 +176,7 @@ impl Frame {
             resolved: None,
             time: None,
             sample_tests: None,
+            method: None,
         }
     }
 

@@ -188,6 +188,7 @@ pub fn run_all_with_profiles(
                     metrics: None,
                     frame: None,
                     elapsed: std::time::Duration::ZERO,
+                    method: None,
                 });
                 if let Some(slot) = outcome.candidates.get_mut(*index) {
                     *slot = run;

@@ -579,6 +579,8 @@ pub struct CandidateRun {
     pub metrics: Option<Metrics>,
     pub frame: Option<Frame>,
     pub elapsed: Duration,
+    /// The frame's [`Frame::method`], kept when the frame is released.
+    pub method: Option<&'static str>,
 }
 
 impl CandidateRun {
@@ -589,6 +591,7 @@ impl CandidateRun {
             metrics: None,
             frame: None,
             elapsed,
+            method: None,
         }
     }
 }
@@ -630,6 +633,7 @@ pub fn run_candidate(
             rasterizer: name,
             verdict: Verdict::Error(why),
             metrics: None,
+            method: frame.method,
             frame: Some(frame),
             elapsed,
         };
@@ -677,6 +681,7 @@ pub fn run_candidate(
         rasterizer: name,
         verdict,
         metrics: Some(m),
+        method: frame.method,
         frame: Some(frame),
         elapsed,
     }

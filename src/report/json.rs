@@ -171,6 +171,10 @@ pub struct ResultEntry {
     pub verdict: &'static str,
     pub reasons: Vec<String>,
     pub time_ms: f64,
+    /// How the rasterizer drew it, when it says (a GPU adapter: "native
+    /// MSAA", "shifted passes", "time passes").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub method: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -364,6 +368,7 @@ impl CaseEntry {
                     Verdict::Unsupported(why) | Verdict::Error(why) => vec![why.clone()],
                 },
                 time_ms: millis(run.elapsed),
+                method: run.method,
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })

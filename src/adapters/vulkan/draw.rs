@@ -386,6 +386,11 @@ pub(super) fn slots(
     }
     if plan.antialias.is_some() {
         frame.resolve();
+        frame.method = Some(if job.samples > 1 {
+            "native MSAA"
+        } else {
+            "shifted passes"
+        });
     }
     Ok(frame)
 }
@@ -397,7 +402,10 @@ pub(super) fn time(bytes: &[u8], scene: &Scene, tests: u32) -> Result<Frame, Ras
     let time = (0..w as usize * h as usize)
         .map(|p| Ok(f64::from(count(bytes, p * 4, 16_777_216.0, p)?) / f64::from(tests)))
         .collect::<Result<Vec<f64>, RasterError>>()?;
-    Ok(Frame::time_only(w, h, time))
+    Ok(Frame {
+        method: Some("time passes"),
+        ..Frame::time_only(w, h, time)
+    })
 }
 
 impl Drawing<'_> {
