@@ -17,7 +17,8 @@
 use glow::HasContext;
 
 use super::context::{gl_error, GlContext};
-use super::passes::{self, Pass};
+use super::passes::{self, Pass, Reading};
+use super::time;
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -36,15 +37,18 @@ impl GlContext {
     ) -> Result<Drawing<'a>, RasterError> {
         let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
+        let layout = match &plan.motion {
+            Some(motion) => time::layout(scene, plan, motion, bits, tile)?,
+            None => passes::layout(scene, plan, bits, tile, self.max_side)?,
+        };
+        let stencils = layout.stencils();
         let passes::Layout {
             vertices,
+            streams,
             passes,
             size,
-        } = passes::layout(scene, plan, bits, tile, self.max_side)?;
-        let stencils = passes[0]
-            .runs
-            .iter()
-            .any(|run| matches!(run.draw, gpu::Draw::Stencil(_)));
+            reading,
+        } = layout;
         let gl = &self.gl;
         let _ = gl_error(gl);
 
@@ -54,7 +58,9 @@ impl GlContext {
             target: tile,
             size,
             cull: scene.rules.cull,
+            streams,
             passes,
+            reading,
             vao: gl.create_vertex_array().map_err(|e| self.failed(&e))?,
             vbo: None,
             fbo: None,
@@ -161,8 +167,9 @@ impl GlContext {
     }
 
     /// Issues `drawing`'s draw calls into its attachments as they stand:
-    /// per pass, its tile's viewport and the canvas's scissor in it, then
-    /// one `glDrawArrays` per run, with the state the run needs (the
+    /// per pass, its tile's viewport and the canvas's scissor in it (or its
+    /// one pixel's, for a time pass), then one `glDrawArrays` per run of its
+    /// stream, with the state the run needs (the
     /// context's state is every case's, so it is set each time). Returns
     /// without waiting.
     pub(super) unsafe fn draw(&self, drawing: &Drawing) {
@@ -177,8 +184,12 @@ impl GlContext {
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
             gl.viewport(ox as i32, oy as i32, tw as i32, th as i32);
-            gl.scissor(ox as i32, (oy + th - h) as i32, w as i32, h as i32);
-            for run in &pass.runs {
+            match pass.pixel {
+                // Canvas row y is window row Q − 1 − y of the tile.
+                Some((x, y)) => gl.scissor((ox + x) as i32, (oy + th - 1 - y) as i32, 1, 1),
+                None => gl.scissor(ox as i32, (oy + th - h) as i32, w as i32, h as i32),
+            }
+            for run in &drawing.streams[pass.stream] {
                 let mode = self.set_state(run.draw, drawing.cull);
                 // Vertex counts are bounded by the primitive limit (SPEC §8).
                 gl.draw_arrays(mode, run.first as i32, (run.end - run.first) as i32);
@@ -300,8 +311,12 @@ pub(super) struct Drawing<'a> {
     /// The framebuffer's size: every tile.
     pub(super) size: (u32, u32),
     pub(super) cull: Cull,
-    /// One pass (one sample slot, slot order) per tile.
+    /// Each stream's runs, indexing the vertex buffer.
+    pub(super) streams: Vec<Vec<gpu::Run>>,
+    /// One pass per tile (one sample slot, slot order), or one per time
+    /// test, each scissored to its pixel.
     pub(super) passes: Vec<Pass>,
+    pub(super) reading: Reading,
     pub(super) vao: glow::VertexArray,
     pub(super) vbo: Option<glow::Buffer>,
     pub(super) fbo: Option<glow::Framebuffer>,

@@ -101,6 +101,23 @@
 //! ([`Rasterizer::declared`]: the renderer and "antialiasing by shifted
 //! passes"). llvmpipe's own multisampling is not used.
 //!
+//! # Motion: time passes
+//!
+//! A moving scene is drawn once per time test of every pixel (`time.rs`,
+//! with `gpu::time_draws`, as the `vulkan` adapter draws it): the scene
+//! placed at the test's instant and shifted for its spatial sample (the
+//! shifted passes' shifts, refused where those are), drawn in one tile
+//! with the scissor on that pixel alone, every test adding to the pixel's
+//! count. The count over the M·N tests is the pixel's time coverage
+//! (`Frame::time_only`); static primitives are in every placement, so they
+//! count at every instant. At most 2^20 tests a scene; more is
+//! unsupported. llvmpipe snaps a vertex placed at an instant to its grid,
+//! as it would for any renderer drawing that instant; the time-coverage
+//! bounds judge the result. Under the driver's tie rule (bottom-left, read
+//! y down) every bundled moving case it draws passes; under the cases' own
+//! rules `motion/ride_top_edge_top_left` fails and
+//! `motion/ride_top_edge_bottom_right` passes, as the fill rule says.
+//!
 //! # One context per process, and softpipe
 //!
 //! One EGL display and context is created on first use and shared by every
@@ -138,11 +155,15 @@
 //! - `shaders.rs`: the programs, one per interpolation mode;
 //! - `lines.rs`: which line rules GL draws, and why not the others;
 //! - `passes.rs`: the passes a scene is drawn in (one, or one per sample
-//!   slot), each in a tile of the framebuffer;
+//!   slot), each in a tile of the framebuffer: the layout of streams and
+//!   passes every way of drawing here produces;
+//! - `time.rs`: a moving scene's time passes, one per pixel and time test,
+//!   scissored to its pixel;
 //! - `drawing.rs`: one scene set up in the context (vertex buffer,
 //!   framebuffer, stencil), cleared, drawn run by run with each run's
 //!   state, and deleted;
-//! - `readback.rs`: the attachments read back into a [`Frame`];
+//! - `readback.rs`: the attachments read back into a [`Frame`] (slots, or
+//!   time coverage);
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
 //!   at a time, for the bench to time the draw apart.
 
@@ -153,6 +174,7 @@ mod passes;
 mod prepared;
 mod readback;
 mod shaders;
+mod time;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -230,21 +252,24 @@ impl Rasterizer for Softpipe {
 /// What Mesa's GL draws here: triangles, `diamond-exit` lines (`lines.rs`
 /// refuses the other rules) and polygons by stencil then cover, snapped
 /// to the case's grid; antialiased scenes by shifted passes
-/// (`passes.rs`); no motion.
+/// (`passes.rs`); moving scenes by time passes (`time.rs`).
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
+        motion_blur: true,
         ..gpu::capabilities(true)
     }
 }
 
 /// What the reports show beside the adapter's name, once the context
-/// exists: the renderer, and that antialiased cases are drawn by shifted
-/// passes, not by the driver's multisampling.
+/// exists: the renderer, that antialiased cases are drawn by shifted
+/// passes, not by the driver's multisampling, and moving ones by time
+/// passes.
 fn declared() -> Option<String> {
     let description = context::existing_description()?;
     Some(format!(
-        "{description}; antialiasing by shifted passes (one single-sample pass per sample slot)"
+        "{description}; antialiasing by shifted passes (one single-sample pass per sample \
+         slot), motion by time passes (one scissored draw per pixel and time test)"
     ))
 }
 

@@ -1,11 +1,11 @@
 //! Mesa's OpenGL on the CPU (llvmpipe, through EGL surfaceless) against the
 //! exact reference, on the cases it can express (triangles, polygons by
-//! stencil then cover, diamond-exit lines, antialiasing by shifted passes);
-//! and softpipe, in a
-//! process of its own (Mesa picks one gallium driver per process). Needs the
-//! `gl` feature and the system packages `libegl1 libegl-mesa0
-//! libgl1-mesa-dri`; without a display each test says it skipped (under
-//! `CI=true` it fails instead), and never passes by drawing nothing.
+//! stencil then cover, diamond-exit lines, antialiasing by shifted passes,
+//! motion by time passes: `motion.rs`); and softpipe, in a process of its
+//! own (Mesa picks one gallium driver per process). Needs the `gl` feature
+//! and the system packages `libegl1 libegl-mesa0 libgl1-mesa-dri`; without
+//! a display each test says it skipped (under `CI=true` it fails instead),
+//! and never passes by drawing nothing.
 #![cfg(feature = "gl")]
 
 use std::path::Path;
@@ -42,7 +42,10 @@ fn available() -> bool {
     }
 }
 
+#[path = "../common/mod.rs"]
 mod common;
+mod motion;
+
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped,
