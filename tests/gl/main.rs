@@ -1,7 +1,8 @@
 //! Mesa's OpenGL on the CPU (llvmpipe, through EGL surfaceless) against the
 //! exact reference, on the cases it can express (triangles, polygons by
 //! stencil then cover, diamond-exit lines, antialiasing by shifted passes,
-//! motion by time passes: `motion.rs`); and softpipe, in a process of its
+//! motion by time passes: `motion.rs`, native MSAA: `msaa.rs`, rectangle
+//! lines: `rectangles.rs`); and softpipe, in a process of its
 //! own (Mesa picks one gallium driver per process). Needs the `gl` feature
 //! and the system packages `libegl1 libegl-mesa0 libgl1-mesa-dri`; without
 //! a display each test says it skipped (under `CI=true` it fails instead),
@@ -45,6 +46,8 @@ fn available() -> bool {
 #[path = "../common/mod.rs"]
 mod common;
 mod motion;
+mod msaa;
+mod rectangles;
 
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
@@ -353,7 +356,8 @@ fn diamond_exit_lines_are_drawn_and_judged() {
     assert!(matches!(r.verdict, Verdict::Fail(_)), "{:?}", r.verdict);
 }
 
-/// The line rules GL does not draw are refused with the reason.
+/// The line rules GL does not draw are refused with the reason
+/// (`rectangle` is drawn: `rectangles.rs`).
 #[test]
 fn refuses_the_line_rules_gl_does_not_draw() {
     if !available() {
@@ -366,7 +370,6 @@ fn refuses_the_line_rules_gl_does_not_draw() {
             r#", "width": 2"#,
             "diamond-exit line's fragments",
         ),
-        ("rectangle", r#", "width": 2"#, "multisampled"),
     ] {
         let scene = inline(&format!(
             r#"{{"name": "l", "canvas": {{"width": 8, "height": 8}},

@@ -44,12 +44,28 @@ pub(super) struct Pass {
 }
 
 /// How a drawing's tiles become a frame.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) enum Reading {
     /// Pass s's tile fills sample slot s of every pixel.
     Slots,
     /// One tile's counts over `tests` time tests per pixel: time coverage.
     Time { tests: u32 },
+    /// One pass into a target of `samples` samples a pixel (`msaa.rs`):
+    /// each (driver sample, slot) of `read` fills that slot of every pixel.
+    Samples {
+        samples: u32,
+        read: Vec<(u32, usize)>,
+    },
+}
+
+impl Reading {
+    /// The samples a pixel of the target has: 0 for a single-sample one.
+    pub(super) fn target_samples(&self) -> u32 {
+        match self {
+            Reading::Samples { samples, .. } => *samples,
+            _ => 0,
+        }
+    }
 }
 
 /// Every stream in one vertex array, the passes drawing them, and how

@@ -1,5 +1,7 @@
 //! Reading a drawing's tiles back into a [`Frame`]: pass s fills sample
-//! slot s of every pixel (`p · N + s`), an antialiased frame then box
+//! slot s of every pixel (`p · N + s`), or a multisampled drawing's
+//! samples each fill the slot they are read into (`msaa.rs` fetches each
+//! one into a single-sample copy first), an antialiased frame then box
 //! resolved; or, for time passes, the one tile's counts over the M·N
 //! tests are each pixel's time coverage.
 
@@ -20,7 +22,7 @@ impl GlContext {
         let (w, h) = drawing.canvas;
         let corner = |origin: (u32, u32)| (origin.0, origin.1 + drawing.target.1 - h);
         if let Reading::Time { tests } = drawing.reading {
-            let counts = self.read_canvas(drawing, corner((0, 0)), 0, 1);
+            let counts = self.read_canvas(drawing, corner((0, 0)), 0, 1, None);
             self.check("drawing and reading back")?;
             let limit = 16_777_216.0;
             let time = counts
@@ -35,9 +37,20 @@ impl GlContext {
         }
         let plan = drawing.plan;
         let mut frame = Frame::for_plan(w, h, plan);
-        let samples = drawing.passes.len();
-        for (s, pass) in drawing.passes.iter().enumerate() {
-            self.read_pass(drawing, corner(pass.origin), &mut frame, s, samples)?;
+        let samples = frame.samples as usize;
+        match &drawing.reading {
+            Reading::Samples { read, .. } => {
+                for &(sample, slot) in read {
+                    let at = (corner((0, 0)), Some(sample));
+                    self.read_pass(drawing, at, &mut frame, slot, samples)?;
+                }
+            }
+            _ => {
+                for (s, pass) in drawing.passes.iter().enumerate() {
+                    let at = (corner(pass.origin), None);
+                    self.read_pass(drawing, at, &mut frame, s, samples)?;
+                }
+            }
         }
         if plan.antialias.is_some() {
             frame.resolve();
@@ -46,20 +59,27 @@ impl GlContext {
     }
 
     /// Attachment `k`'s canvas whose lower-left window corner is `corner`,
-    /// `components` floats a texel, its rows flipped (y down).
+    /// `components` floats a texel, its rows flipped (y down); of a
+    /// multisampled drawing, its sample `sample`, fetched first.
     unsafe fn read_canvas(
         &self,
         drawing: &Drawing,
         corner: (u32, u32),
         k: u32,
         components: usize,
+        sample: Option<u32>,
     ) -> Vec<f32> {
         let gl = &self.gl;
         let (w, h) = drawing.canvas;
         let n = w as usize * h as usize;
-        self.bind_framebuffer(drawing);
+        match sample {
+            Some(sample) => self.fetch_sample(drawing, k as usize, sample),
+            None => {
+                self.bind_framebuffer(drawing);
+                gl.read_buffer(glow::COLOR_ATTACHMENT0 + k);
+            }
+        }
         let mut bytes = vec![0u8; n * components * 4];
-        gl.read_buffer(glow::COLOR_ATTACHMENT0 + k);
         gl.read_pixels(
             corner.0 as i32,
             corner.1 as i32,
@@ -103,20 +123,21 @@ impl GlContext {
         Ok(c)
     }
 
-    /// Reads the canvas whose lower-left window corner is `corner` into
-    /// slot `slot` of each of `frame`'s pixels (`samples` per pixel).
+    /// Reads the canvas whose lower-left window corner is `corner` (of a
+    /// multisampled drawing, its sample given) into slot `slot` of each of
+    /// `frame`'s pixels (`samples` per pixel).
     unsafe fn read_pass(
         &self,
         drawing: &Drawing,
-        corner: (u32, u32),
+        (corner, sample): ((u32, u32), Option<u32>),
         frame: &mut Frame,
         slot: usize,
         samples: usize,
     ) -> Result<(), RasterError> {
-        let groups = drawing.renderbuffers.len() as u32 - 1;
-        let counts = self.read_canvas(drawing, corner, 0, 1);
+        let groups = drawing.attachments as u32 - 1;
+        let counts = self.read_canvas(drawing, corner, 0, 1, sample);
         let values: Vec<Vec<f32>> = (1..=groups)
-            .map(|k| self.read_canvas(drawing, corner, k, 4))
+            .map(|k| self.read_canvas(drawing, corner, k, 4, sample))
             .collect();
         self.check("drawing and reading back")?;
 
