@@ -8,6 +8,8 @@ use std::sync::{Mutex, OnceLock};
 use glow::HasContext;
 use khronos_egl as egl;
 
+use super::msaa::{self, Fetch};
+use super::samples::{self, DriverSamples};
 use super::shaders::program;
 use crate::adapters::gpu::GROUPS;
 use crate::rasterizer::RasterError;
@@ -49,9 +51,15 @@ static CONTEXT: OnceLock<Result<Mutex<GlContext>, String>> = OnceLock::new();
 /// The renderer, "`GL_RENDERER` (`GL_VERSION`)", where this process has
 /// made its context; nothing is made.
 pub(super) fn existing_description() -> Option<String> {
+    existing(|gl| format!("{} ({})", gl.renderer, gl.version))
+}
+
+/// What `f` reads of the context, where this process has made it; nothing
+/// is made.
+pub(super) fn existing<T>(f: impl FnOnce(&GlContext) -> T) -> Option<T> {
     let gl = CONTEXT.get()?.as_ref().ok()?;
     let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    Some(format!("{} ({})", gl.renderer, gl.version))
+    Some(f(&gl))
 }
 
 pub(super) fn context() -> Result<&'static Mutex<GlContext>, &'static String> {
@@ -71,6 +79,12 @@ pub(super) struct GlContext {
     pub(super) version: String,
     pub(super) max_side: u32,
     pub(super) programs: [glow::Program; 3],
+    /// The per-sample read-back of multisampled drawings.
+    pub(super) fetch: Fetch,
+    /// `GL_MAX_SAMPLES`.
+    pub(super) max_samples: u32,
+    /// The driver's sample counts and positions.
+    pub(super) offered: Vec<DriverSamples>,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -142,15 +156,20 @@ impl GlContext {
             })
         };
         let provoking = egl.get_proc_address("glProvokingVertex");
+        let multisample = egl.get_proc_address("glGetMultisamplefv");
         // SAFETY: plain queries and object creation on the current context.
         let (renderer, version, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let made = set_up_context(&gl, provoking);
+            let made = set_up_context(&gl, provoking).and_then(|(max_side, programs)| {
+                let fetch = msaa::fetch(&gl)?;
+                let offered = samples::query(&gl, multisample)?;
+                Ok((max_side, programs, fetch, offered))
+            });
             (renderer, version, made)
         };
         let _ = egl.make_current(display, None, None, None);
-        let (max_side, programs) =
+        let (max_side, programs, fetch, (max_samples, offered)) =
             made.map_err(|e| format!("OpenGL ({renderer}, {version}): {e}"))?;
         Ok(GlContext {
             egl,
@@ -161,6 +180,9 @@ impl GlContext {
             version,
             max_side,
             programs,
+            fetch,
+            max_samples,
+            offered,
         })
     }
 

@@ -17,7 +17,8 @@
 use glow::HasContext;
 
 use super::context::{gl_error, GlContext};
-use super::passes::{self, Pass};
+use super::passes::{self, Pass, Reading};
+use super::{lines, msaa, samples, time};
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -36,15 +37,15 @@ impl GlContext {
     ) -> Result<Drawing<'a>, RasterError> {
         let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
+        let layout = self.layout(scene, plan, bits, tile)?;
+        let stencils = layout.stencils();
         let passes::Layout {
             vertices,
+            streams,
             passes,
             size,
-        } = passes::layout(scene, plan, bits, tile, self.max_side)?;
-        let stencils = passes[0]
-            .runs
-            .iter()
-            .any(|run| matches!(run.draw, gpu::Draw::Stencil(_)));
+            reading,
+        } = layout;
         let gl = &self.gl;
         let _ = gl_error(gl);
 
@@ -54,18 +55,52 @@ impl GlContext {
             target: tile,
             size,
             cull: scene.rules.cull,
+            streams,
             passes,
+            samples: reading.target_samples(),
+            reading,
             vao: gl.create_vertex_array().map_err(|e| self.failed(&e))?,
             vbo: None,
             fbo: None,
+            attachments: 1 + groups,
             renderbuffers: Vec::with_capacity(1 + groups),
+            textures: Vec::new(),
             stencil: None,
+            copy: None,
         };
         if let Err(e) = self.make(&mut drawing, &vertices, groups, stencils) {
             self.delete(&drawing);
             return Err(e);
         }
         Ok(drawing)
+    }
+
+    /// How `scene` is drawn: by time passes if it moves; into a
+    /// multisampled target, one sample read, if it has rectangle lines; by
+    /// native MSAA if its sample pattern is exactly the driver's and it has
+    /// no line (llvmpipe draws every line of a multisampled target as a
+    /// rectangle); else by shifted passes (one, without antialiasing).
+    unsafe fn layout(
+        &self,
+        scene: &Scene,
+        plan: &Plan,
+        bits: u32,
+        tile: (u32, u32),
+    ) -> Result<passes::Layout, RasterError> {
+        if let Some(motion) = &plan.motion {
+            return time::layout(scene, plan, motion, bits, tile);
+        }
+        if lines::has_rectangles(scene) {
+            return msaa::at_one_sample(scene, plan, bits, tile, &self.offered);
+        }
+        if let Some(aa) = &plan.antialias {
+            if let Some((count, slots)) = samples::native(aa, &self.offered) {
+                if !lines::has_lines(scene) {
+                    return Ok(msaa::native(scene, bits, tile, count, &slots));
+                }
+            }
+        }
+        passes::layout(scene, plan, bits, tile, self.max_side)
     }
 
     /// Makes the vertex buffer (filled with `vertices`) and the framebuffer
@@ -101,8 +136,44 @@ impl GlContext {
         drawing.fbo = Some(fbo);
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
         let (fw, fh) = drawing.size;
+        if drawing.samples > 0 {
+            self.make_multisampled(drawing, groups, stencils)?;
+        } else {
+            self.make_single_sampled(drawing, groups, stencils);
+        }
+        let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+        if status != glow::FRAMEBUFFER_COMPLETE {
+            return Err(self.failed(&format!(
+                "float framebuffer {fw}×{fh} ({} samples) incomplete ({status:#x})",
+                drawing.samples
+            )));
+        }
+        if drawing.samples > 0 {
+            let granted = gl.get_parameter_i32(glow::SAMPLES);
+            if granted != drawing.samples as i32 {
+                return Err(self.failed(&format!(
+                    "asked for {} samples a pixel, the framebuffer has {granted}",
+                    drawing.samples
+                )));
+            }
+        }
+        let buffers: Vec<u32> = (0..=groups as u32)
+            .map(|k| glow::COLOR_ATTACHMENT0 + k)
+            .collect();
+        gl.draw_buffers(&buffers);
+        self.check("setting up")
+    }
+
+    /// Makes single-sample attachments: `groups + 1` float renderbuffers
+    /// (the count's, then the groups'), and a stencil one where it
+    /// `stencils`.
+    unsafe fn make_single_sampled(&self, drawing: &mut Drawing, groups: usize, stencils: bool) {
+        let gl = &self.gl;
+        let (fw, fh) = drawing.size;
         for k in 0..=groups {
-            let rb = gl.create_renderbuffer().map_err(|e| self.failed(&e))?;
+            let Ok(rb) = gl.create_renderbuffer() else {
+                return;
+            };
             drawing.renderbuffers.push(rb);
             gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
             let format = if k == 0 { glow::R32F } else { glow::RGBA32F };
@@ -115,7 +186,9 @@ impl GlContext {
             );
         }
         if stencils {
-            let rb = gl.create_renderbuffer().map_err(|e| self.failed(&e))?;
+            let Ok(rb) = gl.create_renderbuffer() else {
+                return;
+            };
             drawing.stencil = Some(rb);
             gl.bind_renderbuffer(glow::RENDERBUFFER, Some(rb));
             let format = glow::DEPTH24_STENCIL8;
@@ -127,17 +200,6 @@ impl GlContext {
                 Some(rb),
             );
         }
-        let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-        if status != glow::FRAMEBUFFER_COMPLETE {
-            return Err(self.failed(&format!(
-                "float framebuffer {fw}×{fh} incomplete ({status:#x})"
-            )));
-        }
-        let buffers: Vec<u32> = (0..=groups as u32)
-            .map(|k| glow::COLOR_ATTACHMENT0 + k)
-            .collect();
-        gl.draw_buffers(&buffers);
-        self.check("setting up")
     }
 
     /// Binds `drawing`'s framebuffer, in which its draw buffers are kept.
@@ -151,7 +213,7 @@ impl GlContext {
         self.bind_framebuffer(drawing);
         gl.disable(glow::SCISSOR_TEST);
         gl.color_mask(true, true, true, true);
-        for k in 0..drawing.renderbuffers.len() as u32 {
+        for k in 0..drawing.attachments as u32 {
             gl.clear_buffer_f32_slice(glow::COLOR, k, &[0.0; 4]);
         }
         if drawing.stencil.is_some() {
@@ -161,8 +223,9 @@ impl GlContext {
     }
 
     /// Issues `drawing`'s draw calls into its attachments as they stand:
-    /// per pass, its tile's viewport and the canvas's scissor in it, then
-    /// one `glDrawArrays` per run, with the state the run needs (the
+    /// per pass, its tile's viewport and the canvas's scissor in it (or its
+    /// one pixel's, for a time pass), then one `glDrawArrays` per run of its
+    /// stream, with the state the run needs (the
     /// context's state is every case's, so it is set each time). Returns
     /// without waiting.
     pub(super) unsafe fn draw(&self, drawing: &Drawing) {
@@ -177,8 +240,12 @@ impl GlContext {
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
             gl.viewport(ox as i32, oy as i32, tw as i32, th as i32);
-            gl.scissor(ox as i32, (oy + th - h) as i32, w as i32, h as i32);
-            for run in &pass.runs {
+            match pass.pixel {
+                // Canvas row y is window row Q − 1 − y of the tile.
+                Some((x, y)) => gl.scissor((ox + x) as i32, (oy + th - 1 - y) as i32, 1, 1),
+                None => gl.scissor(ox as i32, (oy + th - h) as i32, w as i32, h as i32),
+            }
+            for run in &drawing.streams[pass.stream] {
                 let mode = self.set_state(run.draw, drawing.cull);
                 // Vertex counts are bounded by the primitive limit (SPEC §8).
                 gl.draw_arrays(mode, run.first as i32, (run.end - run.first) as i32);
@@ -261,8 +328,14 @@ impl GlContext {
         if let Some(fbo) = drawing.fbo {
             gl.delete_framebuffer(fbo);
         }
+        if let Some(copy) = drawing.copy {
+            gl.delete_framebuffer(copy);
+        }
         for &rb in drawing.renderbuffers.iter().chain(&drawing.stencil) {
             gl.delete_renderbuffer(rb);
+        }
+        for &texture in &drawing.textures {
+            gl.delete_texture(texture);
         }
         if let Some(vbo) = drawing.vbo {
             gl.delete_buffer(vbo);
@@ -300,15 +373,28 @@ pub(super) struct Drawing<'a> {
     /// The framebuffer's size: every tile.
     pub(super) size: (u32, u32),
     pub(super) cull: Cull,
-    /// One pass (one sample slot, slot order) per tile.
+    /// Each stream's runs, indexing the vertex buffer.
+    pub(super) streams: Vec<Vec<gpu::Run>>,
+    /// One pass per tile (one sample slot, slot order), or one per time
+    /// test, each scissored to its pixel.
     pub(super) passes: Vec<Pass>,
+    pub(super) reading: Reading,
+    /// Samples a pixel of the target has; 0: single-sample.
+    pub(super) samples: u32,
     pub(super) vao: glow::VertexArray,
     pub(super) vbo: Option<glow::Buffer>,
     pub(super) fbo: Option<glow::Framebuffer>,
-    /// The count's, then the channel groups'.
+    /// Colour attachments: the count's, then the channel groups'.
+    pub(super) attachments: usize,
+    /// The attachments (single-sample), or the copy's (multisampled).
     pub(super) renderbuffers: Vec<glow::Renderbuffer>,
+    /// The attachments (multisampled).
+    pub(super) textures: Vec<glow::Texture>,
     /// Depth and stencil, for scenes with polygons.
     pub(super) stencil: Option<glow::Renderbuffer>,
+    /// The single-sample framebuffer a multisampled drawing's samples
+    /// are fetched into, one at a time, to be read.
+    pub(super) copy: Option<glow::Framebuffer>,
 }
 
 pub(super) fn f32_bytes(values: &[f32]) -> Vec<u8> {

@@ -17,28 +17,70 @@
 //!   Its ends follow diamond exit, not the vertical (horizontal) ends of
 //!   the case's `parallelogram` rule, and its width is an integer, so
 //!   `parallelogram` is refused;
-//! - it draws `rectangle` lines (GL's multisample line, corners snapped to
-//!   its grid) only into multisampled targets, which this adapter does not
-//!   use: refused;
+//! - into a multisampled target (with `GL_MULTISAMPLE`, on by default) it
+//!   draws every line as GL's multisample line (§14.5.4): a rectangle of
+//!   the line's width centred on the segment, corners snapped to its grid.
+//!   So `rectangle` lines are drawn into a multisampled target, the scene
+//!   shifted onto one driver sample (`msaa.rs`); a scene that has them
+//!   and `diamond-exit` lines too is refused (the target draws one or the
+//!   other), as is a moving one (time passes are single-sample);
 //! - no GL mode draws the `midpoint` (Bresenham) rule: refused.
 
-use crate::scene::{Line, LineRule};
+use crate::plan::Plan;
+use crate::scene::{Line, LineRule, Primitive, Scene};
 
 /// Why the adapter does not draw `line`, or `None` where GL's lines are
-/// the case's rule (`diamond-exit`, width 1).
+/// the case's rule (`diamond-exit`, width 1; `rectangle`, in a
+/// multisampled target).
 pub(super) fn refusal(line: &Line) -> Option<String> {
     match line.rule {
-        LineRule::DiamondExit => None,
+        LineRule::DiamondExit | LineRule::Rectangle => None,
         LineRule::Midpoint => Some("no GL mode draws the midpoint (Bresenham) rule".to_owned()),
         LineRule::Parallelogram => Some(
             "GL's wide aliased lines replicate the diamond-exit line's fragments over a \
              rounded width (GL 4.6 §14.5.2.1): their ends are not the parallelogram's"
                 .to_owned(),
         ),
-        LineRule::Rectangle => Some(
-            "llvmpipe draws rectangular lines only into multisampled targets, which this \
-             adapter does not draw into"
-                .to_owned(),
-        ),
     }
+}
+
+/// Why the adapter does not draw the scene's lines together, or `None`:
+/// rectangle lines beside diamond-exit ones, or in a moving scene.
+pub(super) fn scene_refusal(scene: &Scene, plan: &Plan) -> Option<String> {
+    if !has_rectangles(scene) {
+        return None;
+    }
+    let rule = |r| lines(scene).any(|l| l.rule == r);
+    if rule(LineRule::DiamondExit) {
+        return Some(
+            "rectangle and diamond-exit lines in one scene: llvmpipe draws every line of a \
+             multisampled target as a rectangle, and rectangles only there"
+                .to_owned(),
+        );
+    }
+    if plan.motion.is_some() {
+        return Some(
+            "rectangle lines in a moving scene: time passes draw single-sample targets, \
+             where llvmpipe draws no rectangles"
+                .to_owned(),
+        );
+    }
+    None
+}
+
+fn lines(scene: &Scene) -> impl Iterator<Item = &Line> {
+    scene.primitives.iter().filter_map(|p| match p {
+        Primitive::Line(l) => Some(l),
+        _ => None,
+    })
+}
+
+/// Whether the scene has any line.
+pub(super) fn has_lines(scene: &Scene) -> bool {
+    lines(scene).next().is_some()
+}
+
+/// Whether the scene has a `rectangle` line.
+pub(super) fn has_rectangles(scene: &Scene) -> bool {
+    lines(scene).any(|l| l.rule == LineRule::Rectangle)
 }

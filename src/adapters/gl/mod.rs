@@ -6,9 +6,9 @@
 //! # What is drawn, and how it is read back
 //!
 //! The structure is the `lavapipe` adapter's. A case's primitives
-//! (triangles, `diamond-exit` lines, polygons) are drawn in scene order,
-//! with no depth test, into the float colour attachments of one
-//! framebuffer object, and read back into a [`Frame`]:
+//! (triangles, `diamond-exit` and `rectangle` lines, polygons) are drawn
+//! in scene order, with no depth test, into the float colour attachments
+//! of one framebuffer object, and read back into a [`Frame`]:
 //!
 //! - **count** (`R32F`, additive blending `1 + dst`, enabled on this draw
 //!   buffer only): how many primitives cover each sample;
@@ -78,12 +78,13 @@
 //!   reads, y down, as left and down), not D3D11's: a case at a tie
 //!   reports the departures, as with the fill rule. llvmpipe interpolates
 //!   a line's attributes along its major axis, not by GL's projection.
-//!   `parallelogram`, `rectangle` and `midpoint` are unsupported, each with
-//!   its reason.
+//!   `rectangle` is GL's multisample line (§14.5.4), which llvmpipe draws
+//!   only into a multisampled target: below. `parallelogram` and
+//!   `midpoint` are unsupported, each with its reason.
 //! - **Polygons**: the winding under the driver's tie rule (bottom-left),
 //!   counted in the stencil; the case's fill rule is not faked either.
 //!
-//! # Antialiasing: shifted passes, not the driver's MSAA
+//! # Antialiasing: shifted passes, or the driver's MSAA where it is the case's
 //!
 //! An antialiased scene is drawn as one single-sample pass per sample slot
 //! (`passes.rs`, with `gpu::shifts`): pass s draws the scene moved by the
@@ -95,11 +96,58 @@
 //! do too (`subpixel_bits` ≤ 8): otherwise the shift would not commute
 //! with the driver's snapping, and the case is unsupported with that
 //! reason. The passes are tiles of one framebuffer, cleared, drawn and
-//! read back together. The verdicts judge the driver's single-sample
-//! rasterizer at the pattern's positions, not its multisampling: the
-//! adapter says so where reports show what a rasterizer declares
-//! ([`Rasterizer::declared`]: the renderer and "antialiasing by shifted
-//! passes"). llvmpipe's own multisampling is not used.
+//! read back together. Such verdicts judge the driver's single-sample
+//! rasterizer at the pattern's positions.
+//!
+//! The driver's own multisampling (`samples.rs`, `msaa.rs`) is used where
+//! it draws the case's pattern exactly: when the positions it reports for
+//! one of its sample counts (`glGetMultisamplefv`, y up, flipped to the
+//! case's y down) are the plan's offsets, as a set, and the scene has no
+//! line (llvmpipe draws every line of a multisampled target as a
+//! rectangle). Then one pass into float multisample textures (fixed
+//! sample locations) is read back sample by sample (a `texelFetch` pass
+//! per sample into a single-sample copy), driver sample i into the slot
+//! at its offset. llvmpipe (Mesa 22.3) reports `GL_MAX_SAMPLES` 4 and one
+//! count, 4×, at (0.375, 0.125), (0.875, 0.375), (0.125, 0.625),
+//! (0.625, 0.875) in GL's window terms (y up): the standard 4× pattern in
+//! gallium's memory order, which read y down is (0.375, 0.875),
+//! (0.875, 0.625), (0.125, 0.375), (0.625, 0.125), the standard pattern
+//! flipped. No bundled pattern is that, so the bundled antialiased cases
+//! are all drawn by shifted passes; `tests/gl/msaa.rs` draws the driver's
+//! own pattern natively and matches the reference sample for sample.
+//! Reports say which rule picks the method ([`Rasterizer::declared`]).
+//!
+//! # Rectangle lines: one driver sample on each pixel centre
+//!
+//! A single-sample scene with `rectangle` lines is drawn into a 4× target
+//! (`msaa.rs`), the scene moved by position_j − (½, ½) for a driver
+//! sample j on the 1/256 grid (exact for `subpixel_bits` ≤ 8, refused
+//! above), which brings each pixel's centre onto the pixel's sample j;
+//! sample j alone is read, into the pixel's slot. Triangles and polygons
+//! beside the lines are drawn the same way, exactly; `diamond-exit` lines
+//! beside them are refused (the target would draw them as rectangles).
+//! Found: llvmpipe's rectangles match SPEC §4.3 wherever no sample lies
+//! on a border (the bundled wide ones pass), and a sample exactly on a
+//! border goes either way, by where llvmpipe's corners, computed in float
+//! and snapped to its 1/256 grid, put the border, not by a tie rule (the
+//! bundled tie cases fail on such samples only, `tests/gl/rectangles.rs`).
+//!
+//! # Motion: time passes
+//!
+//! A moving scene is drawn once per time test of every pixel (`time.rs`,
+//! with `gpu::time_draws`, as the `vulkan` adapter draws it): the scene
+//! placed at the test's instant and shifted for its spatial sample (the
+//! shifted passes' shifts, refused where those are), drawn in one tile
+//! with the scissor on that pixel alone, every test adding to the pixel's
+//! count. The count over the M·N tests is the pixel's time coverage
+//! (`Frame::time_only`); static primitives are in every placement, so they
+//! count at every instant. At most 2^20 tests a scene; more is
+//! unsupported. llvmpipe snaps a vertex placed at an instant to its grid,
+//! as it would for any renderer drawing that instant; the time-coverage
+//! bounds judge the result. Under the driver's tie rule (bottom-left, read
+//! y down) every bundled moving case it draws passes; under the cases' own
+//! rules `motion/ride_top_edge_top_left` fails and
+//! `motion/ride_top_edge_bottom_right` passes, as the fill rule says.
 //!
 //! # One context per process, and softpipe
 //!
@@ -138,21 +186,32 @@
 //! - `shaders.rs`: the programs, one per interpolation mode;
 //! - `lines.rs`: which line rules GL draws, and why not the others;
 //! - `passes.rs`: the passes a scene is drawn in (one, or one per sample
-//!   slot), each in a tile of the framebuffer;
+//!   slot), each in a tile of the framebuffer: the layout of streams and
+//!   passes every way of drawing here produces;
+//! - `time.rs`: a moving scene's time passes, one per pixel and time test,
+//!   scissored to its pixel;
+//! - `samples.rs`: the driver's sample counts and positions, and which
+//!   patterns are exactly one of them;
+//! - `msaa.rs`: native MSAA and rectangle lines, drawn into multisampled
+//!   targets and read back sample by sample;
 //! - `drawing.rs`: one scene set up in the context (vertex buffer,
 //!   framebuffer, stencil), cleared, drawn run by run with each run's
 //!   state, and deleted;
-//! - `readback.rs`: the attachments read back into a [`Frame`];
+//! - `readback.rs`: the attachments read back into a [`Frame`] (slots, or
+//!   time coverage);
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
 //!   at a time, for the bench to time the draw apart.
 
 mod context;
 mod drawing;
 mod lines;
+mod msaa;
 mod passes;
 mod prepared;
 mod readback;
+mod samples;
 mod shaders;
+mod time;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -227,25 +286,65 @@ impl Rasterizer for Softpipe {
     }
 }
 
-/// What Mesa's GL draws here: triangles, `diamond-exit` lines (`lines.rs`
-/// refuses the other rules) and polygons by stencil then cover, snapped
-/// to the case's grid; antialiased scenes by shifted passes
-/// (`passes.rs`); no motion.
+/// What Mesa's GL draws here: triangles, `diamond-exit` and `rectangle`
+/// lines (`lines.rs` refuses the other rules) and polygons by stencil then
+/// cover, snapped to the case's grid; antialiased scenes by shifted passes
+/// (`passes.rs`) or native MSAA (`msaa.rs`); moving scenes by time passes
+/// (`time.rs`).
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
+        motion_blur: true,
         ..gpu::capabilities(true)
     }
 }
 
 /// What the reports show beside the adapter's name, once the context
-/// exists: the renderer, and that antialiased cases are drawn by shifted
-/// passes, not by the driver's multisampling.
+/// exists: the renderer, when antialiased cases are drawn by the driver's
+/// multisampling (its positions listed) and when by shifted passes, how
+/// rectangle lines are drawn, and that moving scenes are drawn by time
+/// passes.
 fn declared() -> Option<String> {
     let description = context::existing_description()?;
+    let offered = context::existing(|gl| {
+        gl.offered
+            .iter()
+            .map(|o| o.describe())
+            .collect::<Vec<_>>()
+            .join("; ")
+    })?;
     Some(format!(
-        "{description}; antialiasing by shifted passes (one single-sample pass per sample slot)"
+        "{description}; antialiasing by the driver's MSAA where a case's sample positions \
+         are exactly the driver's ({offered}; y down), by shifted passes (one single-sample \
+         pass per sample slot) otherwise; rectangle lines in a multisampled target, one \
+         sample read; motion by time passes (one scissored draw per pixel and time test)"
     ))
+}
+
+/// The driver's multisampling, as queried once per context.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DriverMultisampling {
+    /// `GL_MAX_SAMPLES`.
+    pub max_samples: u32,
+    /// Each count it grants, with its samples' positions in its sample
+    /// order: offsets from the pixel's top-left corner, y down, in pixels
+    /// (GL's `GL_SAMPLE_POSITION`, y up, flipped).
+    pub counts: Vec<(u32, Vec<[f64; 2]>)>,
+}
+
+/// The driver's multisampling, or why there is no context. Creates the
+/// shared context on first use.
+pub fn driver_multisampling() -> Result<DriverMultisampling, String> {
+    let gl = context()?;
+    let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    Ok(DriverMultisampling {
+        max_samples: gl.max_samples,
+        counts: gl
+            .offered
+            .iter()
+            .map(|o| (o.count, o.positions.clone()))
+            .collect(),
+    })
 }
 
 /// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
@@ -260,6 +359,9 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32
         )));
     }
     let bits = gpu::snapping_bits(scene, plan, lines::refusal, "Mesa's GL")?;
+    if let Some(why) = lines::scene_refusal(scene, plan) {
+        return Err(RasterError::Unsupported(format!("lines: {why}")));
+    }
     if softpipe {
         ask_for_softpipe();
     }

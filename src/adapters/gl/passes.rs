@@ -16,6 +16,13 @@
 //! that grid (`subpixel_bits` ≤ 8). Mesa rounds a finer vertex to 8 bits
 //! with ties to even, which a shift by an odd multiple of 1/256 does not
 //! commute with, so antialiased cases with more bits are unsupported.
+//!
+//! A [`Layout`] is what every way of drawing here produces: streams (each
+//! a placement of the scene, its runs indexing one shared vertex array),
+//! passes (a stream drawn in a tile, over the canvas or scissored to one
+//! pixel: `time.rs`'s time passes), and how the tiles are read back.
+
+use dashu_ratio::RBig;
 
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
 use crate::plan::Plan;
@@ -25,19 +32,109 @@ use crate::scene::Scene;
 /// The subpixel bits Mesa's GL snaps to.
 pub(super) const DRIVER_BITS: u32 = 8;
 
-/// One pass: the runs of its stream (vertex indices into the shared
-/// buffer) and the window position of its tile's lower-left corner.
+/// One pass: a stream drawn with the viewport on the tile whose lower-left
+/// window corner is `origin`, scissored to the canvas or to one pixel.
 pub(super) struct Pass {
     pub origin: (u32, u32),
-    pub runs: Vec<gpu::Run>,
+    /// An index into [`Layout::streams`].
+    pub stream: usize,
+    /// The canvas pixel (x, y down) a time pass is scissored to; `None`:
+    /// the whole canvas.
+    pub pixel: Option<(u32, u32)>,
 }
 
-/// Every pass's stream in one vertex array, and where each pass is drawn.
+/// How a drawing's tiles become a frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) enum Reading {
+    /// Pass s's tile fills sample slot s of every pixel.
+    Slots,
+    /// One tile's counts over `tests` time tests per pixel: time coverage.
+    Time { tests: u32 },
+    /// One pass into a target of `samples` samples a pixel (`msaa.rs`):
+    /// each (driver sample, slot) of `read` fills that slot of every pixel.
+    Samples {
+        samples: u32,
+        read: Vec<(u32, usize)>,
+    },
+}
+
+impl Reading {
+    /// The samples a pixel of the target has: 0 for a single-sample one.
+    pub(super) fn target_samples(&self) -> u32 {
+        match self {
+            Reading::Samples { samples, .. } => *samples,
+            _ => 0,
+        }
+    }
+}
+
+/// Every stream in one vertex array, the passes drawing them, and how
+/// they are read back.
 pub(super) struct Layout {
     pub vertices: Vec<f32>,
+    /// Each stream's runs, indexing `vertices`.
+    pub streams: Vec<Vec<gpu::Run>>,
     pub passes: Vec<Pass>,
     /// The framebuffer holding every tile.
     pub size: (u32, u32),
+    pub reading: Reading,
+}
+
+impl Layout {
+    /// An empty layout over a framebuffer of `size`.
+    pub(super) fn new(size: (u32, u32), reading: Reading) -> Layout {
+        Layout {
+            vertices: Vec::new(),
+            streams: Vec::new(),
+            passes: Vec::new(),
+            size,
+            reading,
+        }
+    }
+
+    /// Appends `stream`'s vertices and its runs, and returns its index.
+    pub(super) fn push(&mut self, stream: gpu::Stream) -> usize {
+        let base = (self.vertices.len() / VERTEX_FLOATS) as u32;
+        self.vertices.extend(stream.vertices);
+        self.streams.push(
+            stream
+                .runs
+                .into_iter()
+                .map(|run| gpu::Run {
+                    first: run.first + base,
+                    end: run.end + base,
+                    ..run
+                })
+                .collect(),
+        );
+        self.streams.len() - 1
+    }
+
+    /// Whether any stream counts a polygon's winding in the stencil.
+    pub(super) fn stencils(&self) -> bool {
+        self.streams
+            .iter()
+            .flatten()
+            .any(|run| matches!(run.draw, gpu::Draw::Stencil(_)))
+    }
+}
+
+/// The shift of each sample slot's pass (one zero shift without
+/// antialiasing), or why shifted passes would not be exact: vertices
+/// finer than the driver's grid, or offsets off it.
+pub(super) fn shifts(plan: &Plan, bits: u32) -> Result<Vec<[RBig; 2]>, RasterError> {
+    let Some(aa) = &plan.antialias else {
+        return Ok(vec![[RBig::ZERO, RBig::ZERO]]);
+    };
+    if bits > DRIVER_BITS {
+        return Err(RasterError::Unsupported(format!(
+            "antialiasing by shifted passes with subpixel_bits {bits}: Mesa rounds \
+             vertices to {DRIVER_BITS} bits, ties to even, which a shift does not \
+             commute with"
+        )));
+    }
+    gpu::shifts(aa, DRIVER_BITS)
+        .map_err(|why| RasterError::Unsupported(format!("antialiasing by shifted passes: {why}")))
 }
 
 /// The passes `scene` is drawn in, each in a `tile` (`P × Q`), or why
@@ -50,21 +147,7 @@ pub(super) fn layout(
     tile: (u32, u32),
     max_side: u32,
 ) -> Result<Layout, RasterError> {
-    let shifts = match &plan.antialias {
-        None => vec![gpu::Placement::at_centres(bits, tile).shift],
-        Some(aa) => {
-            if bits > DRIVER_BITS {
-                return Err(RasterError::Unsupported(format!(
-                    "antialiasing by shifted passes with subpixel_bits {bits}: Mesa rounds \
-                     vertices to {DRIVER_BITS} bits, ties to even, which a shift does not \
-                     commute with"
-                )));
-            }
-            gpu::shifts(aa, DRIVER_BITS).map_err(|why| {
-                RasterError::Unsupported(format!("antialiasing by shifted passes: {why}"))
-            })?
-        }
-    };
+    let shifts = shifts(plan, bits)?;
     let n = shifts.len() as u32;
     let columns = (max_side / tile.0).clamp(1, n);
     let rows = n.div_ceil(columns);
@@ -74,31 +157,19 @@ pub(super) fn layout(
             tile.0, tile.1
         )));
     }
-    let mut layout = Layout {
-        vertices: Vec::new(),
-        passes: Vec::with_capacity(shifts.len()),
-        size: (columns * tile.0, rows * tile.1),
-    };
+    let size = (columns * tile.0, rows * tile.1);
+    let mut layout = Layout::new(size, Reading::Slots);
     for (k, shift) in shifts.into_iter().enumerate() {
         let k = k as u32;
         let place = gpu::Placement {
             shift,
             ..gpu::Placement::at_centres(bits, tile)
         };
-        let stream = gpu::Stream::new(scene, &place);
-        let base = (layout.vertices.len() / VERTEX_FLOATS) as u32;
-        layout.vertices.extend(stream.vertices);
+        let stream = layout.push(gpu::Stream::new(scene, &place));
         layout.passes.push(Pass {
             origin: ((k % columns) * tile.0, (k / columns) * tile.1),
-            runs: stream
-                .runs
-                .into_iter()
-                .map(|run| gpu::Run {
-                    first: run.first + base,
-                    end: run.end + base,
-                    ..run
-                })
-                .collect(),
+            stream,
+            pixel: None,
         });
     }
     Ok(layout)

@@ -1,5 +1,5 @@
 //! The programs: a GLSL 3.30 pair per interpolation mode, compiled and
-//! linked once per context.
+//! linked once per context (and `msaa.rs`'s fetch program, linked here).
 
 use glow::HasContext;
 
@@ -11,16 +11,26 @@ pub(super) unsafe fn program(
     mode: Interpolation,
 ) -> Result<glow::Program, String> {
     let (vs, fs) = shaders(mode);
+    link(gl, mode.name(), &vs, &fs)
+}
+
+/// Compiles and links a vertex and fragment shader pair; `name` says
+/// which in a failure.
+pub(super) unsafe fn link(
+    gl: &glow::Context,
+    name: &str,
+    vs: &str,
+    fs: &str,
+) -> Result<glow::Program, String> {
     let program = gl.create_program()?;
     let mut shaders = Vec::new();
     for (kind, source) in [(glow::VERTEX_SHADER, vs), (glow::FRAGMENT_SHADER, fs)] {
         let shader = gl.create_shader(kind)?;
-        gl.shader_source(shader, &source);
+        gl.shader_source(shader, source);
         gl.compile_shader(shader);
         if !gl.get_shader_compile_status(shader) {
             return Err(format!(
-                "compiling the {} shader: {}",
-                mode.name(),
+                "compiling the {name} shader: {}",
                 gl.get_shader_info_log(shader)
             ));
         }
@@ -30,8 +40,7 @@ pub(super) unsafe fn program(
     gl.link_program(program);
     if !gl.get_program_link_status(program) {
         return Err(format!(
-            "linking the {} program: {}",
-            mode.name(),
+            "linking the {name} program: {}",
             gl.get_program_info_log(program)
         ));
     }

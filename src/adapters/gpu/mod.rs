@@ -10,14 +10,14 @@
 
 mod passes;
 mod stream;
-#[cfg(feature = "vulkan")]
+#[cfg(any(feature = "vulkan", feature = "gl"))]
 mod time;
 
 #[cfg_attr(not(feature = "vulkan"), allow(unused_imports))]
 pub(crate) use passes::shifts;
 #[allow(unused_imports)] // `Run` is the gl adapter's
 pub(crate) use stream::{Draw, Placement, Run, Stream, VERTEX_FLOATS};
-#[cfg(feature = "vulkan")]
+#[cfg(any(feature = "vulkan", feature = "gl"))]
 pub(crate) use time::time_draws;
 
 use crate::plan::Plan;

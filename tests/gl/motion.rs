@@ -1,0 +1,120 @@
+//! Motion by time passes: one scissored draw per pixel and time test, the
+//! counts summed into each pixel's time coverage.
+
+use rastercheck::adapters::gl::Gl;
+use rastercheck::frame::Frame;
+use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::plan::Plan;
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
+use rastercheck::scene::{time::limits::TIME_ONE, Primitive, Scene};
+
+use super::common::adapters::{assert_each, bundled_ids};
+use super::common::{case, report};
+use super::{available, run};
+
+/// Whether a case has a `parallelogram` line, which GL does not draw.
+fn has_parallelogram_lines(scene: &Scene) -> bool {
+    scene.primitives.iter().any(|p| {
+        matches!(p, Primitive::Line(l) if l.rule == rastercheck::scene::LineRule::Parallelogram)
+    })
+}
+
+/// Holds a moving case to the driver's rule (bottom-left, read y down).
+/// Its `expect.time_coverage` pins are the exact coverages under the
+/// case's own rule, which the reference must reproduce: under another rule
+/// they no longer hold, so they go with it (the bounds stay).
+fn bottom_left_unpinned(scene: &mut Scene) {
+    super::bottom_left(scene);
+    scene.expect.time_coverage.clear();
+}
+
+/// Every bundled moving case but those with `parallelogram` lines is
+/// drawn by time passes; held to the driver's tie rule (bottom-left, read
+/// y down), each passes its time-coverage bounds. Under the cases' own
+/// rules the verdicts are printed: `ride_top_edge_top_left` fails there,
+/// `ride_top_edge_bottom_right` passes (a triangle riding the sample row
+/// along its top edge: llvmpipe includes the bottom, not the top).
+#[test]
+fn moving_cases_by_time_passes_pass_under_the_drivers_rule() {
+    if !available() {
+        return;
+    }
+    let ids: Vec<String> = bundled_ids("motion", |_| true)
+        .into_iter()
+        .filter(|id| !has_parallelogram_lines(&case(id)))
+        .collect();
+    let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
+    assert!(ids.len() >= 29, "{ids:?}");
+    for id in &ids {
+        let (reference, own) = run(&case(id));
+        eprintln!("own rule: {}", report(id, &reference, &own));
+        assert!(
+            matches!(own.verdict, Verdict::Pass | Verdict::Fail(_)),
+            "{id}: {:?}",
+            own.verdict
+        );
+    }
+    assert_each(&ids, &Gl, bottom_left_unpinned, |_, run, line, failures| {
+        if run.verdict != Verdict::Pass {
+            failures.push(line.to_owned());
+        }
+    });
+    let (_, top) = run(&case("motion/ride_top_edge_top_left"));
+    assert!(matches!(top.verdict, Verdict::Fail(_)), "{:?}", top.verdict);
+}
+
+/// Gl drawing every moving scene over the whole shutter [0, 1], whatever
+/// the case's shutter: its instants are wrong.
+struct WholeShutter;
+
+impl Rasterizer for WholeShutter {
+    fn name(&self) -> &str {
+        "gl-whole-shutter"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Gl.capabilities()
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut plan = plan.clone();
+        if let Some(motion) = &mut plan.motion {
+            motion.blur.shutter = [0, TIME_ONE];
+        }
+        Gl.rasterize(scene, &plan)
+    }
+}
+
+/// The checks catch wrong instants: a case whose shutter closes while the
+/// triangle still moves passes, and fails drawn over the whole shutter.
+#[test]
+fn wrong_instants_fail() {
+    if !available() {
+        return;
+    }
+    let id = "motion/shutter_quarter_to_three_quarters";
+    let scene = case(id);
+    let reference = suite::run_reference(&scene);
+    let right = suite::run_candidate(&scene, &reference, &Gl);
+    assert_eq!(
+        right.verdict,
+        Verdict::Pass,
+        "{}",
+        report(id, &reference, &right)
+    );
+    let wrong = suite::run_candidate(&scene, &reference, &WholeShutter);
+    eprintln!("{}", report(id, &reference, &wrong));
+    assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
+}
+
+/// The reports say how moving scenes are drawn.
+#[test]
+fn declares_time_passes() {
+    if !available() {
+        return;
+    }
+    let _ = run(&case("motion/spec_moves_as_written"));
+    let declared = Gl.declared().expect("the context is made");
+    assert!(declared.contains("motion by time passes"), "{declared}");
+    assert!(Gl.capabilities().motion_blur);
+}
