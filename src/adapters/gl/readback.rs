@@ -33,7 +33,10 @@ impl GlContext {
                         .map(|c| f64::from(c) / f64::from(tests))
                 })
                 .collect::<Result<Vec<f64>, RasterError>>()?;
-            return Ok(Frame::time_only(w, h, time));
+            return Ok(Frame {
+                method: Some("time passes"),
+                ..Frame::time_only(w, h, time)
+            });
         }
         let plan = drawing.plan;
         let mut frame = Frame::for_plan(w, h, plan);
@@ -52,6 +55,13 @@ impl GlContext {
                 }
             }
         }
+        let native = matches!(drawing.reading, Reading::Samples { .. });
+        frame.method = match (native, plan.antialias.is_some()) {
+            (true, true) => Some("native MSAA"),
+            (true, false) => Some("one sample of a multisampled target"),
+            (false, true) => Some("shifted passes"),
+            (false, false) => None,
+        };
         if plan.antialias.is_some() {
             frame.resolve();
         }

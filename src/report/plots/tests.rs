@@ -195,6 +195,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 verdict: "pass",
                 reasons: Vec::new(),
                 time_ms: 0.0,
+                method: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })
