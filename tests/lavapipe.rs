@@ -21,7 +21,7 @@ fn available() -> bool {
             true
         }
         Err(why) => {
-            eprintln!("skipped: no Vulkan adapter (install mesa-vulkan-drivers libvulkan1): {why}");
+            common::adapters::skipped("Vulkan adapter", "mesa-vulkan-drivers libvulkan1", &why);
             false
         }
     }

@@ -24,7 +24,8 @@ use common::adapters::{
 };
 use common::{case, inline, report, sample_name};
 
-/// Whether a Vulkan device is here; says why not, and fails under CI.
+/// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
+/// and fails under CI.
 fn available() -> bool {
     match vulkan::device_description() {
         Ok(description) => {
@@ -32,9 +33,7 @@ fn available() -> bool {
             true
         }
         Err(why) => {
-            let ci = std::env::var("CI").is_ok_and(|v| v == "true");
-            assert!(!ci, "CI=true and no Vulkan device: {why}");
-            eprintln!("SKIPPED: no Vulkan device (install libvulkan1 mesa-vulkan-drivers): {why}");
+            common::adapters::skipped("Vulkan device", "libvulkan1 mesa-vulkan-drivers", &why);
             false
         }
     }

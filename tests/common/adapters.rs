@@ -57,6 +57,20 @@ pub const INTERPOLATION: &[&str] = &[
     "triangles/interp_perspective_w_range",
 ];
 
+/// A driver test that cannot run because the driver is missing: under
+/// `CI=true` that fails the test (CI installs every driver, `.ci/run`);
+/// elsewhere it says SKIPPED on the test's stderr, written straight to the
+/// file descriptor so that the test harness's capture does not hide it.
+pub fn skipped(what: &str, install: &str, why: &str) {
+    use std::io::Write;
+    let ci = std::env::var("CI").is_ok_and(|v| v == "true");
+    assert!(!ci, "CI=true and no {what} (install {install}): {why}");
+    let _ = writeln!(
+        std::io::stderr(),
+        "SKIPPED: no {what} (install {install}): {why}"
+    );
+}
+
 /// The ids (`family/stem`) of the bundled cases of `family` whose file stem
 /// `keep` accepts, sorted.
 pub fn bundled_ids(family: &str, keep: impl Fn(&str) -> bool) -> Vec<String> {
