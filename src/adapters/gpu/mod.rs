@@ -1,5 +1,7 @@
-//! What the GPU-API adapters (`lavapipe`, `gl`) share: the vertex stream
-//! they upload, and the size of the target they draw into.
+//! What the GPU-API adapters (`vulkan`, `lavapipe`, `gl`) share: the
+//! vertex stream they upload (`stream.rs`), the shifts of shifted passes
+//! (`passes.rs`), the draws of time passes (`time.rs`), the WGSL of the two
+//! Vulkan adapters (`wgsl.rs`), and the size of the target they draw into.
 //!
 //! Positions are snapped exactly to the case's grid, rounded once to f32,
 //! and mapped to clip space over a power-of-two target, on which the
@@ -12,6 +14,8 @@ mod passes;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod time;
+#[cfg(any(feature = "lavapipe", feature = "vulkan"))]
+pub(crate) mod wgsl;
 
 #[cfg_attr(not(feature = "vulkan"), allow(unused_imports))]
 pub(crate) use passes::shifts;

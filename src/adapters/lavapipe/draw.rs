@@ -19,7 +19,7 @@ use super::pipelines::Unpack;
 use super::readback::{self, copy_out, read_rows};
 
 /// Samples per pixel of an antialiased scene: Vulkan's standard 4×.
-const MSAA: u32 = 4;
+pub(super) const MSAA: u32 = 4;
 
 /// The error scopes of one submission's work, open from before its first
 /// command (or buffer) is made until it has been waited for.

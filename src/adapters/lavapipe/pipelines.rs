@@ -6,9 +6,10 @@
 
 use crate::scene::{Cull, Interpolation};
 
+use super::super::gpu::wgsl;
 use super::super::gpu::VERTEX_FLOATS;
 use super::device::Gpu;
-use super::shaders::{shader, UNPACK_SHADER};
+use super::shaders::shader;
 
 /// The unpacking pass's pipelines and their bind group layout.
 #[derive(Clone)]
@@ -149,7 +150,7 @@ impl Gpu {
             });
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some("rastercheck lavapipe unpack"),
-                source: wgpu::ShaderSource::Wgsl(UNPACK_SHADER.into()),
+                source: wgpu::ShaderSource::Wgsl(wgsl::unpack(super::draw::MSAA).into()),
             });
             let pipeline = |format: wgpu::TextureFormat| {
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

@@ -211,11 +211,7 @@ impl Pipelines {
         if let Some(&module) = self.modules.get(&key) {
             return Ok(module);
         }
-        let words = shaders::spirv(mode, groups, per_sample)?;
-        let info = vk::ShaderModuleCreateInfo::default().code(&words);
-        // SAFETY: valid SPIR-V from naga.
-        let module = unsafe { self.device.create_shader_module(&info, None) }
-            .map_err(|e| format!("creating a shader module: {e}"))?;
+        let module = shader_module(&self.device, &shaders::spirv(mode, groups, per_sample)?)?;
         self.modules.insert(key, module);
         Ok(module)
     }
@@ -227,16 +223,6 @@ impl Pipelines {
         };
         let module = self.module(mode, key.groups, key.samples > 1)?;
         let render_pass = self.render_pass(key.groups, key.samples)?;
-        let stages = [
-            vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::VERTEX)
-                .module(module)
-                .name(c"vs"),
-            vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::FRAGMENT)
-                .module(module)
-                .name(c"fs"),
-        ];
         let bindings = [vk::VertexInputBindingDescription {
             binding: 0,
             stride: (VERTEX_FLOATS * 4) as u32,
@@ -259,9 +245,6 @@ impl Pipelines {
         } else {
             vk::PrimitiveTopology::TRIANGLE_LIST
         });
-        let viewport = vk::PipelineViewportStateCreateInfo::default()
-            .viewport_count(1)
-            .scissor_count(1);
         let cull_mode = match key.cull {
             Cull::None => vk::CullModeFlags::NONE,
             Cull::Clockwise => vk::CullModeFlags::BACK,
@@ -349,29 +332,88 @@ impl Pipelines {
                 vk::PipelineColorBlendAttachmentState::default().color_write_mask(writes)
             }));
         let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blends);
-        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
-        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
         let info = vk::GraphicsPipelineCreateInfo::default()
-            .stages(&stages)
             .vertex_input_state(&vertex_input)
             .input_assembly_state(&assembly)
-            .viewport_state(&viewport)
             .rasterization_state(&raster)
             .multisample_state(&multisample)
             .depth_stencil_state(&depth_stencil)
             .color_blend_state(&blend)
-            .dynamic_state(&dynamic)
             .layout(self.layout)
-            .render_pass(render_pass)
-            .subpass(0);
-        // SAFETY: every state above lives until this call returns.
-        let pipelines = unsafe {
-            self.device
-                .create_graphics_pipelines(vk::PipelineCache::null(), &[info], None)
-        }
-        .map_err(|(_, e)| format!("creating a pipeline for {key:?}: {e}"))?;
-        Ok(pipelines[0])
+            .render_pass(render_pass);
+        graphics_pipeline(&self.device, module, info)
+            .map_err(|e| format!("creating a pipeline for {key:?}: {e}"))
     }
+}
+
+/// A shader module of naga's SPIR-V.
+pub(super) fn shader_module(
+    device: &ash::Device,
+    words: &[u32],
+) -> Result<vk::ShaderModule, String> {
+    let info = vk::ShaderModuleCreateInfo::default().code(words);
+    // SAFETY: valid SPIR-V from naga.
+    unsafe { device.create_shader_module(&info, None) }
+        .map_err(|e| format!("creating a shader module: {e}"))
+}
+
+/// A graphics pipeline of subpass 0 from `info`'s states, with `module`'s
+/// `vs` and `fs` as its stages and one viewport and scissor, set when it
+/// draws (the state every pipeline of this adapter shares).
+pub(super) fn graphics_pipeline(
+    device: &ash::Device,
+    module: vk::ShaderModule,
+    info: vk::GraphicsPipelineCreateInfo<'_>,
+) -> Result<vk::Pipeline, vk::Result> {
+    let stages = [
+        vk::PipelineShaderStageCreateInfo::default()
+            .stage(vk::ShaderStageFlags::VERTEX)
+            .module(module)
+            .name(c"vs"),
+        vk::PipelineShaderStageCreateInfo::default()
+            .stage(vk::ShaderStageFlags::FRAGMENT)
+            .module(module)
+            .name(c"fs"),
+    ];
+    let viewport = vk::PipelineViewportStateCreateInfo::default()
+        .viewport_count(1)
+        .scissor_count(1);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+    let info = info
+        .stages(&stages)
+        .viewport_state(&viewport)
+        .dynamic_state(&dynamic)
+        .subpass(0);
+    // SAFETY: every state `info` points at lives until this call returns.
+    let pipelines =
+        unsafe { device.create_graphics_pipelines(vk::PipelineCache::null(), &[info], None) }
+            .map_err(|(_, e)| e)?;
+    Ok(pipelines[0])
+}
+
+/// Destroys kept pipelines, shader modules and render passes, then their
+/// pipeline layout.
+///
+/// # Safety
+/// The device is idle, and nothing else holds these objects.
+pub(super) unsafe fn destroy_kept<'a>(
+    device: &ash::Device,
+    pipelines: impl Iterator<Item = &'a vk::Pipeline>,
+    modules: impl Iterator<Item = &'a vk::ShaderModule>,
+    passes: impl Iterator<Item = &'a vk::RenderPass>,
+    layout: vk::PipelineLayout,
+) {
+    for &p in pipelines {
+        device.destroy_pipeline(p, None);
+    }
+    for &m in modules {
+        device.destroy_shader_module(m, None);
+    }
+    for &p in passes {
+        device.destroy_render_pass(p, None);
+    }
+    device.destroy_pipeline_layout(layout, None);
 }
 
 /// The line mode a line rule maps to (`vulkan/mod.rs` refuses the rules a
@@ -390,16 +432,13 @@ impl Drop for Pipelines {
         // SAFETY: the device is idle (every submission is waited for), and
         // nothing else holds these objects.
         unsafe {
-            for &p in self.pipelines.values() {
-                self.device.destroy_pipeline(p, None);
-            }
-            for &m in self.modules.values() {
-                self.device.destroy_shader_module(m, None);
-            }
-            for &p in self.passes.values() {
-                self.device.destroy_render_pass(p, None);
-            }
-            self.device.destroy_pipeline_layout(self.layout, None);
+            destroy_kept(
+                &self.device,
+                self.pipelines.values(),
+                self.modules.values(),
+                self.passes.values(),
+                self.layout,
+            );
         }
     }
 }

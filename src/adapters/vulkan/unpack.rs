@@ -11,6 +11,7 @@ use std::collections::HashMap;
 
 use ash::vk;
 
+use super::pipelines::{destroy_kept, graphics_pipeline, shader_module};
 use super::shaders;
 
 /// The kept objects of the read-back pass, destroyed with their owner.
@@ -105,31 +106,14 @@ impl Unpack {
         let module = match self.modules.get(&n) {
             Some(&module) => module,
             None => {
-                let words = shaders::unpack_spirv(n)?;
-                let info = vk::ShaderModuleCreateInfo::default().code(&words);
-                // SAFETY: valid SPIR-V from naga.
-                let module = unsafe { self.device.create_shader_module(&info, None) }
-                    .map_err(|e| format!("creating a shader module: {e}"))?;
+                let module = shader_module(&self.device, &shaders::unpack_spirv(n)?)?;
                 self.modules.insert(n, module);
                 module
             }
         };
-        let stages = [
-            vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::VERTEX)
-                .module(module)
-                .name(c"vs"),
-            vk::PipelineShaderStageCreateInfo::default()
-                .stage(vk::ShaderStageFlags::FRAGMENT)
-                .module(module)
-                .name(c"fs"),
-        ];
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default();
         let assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
             .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
-        let viewport = vk::PipelineViewportStateCreateInfo::default()
-            .viewport_count(1)
-            .scissor_count(1);
         let raster = vk::PipelineRasterizationStateCreateInfo::default()
             .polygon_mode(vk::PolygonMode::FILL)
             .cull_mode(vk::CullModeFlags::NONE)
@@ -139,28 +123,18 @@ impl Unpack {
         let blends = [vk::PipelineColorBlendAttachmentState::default()
             .color_write_mask(vk::ColorComponentFlags::RGBA)];
         let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blends);
-        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
-        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
         let info = vk::GraphicsPipelineCreateInfo::default()
-            .stages(&stages)
             .vertex_input_state(&vertex_input)
             .input_assembly_state(&assembly)
-            .viewport_state(&viewport)
             .rasterization_state(&raster)
             .multisample_state(&multisample)
             .color_blend_state(&blend)
-            .dynamic_state(&dynamic)
             .layout(self.layout)
-            .render_pass(render_pass)
-            .subpass(0);
-        // SAFETY: every state above lives until this call returns.
-        let pipelines = unsafe {
-            self.device
-                .create_graphics_pipelines(vk::PipelineCache::null(), &[info], None)
-        }
-        .map_err(|(_, e)| format!("creating the read-back pipeline: {e}"))?;
-        self.pipelines.insert((format, n), pipelines[0]);
-        Ok(pipelines[0])
+            .render_pass(render_pass);
+        let pipeline = graphics_pipeline(&self.device, module, info)
+            .map_err(|e| format!("creating the read-back pipeline: {e}"))?;
+        self.pipelines.insert((format, n), pipeline);
+        Ok(pipeline)
     }
 }
 
@@ -168,16 +142,13 @@ impl Drop for Unpack {
     fn drop(&mut self) {
         // SAFETY: the device is idle, and nothing else holds these objects.
         unsafe {
-            for &p in self.pipelines.values() {
-                self.device.destroy_pipeline(p, None);
-            }
-            for &m in self.modules.values() {
-                self.device.destroy_shader_module(m, None);
-            }
-            for &p in self.passes.values() {
-                self.device.destroy_render_pass(p, None);
-            }
-            self.device.destroy_pipeline_layout(self.layout, None);
+            destroy_kept(
+                &self.device,
+                self.pipelines.values(),
+                self.modules.values(),
+                self.passes.values(),
+                self.layout,
+            );
             self.device
                 .destroy_descriptor_set_layout(self.set_layout, None);
         }
