@@ -7,10 +7,8 @@
 use std::path::Path;
 
 use rastercheck::adapters::lavapipe::{self, Lavapipe, STANDARD_4X};
-use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, CandidateRun, Verdict};
-use rastercheck::plan::{Plan, SamplePlan};
-use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
+use rastercheck::plan::SamplePlan;
 use rastercheck::scene::Scene;
 
 /// Whether lavapipe is here; prints why not once per test.
@@ -31,7 +29,7 @@ mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped, bundled_ids,
-    record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
+    record_every_triangle_case, square_of, SlotsReversed, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
@@ -325,27 +323,6 @@ fn a_probe_on_each_standard_location_lights_exactly_that_slot() {
     );
 }
 
-/// lavapipe with each pixel's samples read back in the wrong order.
-struct SlotsReversed;
-
-impl Rasterizer for SlotsReversed {
-    fn name(&self) -> &str {
-        "lavapipe-slots-reversed"
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Lavapipe.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = Lavapipe.rasterize(scene, plan)?;
-        let n = frame.samples as usize;
-        frame.coverage.chunks_mut(n).for_each(<[u16]>::reverse);
-        frame.last.chunks_mut(n).for_each(<[u32]>::reverse);
-        Ok(frame)
-    }
-}
-
 /// The comparison has teeth: the same frames with each pixel's slots
 /// reversed fail the probe (every probe lands on the wrong slot) and the
 /// bundled probe case, though the box resolve is unchanged.
@@ -369,7 +346,7 @@ fn a_readback_in_the_wrong_slot_order_fails() {
             "{}",
             report(id, &reference, &right)
         );
-        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed);
+        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed(&Lavapipe));
         eprintln!("{}", report(id, &reference, &wrong));
         assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
         let frame = wrong.frame.as_ref().unwrap();

@@ -11,7 +11,7 @@ use rastercheck::frame::Frame;
 use rastercheck::harness::suite::{self, Verdict};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
-use rastercheck::scene::{time::limits::TIME_ONE, PolygonFill, Primitive, Scene};
+use rastercheck::scene::{PolygonFill, Primitive, Scene};
 
 /// The adapter as `-r vulkan` makes it: native MSAA where the device has
 /// the pattern, shifted passes otherwise.
@@ -19,7 +19,8 @@ const VULKAN: Vulkan = Vulkan { passes_only: false };
 
 mod common;
 use common::adapters::{
-    assert_each, assert_interpolation_within_the_bound, bundled_ids, INTERPOLATION, TIE_CASES,
+    assert_each, assert_interpolation_within_the_bound, assert_judges_at_least_85_percent,
+    assert_wrong_instants_fail, bundled_ids, SlotsReversed, INTERPOLATION, TIE_CASES,
     WINDING_CASES,
 };
 use common::{case, inline, report, sample_name};
@@ -241,28 +242,8 @@ fn standard_4x_is_drawn_natively_where_offered() {
     }
 }
 
-/// The adapter with each pixel's slots read back in reverse: the probe
-/// fails, so the slot order is checked, not assumed.
-struct SlotsReversed;
-
-impl Rasterizer for SlotsReversed {
-    fn name(&self) -> &str {
-        "vulkan-slots-reversed"
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        VULKAN.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = VULKAN.rasterize(scene, plan)?;
-        let n = frame.samples as usize;
-        frame.coverage.chunks_mut(n).for_each(<[u16]>::reverse);
-        frame.last.chunks_mut(n).for_each(<[u32]>::reverse);
-        Ok(frame)
-    }
-}
-
+/// The adapter with each pixel's slots read back in reverse fails both
+/// probes, so the slot order is checked, not assumed.
 #[test]
 fn a_readback_in_the_wrong_slot_order_fails() {
     if !available() {
@@ -271,7 +252,7 @@ fn a_readback_in_the_wrong_slot_order_fails() {
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         let scene = probe_scene(pattern, n);
         let reference = suite::run_reference(&scene);
-        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed);
+        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed(&VULKAN));
         let verdict = &wrong.verdict;
         assert!(
             matches!(verdict, Verdict::Fail(_)),
@@ -329,47 +310,13 @@ fn moving_cases_by_time_passes_pass() {
     );
 }
 
-/// The adapter drawing every moving scene over the whole shutter [0, 1],
-/// whatever the case's shutter: its instants are wrong, and a case whose
-/// shutter closes while the triangle is still moving fails.
-struct WholeShutter;
-
-impl Rasterizer for WholeShutter {
-    fn name(&self) -> &str {
-        "vulkan-whole-shutter"
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        VULKAN.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut plan = plan.clone();
-        if let Some(motion) = &mut plan.motion {
-            motion.blur.shutter = [0, TIME_ONE];
-        }
-        VULKAN.rasterize(scene, &plan)
-    }
-}
-
+/// A wrong shutter is caught (`assert_wrong_instants_fail`).
 #[test]
 fn wrong_instants_fail() {
     if !available() {
         return;
     }
-    let id = "motion/shutter_quarter_to_three_quarters";
-    let scene = case(id);
-    let reference = suite::run_reference(&scene);
-    let right = suite::run_candidate(&scene, &reference, &VULKAN);
-    assert_eq!(
-        right.verdict,
-        Verdict::Pass,
-        "{}",
-        report(id, &reference, &right)
-    );
-    let wrong = suite::run_candidate(&scene, &reference, &WholeShutter);
-    eprintln!("{}", report(id, &reference, &wrong));
-    assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
+    assert_wrong_instants_fail(&VULKAN);
 }
 
 /// Issue 19's bar: at least 85 % of the bundled cases are judged (passed or
@@ -380,28 +327,6 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
     if !available() {
         return;
     }
-    let families = [
-        "triangles",
-        "lines",
-        "hard",
-        "antialias",
-        "motion",
-        "polygons",
-    ];
-    let mut ids: Vec<String> = families
-        .iter()
-        .flat_map(|f| bundled_ids(f, |_| true))
-        .collect();
-    ids.push("readme".to_owned());
-    let (mut judged, mut unsupported) = (0, Vec::new());
-    for id in &ids {
-        let (_, run) = run(&case(id));
-        match &run.verdict {
-            Verdict::Pass | Verdict::Fail(_) => judged += 1,
-            Verdict::Unsupported(why) => unsupported.push(format!("{id}: {why}")),
-            Verdict::Error(why) => panic!("{id}: {why}"),
-        }
-    }
     let known = [
         "midpoint rule",
         "strictLines",
@@ -409,17 +334,7 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
         "Bresenham",
         "rectangular lines",
     ];
-    for line in &unsupported {
-        eprintln!("unsupported: {line}");
-        assert!(known.iter().any(|k| line.contains(k)), "{line}");
-    }
-    let share = judged as f64 / ids.len() as f64;
-    eprintln!(
-        "judged {judged} of {} cases ({:.1} %)",
-        ids.len(),
-        share * 100.0
-    );
-    assert!(share >= 0.85, "judged only {judged} of {}", ids.len());
+    assert_judges_at_least_85_percent(&VULKAN, &known);
 }
 
 #[test]

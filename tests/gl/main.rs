@@ -539,34 +539,6 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
     if !available() {
         return;
     }
-    let families = [
-        "triangles",
-        "lines",
-        "hard",
-        "antialias",
-        "motion",
-        "polygons",
-    ];
-    let mut ids: Vec<String> = families
-        .iter()
-        .flat_map(|f| common::adapters::bundled_ids(f, |_| true))
-        .collect();
-    ids.push("readme".to_owned());
-    let (mut judged, mut unsupported) = (0, Vec::new());
-    for id in &ids {
-        let (_, r) = run(&case(id));
-        match &r.verdict {
-            Verdict::Pass | Verdict::Fail(_) => judged += 1,
-            Verdict::Unsupported(why) => unsupported.push(format!("{id}: {why}")),
-            Verdict::Error(why) => panic!("{id}: {why}"),
-        }
-    }
     let known = ["midpoint", "wide aliased lines", "subpixel_bits: null"];
-    for line in &unsupported {
-        eprintln!("unsupported: {line}");
-        assert!(known.iter().any(|k| line.contains(k)), "{line}");
-    }
-    let share = judged as f64 / ids.len() as f64;
-    eprintln!("judged {judged} of {} ({:.1} %)", ids.len(), share * 100.0);
-    assert!(share >= 0.85, "judged only {judged} of {}", ids.len());
+    common::adapters::assert_judges_at_least_85_percent(&Gl, &known);
 }

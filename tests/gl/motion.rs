@@ -2,13 +2,11 @@
 //! counts summed into each pixel's time coverage.
 
 use rastercheck::adapters::gl::Gl;
-use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, Verdict};
-use rastercheck::plan::Plan;
-use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
-use rastercheck::scene::{time::limits::TIME_ONE, Primitive, Scene};
+use rastercheck::harness::suite::Verdict;
+use rastercheck::rasterizer::Rasterizer;
+use rastercheck::scene::{Primitive, Scene};
 
-use super::common::adapters::{assert_each, bundled_ids};
+use super::common::adapters::{assert_each, assert_wrong_instants_fail, bundled_ids};
 use super::common::{case, report};
 use super::{available, run};
 
@@ -63,48 +61,13 @@ fn moving_cases_by_time_passes_pass_under_the_drivers_rule() {
     assert!(matches!(top.verdict, Verdict::Fail(_)), "{:?}", top.verdict);
 }
 
-/// Gl drawing every moving scene over the whole shutter [0, 1], whatever
-/// the case's shutter: its instants are wrong.
-struct WholeShutter;
-
-impl Rasterizer for WholeShutter {
-    fn name(&self) -> &str {
-        "gl-whole-shutter"
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Gl.capabilities()
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut plan = plan.clone();
-        if let Some(motion) = &mut plan.motion {
-            motion.blur.shutter = [0, TIME_ONE];
-        }
-        Gl.rasterize(scene, &plan)
-    }
-}
-
-/// The checks catch wrong instants: a case whose shutter closes while the
-/// triangle still moves passes, and fails drawn over the whole shutter.
+/// A wrong shutter is caught (`assert_wrong_instants_fail`).
 #[test]
 fn wrong_instants_fail() {
     if !available() {
         return;
     }
-    let id = "motion/shutter_quarter_to_three_quarters";
-    let scene = case(id);
-    let reference = suite::run_reference(&scene);
-    let right = suite::run_candidate(&scene, &reference, &Gl);
-    assert_eq!(
-        right.verdict,
-        Verdict::Pass,
-        "{}",
-        report(id, &reference, &right)
-    );
-    let wrong = suite::run_candidate(&scene, &reference, &WholeShutter);
-    eprintln!("{}", report(id, &reference, &wrong));
-    assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
+    assert_wrong_instants_fail(&Gl);
 }
 
 /// The reports say how moving scenes are drawn.
