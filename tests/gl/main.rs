@@ -380,19 +380,27 @@ fn refuses_the_line_rules_gl_does_not_draw() {
     }
 }
 
-/// A triangle around sample `offset` (in 2^-`bits` pixel) of pixel (1, 1),
-/// reaching 1/64 pixel before it on both axes and 1/32 after: the sample
-/// strictly inside, no other sample of the pattern within reach of a tie.
+/// A triangle around sample `offset` (in 2^-`bits` pixel) of pixel (1, 1)
+/// of a case antialiased as `antialias` says (`triangle_around`).
 fn around(offset: [u32; 2], bits: u32, antialias: &str) -> Scene {
     let unit = f64::from(1u32 << bits);
-    let (x, y) = (
-        1.0 + f64::from(offset[0]) / unit,
-        1.0 + f64::from(offset[1]) / unit,
-    );
+    let point = offset.map(|c| f64::from(c) / unit);
+    triangle_around(
+        point,
+        &format!(r#""effects": {{"antialias": {antialias}}}"#),
+    )
+}
+
+/// A 4×4 case of one triangle around the point (1 + x, 1 + y) of pixel
+/// (1, 1), reaching 1/64 pixel before it on both axes and 1/32 after: that
+/// point strictly inside, no other sample of the pattern within reach of
+/// a tie. `fields` are the case's other top-level fields (its rules or
+/// effects), as JSON.
+fn triangle_around([x, y]: [f64; 2], fields: &str) -> Scene {
+    let (x, y) = (1.0 + x, 1.0 + y);
     let (a, b) = (1.0 / 64.0, 1.0 / 32.0);
     inline(&format!(
-        r#"{{"name": "around", "canvas": {{"width": 4, "height": 4}},
-            "effects": {{"antialias": {antialias}}},
+        r#"{{"name": "around", "canvas": {{"width": 4, "height": 4}}, {fields},
             "primitives": [{{"triangle": [[{}, {}], [{}, {}], [{}, {}]]}}]}}"#,
         x - a,
         y - a,

@@ -6,8 +6,8 @@ use rastercheck::plan::{Plan, SamplePlan};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::reference;
 
-use super::available;
-use super::common::{case, inline};
+use super::common::case;
+use super::{available, triangle_around};
 
 /// The driver's counts and positions, printed for the record (offsets
 /// from the pixel's top-left corner, y down); each on the 1/256 grid.
@@ -22,25 +22,6 @@ fn offered() -> Vec<(u32, Vec<[f64; 2]>)> {
         }
     }
     offered
-}
-
-/// A triangle around the point (1 + x, 1 + y) of pixel (1, 1), reaching
-/// 1/64 pixel before it on both axes and 1/32 after: that point strictly
-/// inside, every other sample of a 4× pattern out of reach.
-fn around([x, y]: [f64; 2], bits: u32) -> rastercheck::scene::Scene {
-    let (x, y) = (1.0 + x, 1.0 + y);
-    let (a, b) = (1.0 / 64.0, 1.0 / 32.0);
-    inline(&format!(
-        r#"{{"name": "around", "canvas": {{"width": 4, "height": 4}},
-            "rules": {{"subpixel_bits": {bits}}},
-            "primitives": [{{"triangle": [[{}, {}], [{}, {}], [{}, {}]]}}]}}"#,
-        x - a,
-        y - a,
-        x + b,
-        y - a,
-        x - a,
-        y + b
-    ))
 }
 
 /// Native MSAA: with a plan whose offsets are exactly the driver's
@@ -69,7 +50,7 @@ fn a_triangle_around_each_driver_position_lights_exactly_its_slot() {
         };
         for (slot, &p) in slots.iter().enumerate() {
             for bits in [8, 10] {
-                let scene = around(p, bits);
+                let scene = triangle_around(p, &format!(r#""rules": {{"subpixel_bits": {bits}}}"#));
                 let plan = Plan {
                     samples_per_pixel: *count,
                     antialias: Some(aa.clone()),
