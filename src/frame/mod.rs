@@ -52,6 +52,27 @@ pub struct Frame {
     /// says which (a GPU adapter: "native MSAA", "shifted passes", "time
     /// passes"); reports show it beside the verdict.
     pub method: Option<&'static str>,
+    /// An area method's coverage of each pixel by each primitive, when it
+    /// gives it (an external program answering `coverage`, SPEC.md §12.9):
+    /// judged primitive by primitive against the exact areas (§14.3).
+    pub parts: Option<Parts>,
+    /// The rasterizer answers coverage only: whatever the plan asks, the
+    /// frame has no depth and no attributes, and they are not judged
+    /// (SPEC.md §12.9).
+    pub coverage_only: bool,
+}
+
+/// Each primitive's covered fraction of the pixels it touches, as an area
+/// method gives it before the fractions are summed into `resolved`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Parts {
+    /// Per primitive, in scene order: (pixel index, fraction) for the
+    /// pixels it touches; a pixel not listed is 0. A pixel listed twice by
+    /// one primitive counts twice, as in the sum.
+    pub coverage: Vec<Vec<(u32, f64)>>,
+    /// The quantization the rasterizer declares: its fractions are
+    /// multiples of `step` (1/255 for 8 bits); 0 when it declares none.
+    pub step: f64,
 }
 
 /// Sample tests of moving primitives: every (instant, sample) a method
@@ -177,6 +198,8 @@ impl Frame {
             time: None,
             sample_tests: None,
             method: None,
+            parts: None,
+            coverage_only: false,
         }
     }
 

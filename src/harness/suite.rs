@@ -651,10 +651,18 @@ pub fn run_candidate(
         Some(Err(why)) => (None, Some(why.clone())),
         None => (None, None),
     };
+    // An area method that gives each primitive's coverage is judged per
+    // primitive too, against areas computed here, for it alone.
+    let part_areas = frame
+        .parts
+        .as_ref()
+        .filter(|_| areas.is_some())
+        .map(|_| primitive_areas(scene));
     let known = metrics::Known {
         interior: reference.interior.as_deref(),
         classes: areas.as_ref().map(|a| a.classes.as_slice()),
         whole_time: time.map(|t| t.whole.as_slice()),
+        part_areas: part_areas.as_deref(),
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the
@@ -685,6 +693,13 @@ pub fn run_candidate(
         frame: Some(frame),
         elapsed,
     }
+}
+
+/// Each primitive's exact area of each pixel it covers.
+fn primitive_areas(scene: &Scene) -> Vec<Vec<(u32, RBig)>> {
+    (0..scene.primitives.len())
+        .map(|p| reference::primitive_pixel_areas(scene, p))
+        .collect()
 }
 
 /// Why a candidate's frame cannot be compared with the reference's, if it
@@ -724,6 +739,10 @@ pub fn shape_problem(reference: &Frame, frame: &Frame) -> Option<String> {
         return Some("time coverage for a scene in which nothing moves".to_owned());
     }
     let samples_only_resolved = frame.samples == 0 && reference.resolved.is_some();
+    // Coverage only (SPEC.md §12.9): no depth and no attributes, whatever
+    // the plan asks.
+    let values_not_given = samples_only_resolved
+        || frame.coverage_only && frame.depth.is_none() && frame.attributes.is_empty();
     let wrong = !(frame.samples == reference.samples || samples_only_resolved)
         || frame.resolved.is_some() != reference.resolved.is_some()
         || frame
@@ -731,8 +750,8 @@ pub fn shape_problem(reference: &Frame, frame: &Frame) -> Option<String> {
             .as_ref()
             .is_some_and(|r| r.len() != frame.pixel_count())
         || frame.sample_count() != frame.pixel_count() * frame.samples as usize
-        || frame.attributes.len() != reference.attributes.len() && !samples_only_resolved
-        || frame.depth.is_some() != reference.depth.is_some() && !samples_only_resolved;
+        || frame.attributes.len() != reference.attributes.len() && !values_not_given
+        || frame.depth.is_some() != reference.depth.is_some() && !values_not_given;
     wrong.then(|| {
         format!(
             "{} for the reference's {}",
@@ -837,6 +856,12 @@ pub fn describe(run: &CandidateRun) -> String {
             "aa max err {:.2e} edge rms {:.2e} (bias {:+.1e}) over {} edge pixels, {} piglit violations",
             aa.max_error, aa.rms_edge, aa.bias_edge, aa.edge_pixels, aa.piglit_violations
         ));
+        if let Some(p) = &aa.primitives {
+            parts.push(format!(
+                "per primitive: max err {:.2e} over {} primitive-pixels, {} over the bound, {} not exact",
+                p.max_error, p.judged, p.over_bound, p.exactness_violations
+            ));
+        }
     }
     if let Some(t) = &m.time {
         let efficiency = t

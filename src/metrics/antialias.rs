@@ -24,6 +24,7 @@
 
 use serde::Serialize;
 
+use super::parts::PartMetrics;
 use crate::frame::Frame;
 
 /// What the exact area of a pixel is.
@@ -85,6 +86,10 @@ pub struct AntialiasMetrics {
     pub empty_pixels: u64,
     /// Of those, the pixels the candidate does not resolve exactly.
     pub piglit_violations: u64,
+    /// Of those, the pixels resolved within the slack of a declared
+    /// quantization instead (`parts.rs`): not violations.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub piglit_within_quantization: u64,
     /// The first violation (x, y), when there is one.
     #[serde(skip)]
     pub first_violation: Option<[u32; 2]>,
@@ -105,6 +110,14 @@ pub struct AntialiasMetrics {
     pub allowed_error: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_rms: Option<f64>,
+    /// An area method that gives each primitive's coverage: the
+    /// per-primitive comparison (`parts.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub primitives: Option<PartMetrics>,
+}
+
+fn is_zero(n: &u64) -> bool {
+    *n == 0
 }
 
 impl AntialiasMetrics {
@@ -144,9 +157,26 @@ pub fn measure(
     classes: Option<&[AreaClass]>,
     bounds: (Option<f64>, Option<f64>),
 ) -> Option<AntialiasMetrics> {
+    measure_with_slack(reference, candidate, classes, bounds, None)
+}
+
+/// [`measure`], with piglit's rule relaxed on each pixel by `slack[p]`:
+/// the error the declared quantization of the primitives' coverages can
+/// add up to there (`parts.rs`).
+pub fn measure_with_slack(
+    reference: &Frame,
+    candidate: &Frame,
+    classes: Option<&[AreaClass]>,
+    bounds: (Option<f64>, Option<f64>),
+    slack: Option<&[f64]>,
+) -> Option<AntialiasMetrics> {
     let (exact, resolved) = (reference.resolved.as_ref()?, candidate.resolved.as_ref()?);
     let n = reference.pixel_count();
-    if exact.len() != n || resolved.len() != n || classes.is_some_and(|c| c.len() != n) {
+    if exact.len() != n
+        || resolved.len() != n
+        || classes.is_some_and(|c| c.len() != n)
+        || slack.is_some_and(|s| s.len() != n)
+    {
         return None;
     }
     let width = reference.width.max(1) as usize;
@@ -166,6 +196,7 @@ pub fn measure(
         full_pixels: 0,
         empty_pixels: 0,
         piglit_violations: 0,
+        piglit_within_quantization: 0,
         first_violation: None,
         resolve_mismatches: 0,
         invalid_values: 0,
@@ -173,6 +204,7 @@ pub fn measure(
         candidate_pixels: 0,
         allowed_error: bounds.0,
         allowed_rms: bounds.1,
+        primitives: None,
     };
     let (mut sum_sq_edge, mut sum_sq_all, mut sum_edge) = (0f64, 0f64, 0f64);
     let errors = signed_errors(reference, candidate);
@@ -206,7 +238,10 @@ pub fn measure(
             } else {
                 m.empty_pixels += 1;
             }
-            if r != want {
+            let within = |s: &[f64]| (r - want).abs() <= s[p];
+            if r != want && slack.is_some_and(within) {
+                m.piglit_within_quantization += 1;
+            } else if r != want {
                 m.piglit_violations += 1;
                 m.first_violation.get_or_insert(at(p));
             }
@@ -275,6 +310,9 @@ pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
             "antialias: {} pixels resolve to other than the box resolve of their own samples",
             m.resolve_mismatches
         ));
+    }
+    if let Some(parts) = &m.primitives {
+        out.extend(super::parts::failures(parts));
     }
     out
 }

@@ -5,6 +5,7 @@ pub mod antialias;
 pub mod coverage;
 pub mod interpolation;
 pub mod line;
+pub mod parts;
 pub mod time;
 pub mod watertight;
 
@@ -71,6 +72,9 @@ pub struct Known<'a> {
     /// Whether each pixel's exact time coverage is a whole number, for
     /// moving scenes (from the oracle's certified values).
     pub whole_time: Option<&'a [bool]>,
+    /// Each primitive's exact area of each pixel it covers, for a candidate
+    /// that gives its coverage per primitive (`reference::primitive_pixel_areas`).
+    pub part_areas: Option<&'a [Vec<(u32, dashu_ratio::RBig)>]>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -97,7 +101,7 @@ pub fn measure_with_areas(
     let known = Known {
         interior,
         classes,
-        whole_time: None,
+        ..Known::default()
     };
     measure_known(scene, reference, candidate, &known)
 }
@@ -113,7 +117,17 @@ pub fn measure_known(
     let coverage = coverage::compare(reference, candidate);
     let watertight = interior.and_then(|inside| watertight::measure(inside, reference, candidate));
     let time = time::measure(reference, candidate, known.whole_time, time::bounds(scene));
-    let antialias = antialias::measure(
+    let parts = match (&candidate.parts, known.part_areas) {
+        (Some(given), Some(exact)) => Some(parts::measure(
+            given,
+            exact,
+            scene.canvas.width,
+            candidate.pixel_count(),
+            scene.expect.max_coverage_error,
+        )),
+        _ => None,
+    };
+    let mut antialias = antialias::measure_with_slack(
         reference,
         candidate,
         classes,
@@ -122,7 +136,11 @@ pub fn measure_known(
             scene.expect.max_coverage_rms,
             candidate.samples,
         ),
+        parts.as_ref().map(|p| p.slack.as_slice()),
     );
+    if let (Some(aa), Some(p)) = (&mut antialias, parts) {
+        aa.primitives = Some(p.metrics);
+    }
     let mut channels = Vec::new();
     if !coverage.has_mask() {
         return Metrics {

@@ -77,6 +77,24 @@ pub fn exact_areas(scene: &Scene) -> Vec<RBig> {
     areas
 }
 
+/// The exact area of each pixel covered by primitive `index` alone, for
+/// the pixels where it is not 0: (pixel index, area), row-major. Summed
+/// over the primitives, these are [`exact_areas`].
+pub fn primitive_pixel_areas(scene: &Scene, index: usize) -> Vec<(u32, RBig)> {
+    let Some(outline) = outline(scene, index) else {
+        return Vec::new();
+    };
+    let (width, height) = (scene.canvas.width as usize, scene.canvas.height as usize);
+    let mut areas = vec![RBig::ZERO; width * height];
+    add_pixel_areas(&outline, width, height, &mut areas);
+    areas
+        .into_iter()
+        .enumerate()
+        .filter(|(_, a)| *a != RBig::ZERO)
+        .map(|(p, a)| (p as u32, a))
+        .collect()
+}
+
 /// The whole filled area of primitive `index`, in square pixels, unclipped
 /// by the canvas and computed without pixels: the shoelace formula for
 /// triangles (0 when culled) and parallelogram lines, the slabs'

@@ -29,7 +29,7 @@ use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, LineRule, Primitive, Scene};
 use grid::{to_i128, OnGrid};
 
-pub use area::{exact_areas, primitive_area};
+pub use area::{exact_areas, primitive_area, primitive_pixel_areas};
 
 /// The reference rasterizer.
 #[derive(Clone, Copy, Debug, Default)]

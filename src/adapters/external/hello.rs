@@ -29,11 +29,36 @@ pub struct Hello {
     exact_coordinates: Option<bool>,
     depth: Option<bool>,
     attributes: Option<bool>,
-    /// Reserved: area methods may answer with coverage; not judged yet.
-    pub coverage_only: Option<bool>,
+    /// Fragments carry no depth and no attributes (SPEC.md §12.9).
+    coverage_only: Option<bool>,
+    /// Coverage fractions are multiples of 1/(2^bits − 1) (§12.9).
+    coverage_bits: Option<u64>,
     /// Declared conventions, kept as written: reported, not judged yet.
     pub conventions: Option<Value>,
 }
+
+/// How a program's answers are shaped, as its hello declares them
+/// (SPEC.md §12.9); a program without a hello gives the default.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Answers {
+    /// Its fragments carry no depth and no attributes, whatever the plan
+    /// asks; they are then not judged.
+    pub coverage_only: bool,
+    /// Its coverage fractions are the exact areas as multiples of
+    /// 1/(2^bits − 1), judged per primitive within one such step.
+    pub coverage_bits: Option<u32>,
+}
+
+impl Answers {
+    /// The declared quantization step of coverage fractions; 0 for none.
+    pub fn step(&self) -> f64 {
+        self.coverage_bits
+            .map_or(0.0, |bits| 1.0 / (2f64.powi(bits as i32) - 1.0))
+    }
+}
+
+/// The most coverage bits a hello may declare.
+const MAX_COVERAGE_BITS: u64 = 24;
 
 /// The protocol versions this rastercheck speaks.
 pub const VERSIONS: [u64; 2] = [1, 2];
@@ -136,6 +161,15 @@ impl Hello {
         out.depth = flag("depth")?;
         out.attributes = flag("attributes")?;
         out.coverage_only = flag("coverage_only")?;
+        out.coverage_bits = count("coverage_bits")?;
+        if out
+            .coverage_bits
+            .is_some_and(|b| !(1..=MAX_COVERAGE_BITS).contains(&b))
+        {
+            return Err(format!(
+                "$.hello.capabilities.coverage_bits must be from 1 to {MAX_COVERAGE_BITS}"
+            ));
+        }
         if flag("motion")? == Some(true) {
             // Accepted, but the protocol does not carry moving vertices
             // yet: moving scenes stay unsupported (the adapter's capabilities).
@@ -253,6 +287,14 @@ impl Hello {
             ));
         }
         None
+    }
+
+    /// How the program's answers are shaped.
+    pub fn answers(&self) -> Answers {
+        Answers {
+            coverage_only: self.coverage_only == Some(true),
+            coverage_bits: self.coverage_bits.map(|b| b as u32),
+        }
     }
 
     /// The program as its hello names it: `name version`, or `None`.

@@ -64,10 +64,11 @@ use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
 
+pub use hello::Answers;
 use hello::Hello;
 use process::*;
 use protocol::parse_response;
-pub use protocol::{frame_from_response, request, request_v2};
+pub use protocol::{frame_from_answer, frame_from_response, request, request_v2};
 use worker::*;
 
 /// The protocol's name and version, sent in every request of v1.
@@ -195,6 +196,9 @@ pub struct External {
     said_no_hello: AtomicBool,
     /// The name and version the first hello declared.
     declared: Mutex<Option<String>>,
+    /// How the program's answers are shaped, as its hello declared
+    /// (coverage only, quantized coverage: SPEC.md §12.9).
+    answers: Mutex<Answers>,
 }
 
 impl External {
@@ -211,6 +215,7 @@ impl External {
             next_id: AtomicU64::new(1),
             said_no_hello: AtomicBool::new(false),
             declared: Mutex::new(None),
+            answers: Mutex::new(Answers::default()),
         }
     }
 
@@ -355,6 +360,7 @@ impl External {
                 *declared = hello.title();
             }
             drop(declared);
+            *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
             if let Some(why) = hello.refuses(scene, plan) {
                 // Never sent: the program said it cannot draw it.
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
@@ -554,7 +560,8 @@ impl Rasterizer for External {
             }
             Some(pool) => self.persistent(pool, scene, plan, timeout, max_output, false)?,
         };
-        frame_from_response(&response, scene, plan)
+        let answers = *self.answers.lock().unwrap_or_else(|e| e.into_inner());
+        frame_from_answer(&response, scene, plan, answers)
     }
 }
 

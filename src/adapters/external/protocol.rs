@@ -9,12 +9,12 @@ use std::path::Path;
 
 use serde_json::{json, Value};
 
-use crate::frame::{exr, Frame};
+use crate::frame::{exr, Frame, Parts};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
 
-use super::{PROTOCOL, PROTOCOL_V2};
+use super::{Answers, PROTOCOL, PROTOCOL_V2};
 
 /// A number twice: its nearest f64, and (in the sibling `exact` object) its
 /// exact spelling.
@@ -141,11 +141,23 @@ pub(super) fn parse_response(bytes: &[u8]) -> Result<Value, String> {
     })
 }
 
-/// Turns a response into a frame, checking it against the request.
+/// Turns a response into a frame, checking it against the request, for a
+/// program that declared nothing about its answers (version 1).
 pub fn frame_from_response(
     response: &Value,
     scene: &Scene,
     plan: &Plan,
+) -> Result<Frame, RasterError> {
+    frame_from_answer(response, scene, plan, Answers::default())
+}
+
+/// [`frame_from_response`] for a program whose hello declared how its
+/// answers are shaped (SPEC.md §12.9).
+pub fn frame_from_answer(
+    response: &Value,
+    scene: &Scene,
+    plan: &Plan,
+    answers: Answers,
 ) -> Result<Frame, RasterError> {
     let bad = |why: String| RasterError::Failed(format!("bad response: {why}"));
     let Some(object) = response.as_object() else {
@@ -168,7 +180,7 @@ pub fn frame_from_response(
         )));
     }
     match (object.get("primitives"), object.get("exr")) {
-        (Some(primitives), None) => compose(primitives, scene, plan).map_err(bad),
+        (Some(primitives), None) => compose(primitives, scene, plan, answers).map_err(bad),
         (None, Some(path)) => {
             let path = path
                 .as_str()
@@ -196,8 +208,15 @@ fn text_of(value: &Value) -> String {
 }
 
 /// Draws the fragments of each primitive, in primitive order; or, for an
-/// antialiased scene answered with per-pixel coverage, sums it.
-fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
+/// antialiased scene answered with per-pixel coverage, sums it. A program
+/// that answers coverage only gives no depth and no attributes: its frame
+/// has none, and says so (SPEC.md §12.9).
+fn compose(
+    primitives: &Value,
+    scene: &Scene,
+    plan: &Plan,
+    answers: Answers,
+) -> Result<Frame, String> {
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let list = primitives
         .as_array()
@@ -217,13 +236,31 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
         if with_coverage != list.len() {
             return Err("give coverage for every primitive or fragments for every one".into());
         }
-        return sum_coverage(list, width, height);
+        return sum_coverage(list, width, height, answers.step());
     }
+    // The values a coverage-only program does not give are not judged; the
+    // result says so.
+    let unjudged = answers.coverage_only && plan.interpolates();
+    let given;
+    let plan = if unjudged {
+        given = Plan {
+            depth: false,
+            attributes: 0,
+            ..plan.clone()
+        };
+        &given
+    } else {
+        plan
+    };
     let samples = plan.antialias.as_ref().map(|aa| aa.offsets.len() as u32);
     let slot_field = usize::from(samples.is_some());
     let values = usize::from(plan.depth) + plan.attributes;
     let arity = 2 + slot_field + values;
     let mut frame = Frame::for_plan(width, height, plan);
+    frame.coverage_only = answers.coverage_only;
+    if unjudged {
+        frame.method = Some(COVERAGE_ONLY);
+    }
     for (p, entry) in list.iter().enumerate() {
         let fragments = entry
             .as_object()
@@ -289,6 +326,10 @@ fn compose(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
     Ok(frame)
 }
 
+/// The method a coverage-only frame of a scene with values names: what the
+/// reports show beside its verdict.
+pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
+
 /// A whole number in [0, limit), as JSON gives it.
 fn whole_below(v: &Value, limit: u32) -> Option<u32> {
     v.as_f64()
@@ -297,10 +338,17 @@ fn whole_below(v: &Value, limit: u32) -> Option<u32> {
 }
 
 /// An area method's answer (SPEC.md §12.2): each primitive's covered
-/// fraction of the pixels it touches, summed into a frame without samples.
-fn sum_coverage(list: &[Value], width: u32, height: u32) -> Result<Frame, String> {
+/// fraction of the pixels it touches, summed into a frame without samples,
+/// and kept per primitive to be judged per primitive (§12.9); `step` is the
+/// quantization the program declared (0 for none).
+fn sum_coverage(list: &[Value], width: u32, height: u32, step: f64) -> Result<Frame, String> {
     let mut resolved = vec![0.0; width as usize * height as usize];
+    let mut parts = Parts {
+        coverage: Vec::with_capacity(list.len()),
+        step,
+    };
     for (p, entry) in list.iter().enumerate() {
+        let mut given = Vec::new();
         let items = entry
             .get("coverage")
             .and_then(Value::as_array)
@@ -326,10 +374,16 @@ fn sum_coverage(list: &[Value], width: u32, height: u32) -> Result<Frame, String
                 .as_f64()
                 .filter(|c| (0.0..=1.0).contains(c))
                 .ok_or_else(|| format!("{}[2]: {} is not a fraction in [0, 1]", at(), triple[2]))?;
-            resolved[y as usize * width as usize + x as usize] += c;
+            let pixel = y * width + x;
+            resolved[pixel as usize] += c;
+            given.push((pixel, c));
         }
+        parts.coverage.push(given);
     }
-    Ok(Frame::resolved_only(width, height, resolved))
+    Ok(Frame {
+        parts: Some(parts),
+        ..Frame::resolved_only(width, height, resolved)
+    })
 }
 
 /// Reads a frame from an EXR file with the channels of a golden file

@@ -118,11 +118,13 @@ fn aa(samples: u32, rms_edge: f64) -> AntialiasMetrics {
         full_pixels: 0,
         empty_pixels: 0,
         piglit_violations: 0,
+        piglit_within_quantization: 0,
         first_violation: None,
         resolve_mismatches: 0,
         invalid_values: 0,
         reference_pixels: 0,
         candidate_pixels: 0,
+        primitives: None,
         allowed_error: None,
         allowed_rms: None,
     }
