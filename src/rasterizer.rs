@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::Scene;
+use crate::scene::{FillRule, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -97,6 +97,18 @@ pub trait Rasterizer: Send + Sync {
     /// said so: an external program's hello names itself and its version
     /// (SPEC.md §12.7). Reports show it beside the name it was given.
     fn declared(&self) -> Option<String> {
+        None
+    }
+
+    /// The fill rule this rasterizer follows whatever a case states, when
+    /// it cannot follow the case's: a driver's rule fixed by its API, a
+    /// library's own, a program's declared convention (SPEC.md §3.1). A
+    /// case under another rule is judged against the reference drawn under
+    /// this one, and reported as such: a convention, not a failure.
+    /// `None` for a rasterizer that follows each case's rule. Asked after
+    /// the rasterizer has drawn the case, so a program may declare it in
+    /// its hello.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
         None
     }
 

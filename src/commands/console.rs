@@ -98,7 +98,13 @@ pub(crate) fn print_outcome(
         if quiet && matches!(result.verdict, Verdict::Pass | Verdict::Unsupported(_)) {
             continue;
         }
-        let method = result.method.map(|m| format!(" ({m})")).unwrap_or_default();
+        let mut method = result.method.map(|m| format!(" ({m})")).unwrap_or_default();
+        if let (Some(rule), Some(scene)) = (result.judged_rule, &outcome.scene) {
+            method.push_str(&format!(
+                " (judged under its own {rule} rule; the case states {})",
+                scene.rules.fill_rule
+            ));
+        }
         outln!(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),

@@ -55,6 +55,18 @@ pub struct RunArgs {
 
 /// `rastercheck run`: every selected case through the reference and the
 /// candidates, one line each, a summary, and the report folder.
+/// The summary's note on the results judged under a rasterizer's own fill
+/// rule (SPEC.md §3.1): counted among the verdicts, and named apart.
+fn own_rule(x: &runner::Tally) -> String {
+    if x.own_rule == 0 {
+        return String::new();
+    }
+    format!(
+        "; {} judged under its own fill rule instead of the case's (SPEC.md §3.1)",
+        x.own_rule
+    )
+}
+
 pub fn run(args: RunArgs) -> Exit {
     let limits = args.limits.limits();
     let (declared, names) = match crate::harness::profile::for_run(&args.profile, &args.rasterizers)
@@ -234,17 +246,18 @@ pub fn run(args: RunArgs) -> Exit {
         let x = &v.tally;
         if candidate.is_foil() {
             outln!(
-                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors",
-                v.rasterizer, x.pass, x.foil, x.unsupported, x.error
+                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors{}",
+                v.rasterizer, x.pass, x.foil, x.unsupported, x.error, own_rule(x)
             );
         } else {
             outln!(
-                "{}: {} passed, {} failed, {} unsupported, {} errors",
+                "{}: {} passed, {} failed, {} unsupported, {} errors{}",
                 v.rasterizer,
                 x.pass,
                 x.fail,
                 x.unsupported,
-                x.error
+                x.error,
+                own_rule(x)
             );
         }
     }

@@ -189,7 +189,13 @@ pub fn run_all_with_profiles(
                     frame: None,
                     elapsed: std::time::Duration::ZERO,
                     method: None,
+                    judged_rule: None,
                 });
+                // The report names the rule judged beside the case's.
+                let run = suite::CandidateRun {
+                    judged_rule: (*rule != scene.rules.fill_rule).then_some(*rule),
+                    ..run
+                };
                 if let Some(slot) = outcome.candidates.get_mut(*index) {
                     *slot = run;
                 }

@@ -371,6 +371,15 @@ pub struct Tally {
     pub error: usize,
     /// Departures of a foil (counted apart from failures).
     pub foil: usize,
+    /// Of all these, the results judged under the rasterizer's own fill
+    /// rule instead of the case's ([`crate::Rasterizer::fixed_fill_rule`],
+    /// or a profile): conventions, named apart in every summary.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub own_rule: usize,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Tally {

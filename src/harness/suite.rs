@@ -18,7 +18,7 @@ use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference::motion::Certified;
 use crate::reference::{self, Reference};
-use crate::scene::{parse_case, CaseError, Limits, Scene};
+use crate::scene::{parse_case, CaseError, FillRule, Limits, Scene};
 
 /// A case file and its id: its path under `cases/`, without `.json`
 /// (`triangles/fan_center`).
@@ -581,6 +581,10 @@ pub struct CandidateRun {
     pub elapsed: Duration,
     /// The frame's [`Frame::method`], kept when the frame is released.
     pub method: Option<&'static str>,
+    /// The rule it was judged under, when that is not the case's: the
+    /// rasterizer follows a fill rule of its own
+    /// ([`Rasterizer::fixed_fill_rule`]).
+    pub judged_rule: Option<FillRule>,
 }
 
 impl CandidateRun {
@@ -592,6 +596,7 @@ impl CandidateRun {
             frame: None,
             elapsed,
             method: None,
+            judged_rule: None,
         }
     }
 }
@@ -627,6 +632,43 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Error(why), elapsed);
         }
     };
+    // A rasterizer that cannot follow the case's fill rule is judged under
+    // the one it follows, against the reference drawn under that rule.
+    let judged_rule = candidate
+        .fixed_fill_rule()
+        .filter(|&rule| rule != scene.rules.fill_rule);
+    if let Some(rule) = judged_rule {
+        let under = super::profile::under_rule(scene, rule);
+        let reference = catch_oracle_run(|| run_reference(&under));
+        let mut run = match reference {
+            Ok(reference) => judge(&under, &reference, frame, name, elapsed),
+            Err(why) => CandidateRun {
+                verdict: Verdict::Error(format!(
+                    "the reference under the {rule} rule it follows failed: {why}"
+                )),
+                ..CandidateRun::without_frame(name, Verdict::Pass, elapsed)
+            },
+        };
+        run.judged_rule = Some(rule);
+        return run;
+    }
+    judge(scene, reference, frame, name, elapsed)
+}
+
+/// The reference's run, or why it panicked.
+fn catch_oracle_run(run: impl FnOnce() -> ReferenceRun) -> Result<ReferenceRun, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(run))
+        .map_err(|panic| pass_on_deadline(panic, "panicked"))
+}
+
+/// Judges a candidate's frame against the reference's answer.
+fn judge(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    frame: Frame,
+    name: String,
+    elapsed: Duration,
+) -> CandidateRun {
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return CandidateRun {
@@ -636,6 +678,7 @@ pub fn run_candidate(
             method: frame.method,
             frame: Some(frame),
             elapsed,
+            judged_rule: None,
         };
     }
     // The oracle's exact areas, computed once with the reference's frame;
@@ -692,6 +735,7 @@ pub fn run_candidate(
         method: frame.method,
         frame: Some(frame),
         elapsed,
+        judged_rule: None,
     }
 }
 

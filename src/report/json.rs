@@ -175,6 +175,11 @@ pub struct ResultEntry {
     /// MSAA", "shifted passes", "time passes").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub method: Option<&'static str>,
+    /// The fill rule it was judged under, when that is its own and not the
+    /// case's (`rules.fill_rule`): a rasterizer that cannot follow the
+    /// case's rule, or a profile's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_fill_rule: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -369,6 +374,7 @@ impl CaseEntry {
                 },
                 time_ms: millis(run.elapsed),
                 method: run.method,
+                judged_fill_rule: run.judged_rule.map(|r| r.name()),
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })
@@ -444,6 +450,7 @@ impl Report {
                     "unsupported" => tally.unsupported += 1,
                     _ => tally.error += 1,
                 }
+                tally.own_rule += usize::from(result.judged_fill_rule.is_some());
             }
         }
         self.totals = totals;

@@ -15,14 +15,29 @@ Flags (each makes it wrong, or undeclared, in one way):
                 pixels both partly cover (the sum is unchanged)
   --no-coverage-only  do not declare coverage_only (fragments then lack
                 the values the plan asks for: an error)
+  --rule R      follow the fill rule R whatever the case states, and
+                declare it as its convention (conventions.fill_rule)
+  --declare D   declare D as its convention, whatever it follows
 """
 
 import json
 import sys
 from fractions import Fraction
 
-FLAGS = set(sys.argv[1:])
+ARGS = sys.argv[1:]
+FLAGS = set(ARGS)
 STEP = 255
+
+
+def option(name):
+    return ARGS[ARGS.index(name) + 1] if name in ARGS else None
+
+
+RULE = option("--rule")
+DECLARED = option("--declare") or RULE
+# The nudge of SPEC.md §3: a sample on an edge is inside when the sample
+# moved by (sx·e, sy·e²) is.
+NUDGE = {"top-left": (1, 1), "bottom-right": (-1, -1), "top-right": (-1, 1), "bottom-left": (1, -1)}
 
 
 def exact(v):
@@ -100,16 +115,17 @@ def coverage(pts, width, height):
     return out
 
 
-def covers(pts, sx, sy):
-    """Top-left rule: an edge owns a sample on it when the sample nudged
-    right by e and down by e^2 is inside (SPEC.md §3)."""
+def covers(pts, sx, sy, rule):
+    """An edge owns a sample on it when the sample nudged as the rule says
+    is inside (SPEC.md §3): top-left nudges it right by e and down by e^2."""
+    nx, ny = NUDGE[rule]
     a, b, c = pts
     sign = 1 if twice_area(a, b, c) > 0 else -1
     for p, q in ((a, b), (b, c), (c, a)):
         # Edge function, positive inside.
         dx, dy = -(q[1] - p[1]) * sign, (q[0] - p[0]) * sign
         e = dx * (sx - p[0]) + dy * (sy - p[1])
-        if e < 0 or (e == 0 and not (dx > 0 or (dx == 0 and dy > 0))):
+        if e < 0 or (e == 0 and not (nx * dx > 0 or (dx == 0 and ny * dy > 0))):
             return False
     return True
 
@@ -140,20 +156,24 @@ def answer(req):
             xs, ys = box(t, width, height)
             for y in ys:
                 for x in xs:
-                    if covers(t, Fraction(2 * x + 1, 2), Fraction(2 * y + 1, 2)):
+                    if covers(t, Fraction(2 * x + 1, 2), Fraction(2 * y + 1, 2), RULE or "top-left"):
                         frags.append([x, y])
         out.append({"fragments": frags})
     return {"primitives": out}
 
 
 def main():
-    caps = {"primitives": ["triangles"], "fill_rules": ["top-left"], "antialias": True}
+    caps = {"primitives": ["triangles"], "antialias": True}
+    hello = {"protocol": 2, "name": "area8", "version": "1", "capabilities": caps}
+    if DECLARED:
+        hello["conventions"] = {"fill_rule": DECLARED}
+    else:
+        caps["fill_rules"] = ["top-left"]
     if "--no-coverage-only" not in FLAGS:
         caps["coverage_only"] = True
     if "--no-bits" not in FLAGS:
         caps["coverage_bits"] = 8
-    print(json.dumps({"hello": {"protocol": 2, "name": "area8", "version": "1", "capabilities": caps}}),
-          flush=True)
+    print(json.dumps({"hello": hello}), flush=True)
     for line in sys.stdin:
         if not line.strip():
             continue
@@ -161,7 +181,8 @@ def main():
         if req.get("bye"):
             break
         reply = answer(req)
-        reply["id"] = req["id"]
+        if "id" in req:  # a request sent before the hello was read has none
+            reply["id"] = req["id"]
         print(json.dumps(reply), flush=True)
 
 

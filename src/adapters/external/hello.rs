@@ -7,7 +7,7 @@
 use serde_json::Value;
 
 use crate::plan::Plan;
-use crate::scene::{Interpolation, LineRule, Primitive, Scene};
+use crate::scene::{FillRule, Interpolation, LineRule, Primitive, Scene};
 
 /// What a program declared in its hello. A list left out declares nothing
 /// (everything is asked of it); `None` below means "not declared".
@@ -33,8 +33,9 @@ pub struct Hello {
     coverage_only: Option<bool>,
     /// Coverage fractions are multiples of 1/(2^bits − 1) (§12.9).
     coverage_bits: Option<u64>,
-    /// Declared conventions, kept as written: reported, not judged yet.
+    /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
+    fill_rule: Option<FillRule>,
 }
 
 /// How a program's answers are shaped, as its hello declares them
@@ -47,6 +48,9 @@ pub struct Answers {
     /// Its coverage fractions are the exact areas as multiples of
     /// 1/(2^bits − 1), judged per primitive within one such step.
     pub coverage_bits: Option<u32>,
+    /// The fill rule it follows whatever the case states
+    /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1).
+    pub fill_rule: Option<FillRule>,
 }
 
 impl Answers {
@@ -100,6 +104,22 @@ impl Hello {
             conventions: hello.get("conventions").cloned(),
             ..Hello::default()
         };
+        if let Some(conventions) = &out.conventions {
+            let conventions = conventions
+                .as_object()
+                .ok_or("$.hello.conventions must be an object")?;
+            out.fill_rule = match conventions.get("fill_rule") {
+                None => None,
+                Some(rule) => {
+                    Some(rule.as_str().and_then(FillRule::from_name).ok_or_else(|| {
+                        format!(
+                            "$.hello.conventions.fill_rule is {rule}; known: {}",
+                            FillRule::NAMES.join(", ")
+                        )
+                    })?)
+                }
+            };
+        }
         let Some(caps) = hello.get("capabilities") else {
             return Ok(out);
         };
@@ -147,7 +167,7 @@ impl Hello {
                     .ok_or_else(|| format!("$.hello.capabilities.{key} must be a whole number")),
             }
         };
-        use crate::scene::{FillRule, Pattern, PolygonFill};
+        use crate::scene::{Pattern, PolygonFill};
         out.primitives = words("primitives", &PRIMITIVES)?;
         out.line_rules = words("line_rules", &LineRule::NAMES)?;
         out.fill_rules = words("fill_rules", &FillRule::NAMES)?;
@@ -294,6 +314,7 @@ impl Hello {
         Answers {
             coverage_only: self.coverage_only == Some(true),
             coverage_bits: self.coverage_bits.map(|b| b as u32),
+            fill_rule: self.fill_rule,
         }
     }
 

@@ -62,7 +62,7 @@ use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::Scene;
+use crate::scene::{FillRule, Scene};
 
 pub use hello::Answers;
 use hello::Hello;
@@ -535,6 +535,13 @@ impl Rasterizer for External {
             motion_blur: false,
             ..Capabilities::everything()
         }
+    }
+
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .fill_rule
     }
 
     fn declared(&self) -> Option<String> {

@@ -216,7 +216,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::Scene;
+use crate::scene::{FillRule, Scene};
 
 use super::gpu;
 use context::{ask_for_softpipe, context, with_context};
@@ -247,6 +247,12 @@ impl Rasterizer for Gl {
         rasterize(scene, plan, false)
     }
 
+    /// llvmpipe's top-left rule, read in the case's y-down terms (see
+    /// "Rules" above): GL gives no choice.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::BottomLeft)
+    }
+
     fn declared(&self) -> Option<String> {
         declared()
     }
@@ -271,6 +277,11 @@ impl Rasterizer for Softpipe {
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         rasterize(scene, plan, true)
+    }
+
+    /// softpipe's rule, read in the case's y-down terms.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::BottomRight)
     }
 
     fn declared(&self) -> Option<String> {

@@ -147,7 +147,7 @@ use std::sync::{Mutex, MutexGuard, OnceLock};
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::Scene;
+use crate::scene::{FillRule, Scene};
 
 use super::gpu;
 use device::Gpu;
@@ -165,6 +165,12 @@ impl Rasterizer for Lavapipe {
 
     fn capabilities(&self) -> Capabilities {
         gpu::capabilities(true)
+    }
+
+    /// Vulkan's, as the `vulkan` adapter says: the driver chooses, and
+    /// lavapipe follows top-left.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::TopLeft)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

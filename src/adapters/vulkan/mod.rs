@@ -107,7 +107,7 @@ use std::sync::{Mutex, MutexGuard, OnceLock};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Antialias, LineRule, Pattern, Primitive, Scene};
+use crate::scene::{Antialias, FillRule, LineRule, Pattern, Primitive, Scene};
 
 use super::gpu::{self, Placement};
 use device::{Device, Offers};
@@ -182,6 +182,13 @@ impl Rasterizer for Vulkan {
             ideal_geometry: false,
             ..Capabilities::everything()
         }
+    }
+
+    /// Vulkan lets the device choose; devices follow D3D's top-left rule
+    /// (lavapipe and NVIDIA, measured). A device that does not is caught:
+    /// its cases are judged under top-left.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::TopLeft)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -1,0 +1,132 @@
+//! Fill rules a rasterizer cannot choose (SPEC.md §3.1): a case under
+//! another rule is judged against the reference drawn under the
+//! rasterizer's own, and every report says so, apart from the verdicts.
+//! Through the binary, with a real program (`tests/clients/area8.py`, exact
+//! point sampling) that follows one rule whatever the case states and
+//! declares it in its hello's `conventions`.
+//!
+//! - Following bottom-right and declaring it, it passes every triangle
+//!   case, and the ones stated under another rule are named as judged
+//!   under its own.
+//! - Declaring a rule it does not follow is caught: the cases are judged
+//!   under the declared rule, and its ties fall the other way.
+
+mod common;
+
+use std::path::PathBuf;
+
+use common::cli::{rastercheck, read_json, scratch, text};
+use serde_json::Value;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs the client with `flags` over `cases/triangles`; the report, and
+/// what was printed.
+fn run(tag: &str, flags: &str) -> (Value, String) {
+    let dir = scratch(&format!("conventions-{tag}"));
+    let client = root().join("tests/clients/area8.py");
+    let spec = format!(
+        "own=external-persistent:python3 {} {flags}",
+        client.display()
+    );
+    let report = dir.join("report");
+    let report_arg = report.display().to_string();
+    let out = rastercheck(
+        &root(),
+        &[
+            "run",
+            "cases/triangles",
+            "-r",
+            &spec,
+            "--report",
+            &report_arg,
+        ],
+    );
+    (read_json(&report.join("report.json")), text(&out))
+}
+
+fn summary(printed: &str) -> &str {
+    printed
+        .lines()
+        .find(|l| l.starts_with("own:"))
+        .unwrap_or_else(|| panic!("no summary line in:\n{printed}"))
+}
+
+#[test]
+fn a_declared_fill_rule_is_judged_and_named_apart() {
+    let (report, printed) = run("declared", "--rule bottom-right");
+    assert_eq!(
+        summary(&printed),
+        "own: 76 passed, 0 failed, 0 unsupported, 0 errors; 74 judged under its own fill rule \
+         instead of the case's (SPEC.md §3.1)",
+        "{printed}"
+    );
+    let mut judged = 0;
+    for case in report["cases"].as_array().unwrap() {
+        let stated = case["rules"]["fill_rule"].as_str().unwrap();
+        let result = &case["results"][0];
+        match stated {
+            "bottom-right" => assert!(result.get("judged_fill_rule").is_none(), "{case}"),
+            _ => {
+                assert_eq!(result["judged_fill_rule"], "bottom-right", "{}", case["id"]);
+                judged += 1;
+            }
+        }
+    }
+    assert_eq!(judged, 74);
+    assert_eq!(report["totals"]["verdicts"][0]["own_rule"], 74);
+    assert!(
+        printed.contains("(judged under its own bottom-right rule; the case states top-left)"),
+        "{printed}"
+    );
+}
+
+#[test]
+fn a_rule_declared_but_not_followed_is_caught() {
+    for (tag, flags) in [
+        (
+            "draws-bottom-right",
+            "--rule bottom-right --declare top-left",
+        ),
+        ("draws-top-left", "--rule top-left --declare bottom-right"),
+    ] {
+        let (report, printed) = run(tag, flags);
+        assert!(
+            summary(&printed).starts_with("own: 15 passed, 61 failed,"),
+            "{flags}: {printed}"
+        );
+        // The shared-edge cases with samples on their shared edges, whose
+        // ties the rule decides, fail (`shared_edge_fractions_offgrid` has
+        // none on it).
+        for case in report["cases"].as_array().unwrap() {
+            let id = case["id"].as_str().unwrap();
+            if id.starts_with("triangles/shared_edge_") && !id.ends_with("_offgrid") {
+                assert_eq!(case["results"][0]["verdict"], "fail", "{flags}: {id}");
+            }
+        }
+    }
+}
+
+#[test]
+fn an_unknown_convention_is_an_error_naming_its_path() {
+    let dir = scratch("conventions-bad-hello");
+    let program = dir.join("bad_hello.py");
+    std::fs::write(
+        &program,
+        "import json, sys\n\
+         print(json.dumps({'hello': {'protocol': 2, 'conventions': {'fill_rule': 'sideways'}}}), flush=True)\n\
+         for line in sys.stdin:\n    pass\n",
+    )
+    .unwrap();
+    let spec = format!("bad=external-persistent:python3 {}", program.display());
+    let case = root().join("cases/triangles/shared_edge_diagonal.json");
+    let out = rastercheck(&dir, &["run", &case.display().to_string(), "-r", &spec]);
+    let printed = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{printed}");
+    assert!(
+        printed.contains("$.hello.conventions.fill_rule is \"sideways\"; known: top-left"),
+        "{printed}"
+    );
+}
