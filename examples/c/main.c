@@ -1,39 +1,39 @@
-/* rastercheck's C example rasterizer: a correct-by-construction
- * fixed-point rasterizer, the kind a driver engineer writes, judged by
- * rastercheck through its external-process protocol, version 2, in
- * persistent mode (SPEC.md §12.4, §12.7).
- *
- * Build and run (from the repository root):
- *
- *     mkdir -p target/examples
- *     cc -std=c99 -O2 -Wall -Wextra -Werror -o target/examples/c_rasterizer examples/c/*.c -lm
- *     rastercheck run cases -r 'c=external-persistent:target/examples/c_rasterizer'
- *
- * What it is meant to show: that exact rasterization needs no big numbers.
- * Every vertex is snapped from its exact decimal or fraction spelling to
- * the case's subpixel grid (ties to even, fixed.c); every sample lies on a
- * 2^-16 pixel grid; every coverage decision (edge functions, the fill
- * rule's ties, cull, polygon winding numbers, a moving vertex at an
- * instant u/65536 of the shutter) is the sign of a 128-bit integer
- * expression (coverage.c). Only depth and attributes, which are judged
- * within a tolerance, are computed in doubles (draw.c). So it should pass
- * every triangle, polygon and antialiasing case it declares; a failure is
- * a bug in it or in rastercheck.
- *
- * It draws triangles and polygons (nonzero, even-odd), at the pixel centre
- * or at the request's sample offsets, under all five fill rules, and
- * moving triangles at the request's instants. It does not draw lines: its
- * hello says so, and rastercheck reports such cases unsupported.
- *
- * Files: main.c (the protocol: hello, one answer line per request, ids),
- * draw.c (a request into fragments), coverage.c (exact coverage tests),
- * fixed.c (exact spellings to fixed point), json.c (a minimal JSON reader),
- * buffer.c (a growable text buffer). C99 and the standard library, plus
- * GCC/Clang's __int128.
- *
- * Flags: --wrong-tie plants a bug (every tie goes to the opposite edges:
- * bottom-right for a top-left case), for the test that rastercheck catches
- * it; --no-motion declares and draws no moving scenes. */
+// rastercheck's C example rasterizer: a correct-by-construction
+// fixed-point rasterizer, the kind a driver engineer writes, judged by
+// rastercheck through its external-process protocol, version 2, in
+// persistent mode (SPEC.md §12.4, §12.7).
+//
+// Build and run (from the repository root):
+//
+//     mkdir -p target/examples
+//     cc -std=c99 -O2 -Wall -Wextra -Werror -o target/examples/c_rasterizer examples/c/*.c -lm
+//     rastercheck run cases -r 'c=external-persistent:target/examples/c_rasterizer'
+//
+// What it is meant to show: that exact rasterization needs no big numbers.
+// Every vertex is snapped from its exact decimal or fraction spelling to
+// the case's subpixel grid (ties to even, fixed.c); every sample lies on a
+// 2^-16 pixel grid; every coverage decision (edge functions, the fill
+// rule's ties, cull, polygon winding numbers, a moving vertex at an
+// instant u/65536 of the shutter) is the sign of a 128-bit integer
+// expression (coverage.c). Only depth and attributes, which are judged
+// within a tolerance, are computed in doubles (draw.c). So it should pass
+// every triangle, polygon and antialiasing case it declares; a failure is
+// a bug in it or in rastercheck.
+//
+// It draws triangles and polygons (nonzero, even-odd), at the pixel centre
+// or at the request's sample offsets, under all five fill rules, and
+// moving triangles at the request's instants. It does not draw lines: its
+// hello says so, and rastercheck reports such cases unsupported.
+//
+// Files: main.c (the protocol: hello, one answer line per request, ids),
+// draw.c (a request into fragments), coverage.c (exact coverage tests),
+// fixed.c (exact spellings to fixed point), json.c (a minimal JSON reader),
+// buffer.c (a growable text buffer). C99 and the standard library, plus
+// GCC/Clang's __int128.
+//
+// Flags: --wrong-tie plants a bug (every tie goes to the opposite edges:
+// bottom-right for a top-left case), for the test that rastercheck catches
+// it; --no-motion declares and draws no moving scenes.
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

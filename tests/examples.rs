@@ -1,0 +1,239 @@
+//! The example rasterizers in C and JavaScript (`examples/c`,
+//! `examples/js`, README "External rasterizers"), judged through the binary
+//! over the bundled triangle, antialiasing and polygon cases, in persistent
+//! mode with protocol v2: each hello is honoured (what a program declares it
+//! does not draw is UNSUPPORTED with the declaration as reason), each
+//! example gets the verdicts it was built for, and each one's planted bug
+//! (`--wrong-tie`, `--truncate`, `--swap`) is caught. A missing `cc` or
+//! `node` skips loudly, and fails under `CI=true` (`.ci/run` installs both).
+
+mod common;
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use common::adapters::skipped;
+use common::cli::{rastercheck_env, read_json, scratch, text};
+use serde_json::Value;
+
+const FAMILIES: [&str; 3] = ["cases/triangles", "cases/antialias", "cases/polygons"];
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Whether `program --version` runs.
+fn available(program: &str) -> bool {
+    Command::new(program)
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+/// The C example compiled as README says (C99, every warning an error)
+/// into a fresh folder named by `tag`; `None` (skipped) without `cc`.
+fn c_example(tag: &str) -> Option<PathBuf> {
+    if !available("cc") {
+        skipped("C compiler", "gcc", "the C example cannot be built");
+        return None;
+    }
+    let exe = scratch(&format!("examples-{tag}")).join("c_rasterizer");
+    let mut sources: Vec<PathBuf> = std::fs::read_dir(root().join("examples/c"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "c"))
+        .collect();
+    sources.sort();
+    let out = Command::new("cc")
+        .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-o"])
+        .arg(&exe)
+        .args(&sources)
+        .arg("-lm")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "cc failed:\n{}", text(&out));
+    Some(exe)
+}
+
+/// The JavaScript example's command with `flags`; `None` (skipped) without
+/// `node`.
+fn js_example(flags: &str) -> Option<String> {
+    if !available("node") {
+        skipped("node", "nodejs", "the JavaScript example cannot run");
+        return None;
+    }
+    let script = root().join("examples/js/rasterizer.js");
+    Some(format!("node {} {flags}", script.display()))
+}
+
+/// One case's result for the one candidate.
+#[derive(Debug)]
+struct Verdict {
+    id: String,
+    verdict: String,
+    reasons: String,
+}
+
+/// A persistent run of `command` named `name` over `cases`, in the
+/// repository (for the golden files), its report in a fresh folder: the
+/// exit code, the verdicts, and what the binary printed.
+fn run(tag: &str, name: &str, command: &str, cases: &[&str]) -> (Option<i32>, Vec<Verdict>, String) {
+    let dir = scratch(&format!("examples-run-{tag}"));
+    let report = dir.join("report");
+    let spec = format!("{name}=external-persistent:{command}");
+    let report_text = report.display().to_string();
+    let mut argv = vec!["run", "--report", &report_text, "-r", &spec];
+    argv.extend(cases);
+    let out = rastercheck_env(&root(), &argv, &[]);
+    let t = text(&out);
+    assert!(!t.contains("panicked"), "{t}");
+    let report = read_json(&report.join("report.json"));
+    assert_eq!(report["complete"], true, "{t}");
+    let verdicts = report["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let r = &c["results"][0];
+            let reasons: Vec<&str> = r["reasons"]
+                .as_array()
+                .map(|r| r.iter().filter_map(Value::as_str).collect())
+                .unwrap_or_default();
+            Verdict {
+                id: c["id"].as_str().unwrap().to_owned(),
+                verdict: r["verdict"].as_str().unwrap_or("").to_owned(),
+                reasons: reasons.join("; "),
+            }
+        })
+        .collect();
+    (out.status.code(), verdicts, t)
+}
+
+fn count(verdicts: &[Verdict], verdict: &str) -> usize {
+    verdicts.iter().filter(|v| v.verdict == verdict).count()
+}
+
+fn verdict_of<'a>(verdicts: &'a [Verdict], id: &str) -> &'a Verdict {
+    verdicts
+        .iter()
+        .find(|v| v.id == id)
+        .unwrap_or_else(|| panic!("no {id} in {verdicts:?}"))
+}
+
+/// Whether the case file `id` has a line primitive.
+fn has_lines(id: &str) -> bool {
+    let case = read_json(&root().join(format!("cases/{id}.json")));
+    case["primitives"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|p| p.get("line").is_some())
+}
+
+/// The C example is exact: it passes every triangle, antialiasing and
+/// polygon case it declares, and its hello (no lines) makes the line cases
+/// UNSUPPORTED with the declaration as reason, unsent.
+#[test]
+fn the_c_example_passes_every_case_it_declares() {
+    let Some(exe) = c_example("c") else { return };
+    let (code, v, t) = run("c", "c", &exe.display().to_string(), &FAMILIES);
+    assert_eq!(code, Some(0), "{t}");
+    assert_eq!(count(&v, "fail"), 0, "{t}");
+    assert_eq!(count(&v, "error"), 0, "{t}");
+    // 173 passed and 3 unsupported when written; new cases only add passes
+    // (or, with lines, unsupported).
+    assert!(count(&v, "pass") >= 173, "{t}");
+    for u in v.iter().filter(|v| v.verdict == "unsupported") {
+        assert!(has_lines(&u.id), "{u:?}");
+        assert!(
+            u.reasons
+                .contains("the program (c-example 1) declares no lines (its hello's primitives: [triangles, polygons])"),
+            "{u:?}"
+        );
+    }
+    assert!(count(&v, "unsupported") >= 3, "{t}");
+}
+
+/// `--wrong-tie` gives every sample on an edge to the other side: the
+/// top-left meshes lose their shared edges to the wrong triangle.
+#[test]
+fn the_c_example_with_the_wrong_tie_rule_is_caught() {
+    let Some(exe) = c_example("c-wrong-tie") else { return };
+    let command = format!("{} --wrong-tie", exe.display());
+    let (code, v, t) = run("c-wrong-tie", "c", &command, &FAMILIES);
+    assert_eq!(code, Some(1), "{t}");
+    let diagonal = verdict_of(&v, "triangles/shared_edge_diagonal");
+    assert_eq!(diagonal.verdict, "fail", "{diagonal:?}");
+    assert!(diagonal.reasons.contains("wrong owner"), "{diagonal:?}");
+    // 96 of the 173 cases it passes fail when written: every case with a
+    // sample on an edge or vertex, antialiased or not.
+    assert!(count(&v, "fail") >= 96, "{t}");
+    assert_eq!(count(&v, "error"), 0, "{t}");
+}
+
+/// The JavaScript example quantizes each primitive's exact area to 8 bits.
+/// Every case it draws passes but those where two primitives meet inside a
+/// pixel the union fills: 128/255 + 128/255 is not 1 (piglit's rule, SPEC
+/// §14.3). What it does not draw (lines, depth, attributes) is
+/// UNSUPPORTED by its hello.
+#[test]
+fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
+    let Some(command) = js_example("") else { return };
+    let (code, v, t) = run("js", "js", &command, &FAMILIES);
+    assert_eq!(code, Some(1), "{t}");
+    assert_eq!(count(&v, "error"), 0, "{t}");
+    // 161 passed, 4 failed, 11 unsupported when written.
+    assert!(count(&v, "pass") >= 161, "{t}");
+    for f in v.iter().filter(|v| v.verdict == "fail") {
+        assert!(
+            f.reasons.contains("full or empty pixels do not resolve to exactly 1 or 0"),
+            "{f:?}"
+        );
+    }
+    for id in [
+        "antialias/abutting_fan_8_standard8",
+        "antialias/abutting_square_diagonal_standard16",
+        "antialias/sweep_vertical_edge_32_standard4",
+        "antialias/sweep_vertical_edge_32_standard16",
+    ] {
+        assert_eq!(verdict_of(&v, id).verdict, "fail", "{id}: {t}");
+    }
+    for u in v.iter().filter(|v| v.verdict == "unsupported") {
+        let declared = u.reasons.contains("the program (js-example 1) declares no lines")
+            || u.reasons.contains("the program (js-example 1) declares no depth")
+            || u.reasons.contains("the program (js-example 1) declares no attributes");
+        assert!(declared, "{u:?}");
+    }
+    // Point sampling with the tie rule: the shared edges of meshes pass.
+    assert_eq!(verdict_of(&v, "triangles/shared_edge_diagonal").verdict, "pass");
+}
+
+/// `--truncate` floors area·255: two polygons sharing an edge leave every
+/// pixel along it at 254/255, where the union is full.
+#[test]
+fn the_js_example_truncating_coverage_is_caught() {
+    let id = "polygons/shared_edge_polygons_aa_standard4";
+    let case = format!("cases/{id}.json");
+    let Some(right) = js_example("") else { return };
+    let (_, v, t) = run("js-round", "js", &right, &[&case]);
+    assert_eq!(verdict_of(&v, id).verdict, "pass", "{t}");
+    let truncating = js_example("--truncate").unwrap();
+    let (code, v, t) = run("js-truncate", "js", &truncating, &[&case]);
+    assert_eq!(code, Some(1), "{t}");
+    let f = verdict_of(&v, id);
+    assert_eq!(f.verdict, "fail", "{t}");
+    assert!(f.reasons.contains("full or empty pixels"), "{f:?}");
+}
+
+/// `--swap` trades coverage between primitives 2k and 2k+1 wherever both
+/// touch a pixel: the pixel sums stay right, each primitive is wrong.
+/// Judging the summed coverage cannot see it.
+#[test]
+#[ignore = "needs per-primitive coverage judging (lead)"]
+fn the_js_example_swapping_coverage_between_primitives_is_caught() {
+    let id = "antialias/abutting_fan_8_standard8";
+    let Some(swapping) = js_example("--swap") else { return };
+    let (_, v, t) = run("js-swap", "js", &swapping, &[&format!("cases/{id}.json")]);
+    assert_eq!(verdict_of(&v, id).verdict, "fail", "{t}");
+}
+
