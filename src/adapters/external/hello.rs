@@ -29,6 +29,9 @@ pub struct Hello {
     exact_coordinates: Option<bool>,
     depth: Option<bool>,
     attributes: Option<bool>,
+    /// Moving scenes are sent (SPEC.md §12.8) only when this is `Some(true)`
+    /// in a version 2 hello.
+    motion: Option<bool>,
     /// Reserved: area methods may answer with coverage; not judged yet.
     pub coverage_only: Option<bool>,
     /// Declared conventions, kept as written: reported, not judged yet.
@@ -136,10 +139,7 @@ impl Hello {
         out.depth = flag("depth")?;
         out.attributes = flag("attributes")?;
         out.coverage_only = flag("coverage_only")?;
-        if flag("motion")? == Some(true) {
-            // Accepted, but the protocol does not carry moving vertices
-            // yet: moving scenes stay unsupported (the adapter's capabilities).
-        }
+        out.motion = flag("motion")?;
         Ok(out)
     }
 
@@ -241,6 +241,17 @@ impl Hello {
                     declared(&self.sample_patterns)
                 ));
             }
+        }
+        if plan.motion.is_some() && (self.protocol < 2 || self.motion != Some(true)) {
+            let said = match self.motion {
+                Some(flag) => format!("its hello's motion: {flag}"),
+                None => "its hello declares no motion".to_owned(),
+            };
+            return Some(format!(
+                "{who} speaks version {} ({said}); {}",
+                self.protocol,
+                super::motion::NOT_DECLARED
+            ));
         }
         if plan.depth && self.depth == Some(false) {
             return Some(format!(
