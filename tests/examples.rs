@@ -1,7 +1,7 @@
 //! The example rasterizers in C and JavaScript (`examples/c`,
 //! `examples/js`, README "External rasterizers"), judged through the binary
-//! over the bundled triangle, antialiasing and polygon cases, in persistent
-//! mode with protocol v2: each hello is honoured (what a program declares it
+//! over the bundled triangle, antialiasing, polygon and motion cases, in
+//! persistent mode with protocol v2 (moving scenes by SPEC §12.8): each hello is honoured (what a program declares it
 //! does not draw is UNSUPPORTED with the declaration as reason), each
 //! example gets the verdicts it was built for, and each one's planted bug
 //! (`--wrong-tie`, `--truncate`, `--swap`) is caught. A missing `cc` or
@@ -16,7 +16,12 @@ use common::adapters::skipped;
 use common::cli::{rastercheck_env, read_json, scratch, text};
 use serde_json::Value;
 
-const FAMILIES: [&str; 3] = ["cases/triangles", "cases/antialias", "cases/polygons"];
+const FAMILIES: [&str; 4] = [
+    "cases/triangles",
+    "cases/antialias",
+    "cases/polygons",
+    "cases/motion",
+];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -130,8 +135,8 @@ fn has_lines(id: &str) -> bool {
         .any(|p| p.get("line").is_some())
 }
 
-/// The C example is exact: it passes every triangle, antialiasing and
-/// polygon case it declares, and its hello (no lines) makes the line cases
+/// The C example is exact: it passes every triangle, antialiasing,
+/// polygon and motion case it declares, and its hello (no lines) makes the line cases
 /// UNSUPPORTED with the declaration as reason, unsent.
 #[test]
 fn the_c_example_passes_every_case_it_declares() {
@@ -140,9 +145,9 @@ fn the_c_example_passes_every_case_it_declares() {
     assert_eq!(code, Some(0), "{t}");
     assert_eq!(count(&v, "fail"), 0, "{t}");
     assert_eq!(count(&v, "error"), 0, "{t}");
-    // 173 passed and 3 unsupported when written; new cases only add passes
+    // 203 passed and 5 unsupported when written; new cases only add passes
     // (or, with lines, unsupported).
-    assert!(count(&v, "pass") >= 173, "{t}");
+    assert!(count(&v, "pass") >= 203, "{t}");
     for u in v.iter().filter(|v| v.verdict == "unsupported") {
         assert!(has_lines(&u.id), "{u:?}");
         assert!(
@@ -151,11 +156,13 @@ fn the_c_example_passes_every_case_it_declares() {
             "{u:?}"
         );
     }
-    assert!(count(&v, "unsupported") >= 3, "{t}");
+    assert!(count(&v, "unsupported") >= 5, "{t}");
 }
 
 /// `--wrong-tie` gives every sample on an edge to the other side: the
-/// top-left meshes lose their shared edges to the wrong triangle.
+/// top-left meshes lose their shared edges to the wrong triangle, and a
+/// sample riding a moving top edge is covered for the whole shutter, or
+/// never.
 #[test]
 fn the_c_example_with_the_wrong_tie_rule_is_caught() {
     let Some(exe) = c_example("c-wrong-tie") else { return };
@@ -165,9 +172,12 @@ fn the_c_example_with_the_wrong_tie_rule_is_caught() {
     let diagonal = verdict_of(&v, "triangles/shared_edge_diagonal");
     assert_eq!(diagonal.verdict, "fail", "{diagonal:?}");
     assert!(diagonal.reasons.contains("wrong owner"), "{diagonal:?}");
-    // 96 of the 173 cases it passes fail when written: every case with a
-    // sample on an edge or vertex, antialiased or not.
-    assert!(count(&v, "fail") >= 96, "{t}");
+    let riding = verdict_of(&v, "motion/ride_top_edge_top_left");
+    assert_eq!(riding.verdict, "fail", "{riding:?}");
+    assert!(riding.reasons.contains("time-coverage"), "{riding:?}");
+    // 101 of the 203 cases it passes fail when written: every case with a
+    // sample on an edge or vertex, antialiased, moving or not.
+    assert!(count(&v, "fail") >= 101, "{t}");
     assert_eq!(count(&v, "error"), 0, "{t}");
 }
 
@@ -182,8 +192,10 @@ fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
     let (code, v, t) = run("js", "js", &command, &FAMILIES);
     assert_eq!(code, Some(1), "{t}");
     assert_eq!(count(&v, "error"), 0, "{t}");
-    // 161 passed, 4 failed, 11 unsupported when written.
-    assert!(count(&v, "pass") >= 161, "{t}");
+    // 191 passed, 4 failed, 13 unsupported when written (moving scenes
+    // point-sampled in doubles pass).
+    assert!(count(&v, "pass") >= 191, "{t}");
+    assert_eq!(verdict_of(&v, "motion/rotate_triangle_stratified16").verdict, "pass");
     for f in v.iter().filter(|v| v.verdict == "fail") {
         assert!(
             f.reasons.contains("full or empty pixels do not resolve to exactly 1 or 0"),
@@ -206,6 +218,23 @@ fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
     }
     // Point sampling with the tie rule: the shared edges of meshes pass.
     assert_eq!(verdict_of(&v, "triangles/shared_edge_diagonal").verdict, "pass");
+}
+
+/// `--no-motion` declares no moving scenes: they are UNSUPPORTED with the
+/// hello's word as reason, unsent, and the still scene of the motion
+/// folder is judged as before.
+#[test]
+fn a_hello_without_motion_gets_no_moving_scenes() {
+    let Some(exe) = c_example("c-no-motion") else { return };
+    let command = format!("{} --no-motion", exe.display());
+    let (code, v, t) = run("c-no-motion", "c", &command, &["cases/motion"]);
+    assert_eq!(code, Some(0), "{t}");
+    let still = verdict_of(&v, "motion/static_scene_with_motion_blur");
+    assert_eq!(still.verdict, "pass", "{t}");
+    for u in v.iter().filter(|v| v.id != still.id && !has_lines(&v.id)) {
+        assert_eq!(u.verdict, "unsupported", "{u:?}");
+        assert!(u.reasons.contains("its hello's motion: false"), "{u:?}");
+    }
 }
 
 /// `--truncate` floors area·255: two polygons sharing an edge leave every

@@ -43,7 +43,7 @@
 #include "json.h"
 
 /* Whether this build declares moving scenes (SPEC.md §12.8) by default. */
-#define MOTION_BY_DEFAULT 0
+#define MOTION_BY_DEFAULT 1
 
 /* The hello (SPEC.md §12.7): what this program draws. Cases outside it are
  * reported unsupported by rastercheck and never sent. */
@@ -91,10 +91,9 @@ int main(int argc, char **argv) {
     buffer answer = {0}, body = {0};
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--wrong-tie") == 0) opt.wrong_tie = 1;
-        else if (strcmp(argv[i], "--motion") == 0) motion = 1;
         else if (strcmp(argv[i], "--no-motion") == 0) motion = 0;
         else {
-            fprintf(stderr, "c_rasterizer: unknown argument %s (known: --wrong-tie, --motion, --no-motion)\n",
+            fprintf(stderr, "c_rasterizer: unknown argument %s (known: --wrong-tie, --no-motion)\n",
                     argv[i]);
             return 2;
         }

@@ -21,7 +21,7 @@
 // In a scene without antialiasing it point-samples the pixel centres in
 // doubles, with the case's tie rule (top-left nudges the sample right and
 // down by infinitesimals, SPEC.md §3), and answers [x, y] fragments. Moving
-// scenes (SPEC.md §12.8), when declared (--motion), are point-sampled at
+// scenes (SPEC.md §12.8; --no-motion declares none) are point-sampled at
 // each spatial sample and instant the request gives, in doubles.
 //
 // It computes no depth and no attributes: its hello declares
@@ -32,7 +32,8 @@
 //   --truncate  floor(area·255) instead of round: every edge pixel is light;
 //   --swap      swaps the coverage of primitives 2k and 2k+1 in every
 //               pixel both touch: each primitive is wrong, their sum is not.
-// --no-coverage-bits leaves coverage_bits out of the hello.
+// --no-coverage-bits leaves coverage_bits out of the hello; --no-motion
+// declares no moving scenes.
 //
 // Node 20, built-in modules only.
 
@@ -42,14 +43,14 @@ const readline = require("node:readline");
 
 const args = new Set(process.argv.slice(2));
 for (const a of args) {
-  if (!["--truncate", "--swap", "--motion", "--no-coverage-bits"].includes(a)) {
+  if (!["--truncate", "--swap", "--no-motion", "--no-coverage-bits"].includes(a)) {
     process.stderr.write(`rasterizer.js: unknown argument ${a}\n`);
     process.exit(2);
   }
 }
 const TRUNCATE = args.has("--truncate");
 const SWAP = args.has("--swap");
-const MOTION = args.has("--motion");
+const MOTION = !args.has("--no-motion");
 
 // The coverage answers are multiples of 1/LEVELS.
 const COVERAGE_BITS = 8;
@@ -386,7 +387,7 @@ function movingSamples(request, p, x, y, fragments) {
 }
 
 function answer(request) {
-  if (request.plan.motion && !MOTION) return { unsupported: "moving scenes are off (no --motion)" };
+  if (request.plan.motion && !MOTION) return { unsupported: "moving scenes are off (--no-motion)" };
   const prims = shapes(request);
   const areas = request.plan.antialias && !request.plan.motion;
   return { primitives: areas ? coverage(request, prims) : pointSample(request, prims) };
