@@ -23,12 +23,12 @@ i128 doubled_area(const point v[3]) {
     return edge(v[0], v[1], v[2]);
 }
 
-int triangle_covers(const point v[3], point q, enum fill_rule rule, nudge tie, enum cull cull) {
-    i128 area = doubled_area(v);
+int convex_covers(const point *v, int n, point q, enum fill_rule rule, nudge tie) {
+    i128 area = edge(v[0], v[1], v[2]);
     int sign = area > 0 ? 1 : -1, i;
-    if (area == 0 || (cull == CULL_CW && area > 0) || (cull == CULL_CCW && area < 0)) return 0;
-    for (i = 0; i < 3; i++) {
-        point a = v[i], b = v[(i + 1) % 3];
+    if (area == 0) return 0;
+    for (i = 0; i < n; i++) {
+        point a = v[i], b = v[(i + 1) % n];
         i128 e = edge(a, b, q) * sign;
         /* The edge function's gradient (∂E/∂x, ∂E/∂y), oriented inwards. */
         i128 gx = -(b.y - a.y) * sign, gy = (b.x - a.x) * sign;
@@ -41,6 +41,12 @@ int triangle_covers(const point v[3], point q, enum fill_rule rule, nudge tie, e
         if (gx != 0 ? gx * tie.dx < 0 : gy * tie.dy < 0) return 0;
     }
     return 1;
+}
+
+int triangle_covers(const point v[3], point q, enum fill_rule rule, nudge tie, enum cull cull) {
+    i128 area = doubled_area(v);
+    if ((cull == CULL_CW && area > 0) || (cull == CULL_CCW && area < 0)) return 0;
+    return convex_covers(v, 3, q, rule, tie);
 }
 
 void barycentric(const point v[3], point q, double weights[3]) {

@@ -44,6 +44,12 @@ i128 doubled_area(const point v[3]);
  * nothing. Coordinates relative to q below COVERAGE_MAX_COORD. */
 int triangle_covers(const point v[3], point q, enum fill_rule rule, nudge tie, enum cull cull);
 
+/* The same for a convex polygon of n vertices whose first three are not
+ * collinear unless it is flat (a parallelogram line, SPEC.md §4.4: each
+ * border is owned by its outward normal as §3 owns a triangle's edges,
+ * which is the nudge test here). Never culled. */
+int convex_covers(const point *v, int n, point q, enum fill_rule rule, nudge tie);
+
 /* The barycentric weights of `q` in a triangle of non-zero area, as
  * doubles (they only weight the interpolated values, never decide). */
 void barycentric(const point v[3], point q, double weights[3]);

@@ -150,25 +150,27 @@ static box bounds(const scene *s, const vertex *v, int count) {
     return b;
 }
 
-/* Depth and attributes at weights `b` (SPEC.md §5), appended to a fragment. */
-static void values(buffer *out, const scene *s, const vertex v[3], enum interpolation mode,
-                   const double b[3]) {
-    int k;
-    if (s->depth) buffer_printf(out, ",%.17g", b[0] * v[0].z + b[1] * v[1].z + b[2] * v[2].z);
+/* Depth and attributes at weights `b` of the n vertices `v` (SPEC.md
+ * §5: barycentric for a triangle, (1 − t, t) along a line), appended to a
+ * fragment. */
+static void values(buffer *out, const scene *s, const vertex *v, int n, enum interpolation mode,
+                   const double *b) {
+    int i, k;
+    double z = 0;
+    for (i = 0; i < n; i++) z += b[i] * v[i].z;
+    if (s->depth) buffer_printf(out, ",%.17g", z);
     for (k = 0; k < s->attributes; k++) {
-        double a;
+        double a = 0, den = 0;
         if (mode == FLAT) {
             a = v[0].attributes[k];
         } else if (mode == LINEAR) {
-            a = b[0] * v[0].attributes[k] + b[1] * v[1].attributes[k] + b[2] * v[2].attributes[k];
+            for (i = 0; i < n; i++) a += b[i] * v[i].attributes[k];
         } else { /* interpolate a/w and 1/w linearly, then divide */
-            double num = 0, den = 0;
-            int i;
-            for (i = 0; i < 3; i++) {
-                num += b[i] * v[i].attributes[k] / v[i].w;
+            for (i = 0; i < n; i++) {
+                a += b[i] * v[i].attributes[k] / v[i].w;
                 den += b[i] / v[i].w;
             }
-            a = num / den;
+            a /= den;
         }
         buffer_printf(out, ",%.17g", a);
     }
@@ -197,44 +199,146 @@ static void draw_still_triangle(buffer *out, const scene *s, const vertex v[3],
                 barycentric(p, q, weights);
                 /* A moving scene's still primitive covers sample k at every instant. */
                 open_fragment(out, &first, x, y, s->antialiased || s->time_samples ? k : -1);
-                values(out, s, v, mode, weights);
+                values(out, s, v, 3, mode, weights);
                 buffer_printf(out, "]");
             }
 }
 
-/* The time samples of a moving triangle: slot j = k·N + t covers spatial
- * sample k at instant u_j of its pixel (SPEC.md §12.8, §15.3). */
-static enum outcome draw_moving_triangle(buffer *out, scene *s, const vertex v[3], const char *path) {
-    box b = bounds(s, v, 3);
-    int x, y, j, i, first = 1, total = s->samples * s->time_samples;
+/* A line's parallelogram (SPEC.md §4.4): the segment a→b swept by ±h
+ * along its minor axis, all on one grid. A line of zero length gives a
+ * flat shape, which covers nothing. */
+static void parallelogram(point a, point b, i128 h, point c[4]) {
+    i128 dx = b.x - a.x, dy = b.y - a.y;
+    int x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+    c[0] = a;
+    c[1] = b;
+    c[2] = b;
+    c[3] = a;
+    if (x_major) {
+        c[0].y -= h, c[1].y -= h, c[2].y += h, c[3].y += h;
+    } else {
+        c[0].x -= h, c[1].x -= h, c[2].x += h, c[3].x += h;
+    }
+}
+
+/* Whether a shape moving from `v` (a triangle, or a line's two ends with
+ * `width` in 2^-16 px) covers q (on the 2^-16 grid) at instant t (units
+ * of 2^-32): positions on the 2^-48 grid, a line's on the 2^-49 grid so
+ * that its half-width is whole. -1 when a coordinate is beyond the
+ * 128-bit arithmetic. */
+static int covers_at(const scene *s, const vertex *v, int line, int64_t width, point q, i128 t) {
+    point p[4];
+    int i, n = line ? 4 : 3, shift = line ? 33 : 32;
+    q.x *= (i128)1 << shift;
+    q.y *= (i128)1 << shift;
+    if (line) {
+        point a = moving(&v[0], t), b = moving(&v[1], t);
+        a.x *= 2, a.y *= 2, b.x *= 2, b.y *= 2;
+        parallelogram(a, b, (i128)width << 32, p);
+    } else {
+        for (i = 0; i < 3; i++) p[i] = moving(&v[i], t);
+    }
+    for (i = 0; i < n; i++)
+        if (p[i].x - q.x >= COVERAGE_MAX_COORD || q.x - p[i].x >= COVERAGE_MAX_COORD
+            || p[i].y - q.y >= COVERAGE_MAX_COORD || q.y - p[i].y >= COVERAGE_MAX_COORD)
+            return -1;
+    return line ? convex_covers(p, 4, q, s->rule, s->tie) : triangle_covers(p, q, s->rule, s->tie, s->cull);
+}
+
+/* The time samples of a moving triangle or line: slot j = k·N + t covers
+ * spatial sample k at instant u_j of its pixel (SPEC.md §12.8, §15.3).
+ * `corners` holds the shape's vertices, for its swept bounding box. */
+static enum outcome draw_moving(buffer *out, scene *s, const vertex *v, int line, int64_t width,
+                                const vertex *corners, int count, const char *path) {
+    box b = bounds(s, corners, count);
+    int x, y, j, first = 1, total = s->samples * s->time_samples;
     for (y = b.y0; y <= b.y1; y++)
         for (x = b.x0; x <= b.x1; x++) {
             const json *us = json_at(s->times, (size_t)y * (size_t)s->width + (size_t)x);
             if (json_length(us) != (size_t)total)
-                return fail(s, FAILED, "%s: $.plan.motion.times[%d] does not hold M·N = %d instants", path,
+                return fail(s, FAILED, "$.plan.motion.times[%d] does not hold M·N = %d instants",
                             y * s->width + x, total);
             for (j = 0; j < total; j++) {
                 int64_t u = (int64_t)json_number(json_at(us, (size_t)j), -1);
-                point p[3], q = sample_at(s, x, y, j / s->time_samples);
                 /* τ = open + (close − open)·u/2^16, in units of 2^-32. */
                 i128 t = ((i128)s->open << 16) + (i128)(s->close - s->open) * u;
+                int covered;
                 if (u < 0 || u >= 65536)
                     return fail(s, FAILED, "$.plan.motion.times[%d][%d] is not in [0, 65536)",
                                 y * s->width + x, j);
-                q.x <<= 32;
-                q.y <<= 32;
-                for (i = 0; i < 3; i++) {
-                    p[i] = moving(&v[i], t);
-                    if (p[i].x - q.x >= COVERAGE_MAX_COORD || q.x - p[i].x >= COVERAGE_MAX_COORD
-                        || p[i].y - q.y >= COVERAGE_MAX_COORD || q.y - p[i].y >= COVERAGE_MAX_COORD)
-                        return fail(s, UNSUPPORTED, "%s: a moving vertex 16384 px or more from a sample is beyond "
-                                    "this program's 128-bit arithmetic", path);
-                }
-                if (!triangle_covers(p, q, s->rule, s->tie, s->cull)) continue;
+                covered = covers_at(s, v, line, width, sample_at(s, x, y, j / s->time_samples), t);
+                if (covered < 0)
+                    return fail(s, UNSUPPORTED, "%s: a vertex 16384 px or more from a sample is "
+                                "beyond this program's 128-bit arithmetic", path);
+                if (!covered) continue;
                 open_fragment(out, &first, x, y, j);
                 buffer_printf(out, "]");
             }
         }
+    return DRAWN;
+}
+
+/* A still parallelogram line, on the 2^-17 grid (its half-width whole).
+ * Values along it use t (SPEC.md §4, §5): the sample's place along the
+ * major axis, or its projection onto the segment, clamped to [0, 1]. */
+static void draw_still_line(buffer *out, const scene *s, const vertex v[2], int64_t width,
+                            const vertex *corners, enum interpolation mode, int projected) {
+    point c[4], a = still(v[0].x, v[0].y), e = still(v[1].x, v[1].y);
+    box b = bounds(s, corners, 4);
+    double dx = (double)(e.x - a.x), dy = (double)(e.y - a.y);
+    int x, y, k, first = 1, x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+    a.x *= 2, a.y *= 2, e.x *= 2, e.y *= 2;
+    parallelogram(a, e, width, c);
+    for (y = b.y0; y <= b.y1; y++)
+        for (x = b.x0; x <= b.x1; x++)
+            for (k = 0; k < s->samples; k++) {
+                point q = sample_at(s, x, y, k);
+                double t, weights[2], qx, qy;
+                qx = (double)(q.x - a.x / 2), qy = (double)(q.y - a.y / 2);
+                q.x *= 2, q.y *= 2;
+                if (!convex_covers(c, 4, q, s->rule, s->tie)) continue;
+                if (projected) t = (qx * dx + qy * dy) / (dx * dx + dy * dy);
+                else t = x_major ? qx / dx : qy / dy;
+                t = t < 0 ? 0 : t > 1 ? 1 : t;
+                weights[0] = 1 - t;
+                weights[1] = t;
+                open_fragment(out, &first, x, y, s->antialiased || s->time_samples ? k : -1);
+                values(out, s, v, 2, mode, weights);
+                buffer_printf(out, "]");
+            }
+}
+
+static enum outcome draw_line(buffer *out, scene *s, const json *prim, const char *path,
+                              enum interpolation mode, int moves) {
+    const json *line = json_get(prim, "line");
+    const char *rule = json_string(json_get(prim, "rule"), "");
+    vertex v[2], corners[4];
+    fx16 width;
+    int64_t h;
+    int i;
+    char at[160];
+    enum outcome o;
+    if (strcmp(rule, "parallelogram") != 0)
+        return fail(s, UNSUPPORTED, "%s: %s lines are not implemented", path, rule);
+    if (json_length(line) != 2) return fail(s, FAILED, "%s.line must hold 2 vertices", path);
+    for (i = 0; i < 2; i++) {
+        snprintf(at, sizeof at, "%s.line[%d]", path, i);
+        if ((o = read_vertex(s, json_at(line, (size_t)i), at, &v[i])) != DRAWN) return o;
+    }
+    snprintf(at, sizeof at, "%s.exact.width", path);
+    if ((o = coordinate(s, json_get(json_get(prim, "exact"), "width"), at, -1, &width)) != DRAWN)
+        return o;
+    /* The pixels within the half-width (rounded up) of either end, at
+     * either end of the shutter. */
+    h = (width.v + 1) / 2;
+    for (i = 0; i < 4; i++) {
+        int64_t d = i < 2 ? -h : h;
+        corners[i] = v[i % 2];
+        corners[i].x.v += d, corners[i].y.v += d, corners[i].tx.v += d, corners[i].ty.v += d;
+    }
+    if (moves) return draw_moving(out, s, v, 1, width.v, corners, 4, path);
+    draw_still_line(out, s, v, width.v, corners, mode,
+                    strcmp(json_string(json_get(prim, "parameter"), "major"), "projected") == 0);
     return DRAWN;
 }
 
@@ -389,14 +493,21 @@ enum outcome draw_request(const json *request, const options *opt, buffer *out, 
             if (moves && !s.time_samples)
                 return fail(&s, FAILED, "%s moves, and the plan has no motion", path);
             if (moves) {
-                if ((o = draw_moving_triangle(out, &s, v, path)) != DRAWN) return o;
+                if ((o = draw_moving(out, &s, v, 0, 0, v, 3, path)) != DRAWN) return o;
             } else {
                 draw_still_triangle(out, &s, v, (enum interpolation)mode);
             }
         } else if (json_get(prim, "contours")) {
             if ((o = draw_polygon(out, &s, prim, path)) != DRAWN) return o;
         } else if (json_get(prim, "line")) {
-            return fail(&s, UNSUPPORTED, "%s: lines are not implemented", path);
+            int moves = json_get(prim, "moves") && json_get(prim, "moves")->boolean;
+            int mode = word_index(json_string(json_get(prim, "interpolation"), "perspective"),
+                                  INTERPOLATIONS, 3);
+            if (mode < 0) return fail(&s, FAILED, "%s.interpolation is not a mode", path);
+            if (moves && !s.time_samples)
+                return fail(&s, FAILED, "%s moves, and the plan has no motion", path);
+            if ((o = draw_line(out, &s, prim, path, (enum interpolation)mode, moves)) != DRAWN)
+                return o;
         } else {
             return fail(&s, FAILED, "%s is neither a triangle, a polygon nor a line", path);
         }

@@ -49,7 +49,8 @@
  * reported unsupported by rastercheck and never sent. */
 static void hello(int motion) {
     printf("{\"hello\":{\"protocol\":2,\"name\":\"c-example\",\"version\":\"1\","
-           "\"capabilities\":{\"primitives\":[\"triangles\",\"polygons\"],"
+           "\"capabilities\":{\"primitives\":[\"triangles\",\"polygons\",\"lines\"],"
+           "\"line_rules\":[\"parallelogram\"],"
            "\"polygon_fills\":[\"nonzero\",\"even-odd\"],"
            "\"fill_rules\":[\"top-left\",\"bottom-right\",\"top-right\",\"bottom-left\",\"all-edges\"],"
            "\"interpolation\":[\"flat\",\"linear\",\"perspective\"],"

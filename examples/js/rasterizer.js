@@ -26,7 +26,8 @@
 //
 // It computes no depth and no attributes: its hello declares
 // coverage_only, and depth and attributes false, so cases that ask for
-// values are reported unsupported. Lines are not drawn either.
+// values are reported unsupported. Of the lines it draws only the
+// parallelogram (SPEC.md §4.4), a convex quadrilateral like the rest.
 //
 // Flags plant bugs, for the tests that rastercheck catches them:
 //   --truncate  floor(area·255) instead of round: every edge pixel is light;
@@ -98,13 +99,16 @@ function culled(area, cull) {
   return area === 0 || (cull === "cw" && area > 0) || (cull === "ccw" && area < 0);
 }
 
-function triangleCovers(v, q, rule, cull) {
+// A convex polygon (a triangle, a line's parallelogram) covers q when q is
+// inside every edge, or on an edge the nudge leaves inwards. Its first
+// three vertices give its orientation; a flat one covers nothing.
+function convexCovers(v, q, rule) {
   const area = area2(v);
-  if (culled(area, cull)) return false;
+  if (area === 0) return false;
   const sign = area > 0 ? 1 : -1;
-  for (let i = 0; i < 3; i++) {
+  for (let i = 0; i < v.length; i++) {
     const a = v[i];
-    const b = v[(i + 1) % 3];
+    const b = v[(i + 1) % v.length];
     const e = edge(a, b, q) * sign;
     if (e > 0) continue;
     if (e < 0) return false;
@@ -116,6 +120,20 @@ function triangleCovers(v, q, rule, cull) {
     if (gx !== 0 ? gx * dx < 0 : gy * dy < 0) return false;
   }
   return true;
+}
+
+function triangleCovers(v, q, rule, cull) {
+  return !culled(area2(v), cull) && convexCovers(v, q, rule);
+}
+
+// A parallelogram line (SPEC.md §4.4): the segment swept by ±width/2 along
+// its minor axis.
+function parallelogram(a, b, width) {
+  const h = width / 2;
+  if (Math.abs(b[0] - a[0]) >= Math.abs(b[1] - a[1])) {
+    return [[a[0], a[1] - h], [b[0], b[1] - h], [b[0], b[1] + h], [a[0], a[1] + h]];
+  }
+  return [[a[0] - h, a[1]], [b[0] - h, b[1]], [b[0] + h, b[1]], [a[0] + h, a[1]]];
 }
 
 function windingNumber(contours, q, rule) {
@@ -298,7 +316,13 @@ function shapes(request) {
       };
     }
     if (p.contours) return { contours: p.contours.map((c) => c.map((v) => snapped(v, bits))), fill: p.fill };
-    throw unsupported(`$.primitives[${i}]: lines are not drawn here`);
+    if (p.rule !== "parallelogram") throw unsupported(`$.primitives[${i}]: ${p.rule} lines are not drawn here`);
+    return {
+      line: p.line.map((v) => snapped(v, bits)),
+      to: p.line.map((v) => (v.to ? snapped(v.to, bits) : snapped(v, bits))),
+      width: p.width,
+      moves: p.moves === true,
+    };
   });
 }
 
@@ -309,6 +333,8 @@ function coverage(request, prims) {
     const acc = new Map();
     if (p.triangle) {
       if (!culled(area2(p.triangle), request.rules.cull)) addConvex(p.triangle, width, height, acc);
+    } else if (p.line) {
+      addConvex(parallelogram(p.line[0], p.line[1], p.width), width, height, acc);
     } else {
       addPolygon(p.contours, p.fill, width, height, acc);
     }
@@ -349,7 +375,11 @@ function pointSample(request, prims) {
   const named = request.plan.antialias || motion;
   return prims.map((p) => {
     const fragments = [];
-    const points = p.triangle ? p.triangle.concat(p.to) : p.contours.flat();
+    const ends = p.triangle || p.line;
+    const reach = p.line ? p.width / 2 : 0;
+    const points = ends
+      ? ends.concat(p.to).flatMap(([x, y]) => [[x - reach, y - reach], [x + reach, y + reach]])
+      : p.contours.flat();
     const box = pixelBox(points, width, height);
     for (let y = box.y0; y <= box.y1; y++) {
       for (let x = box.x0; x <= box.x1; x++) {
@@ -361,7 +391,9 @@ function pointSample(request, prims) {
           const q = [x + dx, y + dy];
           const inside = p.triangle
             ? triangleCovers(p.triangle, q, rule, cull)
-            : filled(windingNumber(p.contours, q, rule === "all-edges" ? "top-left" : rule), p.fill);
+            : p.line
+              ? convexCovers(parallelogram(p.line[0], p.line[1], p.width), q, rule)
+              : filled(windingNumber(p.contours, q, rule === "all-edges" ? "top-left" : rule), p.fill);
           if (inside) fragments.push(named ? [x, y, s] : [x, y]);
         });
       }
@@ -370,19 +402,24 @@ function pointSample(request, prims) {
   });
 }
 
-// A moving triangle at pixel (x, y): slot j = s·N + k covers spatial sample
-// s at instant τ = open + (close − open)·u_j/65536 (SPEC.md §12.8); each
-// vertex is at (1 − τ)·snap(from) + τ·snap(to).
+// A moving triangle or line at pixel (x, y): slot j = s·N + k covers
+// spatial sample s at instant τ = open + (close − open)·u_j/65536 (SPEC.md
+// §12.8); each vertex is at (1 − τ)·snap(from) + τ·snap(to).
 function movingSamples(request, p, x, y, fragments) {
   const m = request.plan.motion;
   const [open, close] = m.shutter;
   const spots = offsets(request);
   const us = m.times[y * request.canvas.width + x];
+  const from = p.triangle || p.line;
   us.forEach((u, j) => {
     const t = open + ((close - open) * u) / 65536;
-    const v = p.triangle.map((a, i) => [(1 - t) * a[0] + t * p.to[i][0], (1 - t) * a[1] + t * p.to[i][1]]);
+    const v = from.map((a, i) => [(1 - t) * a[0] + t * p.to[i][0], (1 - t) * a[1] + t * p.to[i][1]]);
     const [dx, dy] = spots[Math.floor(j / m.samples)];
-    if (triangleCovers(v, [x + dx, y + dy], request.rules.fill_rule, request.rules.cull)) fragments.push([x, y, j]);
+    const q = [x + dx, y + dy];
+    const inside = p.line
+      ? convexCovers(parallelogram(v[0], v[1], p.width), q, request.rules.fill_rule)
+      : triangleCovers(v, q, request.rules.fill_rule, request.rules.cull);
+    if (inside) fragments.push([x, y, j]);
   });
 }
 
@@ -402,7 +439,8 @@ const HELLO = {
     name: "js-example",
     version: "1",
     capabilities: {
-      primitives: ["triangles", "polygons"],
+      primitives: ["triangles", "polygons", "lines"],
+      line_rules: ["parallelogram"],
       polygon_fills: ["nonzero", "even-odd"],
       fill_rules: ["top-left", "bottom-right", "top-right", "bottom-left", "all-edges"],
       antialias: true,
