@@ -265,3 +265,60 @@ fn the_js_example_swapping_coverage_between_primitives_is_caught() {
     let (_, v, t) = run("js-swap", "js", &swapping, &[&case]);
     assert_eq!(verdict_of(&v, id).verdict, "fail", "{t}");
 }
+
+/// Requests that are not JSON, or lack what the program reads, get an
+/// `error` answer (with the id when there is one), and the next request is
+/// answered as usual: a bad line costs its own case only. `bye` ends it.
+#[test]
+fn the_examples_answer_broken_requests_with_errors_and_go_on() {
+    use std::io::Write;
+    use std::process::Stdio;
+    let good = r#"{"id": "b#2", "canvas": {"width": 4, "height": 4},
+        "rules": {"subpixel_bits": 8, "fill_rule": "top-left", "cull": "none"},
+        "plan": {"samples_per_pixel": 1, "depth": false, "attributes": 0},
+        "primitives": [{"triangle": [
+            {"x": 0, "y": 0, "exact": {"x": "0", "y": "0"}},
+            {"x": 4, "y": 0, "exact": {"x": "4", "y": "0"}},
+            {"x": 0, "y": 4, "exact": {"x": "0", "y": "4"}}]}]}"#
+        .replace('\n', " ");
+    let input = format!(
+        "not json\n\n{{\"id\": \"a#1\", \"primitives\": 7}}\n{good}\n{}\n{{\"bye\": true}}\n",
+        "[".repeat(200)
+    );
+    let mut programs: Vec<Vec<String>> = Vec::new();
+    if let Some(exe) = c_example("c-broken") {
+        programs.push(vec![exe.display().to_string()]);
+    }
+    if let Some(command) = js_example("") {
+        programs.push(command.split_whitespace().map(str::to_owned).collect());
+    }
+    for program in programs {
+        let mut child = Command::new(&program[0])
+            .args(&program[1..])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert!(out.status.success(), "{program:?}");
+        let lines: Vec<Value> = String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(lines.len(), 5, "{program:?}: {lines:?}");
+        assert_eq!(lines[0]["hello"]["protocol"], 2, "{lines:?}");
+        assert!(lines[1]["error"].is_string(), "{lines:?}");
+        assert_eq!(lines[2]["id"], "a#1", "{lines:?}");
+        assert!(lines[2]["error"].is_string(), "{lines:?}");
+        assert_eq!(lines[3]["id"], "b#2", "{lines:?}");
+        // The top-left rule: the centres on the hypotenuse x + y = 4 are out.
+        assert_eq!(
+            lines[3]["primitives"][0]["fragments"],
+            serde_json::json!([[0, 0], [1, 0], [2, 0], [0, 1], [1, 1], [0, 2]]),
+            "{lines:?}"
+        );
+        assert!(lines[4]["error"].is_string(), "{lines:?}");
+    }
+}

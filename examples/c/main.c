@@ -102,9 +102,11 @@ int main(int argc, char **argv) {
     hello(motion);
     while (read_line(&line, &capacity)) {
         size_t error_at = 0;
-        json *request = json_parse(line, &error_at);
-        const json *id = json_get(request, "id");
-        if (line[0] == '\0') continue;
+        json *request;
+        const json *id;
+        if (line[0] == '\0') continue; /* blank lines are no requests */
+        request = json_parse(line, &error_at);
+        id = json_get(request, "id");
         buffer_clear(&answer);
         buffer_clear(&body);
         buffer_printf(&answer, "{");
