@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use common::adapters::skipped;
-use common::cli::{rastercheck_env, read_json, scratch, text};
+use common::cli::{first_verdicts, rastercheck_env, read_json, scratch, text};
 use serde_json::Value;
 
 const FAMILIES: [&str; 4] = [
@@ -82,7 +82,12 @@ struct Verdict {
 /// A persistent run of `command` named `name` over `cases`, in the
 /// repository (for the golden files), its report in a fresh folder: the
 /// exit code, the verdicts, and what the binary printed.
-fn run(tag: &str, name: &str, command: &str, cases: &[&str]) -> (Option<i32>, Vec<Verdict>, String) {
+fn run(
+    tag: &str,
+    name: &str,
+    command: &str,
+    cases: &[&str],
+) -> (Option<i32>, Vec<Verdict>, String) {
     let dir = scratch(&format!("examples-run-{tag}"));
     let report = dir.join("report");
     let spec = format!("{name}=external-persistent:{command}");
@@ -94,21 +99,12 @@ fn run(tag: &str, name: &str, command: &str, cases: &[&str]) -> (Option<i32>, Ve
     assert!(!t.contains("panicked"), "{t}");
     let report = read_json(&report.join("report.json"));
     assert_eq!(report["complete"], true, "{t}");
-    let verdicts = report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            let r = &c["results"][0];
-            let reasons: Vec<&str> = r["reasons"]
-                .as_array()
-                .map(|r| r.iter().filter_map(Value::as_str).collect())
-                .unwrap_or_default();
-            Verdict {
-                id: c["id"].as_str().unwrap().to_owned(),
-                verdict: r["verdict"].as_str().unwrap_or("").to_owned(),
-                reasons: reasons.join("; "),
-            }
+    let verdicts = first_verdicts(&report)
+        .into_iter()
+        .map(|(id, verdict, reasons)| Verdict {
+            id,
+            verdict,
+            reasons,
         })
         .collect();
     (out.status.code(), verdicts, t)
@@ -146,7 +142,8 @@ fn the_c_example_passes_every_case_it_declares() {
         assert!(u.id.starts_with("lines/"), "{u:?}");
         assert!(
             u.reasons.contains("the program (c-example 1) declares no ")
-                && u.reasons.contains(" lines (its hello's line_rules: [parallelogram])"),
+                && u.reasons
+                    .contains(" lines (its hello's line_rules: [parallelogram])"),
             "{u:?}"
         );
     }
@@ -160,7 +157,9 @@ fn the_c_example_passes_every_case_it_declares() {
 /// never.
 #[test]
 fn the_c_example_with_the_wrong_tie_rule_is_caught() {
-    let Some(exe) = c_example("c-wrong-tie") else { return };
+    let Some(exe) = c_example("c-wrong-tie") else {
+        return;
+    };
     let command = format!("{} --wrong-tie", exe.display());
     let (code, v, t) = run("c-wrong-tie", "c", &command, &FAMILIES);
     assert_eq!(code, Some(1), "{t}");
@@ -183,17 +182,23 @@ fn the_c_example_with_the_wrong_tie_rule_is_caught() {
 /// UNSUPPORTED by its hello.
 #[test]
 fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
-    let Some(command) = js_example("") else { return };
+    let Some(command) = js_example("") else {
+        return;
+    };
     let (code, v, t) = run("js", "js", &command, &FAMILIES);
     assert_eq!(code, Some(1), "{t}");
     assert_eq!(count(&v, "error"), 0, "{t}");
     // 196 passed, 4 failed, 8 unsupported (depth) when written; moving
     // scenes point-sampled in doubles pass.
     assert!(count(&v, "pass") >= 196, "{t}");
-    assert_eq!(verdict_of(&v, "motion/rotate_triangle_stratified16").verdict, "pass");
+    assert_eq!(
+        verdict_of(&v, "motion/rotate_triangle_stratified16").verdict,
+        "pass"
+    );
     for f in v.iter().filter(|v| v.verdict == "fail") {
         assert!(
-            f.reasons.contains("full or empty pixels do not resolve to exactly 1 or 0"),
+            f.reasons
+                .contains("full or empty pixels do not resolve to exactly 1 or 0"),
             "{f:?}"
         );
     }
@@ -206,13 +211,20 @@ fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
         assert_eq!(verdict_of(&v, id).verdict, "fail", "{id}: {t}");
     }
     for u in v.iter().filter(|v| v.verdict == "unsupported") {
-        let declared = u.reasons.contains("the program (js-example 1) declares no lines")
-            || u.reasons.contains("the program (js-example 1) declares no depth")
-            || u.reasons.contains("the program (js-example 1) declares no attributes");
+        let declared = u
+            .reasons
+            .contains("the program (js-example 1) declares no lines")
+            || u.reasons
+                .contains("the program (js-example 1) declares no depth")
+            || u.reasons
+                .contains("the program (js-example 1) declares no attributes");
         assert!(declared, "{u:?}");
     }
     // Point sampling with the tie rule: the shared edges of meshes pass.
-    assert_eq!(verdict_of(&v, "triangles/shared_edge_diagonal").verdict, "pass");
+    assert_eq!(
+        verdict_of(&v, "triangles/shared_edge_diagonal").verdict,
+        "pass"
+    );
 }
 
 /// `--no-motion` declares no moving scenes: they are UNSUPPORTED with the
@@ -220,7 +232,9 @@ fn the_js_example_passes_but_where_quantized_parts_do_not_add_up() {
 /// folder is judged as before.
 #[test]
 fn a_hello_without_motion_gets_no_moving_scenes() {
-    let Some(exe) = c_example("c-no-motion") else { return };
+    let Some(exe) = c_example("c-no-motion") else {
+        return;
+    };
     let command = format!("{} --no-motion", exe.display());
     let (code, v, t) = run("c-no-motion", "c", &command, &["cases/motion"]);
     assert_eq!(code, Some(0), "{t}");
@@ -232,19 +246,28 @@ fn a_hello_without_motion_gets_no_moving_scenes() {
     }
 }
 
+/// The verdict on the case `id` of the JavaScript example as it is (which
+/// must pass) and with `flag` (its planted bug), and what the second run
+/// printed; `None` (skipped) without `node`.
+fn js_with_and_without(flag: &str, id: &str) -> Option<(Verdict, String)> {
+    let case = format!("cases/{id}.json");
+    let right = js_example("")?;
+    let (_, v, t) = run(&format!("js-right{flag}"), "js", &right, &[&case]);
+    assert_eq!(verdict_of(&v, id).verdict, "pass", "{t}");
+    let wrong = js_example(flag).unwrap();
+    let (_, mut v, t) = run(&format!("js{flag}"), "js", &wrong, &[&case]);
+    let at = v.iter().position(|v| v.id == id).unwrap();
+    Some((v.swap_remove(at), t))
+}
+
 /// `--truncate` floors area·255: two polygons sharing an edge leave every
 /// pixel along it at 254/255, where the union is full.
 #[test]
 fn the_js_example_truncating_coverage_is_caught() {
     let id = "polygons/shared_edge_polygons_aa_standard4";
-    let case = format!("cases/{id}.json");
-    let Some(right) = js_example("") else { return };
-    let (_, v, t) = run("js-round", "js", &right, &[&case]);
-    assert_eq!(verdict_of(&v, id).verdict, "pass", "{t}");
-    let truncating = js_example("--truncate").unwrap();
-    let (code, v, t) = run("js-truncate", "js", &truncating, &[&case]);
-    assert_eq!(code, Some(1), "{t}");
-    let f = verdict_of(&v, id);
+    let Some((f, t)) = js_with_and_without("--truncate", id) else {
+        return;
+    };
     assert_eq!(f.verdict, "fail", "{t}");
     assert!(f.reasons.contains("full or empty pixels"), "{f:?}");
 }
@@ -257,13 +280,10 @@ fn the_js_example_truncating_coverage_is_caught() {
 #[ignore = "needs per-primitive coverage judging (lead)"]
 fn the_js_example_swapping_coverage_between_primitives_is_caught() {
     let id = "antialias/count_standard_16";
-    let case = format!("cases/{id}.json");
-    let Some(right) = js_example("") else { return };
-    let (_, v, t) = run("js-unswapped", "js", &right, &[&case]);
-    assert_eq!(verdict_of(&v, id).verdict, "pass", "{t}");
-    let swapping = js_example("--swap").unwrap();
-    let (_, v, t) = run("js-swap", "js", &swapping, &[&case]);
-    assert_eq!(verdict_of(&v, id).verdict, "fail", "{t}");
+    let Some((f, t)) = js_with_and_without("--swap", id) else {
+        return;
+    };
+    assert_eq!(f.verdict, "fail", "{t}");
 }
 
 /// Requests that are not JSON, or lack what the program reads, get an
@@ -299,7 +319,12 @@ fn the_examples_answer_broken_requests_with_errors_and_go_on() {
             .stdout(Stdio::piped())
             .spawn()
             .unwrap();
-        child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(input.as_bytes())
+            .unwrap();
         let out = child.wait_with_output().unwrap();
         assert!(out.status.success(), "{program:?}");
         let lines: Vec<Value> = String::from_utf8(out.stdout)
