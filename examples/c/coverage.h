@@ -8,10 +8,7 @@
 #ifndef COVERAGE_H
 #define COVERAGE_H
 
-/* GCC and Clang's 128-bit integer: an edge function needs 2 x 34 bits at
- * 2^-16 pixel (coordinates up to 32768 px, samples up to 16384 px away),
- * so int64 products would overflow. */
-typedef __int128 i128;
+#include "fixed.h" /* i128 */
 
 /* A position on the caller's grid. */
 typedef struct {

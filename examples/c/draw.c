@@ -13,6 +13,10 @@
 #include "fixed.h"
 
 #define MAX_ATTRIBUTES 16
+/* An instant of the shutter's unit interval is a multiple of 2^-32 (the
+ * shutter's ends are multiples of 2^-16, u/65536 of it another 16 bits);
+ * shifts of signed values are undefined for negatives, so multiply. */
+#define INSTANT_ONE ((i128)1 << 32)
 #define MAX_SAMPLES 256
 
 typedef struct {
@@ -105,8 +109,8 @@ static point still(fx16 x, fx16 y) {
  * (SPEC.md §15.1). */
 static point moving(const vertex *v, i128 t) {
     point p;
-    p.x = ((i128)v->x.v << 32) + (i128)(v->tx.v - v->x.v) * t;
-    p.y = ((i128)v->y.v << 32) + (i128)(v->ty.v - v->y.v) * t;
+    p.x = (i128)v->x.v * INSTANT_ONE + (i128)(v->tx.v - v->x.v) * t;
+    p.y = (i128)v->y.v * INSTANT_ONE + (i128)(v->ty.v - v->y.v) * t;
     return p;
 }
 
@@ -234,7 +238,7 @@ static int covers_at(const scene *s, const vertex *v, int line, int64_t width, p
     if (line) {
         point a = moving(&v[0], t), b = moving(&v[1], t);
         a.x *= 2, a.y *= 2, b.x *= 2, b.y *= 2;
-        parallelogram(a, b, (i128)width << 32, p);
+        parallelogram(a, b, (i128)width * INSTANT_ONE, p);
     } else {
         for (i = 0; i < 3; i++) p[i] = moving(&v[i], t);
     }
@@ -245,8 +249,8 @@ static int covers_at(const scene *s, const vertex *v, int line, int64_t width, p
     return line ? convex_covers(p, 4, q, s->rule, s->tie) : triangle_covers(p, q, s->rule, s->tie, s->cull);
 }
 
-/* The time samples of a moving triangle or line: slot j = k·N + t covers
- * spatial sample k at instant u_j of its pixel (SPEC.md §12.8, §15.3).
+/* The time samples of a moving triangle or line: slot j = s·N + k covers
+ * spatial sample s at instant u_j of its pixel (SPEC.md §12.8, §15.3).
  * `corners` holds the shape's vertices, for its swept bounding box. */
 static enum outcome draw_moving(buffer *out, scene *s, const vertex *v, int line, int64_t width,
                                 const vertex *corners, int count, const char *path) {
@@ -261,7 +265,7 @@ static enum outcome draw_moving(buffer *out, scene *s, const vertex *v, int line
             for (j = 0; j < total; j++) {
                 int64_t u = (int64_t)json_number(json_at(us, (size_t)j), -1);
                 /* τ = open + (close − open)·u/2^16, in units of 2^-32. */
-                i128 t = ((i128)s->open << 16) + (i128)(s->close - s->open) * u;
+                i128 t = (i128)s->open * 65536 + (i128)(s->close - s->open) * u;
                 int covered;
                 if (u < 0 || u >= 65536)
                     return fail(s, FAILED, "$.plan.motion.times[%d][%d] is not in [0, 65536)",
@@ -283,20 +287,20 @@ static enum outcome draw_moving(buffer *out, scene *s, const vertex *v, int line
  * major axis, or its projection onto the segment, clamped to [0, 1]. */
 static void draw_still_line(buffer *out, const scene *s, const vertex v[2], int64_t width,
                             const vertex *corners, enum interpolation mode, int projected) {
-    point c[4], a = still(v[0].x, v[0].y), e = still(v[1].x, v[1].y);
+    point c[4], a = still(v[0].x, v[0].y), e = still(v[1].x, v[1].y), a2, e2;
     box b = bounds(s, corners, 4);
     double dx = (double)(e.x - a.x), dy = (double)(e.y - a.y);
     int x, y, k, first = 1, x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
-    a.x *= 2, a.y *= 2, e.x *= 2, e.y *= 2;
-    parallelogram(a, e, width, c);
+    a2.x = 2 * a.x, a2.y = 2 * a.y, e2.x = 2 * e.x, e2.y = 2 * e.y;
+    parallelogram(a2, e2, width, c);
     for (y = b.y0; y <= b.y1; y++)
         for (x = b.x0; x <= b.x1; x++)
             for (k = 0; k < s->samples; k++) {
-                point q = sample_at(s, x, y, k);
-                double t, weights[2], qx, qy;
-                qx = (double)(q.x - a.x / 2), qy = (double)(q.y - a.y / 2);
-                q.x *= 2, q.y *= 2;
-                if (!convex_covers(c, 4, q, s->rule, s->tie)) continue;
+                point q = sample_at(s, x, y, k), q2;
+                /* The sample relative to v0, on the 2^-16 grid. */
+                double qx = (double)(q.x - a.x), qy = (double)(q.y - a.y), t, weights[2];
+                q2.x = 2 * q.x, q2.y = 2 * q.y;
+                if (!convex_covers(c, 4, q2, s->rule, s->tie)) continue;
                 if (projected) t = (qx * dx + qy * dy) / (dx * dx + dy * dy);
                 else t = x_major ? qx / dx : qy / dy;
                 t = t < 0 ? 0 : t > 1 ? 1 : t;

@@ -64,17 +64,17 @@ static const char *decimal(const char *s, int bits, int64_t *out, int *exact) {
 static const char *fraction(const char *s, int bits, int64_t *out, int *exact) {
     char *end;
     unsigned long long p, q;
-    __int128 scaled, quotient, remainder;
+    i128 scaled, quotient, remainder;
     if (strlen(s) > 40) return "a fraction too long for 64-bit arithmetic";
     p = strtoull(s, &end, 10);
     if (*end != '/') return "a number spelling this program does not read";
     q = strtoull(end + 1, &end, 10);
     if (*end != '\0' || q == 0 || p > (1ull << 62) || q > (1ull << 62))
         return "a fraction too long for 64-bit arithmetic";
-    scaled = (__int128)p << bits;
+    scaled = (i128)p << bits;
     quotient = scaled / q;
     remainder = scaled % q;
-    if (quotient > ((__int128)1 << 56)) return "a coordinate too large";
+    if (quotient > ((i128)1 << 56)) return "a coordinate too large";
     *exact = remainder == 0;
     /* 2·remainder against q: below, exactly or above one half. */
     *out = round_half_even((int64_t)quotient,

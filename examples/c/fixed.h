@@ -15,6 +15,12 @@
 #define GRID_BITS 16
 #define GRID_ONE ((int64_t)1 << GRID_BITS)
 
+/* GCC and Clang's 128-bit integer (`__extension__` keeps -pedantic quiet):
+ * an edge function needs 2 x 34 bits at 2^-16 pixel (coordinates up to
+ * 32768 px, samples up to 16384 px away), so int64 products would
+ * overflow; the fractions read below need 62 + 16 bits. */
+__extension__ typedef __int128 i128;
+
 /* A 48.16 fixed-point coordinate: units of 2^-16 pixel. With |x| <= 32768
  * pixels (SPEC.md §8) the value stays below 2^31 in magnitude. */
 typedef struct {

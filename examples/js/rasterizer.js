@@ -470,8 +470,8 @@ lines.on("line", (text) => {
     return;
   }
   if (request.bye) {
-    lines.close();
-    return;
+    // Every answer is already out (synchronous writes), so leave now.
+    process.exit(0);
   }
   try {
     response = answer(request);
