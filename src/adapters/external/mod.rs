@@ -346,6 +346,8 @@ impl External {
                 worker
             }
         };
+        let moving = plan.motion.is_some();
+        worker.await_late_hello(if moving { HELLO_WAIT.min(timeout) } else { Duration::ZERO });
         let mark = worker.stderr.written();
         if let Some(Err(why)) = &worker.hello {
             let why = format!("its hello is not a hello of SPEC.md §12.7: {why}");
@@ -364,10 +366,13 @@ impl External {
                 return Err(RasterError::Unsupported(why));
             }
         }
-        if plan.motion.is_some() && worker.hello.is_none() {
+        if moving && worker.hello.is_none() {
             // Version 1 carries no moving vertices: never sent.
             pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
-            return Err(RasterError::Unsupported(motion::NOT_DECLARED.to_owned()));
+            return Err(RasterError::Unsupported(format!(
+                "{}; this process of the program wrote no hello",
+                motion::NOT_DECLARED
+            )));
         }
         if worker.speaks_v2() {
             return match self

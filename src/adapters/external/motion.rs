@@ -83,7 +83,7 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let with_time = list.iter().filter(|e| e.get("time").is_some()).count();
     if with_time > 0 && with_time != list.len() {
-        return Err("give time for every primitive or fragments for every one".into());
+        return Err("$.primitives: give time for every primitive or fragments for every one".into());
     }
     let field = if with_time > 0 { "time" } else { "fragments" };
     let m = plan.samples_per_pixel;
