@@ -22,11 +22,18 @@ to be caught:
 - interpolation: barycentric weights in floats, linear or perspective;
 - polygons: the classic PNPOLY crossing test, which is even-odd whatever
   fill the case asks for (so nonzero stars lose their centre);
+- `parallelogram` lines: the quad of SPEC.md §4.4 as two triangles, with
+  the same float `>= 0` test (its ends and sides are all inclusive);
 - antialiasing: supersampling at the sample offsets the request gives, with
-  the same inside tests, one fragment per covered sample.
+  the same inside tests, one fragment per covered sample;
+- motion blur (protocol v2 only, SPEC.md §12.8): each moving triangle or
+  parallelogram line tested at the instants the request lists, its
+  vertices placed in floats at each instant, one fragment [x, y, j] per
+  covered test; static primitives once, [x, y, sample].
 
-Anything else (other line rules, lines in antialiased scenes) is answered
-with {"unsupported": "..."}, which rastercheck reports as such.
+Anything else (other line rules, midpoint lines in antialiased or moving
+scenes) is answered with {"unsupported": "..."}, which rastercheck reports
+as such.
 Standard library only.
 """
 
@@ -166,8 +173,131 @@ def line(prim, request):
     return fragments
 
 
+def inside_triangle(points, cull, px, py):
+    """The float inside test at one sample: every edge function `>= 0` once
+    the winding is made positive, so a sample on any edge is inside."""
+    (x0, y0), (x1, y1), (x2, y2) = points
+    area = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0)
+    if area == 0 or (cull == "cw" and area > 0) or (cull == "ccw" and area < 0):
+        return False
+    w0 = ((x2 - x1) * (py - y1) - (y2 - y1) * (px - x1)) / area
+    w1 = ((x0 - x2) * (py - y2) - (y0 - y2) * (px - x2)) / area
+    w2 = ((x1 - x0) * (py - y0) - (y1 - y0) * (px - x0)) / area
+    return w0 >= 0 and w1 >= 0 and w2 >= 0
+
+
+def parallelogram_corners(a, b, half):
+    """SPEC.md §4.4's quad: the segment swept half the width both ways along
+    its minor axis (y for an x-major line); None for a zero-length line."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    if dx == 0 and dy == 0:
+        return None
+    ox, oy = (0, half) if abs(dx) >= abs(dy) else (half, 0)
+    return [(a[0] - ox, a[1] - oy), (b[0] - ox, b[1] - oy),
+            (b[0] + ox, b[1] + oy), (a[0] + ox, a[1] + oy)]
+
+
+def inside_parallelogram(corners, px, py):
+    """The quad as two triangles sharing a diagonal, each tested as above."""
+    if corners is None:
+        return False
+    a, b, c, e = corners
+    return inside_triangle((a, b, c), "none", px, py) or inside_triangle((a, c, e), "none", px, py)
+
+
+def parallelogram(prim, request):
+    """A static `parallelogram` line; values along its major axis."""
+    rules, plan = request["rules"], request["plan"]
+    width, height = request["canvas"]["width"], request["canvas"]["height"]
+    bits = rules["subpixel_bits"]
+    a, b = [(snap(v["x"], bits), snap(v["y"], bits)) for v in prim["line"]]
+    corners = parallelogram_corners(a, b, prim["width"] / 2)
+    if corners is None:
+        return []
+    major = 0 if abs(b[0] - a[0]) >= abs(b[1] - a[1]) else 1
+    left, top, right, bottom = box(corners, width, height)
+    fragments = []
+    for y in range(top, bottom):
+        for x in range(left, right):
+            for slot, dx, dy in sample_points(plan):
+                px, py = x + dx, y + dy
+                if inside_parallelogram(corners, px, py):
+                    t = min(1.0, max(0.0, ((px, py)[major] - a[major]) / (b[major] - a[major])))
+                    values = interpolate((1 - t, t), prim["line"], prim["interpolation"], plan)
+                    fragments.append(fragment(x, y, slot, values))
+    return fragments
+
+
+def box(points, width, height):
+    """The pixels (left, top, right, bottom; right and bottom excluded) of the
+    points' bounding box that lie on the canvas."""
+    left = max(0, math.floor(min(p[0] for p in points)))
+    top = max(0, math.floor(min(p[1] for p in points)))
+    right = min(width, math.floor(max(p[0] for p in points)) + 1)
+    bottom = min(height, math.floor(max(p[1] for p in points)) + 1)
+    return left, top, right, bottom
+
+
+def moving(request):
+    """A moving scene (SPEC.md §12.8), answered with time-sample masks: a
+    moving primitive's fragment [x, y, j] says it covers spatial sample
+    j // N of pixel (x, y) at the instant of slot j of that pixel's times;
+    a static primitive's [x, y, s], sample s at every instant."""
+    rules, plan = request["rules"], request["plan"]
+    motion = plan["motion"]
+    width, height = request["canvas"]["width"], request["canvas"]["height"]
+    bits, cull = rules["subpixel_bits"], rules["cull"]
+    n, times = motion["samples"], motion["times"]
+    shutter_open, shutter_close = motion["shutter"]
+    samples = [(slot or 0, dx, dy) for slot, dx, dy in sample_points(plan)]
+    out = []
+    for prim in request["primitives"]:
+        # Each vertex snapped at its two ends, then placed in floats at τ.
+        ends = []
+        for v in prim.get("triangle") or prim.get("line") or []:
+            to = v.get("to", v)
+            ends.append(((snap(v["x"], bits), snap(v["y"], bits)),
+                         (snap(to["x"], bits), snap(to["y"], bits))))
+        if "triangle" in prim:
+            def covers(points, px, py):
+                return inside_triangle(points, cull, px, py)
+        elif "line" in prim and prim["rule"] == "parallelogram":
+            half = prim["width"] / 2
+
+            def covers(points, px, py, half=half):
+                return inside_parallelogram(parallelogram_corners(points[0], points[1], half), px, py)
+        elif "line" in prim:
+            return {"unsupported": "%s lines are not drawn in moving scenes here" % prim["rule"]}
+        else:
+            return {"unsupported": "polygons are not drawn in moving scenes here"}
+        reach = prim["width"] / 2 if "line" in prim else 0
+        swept = [(p[0] + sx * reach, p[1] + sy * reach)
+                 for a, b in ends for p in (a, b) for sx in (-1, 1) for sy in (-1, 1)]
+        left, top, right, bottom = box(swept, width, height)
+        fragments = []
+        for y in range(top, bottom):
+            for x in range(left, right):
+                if not prim["moves"]:
+                    at_open = [a for a, _ in ends]
+                    fragments.extend([x, y, s] for s, dx, dy in samples if covers(at_open, x + dx, y + dy))
+                    continue
+                pixel_times = times[y * width + x]
+                for s, dx, dy in samples:
+                    for k in range(n):
+                        j = s * n + k
+                        tau = shutter_open + (shutter_close - shutter_open) * pixel_times[j] / 65536
+                        points = [((1 - tau) * a[0] + tau * b[0], (1 - tau) * a[1] + tau * b[1])
+                                  for a, b in ends]
+                        if covers(points, x + dx, y + dy):
+                            fragments.append([x, y, j])
+        out.append({"fragments": fragments})
+    return {"primitives": out}
+
+
 def rasterize(request):
     """One request in, one response out (both as Python dicts)."""
+    if "motion" in request["plan"]:
+        return moving(request)
     antialiased = "antialias" in request["plan"]
     out = []
     for prim in request["primitives"]:
@@ -175,8 +305,10 @@ def rasterize(request):
             out.append({"fragments": triangle(prim, request)})
         elif "contours" in prim:
             out.append({"fragments": polygon(prim, request)})
+        elif prim["rule"] == "parallelogram":
+            out.append({"fragments": parallelogram(prim, request)})
         elif antialiased:
-            return {"unsupported": "lines are not antialiased here"}
+            return {"unsupported": "%s lines are not antialiased here" % prim["rule"]}
         elif prim["rule"] == "midpoint":
             out.append({"fragments": line(prim, request)})
         else:
@@ -193,15 +325,15 @@ HELLO = {
     "hello": {
         "protocol": 2,
         "name": "python-example",
-        "version": "2",
+        "version": "3",
         "capabilities": {
             "primitives": ["triangles", "lines", "polygons"],
-            "line_rules": ["midpoint"],
+            "line_rules": ["midpoint", "parallelogram"],
             "interpolation": ["flat", "linear", "perspective"],
             "antialias": True,
             "depth": True,
             "attributes": True,
-            "motion": False,
+            "motion": True,
         },
         "conventions": {
             "fill_rule": "inclusive: a centre on any edge is inside",

@@ -11,7 +11,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::cli::{rastercheck_env, read_json, scratch, text};
+use common::cli::{first_verdicts, rastercheck_env, read_json, scratch, text};
 use serde_json::Value;
 
 /// Small triangle cases the example draws quickly, some passing, some
@@ -87,23 +87,7 @@ fn run(
 
 /// Each case's (name, verdict, reasons) for the one candidate.
 fn verdicts(report: &Value) -> Vec<(String, String, String)> {
-    report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            let r = &c["results"][0];
-            let reasons: Vec<&str> = r["reasons"]
-                .as_array()
-                .map(|r| r.iter().filter_map(Value::as_str).collect())
-                .unwrap_or_default();
-            (
-                c["id"].as_str().unwrap().to_owned(),
-                r["verdict"].as_str().unwrap_or("").to_owned(),
-                reasons.join("; "),
-            )
-        })
-        .collect()
+    first_verdicts(report)
 }
 
 /// Runs the program clean and with `fault` on the case `CASES[at]`; every

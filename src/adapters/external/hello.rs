@@ -29,6 +29,9 @@ pub struct Hello {
     exact_coordinates: Option<bool>,
     depth: Option<bool>,
     attributes: Option<bool>,
+    /// Moving scenes are sent (SPEC.md §12.8) only when this is `Some(true)`
+    /// in a version 2 hello.
+    motion: Option<bool>,
     /// Fragments carry no depth and no attributes (SPEC.md §12.9).
     coverage_only: Option<bool>,
     /// Coverage fractions are multiples of 1/(2^bits − 1) (§12.9).
@@ -190,10 +193,7 @@ impl Hello {
                 "$.hello.capabilities.coverage_bits must be from 1 to {MAX_COVERAGE_BITS}"
             ));
         }
-        if flag("motion")? == Some(true) {
-            // Accepted, but the protocol does not carry moving vertices
-            // yet: moving scenes stay unsupported (the adapter's capabilities).
-        }
+        out.motion = flag("motion")?;
         Ok(out)
     }
 
@@ -295,6 +295,17 @@ impl Hello {
                     declared(&self.sample_patterns)
                 ));
             }
+        }
+        if plan.motion.is_some() && (self.protocol < 2 || self.motion != Some(true)) {
+            let said = match self.motion {
+                Some(flag) => format!("its hello's motion: {flag}"),
+                None => "its hello declares no motion".to_owned(),
+            };
+            return Some(format!(
+                "{who} speaks version {} ({said}); {}",
+                self.protocol,
+                super::motion::NOT_DECLARED
+            ));
         }
         if plan.depth && self.depth == Some(false) {
             return Some(format!(

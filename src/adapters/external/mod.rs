@@ -39,9 +39,12 @@
 //! process and its exchanges (the stream kept in step by ids);
 //! `process.rs` waiting for, killing and reading a process (its group, its
 //! bounded stdout, its stderr's tail); `protocol.rs` the messages: the
-//! request, and reading a response into a frame; `hello.rs` the hello.
+//! request, and reading a response into a frame; `motion.rs` what a moving
+//! scene's messages add (SPEC.md §12.8: sent only to a program whose
+//! version 2 hello declares motion); `hello.rs` the hello.
 
 mod hello;
+mod motion;
 mod process;
 mod protocol;
 mod worker;
@@ -348,6 +351,8 @@ impl External {
                 worker
             }
         };
+        let moving = plan.motion.is_some();
+        worker.await_late_hello(if moving { HELLO_WAIT.min(timeout) } else { Duration::ZERO });
         let mark = worker.stderr.written();
         if let Some(Err(why)) = &worker.hello {
             let why = format!("its hello is not a hello of SPEC.md §12.7: {why}");
@@ -366,6 +371,14 @@ impl External {
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
                 return Err(RasterError::Unsupported(why));
             }
+        }
+        if moving && worker.hello.is_none() {
+            // Version 1 carries no moving vertices: never sent.
+            pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+            return Err(RasterError::Unsupported(format!(
+                "{}; this process of the program wrote no hello",
+                motion::NOT_DECLARED
+            )));
         }
         if worker.speaks_v2() {
             return match self
@@ -527,14 +540,12 @@ impl Rasterizer for External {
         &self.name
     }
 
-    /// Everything: the program says what it does not do, case by case.
+    /// Everything: the program says what it does not do, case by case
+    /// (`unsupported`, or its hello). Moving scenes go only to a program
+    /// whose version 2 hello declares motion (SPEC.md §12.8); the adapter
+    /// refuses them itself, since only the hello says.
     fn capabilities(&self) -> Capabilities {
-        // The program says itself what it cannot do (`unsupported`).
-        // The protocol does not carry moving vertices yet (SPEC.md §12).
-        Capabilities {
-            motion_blur: false,
-            ..Capabilities::everything()
-        }
+        Capabilities::everything()
     }
 
     fn fixed_fill_rule(&self) -> Option<FillRule> {
@@ -560,6 +571,10 @@ impl Rasterizer for External {
             timeout = timeout.min(left);
         }
         let response = match &self.pool {
+            // One-shot programs speak version 1: no moving vertices.
+            None if plan.motion.is_some() => {
+                return Err(RasterError::Unsupported(motion::NOT_DECLARED.to_owned()))
+            }
             None => {
                 let request =
                     serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");

@@ -2,8 +2,9 @@
 //! out as, and the response that comes back, read into a [`Frame`]: the
 //! covered pixels of each primitive composed in primitive order, summed
 //! antialiased coverage, or an EXR file in the golden files' layout
-//! (`frame::exr`). Starting, feeding and reaping the processes that speak
-//! it is `mod.rs`'s.
+//! (`frame::exr`); a moving scene's extra fields and its answers are
+//! `motion.rs`'s (SPEC.md §12.8). Starting, feeding and reaping the
+//! processes that speak it is `mod.rs`'s.
 
 use std::path::Path;
 
@@ -14,7 +15,7 @@ use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
 
-use super::{Answers, PROTOCOL, PROTOCOL_V2};
+use super::{motion, Answers, PROTOCOL, PROTOCOL_V2};
 
 /// A number twice: its nearest f64, and (in the sibling `exact` object) its
 /// exact spelling.
@@ -26,8 +27,15 @@ fn exact(n: &Number) -> Value {
     Value::String(n.to_exact_string())
 }
 
+/// A number as a request gives it: (its nearest f64, its exact spelling).
+pub(super) fn float_exact(n: &Number) -> (Value, Value) {
+    (float(n), exact(n))
+}
+
+/// A vertex; a moving one (SPEC.md §12.8) also carries `to`, its position
+/// at shutter close, while `x` and `y` are its `from`.
 fn vertex(v: &Vertex) -> Value {
-    json!({
+    let mut out = json!({
         "x": float(&v.x),
         "y": float(&v.y),
         "z": float(&v.z),
@@ -40,12 +48,18 @@ fn vertex(v: &Vertex) -> Value {
             "w": exact(&v.w),
             "attributes": v.attributes.iter().map(exact).collect::<Vec<_>>(),
         }
-    })
+    });
+    if let Some((to, exact_to)) = motion::vertex_to(v) {
+        out["to"] = to;
+        out["exact"]["to"] = exact_to;
+    }
+    out
 }
 
-/// The request for one scene (SPEC.md §12.2).
+/// The request for one scene (SPEC.md §12.1); a moving scene's also says
+/// which primitives move and carries `plan.motion` (§12.8).
 pub fn request(scene: &Scene, plan: &Plan) -> Value {
-    let primitives: Vec<Value> = scene
+    let mut primitives: Vec<Value> = scene
         .primitives
         .iter()
         .map(|p| match p {
@@ -77,6 +91,13 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
             }),
         })
         .collect();
+    let mut plan_out = plan_json(plan);
+    if let Some(motion) = &plan.motion {
+        for (primitive, &moves) in primitives.iter_mut().zip(&motion.moving) {
+            primitive["moves"] = json!(moves);
+        }
+        plan_out["motion"] = motion::plan_motion(scene, plan, motion);
+    }
     json!({
         "protocol": PROTOCOL,
         "case": scene.name,
@@ -86,7 +107,7 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
             "fill_rule": scene.rules.fill_rule.name(),
             "cull": scene.rules.cull.name(),
         },
-        "plan": plan_json(plan),
+        "plan": plan_out,
         "primitives": primitives,
     })
 }
@@ -185,6 +206,12 @@ pub fn frame_from_answer(
             let path = path
                 .as_str()
                 .ok_or_else(|| bad("$.exr must be a string (a file path)".to_owned()))?;
+            if plan.motion.is_some() {
+                return Err(bad(
+                    "an exr response holds no time coverage; answer moving scenes with fragments or time (SPEC §12.8)"
+                        .to_owned(),
+                ));
+            }
             if plan.antialias.is_some() {
                 return Err(bad(
                     "an exr response holds one sample per pixel; answer antialiased scenes with fragments or coverage"
@@ -227,6 +254,9 @@ fn compose(
             list.len(),
             scene.primitives.len()
         ));
+    }
+    if plan.motion.is_some() {
+        return motion::compose(list, scene, plan);
     }
     let with_coverage = list.iter().filter(|e| e.get("coverage").is_some()).count();
     if with_coverage > 0 {
@@ -331,7 +361,7 @@ fn compose(
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
 
 /// A whole number in [0, limit), as JSON gives it.
-fn whole_below(v: &Value, limit: u32) -> Option<u32> {
+pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
     v.as_f64()
         .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
         .map(|c| c as u32)

@@ -35,6 +35,9 @@ pub(super) struct Worker {
     pub(super) pending: Option<Result<String, Output>>,
     /// Whether any line was read from it yet.
     pub(super) heard: bool,
+    /// Whether a moving case has waited for its hello once more
+    /// ([`Worker::await_late_hello`]).
+    pub(super) rewaited: bool,
     /// v2: ids of requests that timed out, whose late answers are dropped.
     pub(super) owed: VecDeque<String>,
     /// v2: timeouts since its last answer.
@@ -118,6 +121,7 @@ impl Worker {
             hello: None,
             pending: None,
             heard: false,
+            rewaited: false,
             owed: VecDeque::new(),
             timeouts_in_a_row: 0,
         }
@@ -145,6 +149,22 @@ impl Worker {
                 Err(_) => return,
             }
         }
+    }
+
+    /// A hello that came after the first wait, before the next request: read
+    /// now, so that it holds for that request (SPEC.md §12.7). A process
+    /// that has written nothing yet is waited for up to `wait` more, once
+    /// in its life (a moving case goes only to a program whose hello
+    /// declares motion, §12.8: a program slow to start would otherwise lose
+    /// it as a version 1 one would); otherwise only what it has written is
+    /// looked at.
+    pub(super) fn await_late_hello(&mut self, wait: Duration) {
+        if self.heard || self.pending.is_some() {
+            return;
+        }
+        let wait = if self.rewaited { Duration::ZERO } else { wait };
+        self.rewaited |= !wait.is_zero();
+        self.await_hello(Instant::now() + wait);
     }
 
     /// Reads `line` as the hello if it is the first line and one.
