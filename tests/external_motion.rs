@@ -272,10 +272,7 @@ fn a_malformed_motion_answer_is_an_error_naming_its_path_for_its_case_only() {
         "cases/motion/rotate_triangle_stratified16.json",
     ];
     for (mode, says) in [
-        (
-            "bad-slot",
-            "$.primitives[1].fragments[",
-        ),
+        ("bad-slot", "$.primitives[1].fragments["),
         ("bad-time", "is not a time coverage in [0, 1]"),
         (
             "mixed",
@@ -288,13 +285,21 @@ fn a_malformed_motion_answer_is_an_error_naming_its_path_for_its_case_only() {
         assert!(why.contains(says), "{mode}: {why}");
         assert_eq!(with(&verdicts, "pass").len(), 2, "{mode}: {verdicts:?}");
     }
-    let verdicts = run("bad-slot-why", &client("bad-slot", Some(victim)), &cases[..1]);
+    let verdicts = run(
+        "bad-slot-why",
+        &client("bad-slot", Some(victim)),
+        &cases[..1],
+    );
     let why = &verdicts[&format!("motion/{victim}")].1;
     assert!(
         why.contains("[2]: 16 is not a time slot in [0, 16)"),
         "{why}"
     );
-    let verdicts = run("bad-time-why", &client("bad-time", Some(victim)), &cases[..1]);
+    let verdicts = run(
+        "bad-time-why",
+        &client("bad-time", Some(victim)),
+        &cases[..1],
+    );
     assert!(verdicts[&format!("motion/{victim}")]
         .1
         .contains("$.primitives[0].time["));

@@ -291,7 +291,7 @@ fn the_hello_names_the_program_in_the_report() {
     let (_, report, t, _) = run("declared", "toy=", "", &CASES[..2]);
     let info = &report["rasterizers"][0];
     assert_eq!(info["name"], "toy", "{t}");
-    assert_eq!(info["declared"], "python-example 2", "{info}");
+    assert_eq!(info["declared"], "python-example 3", "{info}");
     let (_, report, t, _) = run("declared-v1", "toy=", "--v1", &CASES[..2]);
     let info = &report["rasterizers"][0];
     assert_eq!(info["name"], "toy", "{t}");

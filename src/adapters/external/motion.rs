@@ -54,9 +54,7 @@ pub(super) fn plan_motion(scene: &Scene, plan: &Plan, motion: &MotionPlan) -> Va
         .shutter
         .map(|end| float_exact(&Number::ratio(i64::from(end), i64::from(TIME_ONE))));
     let pixels = u64::from(scene.canvas.width) * u64::from(scene.canvas.height);
-    let times: Vec<Vec<u32>> = (0..pixels)
-        .map(|p| blur.pixel_times(p, spatial))
-        .collect();
+    let times: Vec<Vec<u32>> = (0..pixels).map(|p| blur.pixel_times(p, spatial)).collect();
     json!({
         "shutter": [open.0, close.0],
         "samples": blur.samples,
@@ -83,7 +81,9 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let with_time = list.iter().filter(|e| e.get("time").is_some()).count();
     if with_time > 0 && with_time != list.len() {
-        return Err("$.primitives: give time for every primitive or fragments for every one".into());
+        return Err(
+            "$.primitives: give time for every primitive or fragments for every one".into(),
+        );
     }
     let field = if with_time > 0 { "time" } else { "fragments" };
     let m = plan.samples_per_pixel;
@@ -131,7 +131,11 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
                     .as_f64()
                     .filter(|c| (0.0..=1.0).contains(c))
                     .ok_or_else(|| {
-                        format!("{}[2]: {} is not a time coverage in [0, 1]", at(), triple[2])
+                        format!(
+                            "{}[2]: {} is not a time coverage in [0, 1]",
+                            at(),
+                            triple[2]
+                        )
                     })?;
                 time[pixel] += c;
             } else if moves {
