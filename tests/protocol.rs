@@ -11,7 +11,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::cli::{rastercheck_env, read_json, scratch, text};
+use common::cli::{rastercheck_env, read_json, scratch, text, verdicts};
 use serde_json::Value;
 
 /// Small triangle cases the example draws quickly, some passing, some
@@ -83,27 +83,6 @@ fn run(
     assert_eq!(report["complete"], true, "{t}");
     let logged = std::fs::read_to_string(&log).unwrap_or_default();
     (out.status.code(), report, t, logged)
-}
-
-/// Each case's (name, verdict, reasons) for the one candidate.
-fn verdicts(report: &Value) -> Vec<(String, String, String)> {
-    report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            let r = &c["results"][0];
-            let reasons: Vec<&str> = r["reasons"]
-                .as_array()
-                .map(|r| r.iter().filter_map(Value::as_str).collect())
-                .unwrap_or_default();
-            (
-                c["id"].as_str().unwrap().to_owned(),
-                r["verdict"].as_str().unwrap_or("").to_owned(),
-                reasons.join("; "),
-            )
-        })
-        .collect()
 }
 
 /// Runs the program clean and with `fault` on the case `CASES[at]`; every

@@ -149,6 +149,28 @@ pub fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
+/// Each case's (id, verdict, reasons joined by "; ") for the report's
+/// first candidate, in the report's order.
+pub fn verdicts(report: &serde_json::Value) -> Vec<(String, String, String)> {
+    report["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let r = &c["results"][0];
+            let reasons: Vec<&str> = r["reasons"]
+                .as_array()
+                .map(|r| r.iter().filter_map(serde_json::Value::as_str).collect())
+                .unwrap_or_default();
+            (
+                c["id"].as_str().unwrap().to_owned(),
+                r["verdict"].as_str().unwrap_or("").to_owned(),
+                reasons.join("; "),
+            )
+        })
+        .collect()
+}
+
 /// The case ids of `dir/report.json`, in its order.
 pub fn report_ids(dir: &Path) -> Vec<String> {
     read_json(&dir.join("report.json"))["cases"]

@@ -24,7 +24,7 @@ use crate::plan::{MotionPlan, Plan};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{Number, Scene, Vertex};
 
-use super::protocol::{float_exact, whole_below};
+use super::protocol::{float_exact, pixel_of, whole_below};
 
 /// Why a moving scene is not sent to a program that has not declared
 /// motion in a version 2 hello: one-shot programs, version 1 programs.
@@ -114,17 +114,7 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
                     }
                 )
             })?;
-            let (Some(x), Some(y)) = (
-                whole_below(&triple[0], width),
-                whole_below(&triple[1], height),
-            ) else {
-                return Err(format!(
-                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
-                    at(),
-                    triple[0],
-                    triple[1]
-                ));
-            };
+            let (x, y) = pixel_of(triple, (width, height), &at)?;
             let pixel = y as usize * width as usize + x as usize;
             if field == "time" {
                 let c = triple[2]
