@@ -344,23 +344,29 @@ HELLO = {
 }
 
 
+def serve(hello, answer):
+    """Persistent mode: `hello` first (None: version 1, no hello), then one
+    line of `answer(request)` per request line until bye, echoing each
+    request's id (version 2)."""
+    if hello is not None:
+        print(json.dumps(hello), flush=True)
+    for text in sys.stdin:
+        request = json.loads(text)
+        if request.get("bye"):
+            break
+        response = answer(request)
+        if hello is not None and "id" in request:
+            response["id"] = request["id"]
+        print(json.dumps(response), flush=True)
+
+
 def main():
     args = sys.argv[1:]
     if "--persistent" in args:
         # JSON Lines: one request per line, one response per line, until bye.
         # v2 (the default): a hello first, and every answer echoes the
         # request's id; --v1 speaks version 1 (no hello, no ids).
-        v2 = "--v1" not in args
-        if v2:
-            print(json.dumps(HELLO), flush=True)
-        for text in sys.stdin:
-            request = json.loads(text)
-            if request.get("bye"):
-                break
-            response = rasterize(request)
-            if v2 and "id" in request:
-                response["id"] = request["id"]
-            print(json.dumps(response), flush=True)
+        serve(None if "--v1" in args else HELLO, rasterize)
     else:
         print(json.dumps(rasterize(json.load(sys.stdin))))
 

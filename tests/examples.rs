@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use common::adapters::skipped;
-use common::cli::{first_verdicts, rastercheck_env, read_json, scratch, text};
+use common::cli::{verdicts, rastercheck_env, read_json, scratch, text};
 use serde_json::Value;
 
 const FAMILIES: [&str; 4] = [
@@ -99,7 +99,7 @@ fn run(
     assert!(!t.contains("panicked"), "{t}");
     let report = read_json(&report.join("report.json"));
     assert_eq!(report["complete"], true, "{t}");
-    let verdicts = first_verdicts(&report)
+    let verdicts = verdicts(&report)
         .into_iter()
         .map(|(id, verdict, reasons)| Verdict {
             id,

@@ -15,7 +15,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-use common::cli::{rastercheck_env, read_json, scratch, text};
+use common::cli::{rastercheck_env, read_json, scratch, text, verdicts};
 use rastercheck::adapters::external;
 use rastercheck::plan::Plan;
 use rastercheck::production::antialias::Sampling;
@@ -23,7 +23,7 @@ use rastercheck::production::motion::Sampler;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{parse_case, Limits};
-use serde_json::{json, Value};
+use serde_json::json;
 
 const EXAMPLE: &str = "examples/python_rasterizer.py";
 
@@ -99,14 +99,7 @@ def answer(request):
 hello = copy.deepcopy(example.HELLO)
 if mode == "undeclared":
     del hello["hello"]["capabilities"]["motion"]
-print(json.dumps(hello), flush=True)
-for line in sys.stdin:
-    request = json.loads(line)
-    if request.get("bye"):
-        break
-    response = answer(request)
-    response["id"] = request["id"]
-    print(json.dumps(response), flush=True)
+example.serve(hello, answer)
 "#;
 
 static RUNS: Mutex<()> = Mutex::new(());
@@ -132,24 +125,9 @@ fn run(tag: &str, rasterizer: &str, cases: &[&str]) -> BTreeMap<String, (String,
     assert!(matches!(out.status.code(), Some(0 | 1)), "{t}");
     let report = read_json(&report.join("report.json"));
     assert_eq!(report["complete"], true, "{t}");
-    report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            let r = &c["results"][0];
-            let reasons: Vec<&str> = r["reasons"]
-                .as_array()
-                .map(|r| r.iter().filter_map(Value::as_str).collect())
-                .unwrap_or_default();
-            (
-                c["id"].as_str().unwrap().to_owned(),
-                (
-                    r["verdict"].as_str().unwrap_or("").to_owned(),
-                    reasons.join("; "),
-                ),
-            )
-        })
+    verdicts(&report)
+        .into_iter()
+        .map(|(id, verdict, why)| (id, (verdict, why)))
         .collect()
 }
 
@@ -272,10 +250,7 @@ fn a_malformed_motion_answer_is_an_error_naming_its_path_for_its_case_only() {
         "cases/motion/rotate_triangle_stratified16.json",
     ];
     for (mode, says) in [
-        (
-            "bad-slot",
-            "$.primitives[1].fragments[",
-        ),
+        ("bad-slot", "$.primitives[1].fragments["),
         ("bad-time", "is not a time coverage in [0, 1]"),
         (
             "mixed",
@@ -288,13 +263,21 @@ fn a_malformed_motion_answer_is_an_error_naming_its_path_for_its_case_only() {
         assert!(why.contains(says), "{mode}: {why}");
         assert_eq!(with(&verdicts, "pass").len(), 2, "{mode}: {verdicts:?}");
     }
-    let verdicts = run("bad-slot-why", &client("bad-slot", Some(victim)), &cases[..1]);
+    let verdicts = run(
+        "bad-slot-why",
+        &client("bad-slot", Some(victim)),
+        &cases[..1],
+    );
     let why = &verdicts[&format!("motion/{victim}")].1;
     assert!(
         why.contains("[2]: 16 is not a time slot in [0, 16)"),
         "{why}"
     );
-    let verdicts = run("bad-time-why", &client("bad-time", Some(victim)), &cases[..1]);
+    let verdicts = run(
+        "bad-time-why",
+        &client("bad-time", Some(victim)),
+        &cases[..1],
+    );
     assert!(verdicts[&format!("motion/{victim}")]
         .1
         .contains("$.primitives[0].time["));

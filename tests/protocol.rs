@@ -11,7 +11,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::cli::{first_verdicts, rastercheck_env, read_json, scratch, text};
+use common::cli::{rastercheck_env, read_json, scratch, text, verdicts};
 use serde_json::Value;
 
 /// Small triangle cases the example draws quickly, some passing, some
@@ -83,11 +83,6 @@ fn run(
     assert_eq!(report["complete"], true, "{t}");
     let logged = std::fs::read_to_string(&log).unwrap_or_default();
     (out.status.code(), report, t, logged)
-}
-
-/// Each case's (name, verdict, reasons) for the one candidate.
-fn verdicts(report: &Value) -> Vec<(String, String, String)> {
-    first_verdicts(report)
 }
 
 /// Runs the program clean and with `fault` on the case `CASES[at]`; every
@@ -275,7 +270,7 @@ fn the_hello_names_the_program_in_the_report() {
     let (_, report, t, _) = run("declared", "toy=", "", &CASES[..2]);
     let info = &report["rasterizers"][0];
     assert_eq!(info["name"], "toy", "{t}");
-    assert_eq!(info["declared"], "python-example 2", "{info}");
+    assert_eq!(info["declared"], "python-example 3", "{info}");
     let (_, report, t, _) = run("declared-v1", "toy=", "--v1", &CASES[..2]);
     let info = &report["rasterizers"][0];
     assert_eq!(info["name"], "toy", "{t}");

@@ -149,10 +149,9 @@ pub fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
-/// Each case of a `report.json` with its first result: (case id, verdict,
-/// reasons joined by "; ").
-pub fn first_verdicts(report: &serde_json::Value) -> Vec<(String, String, String)> {
-    use serde_json::Value;
+/// Each case's (id, verdict, reasons joined by "; ") for the report's
+/// first candidate, in the report's order.
+pub fn verdicts(report: &serde_json::Value) -> Vec<(String, String, String)> {
     report["cases"]
         .as_array()
         .unwrap()
@@ -161,7 +160,7 @@ pub fn first_verdicts(report: &serde_json::Value) -> Vec<(String, String, String
             let r = &c["results"][0];
             let reasons: Vec<&str> = r["reasons"]
                 .as_array()
-                .map(|r| r.iter().filter_map(Value::as_str).collect())
+                .map(|r| r.iter().filter_map(serde_json::Value::as_str).collect())
                 .unwrap_or_default();
             (
                 c["id"].as_str().unwrap().to_owned(),

@@ -352,7 +352,11 @@ impl External {
             }
         };
         let moving = plan.motion.is_some();
-        worker.await_late_hello(if moving { HELLO_WAIT.min(timeout) } else { Duration::ZERO });
+        worker.await_late_hello(if moving {
+            HELLO_WAIT.min(timeout)
+        } else {
+            Duration::ZERO
+        });
         let mark = worker.stderr.written();
         if let Some(Err(why)) = &worker.hello {
             let why = format!("its hello is not a hello of SPEC.md §12.7: {why}");

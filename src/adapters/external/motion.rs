@@ -24,7 +24,7 @@ use crate::plan::{MotionPlan, Plan};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{Number, Scene, Vertex};
 
-use super::protocol::{float_exact, whole_below};
+use super::protocol::{float_exact, pixel_of, whole_below};
 
 /// Why a moving scene is not sent to a program that has not declared
 /// motion in a version 2 hello: one-shot programs, version 1 programs.
@@ -54,9 +54,7 @@ pub(super) fn plan_motion(scene: &Scene, plan: &Plan, motion: &MotionPlan) -> Va
         .shutter
         .map(|end| float_exact(&Number::ratio(i64::from(end), i64::from(TIME_ONE))));
     let pixels = u64::from(scene.canvas.width) * u64::from(scene.canvas.height);
-    let times: Vec<Vec<u32>> = (0..pixels)
-        .map(|p| blur.pixel_times(p, spatial))
-        .collect();
+    let times: Vec<Vec<u32>> = (0..pixels).map(|p| blur.pixel_times(p, spatial)).collect();
     json!({
         "shutter": [open.0, close.0],
         "samples": blur.samples,
@@ -83,7 +81,9 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let with_time = list.iter().filter(|e| e.get("time").is_some()).count();
     if with_time > 0 && with_time != list.len() {
-        return Err("$.primitives: give time for every primitive or fragments for every one".into());
+        return Err(
+            "$.primitives: give time for every primitive or fragments for every one".into(),
+        );
     }
     let field = if with_time > 0 { "time" } else { "fragments" };
     let m = plan.samples_per_pixel;
@@ -114,24 +114,18 @@ pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Fram
                     }
                 )
             })?;
-            let (Some(x), Some(y)) = (
-                whole_below(&triple[0], width),
-                whole_below(&triple[1], height),
-            ) else {
-                return Err(format!(
-                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
-                    at(),
-                    triple[0],
-                    triple[1]
-                ));
-            };
+            let (x, y) = pixel_of(triple, (width, height), &at)?;
             let pixel = y as usize * width as usize + x as usize;
             if field == "time" {
                 let c = triple[2]
                     .as_f64()
                     .filter(|c| (0.0..=1.0).contains(c))
                     .ok_or_else(|| {
-                        format!("{}[2]: {} is not a time coverage in [0, 1]", at(), triple[2])
+                        format!(
+                            "{}[2]: {} is not a time coverage in [0, 1]",
+                            at(),
+                            triple[2]
+                        )
                     })?;
                 time[pixel] += c;
             } else if moves {

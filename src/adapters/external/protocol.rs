@@ -315,17 +315,7 @@ fn compose(
                         }
                     )
                 })?;
-            let (Some(x), Some(y)) = (
-                whole_below(&numbers[0], width),
-                whole_below(&numbers[1], height),
-            ) else {
-                return Err(format!(
-                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
-                    at(),
-                    numbers[0],
-                    numbers[1]
-                ));
-            };
+            let (x, y) = pixel_of(numbers, (width, height), &at)?;
             let slot = match samples {
                 Some(n) => whole_below(&numbers[2], n).ok_or_else(|| {
                     format!(
@@ -356,9 +346,29 @@ fn compose(
     Ok(frame)
 }
 
+<<<<<<< HEAD
 /// The method a coverage-only frame of a scene with values names: what the
 /// reports show beside its verdict.
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
+=======
+/// The pixel (x, y) an answer's item starts with, or why it is none of
+/// the canvas (`at` names the item's JSON path).
+pub(super) fn pixel_of(
+    item: &[Value],
+    (width, height): (u32, u32),
+    at: &dyn Fn() -> String,
+) -> Result<(u32, u32), String> {
+    match (whole_below(&item[0], width), whole_below(&item[1], height)) {
+        (Some(x), Some(y)) => Ok((x, y)),
+        _ => Err(format!(
+            "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+            at(),
+            item[0],
+            item[1]
+        )),
+    }
+}
+>>>>>>> motion
 
 /// A whole number in [0, limit), as JSON gives it.
 pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
@@ -389,17 +399,7 @@ fn sum_coverage(list: &[Value], width: u32, height: u32, step: f64) -> Result<Fr
                 .as_array()
                 .filter(|a| a.len() == 3)
                 .ok_or_else(|| format!("{} must be [x, y, fraction]", at()))?;
-            let (Some(x), Some(y)) = (
-                whole_below(&triple[0], width),
-                whole_below(&triple[1], height),
-            ) else {
-                return Err(format!(
-                    "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
-                    at(),
-                    triple[0],
-                    triple[1]
-                ));
-            };
+            let (x, y) = pixel_of(triple, (width, height), &at)?;
             let c = triple[2]
                 .as_f64()
                 .filter(|c| (0.0..=1.0).contains(c))
