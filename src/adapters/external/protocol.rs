@@ -346,11 +346,10 @@ fn compose(
     Ok(frame)
 }
 
-<<<<<<< HEAD
 /// The method a coverage-only frame of a scene with values names: what the
 /// reports show beside its verdict.
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
-=======
+
 /// The pixel (x, y) an answer's item starts with, or why it is none of
 /// the canvas (`at` names the item's JSON path).
 pub(super) fn pixel_of(
@@ -368,7 +367,6 @@ pub(super) fn pixel_of(
         )),
     }
 }
->>>>>>> motion
 
 /// A whole number in [0, limit), as JSON gives it.
 pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
