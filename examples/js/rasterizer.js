@@ -25,8 +25,10 @@
 // each spatial sample and instant the request gives, in doubles.
 //
 // It computes no depth and no attributes: its hello declares
-// coverage_only, and depth and attributes false, so cases that ask for
-// values are reported unsupported. Of the lines it draws only the
+// coverage_only (SPEC.md §12.9), so cases that ask for values are judged
+// on coverage alone, and say so. Its coverage is declared as 8-bit
+// (coverage_bits), so each primitive is judged within 1/255 of its exact
+// area, and a pixel that two primitives share may sum to 256/255. Of the lines it draws only the
 // parallelogram (SPEC.md §4.4), a convex quadrilateral like the rest.
 //
 // Flags plant bugs, for the tests that rastercheck catches them:
@@ -446,10 +448,6 @@ const HELLO = {
       antialias: true,
       coverage_only: true,
       coverage_bits: COVERAGE_BITS,
-      // No values: declared so that today's rastercheck, which does not
-      // yet read coverage_only, refuses cases that ask for them.
-      depth: false,
-      attributes: false,
       motion: MOTION,
     },
     conventions: { coverage: "area, 8-bit", arithmetic: "doubles" },

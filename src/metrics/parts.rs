@@ -14,7 +14,8 @@
 //!   and where it is 0 exactly 0 (piglit's rule, primitive by primitive);
 //! - elsewhere |fraction − area| must be at most the declared quantization
 //!   step (a k-bit method claims the exact area as a multiple of
-//!   1/(2^k − 1); one step allows rounding either way), or, where no
+//!   1/(2^k − 1); one step allows rounding either way, and 10^-9 more the
+//!   program's float arithmetic), or, where no
 //!   quantization is declared, at most the case's `max_coverage_error`;
 //! - the sum is then held to piglit's rule within the sum of the steps of
 //!   the primitives that partly cover the pixel ([`PartCheck::slack`]): the
@@ -29,6 +30,10 @@ use serde::Serialize;
 
 use crate::frame::Parts;
 use crate::reference::area::to_f64_nearest;
+
+/// What a declared step allows beyond itself: the program's own rounding
+/// of an area it computes in floats.
+pub const FLOAT_SLACK: f64 = 1e-9;
 
 /// What the per-primitive comparison found; `report.json`'s
 /// `metrics.antialias.primitives` (SPEC.md §10.1).
@@ -76,8 +81,10 @@ pub fn measure(
     pixels: usize,
     max_coverage_error: Option<f64>,
 ) -> PartCheck {
+    // One step, and 10^-9 for the program's own float arithmetic (an area
+    // a hair below k/255 computed in doubles, truncated).
     let allowed = if parts.step > 0.0 {
-        Some(parts.step)
+        Some(parts.step + FLOAT_SLACK)
     } else {
         max_coverage_error
     };

@@ -187,7 +187,9 @@ pub fn square_of(rule: &str, primitives: &str) -> Scene {
 }
 
 /// The case `pair` makes passes under the driver's own rule `own`; under
-/// `other`, 8 tie samples change hands and none is missing or extra.
+/// `other` it is judged under `own` (SPEC.md §3.1) and passes, while held
+/// to `other`, 8 tie samples change hands and none is missing or extra:
+/// the driver does follow `own`.
 pub fn assert_eight_ties_change_hands(
     candidate: &dyn Rasterizer,
     pair: impl Fn(&str) -> Scene,
@@ -196,7 +198,11 @@ pub fn assert_eight_ties_change_hands(
 ) {
     let (_, r) = run(&pair(own), candidate);
     assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.judged_rule, None);
     let (_, r) = run(&pair(other), candidate);
+    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.judged_rule.map(|r| r.name()), Some(own));
+    let (_, r) = super::run_as_stated(&pair(other), candidate);
     let m = r.metrics.as_ref().unwrap();
     assert_eq!(
         (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),

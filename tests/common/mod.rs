@@ -30,6 +30,37 @@ pub fn inline(json: &str) -> Scene {
     parse_case(json, "inline.json", &Limits::default()).expect("valid inline case")
 }
 
+/// A rasterizer judged under each case's own fill rule, as if it followed
+/// it: its fixed rule ([`Rasterizer::fixed_fill_rule`]) is not declared.
+/// What its frames show against the rule a case states: the evidence for
+/// the rule it declares.
+pub struct AsStated<'a>(pub &'a dyn Rasterizer);
+
+impl Rasterizer for AsStated<'_> {
+    fn name(&self) -> &str {
+        self.0.name()
+    }
+    fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
+        self.0.capabilities()
+    }
+    fn rasterize(
+        &self,
+        scene: &Scene,
+        plan: &rastercheck::Plan,
+    ) -> Result<Frame, rastercheck::RasterError> {
+        self.0.rasterize(scene, plan)
+    }
+}
+
+/// [`run`], judging the frame under the case's own fill rule whatever
+/// rule the candidate follows ([`AsStated`]).
+pub fn run_as_stated(
+    scene: &Scene,
+    candidate: &dyn Rasterizer,
+) -> (suite::ReferenceRun, CandidateRun) {
+    run(scene, &AsStated(candidate))
+}
+
 /// The reference's run and the candidate's, on one scene.
 pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> (suite::ReferenceRun, CandidateRun) {
     let reference = suite::run_reference(scene);

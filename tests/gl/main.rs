@@ -109,7 +109,12 @@ fn its_tie_rule_is_bottom_left() {
         "{}",
         report("fill_rule_bottom_left", &reference, &bottom_left)
     );
-    let (reference, top_left) = run(&case("triangles/fill_rule_top_left"));
+    // Judged under its own rule (SPEC.md §3.1), it passes; held to the
+    // case's, it fails.
+    let (_, own) = run(&case("triangles/fill_rule_top_left"));
+    assert_eq!(own.verdict, Verdict::Pass, "{}", suite::describe(&own));
+    assert_eq!(own.judged_rule, Some(FillRule::BottomLeft));
+    let (reference, top_left) = common::run_as_stated(&case("triangles/fill_rule_top_left"), &Gl);
     eprintln!("{}", report("fill_rule_top_left", &reference, &top_left));
     assert!(matches!(top_left.verdict, Verdict::Fail(_)));
     let m = top_left.metrics.as_ref().unwrap();
@@ -285,7 +290,8 @@ fn polygons_by_stencil_then_cover_match_the_reference() {
             failures.push(line.to_owned());
         }
     });
-    let (reference, top_left) = run(&case("polygons/star_on_centres_top_left"));
+    let (reference, top_left) =
+        common::run_as_stated(&case("polygons/star_on_centres_top_left"), &Gl);
     eprintln!(
         "{}",
         report("star_on_centres_top_left", &reference, &top_left)
