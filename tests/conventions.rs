@@ -130,3 +130,147 @@ fn an_unknown_convention_is_an_error_naming_its_path() {
         "{printed}"
     );
 }
+
+/// Judged under `all-edges` (here a profile's, SPEC.md §13), a polygon case
+/// cannot be judged at all: the rule is not defined for polygons (§14.1).
+/// It is unsupported with that reason, never judged under another rule;
+/// its triangle cases are judged under all-edges, and named so.
+#[test]
+fn polygons_under_an_all_edges_rule_are_unsupported_not_judged_otherwise() {
+    let dir = scratch("conventions-all-edges");
+    let profile = dir.join("profile.json");
+    std::fs::write(
+        &profile,
+        r#"{"schema": "rastercheck-profile/1", "rasterizer": "js", "fill_rule": "all-edges"}"#,
+    )
+    .unwrap();
+    let script = root().join("examples/js/rasterizer.js");
+    let spec = format!("js=external-persistent:node {}", script.display());
+    let report = dir.join("report");
+    let out = rastercheck(
+        &root(),
+        &[
+            "run",
+            "cases/polygons/concave_arrow.json",
+            "cases/triangles/shared_edge_diagonal.json",
+            "-r",
+            &spec,
+            "--profile",
+            &profile.display().to_string(),
+            "--report",
+            &report.display().to_string(),
+        ],
+    );
+    let printed = text(&out);
+    let report = read_json(&report.join("report.json"));
+    let result = |id: &str| {
+        report["cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["id"] == id)
+            .map(|c| c["results"][0].clone())
+            .unwrap_or_else(|| panic!("{id}: {printed}"))
+    };
+    let polygon = result("polygons/concave_arrow");
+    assert_eq!(polygon["verdict"], "unsupported", "{printed}");
+    assert!(
+        polygon["reasons"][0]
+            .as_str()
+            .unwrap()
+            .contains("all-edges is not defined for polygons"),
+        "{polygon}"
+    );
+    let triangles = result("triangles/shared_edge_diagonal");
+    assert_eq!(triangles["judged_fill_rule"], "all-edges", "{triangles}");
+}
+
+/// `fuzz --profile` (SPEC.md §13) judges the rasterizer under the
+/// profile's fill rule, and the cases it writes state that rule, so that a
+/// plain `run` reproduces them. The flipped-ties mutant profiles as
+/// bottom-right on probe's meshes; fuzzed under that rule it is still
+/// caught, on a lone triangle whose sample lies on its right edge, which
+/// bottom-right gives it and the mutant leaves out.
+#[test]
+fn fuzz_with_a_profile_judges_under_its_rule_and_writes_cases_stating_it() {
+    let dir = scratch("conventions-fuzz-profile");
+    let profile = dir.join("flipped.json");
+    let out = rastercheck(
+        &dir,
+        &[
+            "probe",
+            "-r",
+            "mutant:flipped-ties",
+            "--out",
+            &profile.display().to_string(),
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out));
+    assert_eq!(read_json(&profile)["fill_rule"], "bottom-right");
+    let found = dir.join("found");
+    let args = [
+        "fuzz",
+        "-r",
+        "mutant:flipped-ties",
+        "--family",
+        "triangles",
+        "--seed",
+        "7",
+        "--cases",
+        "200",
+        "--profile",
+        &profile.display().to_string(),
+        "--out",
+        &found.display().to_string(),
+    ];
+    let out = rastercheck(&dir, &args);
+    let printed = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{printed}");
+    let written: Vec<_> = std::fs::read_dir(&found)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(written.len(), 1, "{printed}");
+    let case = read_json(&written[0]);
+    assert_eq!(case["rules"]["fill_rule"], "bottom-right", "{case}");
+    assert!(
+        case["description"].as_str().unwrap().contains("--profile"),
+        "{case}"
+    );
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            &written[0].display().to_string(),
+            "-r",
+            "mutant:flipped-ties",
+            "-r",
+            "production",
+        ],
+    );
+    let printed = text(&out);
+    assert!(
+        printed.contains("mutant:flipped-ties: 0 passed, 1 failed"),
+        "{printed}"
+    );
+    assert!(
+        printed.contains("production: 1 passed, 0 failed"),
+        "{printed}"
+    );
+
+    // A profile of another rasterizer is bad usage.
+    let out = rastercheck(
+        &dir,
+        &[
+            "fuzz",
+            "-r",
+            "production",
+            "--cases",
+            "1",
+            "--profile",
+            &profile.display().to_string(),
+        ],
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("is a profile of mutant:flipped-ties, not of production"));
+}

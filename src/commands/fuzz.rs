@@ -44,6 +44,11 @@ pub struct FuzzArgs {
     /// DIR/<target>/, from the case files in --corpus-cases, and exit.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["rasterizer", "from_crash"])]
     pub corpus: Option<PathBuf>,
+    /// A profile written by `probe` for the rasterizer: it is judged under
+    /// the profile's fill rule instead of each scene's, and the cases
+    /// written state that rule, so that a plain `run` reproduces them.
+    #[arg(long, value_name = "FILE", conflicts_with = "corpus")]
+    pub profile: Option<PathBuf>,
     /// The case files --corpus seeds the case_json target with.
     #[arg(long, value_name = "DIR", default_value = "cases", requires = "corpus")]
     pub corpus_cases: PathBuf,
@@ -61,6 +66,16 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
     let candidate = match rasterizer_named(&rasterizer) {
         Ok(candidate) => candidate,
         Err(exit) => return exit,
+    };
+    let candidate = match &args.profile {
+        None => candidate,
+        Some(file) => match profiled(candidate, file) {
+            Ok(candidate) => candidate,
+            Err(why) => {
+                eprintln!("error: {why}");
+                return Exit::BadInput;
+            }
+        },
     };
     let family = match args
         .family
@@ -112,6 +127,9 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
     if let Some(c) = &args.check {
         command += &format!(" --check {c}");
     }
+    if let Some(p) = &args.profile {
+        command += &format!(" --profile {}", p.display());
+    }
     outln!(
         "fuzz: {} on {} cases{}, seed {seed} (--seed {seed} repeats this run)",
         candidate.name(),
@@ -159,6 +177,27 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
     } else {
         Exit::Pass
     }
+}
+
+/// `--profile FILE`: the candidate judged under the profile's fill rule;
+/// the profile must be the candidate's.
+fn profiled(
+    candidate: Box<dyn crate::rasterizer::Rasterizer>,
+    file: &Path,
+) -> Result<Box<dyn crate::rasterizer::Rasterizer>, String> {
+    let declared = crate::harness::profile::load_declared(file)?;
+    if declared.rasterizer != candidate.name() {
+        return Err(format!(
+            "{} is a profile of {}, not of {}",
+            declared.file,
+            declared.rasterizer,
+            candidate.name()
+        ));
+    }
+    Ok(Box::new(crate::harness::profile::Profiled {
+        inner: candidate,
+        rule: declared.fill_rule,
+    }))
 }
 
 /// `--corpus DIR`: every fuzz target's seeds.

@@ -116,6 +116,35 @@ pub fn for_run(
     Ok((declared, names))
 }
 
+/// A rasterizer that follows the fill rule its profile declares, whatever
+/// a case states: judged under it ([`Rasterizer::fixed_fill_rule`], SPEC.md
+/// §3.1). `fuzz --profile` searches with it.
+pub struct Profiled {
+    pub inner: Box<dyn Rasterizer>,
+    pub rule: FillRule,
+}
+
+impl Rasterizer for Profiled {
+    fn name(&self) -> &str {
+        self.inner.name()
+    }
+    fn capabilities(&self) -> Capabilities {
+        self.inner.capabilities()
+    }
+    fn is_foil(&self) -> bool {
+        self.inner.is_foil()
+    }
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        self.inner.rasterize(scene, plan)
+    }
+    fn declared(&self) -> Option<String> {
+        self.inner.declared()
+    }
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(self.rule)
+    }
+}
+
 /// Stands in for a profiled rasterizer during the ordinary run, so that it
 /// is drawn only once, under its declared rule.
 struct Deferred {
@@ -138,6 +167,18 @@ impl Rasterizer for Deferred {
             "deferred to its profile".to_owned(),
         ))
     }
+}
+
+/// Why a case cannot be judged under `rule`: `all-edges` is not defined for
+/// polygons (SPEC.md §14.1), so a polygon case is unsupported under it
+/// rather than judged under another rule.
+pub fn cannot_judge_under(scene: &Scene, rule: FillRule) -> Option<String> {
+    (rule == FillRule::AllEdges && scene.has_polygons()).then(|| {
+        format!(
+            "it is judged under its own {rule} rule instead of the case's {}, and all-edges is not defined for polygons (SPEC.md §14.1)",
+            scene.rules.fill_rule
+        )
+    })
 }
 
 /// A case with its fill rule replaced by a declared one.
@@ -174,6 +215,16 @@ pub fn run_all_with_profiles(
     let under_profiles = |k: usize, outcome: &mut CaseOutcome| {
         if let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) {
             for (index, candidate, rule) in &swapped {
+                if let Some(why) = cannot_judge_under(scene, *rule) {
+                    if let Some(slot) = outcome.candidates.get_mut(*index) {
+                        *slot = suite::CandidateRun::without_frame(
+                            candidate.name().to_owned(),
+                            Verdict::Unsupported(why),
+                            std::time::Duration::ZERO,
+                        );
+                    }
+                    continue;
+                }
                 let s = under_rule(scene, *rule);
                 let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                     let reference = suite::run_reference(&s);

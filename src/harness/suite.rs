@@ -638,6 +638,9 @@ pub fn run_candidate(
         .fixed_fill_rule()
         .filter(|&rule| rule != scene.rules.fill_rule);
     if let Some(rule) = judged_rule {
+        if let Some(why) = super::profile::cannot_judge_under(scene, rule) {
+            return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
+        }
         let under = super::profile::under_rule(scene, rule);
         let reference = catch_oracle_run(|| run_reference(&under));
         let mut run = match reference {

@@ -12,6 +12,7 @@ use super::case_json::valid;
 use super::fair::fair_time;
 use super::geometry::{orient, placed, Point};
 use crate::frame::Frame;
+use crate::harness::profile;
 use crate::harness::suite::{self, ReferenceRun, Verdict};
 use crate::metrics::{Metrics, SampleDiff};
 use crate::plan::Plan;
@@ -160,9 +161,31 @@ pub enum Outcome {
     Fail(Failure),
 }
 
+/// The scene as `candidate` is judged on it: stated under the fill rule it
+/// follows whatever a case states, when it has one (SPEC.md §3.1; a
+/// profile's under `fuzz --profile`), so that the reference, the failure's
+/// kinds and the case written all state the rule judged. `Err` when the
+/// scene cannot be judged under that rule (all-edges polygons).
+pub fn as_judged(scene: &Scene, candidate: &dyn Rasterizer) -> Result<Scene, String> {
+    match candidate
+        .fixed_fill_rule()
+        .filter(|&rule| rule != scene.rules.fill_rule)
+    {
+        None => Ok(scene.clone()),
+        Some(rule) => match profile::cannot_judge_under(scene, rule) {
+            Some(why) => Err(why),
+            None => Ok(profile::under_rule(scene, rule)),
+        },
+    }
+}
+
 /// Runs the reference and `candidate` on `scene` and judges the candidate
 /// as `run` does.
 pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
+    let scene = &match as_judged(scene, candidate) {
+        Ok(scene) => scene,
+        Err(why) => return Outcome::Unsupported(why),
+    };
     if let Err(why) = valid(scene) {
         return Outcome::Invalid(why);
     }

@@ -142,7 +142,9 @@ fn finished_case(
     kind: Kind,
     shrunk: &Shrunk,
 ) -> Scene {
-    let mut scene = shrunk.scene.clone();
+    // Stated under the rule it was judged under.
+    let mut scene =
+        super::judge::as_judged(&shrunk.scene, candidate).unwrap_or_else(|_| shrunk.scene.clone());
     scene.name = format!(
         "fuzz_{}_{}_{}",
         sanitize(candidate.name()),
