@@ -37,8 +37,18 @@ macro_rules! foil {
     };
 }
 
+pub mod any_coverage;
+pub mod area_sampler;
 pub mod dda;
 pub mod float_edges;
+pub mod offset_sampler;
 
+pub use any_coverage::AnyCoverage;
+pub use area_sampler::AreaSampler;
 pub use dda::{DdaF32, DdaF64};
 pub use float_edges::{FloatF32, FloatF64};
+pub use offset_sampler::OffsetSampler;
+
+/// The foils that sample otherwise than at one point per pixel centre,
+/// each wrong in that one way (what `probe` must tell apart).
+pub const SAMPLER_FOILS: [&str; 3] = ["foil-offset-sampler", "foil-area-sampler", "foil-any-coverage"];
