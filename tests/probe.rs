@@ -127,7 +127,11 @@ fn the_area_foil_is_an_area_sampler_with_no_rule_or_bits() {
 #[test]
 fn the_any_coverage_foil_is_any_coverage_not_closed_edges() {
     let p = probe_of("foil-any-coverage");
-    assert_not_point(&p, SamplerKind::AnyCoverage, "not point-sampled (any-coverage)");
+    assert_not_point(
+        &p,
+        SamplerKind::AnyCoverage,
+        "not point-sampled (any-coverage)",
+    );
     assert!(!p.departures.iter().any(|d| d.contains("closed edges")));
 }
 

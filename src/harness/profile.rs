@@ -54,7 +54,9 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             // A probe of a rasterizer that is not point-sampled writes no
             // rule (`sampler`, optional: absent in older profiles).
             let sampler = match value.get("sampler").and_then(Value::as_str) {
-                Some(s) if s != "point" => format!(" (its sampler is {s}: not point-sampled, so it has no tie rule)"),
+                Some(s) if s != "point" => {
+                    format!(" (its sampler is {s}: not point-sampled, so it has no tie rule)")
+                }
                 _ => String::new(),
             };
             format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")

@@ -4,6 +4,7 @@
 //! scenes are `scenes.rs`'s; sentences about the result are `describe.rs`'s.
 
 use crate::frame::Frame;
+use crate::harness::diagnosis::{Eighths, CENTRE};
 use crate::harness::suite::{self, Verdict};
 use crate::plan::Plan;
 use crate::rasterizer::{RasterError, Rasterizer};
@@ -26,13 +27,6 @@ pub(super) fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, R
         )))
     })
 }
-
-/// A sample offset in eighths of a pixel, as the sample-position probe
-/// finds it; the centre is (4, 4).
-pub type Eighths = (i64, i64);
-
-/// The pixel centre, in eighths.
-pub const CENTRE: Eighths = (4, 4);
 
 /// `scene` moved by (o − centre): a point sampler whose sample is at `o`
 /// then draws pixel Q exactly where a centre sampler draws it in `scene`
@@ -271,7 +265,9 @@ pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> Position {
     let eighths = |(x, y): Eighths| format!("({}, {})", x as f64 / 8.0, y as f64 / 8.0);
     let inside = |v: i64| (0..8).contains(&v);
     let words = match offsets.as_slice() {
-        [] => "none found (no triangle of 3/32 px around an offset (i/8, j/8) was drawn)".to_owned(),
+        [] => {
+            "none found (no triangle of 3/32 px around an offset (i/8, j/8) was drawn)".to_owned()
+        }
         [CENTRE] => "centre".to_owned(),
         [o] if inside(o.0) && inside(o.1) => format!("{} in the pixel", eighths(*o)),
         [o] => format!(
@@ -281,7 +277,10 @@ pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> Position {
         ),
         many => format!(
             "several: {}",
-            many.iter().map(|o| eighths(*o)).collect::<Vec<_>>().join(", ")
+            many.iter()
+                .map(|o| eighths(*o))
+                .collect::<Vec<_>>()
+                .join(", ")
         ),
     };
     Position {

@@ -79,10 +79,9 @@ use crate::rasterizer::Rasterizer;
 use describe::departures;
 use infer::{
     nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
-    Eighths,
 };
 
-pub use sampler::{Sampler, SamplerKind};
+pub use crate::harness::diagnosis::{Diagnosis, Sampler, SamplerKind};
 
 pub use crate::harness::profile::SCHEMA;
 
@@ -186,41 +185,6 @@ pub(super) const RULE_NAMES: [&str; 6] = [
     "none",
 ];
 
-/// What probe decides about how a rasterizer samples and breaks ties: the
-/// part of a profile that the matrix's findings put into words.
-#[derive(Clone, Debug)]
-pub struct Diagnosis {
-    pub sampler: Sampler,
-    /// The sample position in words, "not applicable (...)" when it is
-    /// not point-sampled.
-    pub sample_position: String,
-    /// The one sample offset found, in eighths of a pixel.
-    pub offset: Option<Eighths>,
-    /// As [`Profile::fill_rule`].
-    pub fill_rule: Option<String>,
-    pub fill_rule_consistent: bool,
-    pub evidence: Vec<MeshEvidence>,
-}
-
-impl Diagnosis {
-    /// One sentence: the sampler, and for a point sampler its position and
-    /// tie rule.
-    pub fn summary(&self) -> String {
-        if self.sampler.kind != SamplerKind::Point {
-            return format!("{}: {}", self.sampler.kind.words(), self.sampler.evidence);
-        }
-        let rule = match (&self.fill_rule, self.fill_rule_consistent) {
-            (None, _) => "tie rule not measured".to_owned(),
-            (Some(r), true) => format!("tie rule {r} (explains every tie sample)"),
-            (Some(r), false) => format!("tie rule nearest {r}, not consistent"),
-        };
-        format!(
-            "point-sampled, sample position {}, {rule}",
-            self.sample_position
-        )
-    }
-}
-
 /// Why the point-sampler probes were not run, or `None` when they were.
 fn not_measured(d: &Diagnosis) -> Option<String> {
     match (d.sampler.kind, d.offset) {
@@ -234,9 +198,16 @@ fn not_measured(d: &Diagnosis) -> Option<String> {
 }
 
 /// The sampler decision, then for a point sampler its sample position and
-/// tie rule (the meshes moved for its sample). `Err` when it draws none of
-/// the probe scenes.
+/// tie rule (the meshes moved for its sample): what the matrix's findings
+/// say about a row. `Err` when it draws none of the probe scenes.
 pub fn diagnose(candidate: &dyn Rasterizer) -> Result<Diagnosis, String> {
+    diagnose_with_evidence(candidate).map(|(d, _)| d)
+}
+
+/// [`diagnose`], with the fill-rule evidence per mesh.
+fn diagnose_with_evidence(
+    candidate: &dyn Rasterizer,
+) -> Result<(Diagnosis, Vec<MeshEvidence>), String> {
     let sampler = sampler::decide(candidate)
         .map_err(|e| format!("{} could not draw the probe scenes: {e}", candidate.name()))?;
     let mut d = Diagnosis {
@@ -244,38 +215,42 @@ pub fn diagnose(candidate: &dyn Rasterizer) -> Result<Diagnosis, String> {
         offset: None,
         fill_rule: None,
         fill_rule_consistent: false,
-        evidence: Vec::new(),
         sampler,
     };
     if d.sampler.kind != SamplerKind::Point {
         d.sample_position = not_measured(&d).unwrap_or_default();
-        return Ok(d);
+        return Ok((d, Vec::new()));
     }
     let position = probe_sample_position(candidate);
     d.sample_position = position.words;
     d.offset = position.offset;
-    let Some(o) = d.offset else { return Ok(d) };
-    d.evidence = probe_fill_rule(candidate, o);
-    if let Some(e) = d.evidence.iter().find_map(|e| e.error.clone()) {
-        if d.evidence.iter().all(|e| e.error.is_some()) {
+    let Some(o) = d.offset else {
+        return Ok((d, Vec::new()));
+    };
+    let evidence = probe_fill_rule(candidate, o);
+    if let Some(e) = evidence.iter().find_map(|e| e.error.clone()) {
+        if evidence.iter().all(|e| e.error.is_some()) {
             return Err(format!(
                 "{} could not draw the probe meshes: {e}",
                 candidate.name()
             ));
         }
     }
-    let rule = nearest_rule(&d.evidence);
+    let rule = nearest_rule(&evidence);
     d.fill_rule = rule.as_ref().map(|r| r.0.clone());
     d.fill_rule_consistent = rule.as_ref().is_some_and(|r| r.1);
-    Ok(d)
+    Ok((d, evidence))
 }
 
 /// Probes a rasterizer. `Err` when it draws none of the probe scenes.
 pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
-    let d = diagnose(candidate)?;
+    let (d, evidence) = diagnose_with_evidence(candidate)?;
     let y_down = probe_y(candidate);
     let (x_bits, y_bits) = match (not_measured(&d), d.offset) {
-        (None, Some(o)) => (probe_axis(candidate, false, o), probe_axis(candidate, true, o)),
+        (None, Some(o)) => (
+            probe_axis(candidate, false, o),
+            probe_axis(candidate, true, o),
+        ),
         (why, _) => {
             let why = why.unwrap_or_default();
             (Err(why.clone()), Err(why))
@@ -316,7 +291,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         sampler_evidence: d.sampler.evidence,
         fill_rule: d.fill_rule,
         fill_rule_consistent: d.fill_rule_consistent,
-        fill_rule_evidence: d.evidence,
+        fill_rule_evidence: evidence,
         y_down,
         subpixel_bits,
         subpixel,

@@ -32,59 +32,15 @@
 //! asked for an antialiased half-covered pixel instead: a frame of resolved
 //! coverage only, with no sample slots, is an area method's.
 
-use serde::Serialize;
 use serde_json::json;
 
 use crate::frame::Frame;
+use crate::harness::diagnosis::{Sampler, SamplerKind};
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::scene::{parse_case, Limits, Scene};
 
 use super::infer::draw;
 use super::scenes::{mesh_scene, tri};
-
-/// How a rasterizer decides coverage.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum SamplerKind {
-    /// At one point per pixel.
-    Point,
-    /// By the area of the pixel a primitive covers.
-    Area,
-    /// By whether a primitive touches the pixel at all (conservative).
-    AnyCoverage,
-    /// None of the above explains its frames.
-    Unknown,
-}
-
-impl SamplerKind {
-    /// The name in the profile: `point`, `area`, `any-coverage`, `unknown`.
-    pub fn name(self) -> &'static str {
-        match self {
-            SamplerKind::Point => "point",
-            SamplerKind::Area => "area",
-            SamplerKind::AnyCoverage => "any-coverage",
-            SamplerKind::Unknown => "unknown",
-        }
-    }
-
-    /// "point-sampled", "not point-sampled (area sampler)", ...
-    pub fn words(self) -> &'static str {
-        match self {
-            SamplerKind::Point => "point-sampled",
-            SamplerKind::Area => "not point-sampled (area sampler)",
-            SamplerKind::AnyCoverage => "not point-sampled (any-coverage)",
-            SamplerKind::Unknown => "sampler unknown",
-        }
-    }
-}
-
-/// The decision and what it rests on.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Sampler {
-    pub kind: SamplerKind,
-    /// The frames that decided it, in a sentence.
-    pub evidence: String,
-}
 
 /// The sliver of pixel-relative corners (in 1/32 px), each in its own pixel.
 const SLIVERS: [[(i32, i32); 3]; 4] = [
@@ -132,7 +88,13 @@ pub(super) fn strip_scene() -> Scene {
         triangles.push(tri([(left, top), (right, top), (right, bottom)]));
         triangles.push(tri([(left, top), (right, bottom), (left, bottom)]));
     }
-    mesh_scene("probe_sampler_strips", STRIPS_SIDE, STRIPS_SIDE, 8, triangles)
+    mesh_scene(
+        "probe_sampler_strips",
+        STRIPS_SIDE,
+        STRIPS_SIDE,
+        8,
+        triangles,
+    )
 }
 
 fn whole_scene() -> Scene {
@@ -227,10 +189,7 @@ pub fn decide(candidate: &dyn Rasterizer) -> Result<Sampler, String> {
     let middle: Vec<(u32, u32)> = STRIPS_MIDDLE
         .flat_map(|y| STRIPS_MIDDLE.map(move |x| (x, y)))
         .collect();
-    let filled = middle
-        .iter()
-        .filter(|&&p| drawn(&strips_frame, p))
-        .count();
+    let filled = middle.iter().filter(|&&p| drawn(&strips_frame, p)).count();
     let any_strip = strips_frame.coverage.iter().any(|&c| c > 0);
     let any_whole = whole_frame.coverage.iter().any(|&c| c > 0);
     if filled == middle.len() {

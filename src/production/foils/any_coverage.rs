@@ -99,11 +99,8 @@ impl Rasterizer for AnyCoverage {
                 for x in range(0, w) {
                     let corners = [(0, 0), (1, 0), (0, 1), (1, 1)]
                         .map(|(dx, dy)| [(x + dx) * one, (y + dy) * one]);
-                    let touches = (0..3).all(|e| {
-                        corners
-                            .iter()
-                            .any(|&c| cross(p[e], p[(e + 1) % 3], c) > 0)
-                    });
+                    let touches =
+                        (0..3).all(|e| corners.iter().any(|&c| cross(p[e], p[(e + 1) % 3], c) > 0));
                     if touches {
                         let i = frame.index(x as u32, y as u32);
                         frame.coverage[i] = frame.coverage[i].saturating_add(1);

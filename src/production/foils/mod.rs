@@ -51,4 +51,8 @@ pub use offset_sampler::OffsetSampler;
 
 /// The foils that sample otherwise than at one point per pixel centre,
 /// each wrong in that one way (what `probe` must tell apart).
-pub const SAMPLER_FOILS: [&str; 3] = ["foil-offset-sampler", "foil-area-sampler", "foil-any-coverage"];
+pub const SAMPLER_FOILS: [&str; 3] = [
+    "foil-offset-sampler",
+    "foil-area-sampler",
+    "foil-any-coverage",
+];
