@@ -55,7 +55,7 @@ fn probe_finds_a_point_sampler_with_top_left_ties() {
     if !available() {
         return;
     }
-    assert_probe_diagnosis(&Lavapipe);
+    assert_probe_diagnosis(&Lavapipe, "top-left");
 }
 
 #[test]

@@ -51,7 +51,7 @@ fn probe_finds_a_point_sampler_with_top_left_ties() {
     if !available() {
         return;
     }
-    assert_probe_diagnosis(&VULKAN);
+    assert_probe_diagnosis(&VULKAN, "top-left");
 }
 
 #[test]

@@ -58,13 +58,14 @@ fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
 }
 
-/// probe finds llvmpipe point-sampled at the centre with top-left ties.
+/// probe finds llvmpipe point-sampled at the centre with bottom-left ties
+/// (in y-down terms: GL's window y points up) and 8 bits.
 #[test]
 fn probe_finds_a_point_sampler_with_top_left_ties() {
     if !available() {
         return;
     }
-    assert_probe_diagnosis(&Gl);
+    assert_probe_diagnosis(&Gl, "bottom-left");
 }
 
 /// Tie cases beyond `TIE_CASES` (samples exactly on edges, shared edges, fan
