@@ -240,14 +240,7 @@ fn matrix_and_probe_agree_on_every_row() {
                 );
             }
             // A rule named in any of the ways the findings name one.
-            for named in [
-                "top-left",
-                "bottom-right",
-                "top-right",
-                "bottom-left",
-                "all-edges",
-                "none",
-            ] {
+            for named in probe::RULE_NAMES {
                 let says = [
                     format!("the {named} tie rule"),
                     format!("than top-left: {named}"),

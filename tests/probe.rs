@@ -190,6 +190,15 @@ fn the_python_example_is_point_sampled_with_closed_edges() {
     assert_eq!(p.y_down, Some(true));
 }
 
+/// `rastercheck probe -r NAME --out FILE`: what it printed, and the
+/// profile it wrote.
+fn probe_into(dir: &Path, name: &str, file: &Path) -> (String, serde_json::Value) {
+    let out = rastercheck(dir, &["probe", "-r", name, "--out", file.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out));
+    let written = serde_json::from_str(&std::fs::read_to_string(file).unwrap()).unwrap();
+    (text(&out), written)
+}
+
 fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("rastercheck-probe-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -205,20 +214,8 @@ fn run_with_a_profile_judges_tiny_skia_by_its_own_rule() {
         Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles/shared_edge_vertical.json");
     let case = case.to_str().unwrap();
     let profile = dir.join("tiny-skia.json");
-    let out = rastercheck(
-        &dir,
-        &[
-            "probe",
-            "-r",
-            "tiny-skia",
-            "--out",
-            profile.to_str().unwrap(),
-        ],
-    );
-    assert!(out.status.success(), "{}", text(&out));
-    assert!(text(&out).contains("bottom-right"), "{}", text(&out));
-    let written: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&profile).unwrap()).unwrap();
+    let (shown, written) = probe_into(&dir, "tiny-skia", &profile);
+    assert!(shown.contains("bottom-right"), "{shown}");
     assert_eq!(written["schema"], "rastercheck-profile/1");
     assert_eq!(written["rasterizer"], "tiny-skia");
     assert_eq!(written["fill_rule"], "bottom-right");
@@ -271,19 +268,7 @@ fn run_with_a_profile_judges_tiny_skia_by_its_own_rule() {
 fn an_area_samplers_profile_says_so_and_declares_no_rule() {
     let dir = temp("area");
     let profile = dir.join("area.json");
-    let out = rastercheck(
-        &dir,
-        &[
-            "probe",
-            "-r",
-            "foil-area-sampler",
-            "--out",
-            profile.to_str().unwrap(),
-        ],
-    );
-    assert!(out.status.success(), "{}", text(&out));
-    let written: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&profile).unwrap()).unwrap();
+    let (_, written) = probe_into(&dir, "foil-area-sampler", &profile);
     assert_eq!(written["schema"], "rastercheck-profile/1");
     assert_eq!(written["sampler"], "area");
     assert!(written["fill_rule"].is_null());

@@ -176,7 +176,7 @@ pub struct ChannelProbe {
 }
 
 /// The candidate rules: the five fill rules, then "none" (open edges).
-pub(super) const RULE_NAMES: [&str; 6] = [
+pub const RULE_NAMES: [&str; 6] = [
     "top-left",
     "bottom-right",
     "top-right",

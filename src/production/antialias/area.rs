@@ -21,7 +21,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::fixed::{Fixed, Format, MAX_FRAC_BITS};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Cull, LineRule, Number, PolygonFill, Primitive, Scene};
+use crate::scene::{LineRule, Number, PolygonFill, Primitive, Scene};
 
 /// The `area-f32` method.
 #[derive(Clone, Copy, Debug, Default)]
@@ -108,12 +108,7 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                 // units).
                 let d = |u: Fixed, v: Fixed| i128::from(u.0) - i128::from(v.0);
                 let area = d(b[0], a[0]) * d(c[1], a[1]) - d(b[1], a[1]) * d(c[0], a[0]);
-                let culled = match scene.rules.cull {
-                    Cull::Clockwise => area > 0,
-                    Cull::CounterClockwise => area < 0,
-                    _ => false,
-                };
-                if area != 0 && !culled {
+                if area != 0 && !scene.rules.cull.discards(area.cmp(&0)) {
                     shapes.push(Shape {
                         contours: vec![[a, b, c].map(to_f64).to_vec()],
                         fill: PolygonFill::NonZero,

@@ -22,7 +22,7 @@ use dashu_ratio::RBig;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Cull, Number, Primitive, Scene};
+use crate::scene::{Number, Primitive, Scene};
 
 /// The any-coverage foil.
 #[derive(Clone, Copy, Debug, Default)]
@@ -74,12 +74,7 @@ impl Rasterizer for AnyCoverage {
                 }
             }
             let area = cross(p[0], p[1], p[2]);
-            let culled = match scene.rules.cull {
-                Cull::Clockwise => area > 0,
-                Cull::CounterClockwise => area < 0,
-                Cull::None => false,
-            };
-            if area == 0 || culled {
+            if area == 0 || scene.rules.cull.discards(area.cmp(&0)) {
                 continue;
             }
             // Counter-clockwise in y-down terms, so that inside is positive.
