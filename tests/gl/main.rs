@@ -61,7 +61,7 @@ fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
 /// probe finds llvmpipe point-sampled at the centre with bottom-left ties
 /// (in y-down terms: GL's window y points up) and 8 bits.
 #[test]
-fn probe_finds_a_point_sampler_with_top_left_ties() {
+fn probe_finds_a_point_sampler_with_bottom_left_ties() {
     if !available() {
         return;
     }
