@@ -165,7 +165,8 @@ impl Profile {
             match (&self.fill_rule, self.sampler) {
                 (Some(rule), _) => rule.as_str(),
                 (None, SamplerKind::Point) if self.sample_offset.is_some() => "unknown",
-                (None, _) => "not measured (no point sample to decide ties at)",
+                (None, SamplerKind::Point) => "not measured (its sample position was not found)",
+                (None, _) => "not applicable (no point sample to decide ties at)",
             },
             match (&self.fill_rule, self.fill_rule_consistent) {
                 (None, _) => String::new(),
