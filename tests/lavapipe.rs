@@ -28,8 +28,9 @@ fn available() -> bool {
 mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
-    assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped, bundled_ids,
-    record_every_triangle_case, square_of, SlotsReversed, INTERPOLATION, TIE_CASES, WINDING_CASES,
+    assert_prepared_draws_as_rasterize, assert_probe_diagnosis, assert_refuses_lines_and_unsnapped,
+    bundled_ids, record_every_triangle_case, square_of, SlotsReversed, INTERPOLATION, TIE_CASES,
+    WINDING_CASES,
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
@@ -46,6 +47,16 @@ const MORE_TIE_CASES: &[&str] = &[
     "triangles/snap_tie_half_subpixel_b8",
     "triangles/mesh_full_canvas_odd",
 ];
+
+/// probe finds lavapipe point-sampled at the centre with top-left ties
+/// (its 8 subpixel bits: `tests/probe.rs`).
+#[test]
+fn probe_finds_a_point_sampler_with_top_left_ties() {
+    if !available() {
+        return;
+    }
+    assert_probe_diagnosis(&Lavapipe, "top-left");
+}
 
 #[test]
 fn matches_the_reference_on_top_left_tie_cases() {

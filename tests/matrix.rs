@@ -162,3 +162,94 @@ fn write_readme_replaces_only_the_marked_block() {
     assert_eq!(refused.status.code(), Some(2), "{}", text(&refused));
     assert_eq!(std::fs::read_to_string(&readme).unwrap(), "no markers\n");
 }
+
+/// Every row the matrix can build without a GPU feature (the defaults, the
+/// mutants with a tie rule of their own and area-f32): what the matrix
+/// says about its sampler and tie rule is what probe says, and no finding
+/// names a rule or a sampler that probe did not find.
+#[test]
+fn matrix_and_probe_agree_on_every_row() {
+    use rastercheck::explore::probe::{self, SamplerKind};
+    use rastercheck::harness::{matrix, suite};
+
+    let mut names: Vec<String> = matrix::default_rows()
+        .into_iter()
+        .filter(|n| matches!(matrix::rasterizer(n), Some(Ok(_))))
+        .collect();
+    names.extend(["mutant:flipped-ties", "mutant:closed-edges", "area-f32"].map(str::to_owned));
+    for foil in rastercheck::production::foils::SAMPLER_FOILS {
+        assert!(
+            names.iter().any(|n| n == foil),
+            "{foil} is not a default row"
+        );
+    }
+    let found = suite::discover(&[root().join("cases/triangles")]);
+    let limits = rastercheck::scene::Limits::default();
+    let m = matrix::build(&found.cases, &limits, &names, None, &probe::diagnose);
+    let shown = m.to_markdown();
+    let findings: Vec<&str> = shown.lines().filter(|l| l.starts_with("- ")).collect();
+    for (name, row) in names.iter().zip(&m.rows) {
+        assert!(row.available.is_ok(), "{name}: {:?}", row.available);
+        let r = suite::rasterizer(name).unwrap();
+        let p = probe::probe(r.as_ref()).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let d = match &row.diagnosis {
+            Some(Ok(d)) => d,
+            other => panic!("{name}: no diagnosis in the matrix: {other:?}"),
+        };
+        // The same decision...
+        assert_eq!(d.sampler.kind, p.sampler, "{name}");
+        assert_eq!(d.fill_rule, p.fill_rule, "{name}");
+        assert_eq!(d.fill_rule_consistent, p.fill_rule_consistent, "{name}");
+        assert_eq!(d.sample_position, p.sample_position, "{name}");
+        // ...said in the findings...
+        let quoted = format!("`{}`", row.name);
+        let probe_line = findings
+            .iter()
+            .find(|l| {
+                l.starts_with("- Probe: ")
+                    && (l.contains(&format!("{quoted},")) || l.contains(&format!("{quoted}:")))
+            })
+            .unwrap_or_else(|| panic!("no probe finding for {quoted}:\n{shown}"));
+        assert!(
+            probe_line.ends_with(&format!("{}.", d.summary())),
+            "{probe_line}"
+        );
+        // ...and nothing else said about its rule or sampler.
+        for line in findings
+            .iter()
+            .filter(|l| l.starts_with(&format!("- {quoted} ")))
+        {
+            let rule = p.fill_rule.as_deref();
+            let claims = [
+                ("closed edges", rule == Some("all-edges")),
+                ("open edges", rule == Some("none")),
+                ("(any-coverage)", p.sampler == SamplerKind::AnyCoverage),
+                ("(area sampler)", p.sampler == SamplerKind::Area),
+                (
+                    "different consistent tie rule",
+                    rule.is_some_and(|r| r != "top-left") && p.fill_rule_consistent,
+                ),
+                ("top-left ties", rule == Some("top-left")),
+            ];
+            for (claim, probe_says) in claims {
+                assert!(
+                    !line.contains(claim) || probe_says,
+                    "{name}: the matrix says {claim:?}, probe says {:?} / {:?}:\n{line}",
+                    p.sampler,
+                    rule
+                );
+            }
+            // A rule named in any of the ways the findings name one.
+            for named in probe::RULE_NAMES {
+                let says = [
+                    format!("the {named} tie rule"),
+                    format!("than top-left: {named}"),
+                    format!("({named},"),
+                ];
+                if says.iter().any(|s| line.contains(s.as_str())) {
+                    assert_eq!(rule, Some(named), "{name}: {line}");
+                }
+            }
+        }
+    }
+}

@@ -20,8 +20,8 @@ const VULKAN: Vulkan = Vulkan { passes_only: false };
 mod common;
 use common::adapters::{
     assert_each, assert_interpolation_within_the_bound, assert_judges_at_least_85_percent,
-    assert_wrong_instants_fail, bundled_ids, SlotsReversed, INTERPOLATION, TIE_CASES,
-    WINDING_CASES,
+    assert_probe_diagnosis, assert_wrong_instants_fail, bundled_ids, SlotsReversed, INTERPOLATION,
+    TIE_CASES, WINDING_CASES,
 };
 use common::{case, inline, report, sample_name};
 
@@ -42,6 +42,16 @@ fn available() -> bool {
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, suite::CandidateRun) {
     common::run(scene, &VULKAN)
+}
+
+/// probe finds a point sampler at the centre with top-left ties: the
+/// sampler decision and the rule agree with what the cases show.
+#[test]
+fn probe_finds_a_point_sampler_with_top_left_ties() {
+    if !available() {
+        return;
+    }
+    assert_probe_diagnosis(&VULKAN, "top-left");
 }
 
 #[test]

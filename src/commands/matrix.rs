@@ -59,7 +59,13 @@ pub fn matrix(args: MatrixArgs) -> Exit {
         eprintln!("error: no case files found; nothing was judged");
         return Exit::NothingJudged;
     }
-    let m = matrix::build(&found.cases, &args.limits.limits(), &names, args.threads);
+    let m = matrix::build(
+        &found.cases,
+        &args.limits.limits(),
+        &names,
+        args.threads,
+        &crate::explore::probe::diagnose,
+    );
     out!("{}", m.to_markdown());
     if m.unreadable > 0 {
         eprintln!(

@@ -6,11 +6,18 @@
 //! A rasterizer that cannot start (not compiled into this build, no driver,
 //! a program that will not run) is a row that says "not available" and
 //! why; it is never dropped.
+//!
+//! What the findings say about a row's sampler and tie rule is `probe`'s
+//! decision ([`Diagnosis`], made by the function [`build`] is given), never
+//! a guess from the counts: overdraw is blamed on closed edges only when
+//! probe finds closed edges, and on an any-coverage or area sampler when
+//! probe finds one. The counts say how much; the diagnosis says why.
 
 use std::collections::BTreeSet;
 use std::path::Path;
 
 use crate::frame::Frame;
+use crate::harness::diagnosis::{Diagnosis, SamplerKind, Symptom, CENTRE};
 use crate::harness::runner::{self, CaseOutcome};
 use crate::harness::suite::{self, CaseFile, Verdict};
 use crate::plan::Plan;
@@ -35,6 +42,9 @@ pub fn default_rows() -> Vec<String> {
         "dda-f64",
         "float-f32",
         "float-f64",
+        "foil-offset-sampler",
+        "foil-area-sampler",
+        "foil-any-coverage",
         "tiny-skia",
         "euc",
         PYTHON_EXAMPLE,
@@ -84,7 +94,14 @@ pub struct Row {
     pub available: Result<(), String>,
     /// One per family, in [`Matrix::families`] order.
     pub cells: Vec<Cell>,
+    /// Probe's decision on its sampler and tie rule, when it is available
+    /// (`Err`: why probe could not decide).
+    pub diagnosis: Option<Result<Diagnosis, String>>,
 }
+
+/// How [`build`] diagnoses a row: `explore::probe::diagnose` (the harness
+/// does not import the layer above it; its caller hands it down).
+pub type Diagnose<'a> = &'a (dyn Fn(&dyn Rasterizer) -> Result<Diagnosis, String> + Sync);
 
 #[derive(Clone, Debug)]
 pub struct Matrix {
@@ -151,13 +168,15 @@ pub fn rasterizer(name: &str) -> Option<Result<Box<dyn Rasterizer>, String>> {
         })
 }
 
-/// Runs every case through every named rasterizer and tabulates. Unknown
-/// names are the caller's to refuse (see [`rasterizer`]).
+/// Runs every case through every named rasterizer, diagnoses each with
+/// `diagnose`, and tabulates. Unknown names are the caller's to refuse
+/// (see [`rasterizer`]).
 pub fn build(
     files: &[CaseFile],
     limits: &Limits,
     names: &[String],
     threads: Option<usize>,
+    diagnose: Diagnose,
 ) -> Matrix {
     let mut rows: Vec<Row> = Vec::new();
     let mut candidates: Vec<Box<dyn Rasterizer>> = Vec::new();
@@ -183,11 +202,16 @@ pub fn build(
             }
         };
         slot.push(available.is_ok().then(|| candidates.len() - 1));
+        let diagnosis = available
+            .is_ok()
+            .then(|| candidates.last().map(|r| diagnose(r.as_ref())))
+            .flatten();
         rows.push(Row {
             name: row_name,
             foil,
             available,
             cells: Vec::new(),
+            diagnosis,
         });
     }
     let root = Path::new(".");
@@ -343,9 +367,12 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
             }
         }
         let mut said = false;
-        // A rule shows on a large share of the meshes (not every mesh puts
-        // a sample on a shared edge); snapping or float error on a few.
-        let most = |n: usize| 3 * n >= meshes;
+        // Why: probe's decision, or why there is none.
+        let cause = |symptom: Symptom| match &row.diagnosis {
+            Some(Ok(d)) => d.cause(symptom),
+            Some(Err(e)) => format!("Probe could not say why: {e}."),
+            None => String::new(),
+        };
         if overdraw > 0 {
             said = true;
             out.push(format!(
@@ -354,11 +381,7 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
                 od_cases.len(),
                 plural(meshes as u64, "mesh case", "mesh cases"),
                 examples(&od_cases),
-                if most(od_cases.len()) {
-                    "Samples on shared edges are drawn by both triangles on a third of the meshes or more: closed edges (all-edges), not a tie rule."
-                } else {
-                    "Only on a few meshes: shared edges drawn apart by its snapping or float arithmetic, not a closed-edge rule."
-                }
+                cause(Symptom::Overdraw)
             ));
         }
         if holes > 0 {
@@ -369,25 +392,17 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
                 hole_cases.len(),
                 plural(meshes as u64, "mesh case", "mesh cases"),
                 examples(&hole_cases),
-                if most(hole_cases.len()) {
-                    "On most meshes: open edges, samples on shared edges owned by neither triangle."
-                } else {
-                    "Only on a few meshes: vertices or edges moved apart (cracks) by its snapping or float arithmetic."
-                }
+                cause(Symptom::Holes)
             ));
         }
         if owner > 0 {
             said = true;
             out.push(format!(
-                "{name} keeps {} watertight (no overdraw, no holes) but gives {} to the other triangle ({}): {}",
+                "{name} keeps {} watertight (no overdraw, no holes) but gives {} to the other triangle ({}). {}",
                 plural(owner_cases.len() as u64, "mesh case", "mesh cases"),
                 plural(owner, "tie sample", "tie samples"),
                 examples(&owner_cases),
-                if most(owner_cases.len()) {
-                    "on a third of the meshes or more, so a different consistent tie rule than top-left."
-                } else {
-                    "only on a few meshes, so not a different tie rule: its snapping, clipping or float arithmetic moves those edges."
-                }
+                cause(Symptom::WrongOwner)
             ));
         }
         // Tie cases.
@@ -483,10 +498,16 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
                 examples(&errors)
             ));
         }
-        if !said && meshes > 0 {
+        // "Top-left ties" is probe's word as well as the counts'.
+        let top_left = matches!(&row.diagnosis, Some(Ok(d)) if d.sampler.kind == SamplerKind::Point
+            && d.offset == Some(CENTRE)
+            && d.fill_rule.as_deref() == Some("top-left")
+            && d.fill_rule_consistent);
+        if !said && meshes > 0 && top_left {
             clean.push(name);
         }
     }
+    out.splice(0..0, sampler_findings(rows));
     if !clean.is_empty() {
         out.insert(
             0,
@@ -497,6 +518,31 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
         );
     }
     out
+}
+
+/// The rows grouped by probe's diagnosis: "Probe: `a`, `b` are
+/// point-sampled at the pixel centre, tie rule top-left.", one finding per
+/// diagnosis, in the order rows first show it.
+fn sampler_findings(rows: &[Row]) -> Vec<String> {
+    let mut groups: Vec<(String, Vec<String>)> = Vec::new();
+    for row in rows {
+        let Some(diagnosis) = &row.diagnosis else {
+            continue;
+        };
+        let said = match diagnosis {
+            Ok(d) => d.summary(),
+            Err(e) => format!("not diagnosed ({e})"),
+        };
+        let name = format!("`{}`", row.name);
+        match groups.iter_mut().find(|(s, _)| *s == said) {
+            Some((_, names)) => names.push(name),
+            None => groups.push((said, vec![name])),
+        }
+    }
+    groups
+        .into_iter()
+        .map(|(said, names)| format!("Probe: {}: {said}.", names.join(", ")))
+        .collect()
 }
 
 fn cell_text(cell: &Cell, foil: bool) -> String {

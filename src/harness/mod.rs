@@ -10,8 +10,11 @@
 //!   rasterizer judged under the fill rule its profile declares.
 //! - [`matrix`]: every case through several rasterizers, as a conformance
 //!   matrix with findings.
+//! - [`diagnosis`]: how a rasterizer samples and breaks ties, as `probe`
+//!   decides it, in the words both the profile and the matrix use.
 
 pub mod baseline;
+pub mod diagnosis;
 pub mod golden;
 pub mod matrix;
 pub mod profile;

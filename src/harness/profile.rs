@@ -50,7 +50,17 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
     let rule = value
         .get("fill_rule")
         .and_then(Value::as_str)
-        .ok_or_else(|| format!("{shown}: $.fill_rule: the profile declares no fill rule"))?;
+        .ok_or_else(|| {
+            // A probe of a rasterizer that is not point-sampled writes no
+            // rule (`sampler`, optional: absent in older profiles).
+            let sampler = match value.get("sampler").and_then(Value::as_str) {
+                Some(s) if s != "point" => {
+                    format!(" (its sampler is {s}: not point-sampled, so it has no tie rule)")
+                }
+                _ => String::new(),
+            };
+            format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")
+        })?;
     let fill_rule = FillRule::from_name(rule).ok_or_else(|| {
         format!(
             "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state ({})",

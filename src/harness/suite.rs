@@ -12,7 +12,9 @@ use crate::frame::Frame;
 use crate::harness::golden;
 use crate::metrics::{self, AreaClass, Metrics};
 use crate::plan::Plan;
-use crate::production::foils::{DdaF32, DdaF64, FloatF32, FloatF64};
+use crate::production::foils::{
+    AnyCoverage, AreaSampler, DdaF32, DdaF64, FloatF32, FloatF64, OffsetSampler,
+};
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
@@ -309,6 +311,7 @@ pub fn rasterizer_names() -> Vec<&'static str> {
         "float-f32",
         "float-f64",
     ];
+    names.extend(crate::production::foils::SAMPLER_FOILS);
     names.extend(crate::production::methods().iter().map(|m| m.name));
     names.extend(Mutation::ALL.iter().map(|m| m.name()));
     names.extend(crate::adapters::names());
@@ -324,6 +327,9 @@ pub fn rasterizer(name: &str) -> Option<Box<dyn Rasterizer>> {
         "dda-f64" => Some(Box::new(DdaF64)),
         "float-f32" => Some(Box::new(FloatF32)),
         "float-f64" => Some(Box::new(FloatF64)),
+        "foil-offset-sampler" => Some(Box::new(OffsetSampler)),
+        "foil-area-sampler" => Some(Box::new(AreaSampler)),
+        "foil-any-coverage" => Some(Box::new(AnyCoverage)),
         _ => crate::production::methods()
             .into_iter()
             .find(|m| m.name == name)

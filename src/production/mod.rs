@@ -25,8 +25,9 @@
 //! The methods measured on their own reuse that path: `tiled.rs` (bands
 //! drawn in parallel through [`draw_primitive`]), `antialias/`
 //! (`adaptive-refine`, `adaptive-resolve`, `area-f32`), `polygon/`'s other
-//! fills, `foils/` (float DDA and float edge functions) and `mutants.rs`
-//! (one deliberate bug each).
+//! fills, `foils/` (float DDA, float edge functions, and three that do not
+//! sample at the centre: at (1, 1), by area, by any coverage) and
+//! `mutants.rs` (one deliberate bug each).
 
 pub mod antialias;
 pub mod fixed;

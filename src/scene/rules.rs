@@ -110,6 +110,21 @@ case_names!(Cull {
     CounterClockwise => "ccw",
 });
 
+impl Cull {
+    /// Whether a triangle is discarded, from the sign of
+    /// (b − a) × (c − a) in screen coordinates (y down): positive is
+    /// clockwise on screen. A zero-area triangle is never culled here (it
+    /// draws nothing anyway).
+    pub fn discards(self, cross: std::cmp::Ordering) -> bool {
+        use std::cmp::Ordering::{Greater, Less};
+        match self {
+            Cull::None => false,
+            Cull::Clockwise => cross == Greater,
+            Cull::CounterClockwise => cross == Less,
+        }
+    }
+}
+
 /// Which points a polygon fills, from their winding number: the number of
 /// times the contours wind around the point, counting direction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

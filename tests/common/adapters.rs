@@ -71,6 +71,27 @@ pub fn skipped(what: &str, install: &str, why: &str) {
     );
 }
 
+/// probe's diagnosis of a GPU driver: point-sampled at the pixel centre,
+/// ties by `rule` explaining every tie sample (Vulkan's top-left;
+/// llvmpipe's GL bottom-left in y-down terms), y down, and the subpixel
+/// bits Vulkan allows (at least 4, and at most D3D11's 8 of the drivers
+/// rastercheck knows; lavapipe's 8 is asserted in `tests/probe.rs`).
+pub fn assert_probe_diagnosis(candidate: &dyn Rasterizer, rule: &str) {
+    use rastercheck::explore::probe::{self, SamplerKind};
+    let p = probe::probe(candidate).unwrap_or_else(|e| panic!("{}: {e}", candidate.name()));
+    eprintln!("{}", p.describe());
+    assert_eq!(p.sampler, SamplerKind::Point, "{}", p.sampler_evidence);
+    assert_eq!(p.fill_rule.as_deref(), Some(rule));
+    assert!(p.fill_rule_consistent);
+    assert_eq!(p.sample_position, "centre");
+    assert_eq!(p.y_down, Some(true));
+    assert!(
+        p.subpixel_bits.is_some_and(|b| (4..=8).contains(&b)),
+        "{}",
+        p.subpixel
+    );
+}
+
 /// The ids (`family/stem`) of the bundled cases of `family` whose file stem
 /// `keep` accepts, sorted.
 pub fn bundled_ids(family: &str, keep: impl Fn(&str) -> bool) -> Vec<String> {

@@ -49,13 +49,23 @@ mod rectangles;
 
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
-    assert_prepared_draws_as_rasterize, assert_refuses_lines_and_unsnapped,
+    assert_prepared_draws_as_rasterize, assert_probe_diagnosis, assert_refuses_lines_and_unsnapped,
     record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::{case, inline, report};
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
+}
+
+/// probe finds llvmpipe point-sampled at the centre with bottom-left ties
+/// (in y-down terms: GL's window y points up) and 8 bits.
+#[test]
+fn probe_finds_a_point_sampler_with_bottom_left_ties() {
+    if !available() {
+        return;
+    }
+    assert_probe_diagnosis(&Gl, "bottom-left");
 }
 
 /// Tie cases beyond `TIE_CASES` (samples exactly on edges, shared edges, fan

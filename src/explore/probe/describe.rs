@@ -1,7 +1,7 @@
 //! The profile in words: its departures from D3D11 and Vulkan as
 //! sentences, the human-readable account `probe` prints, and its JSON.
 
-use super::{Profile, PROBE_BITS, RULE_NAMES};
+use super::{Profile, SamplerKind, PROBE_BITS, RULE_NAMES};
 
 fn rule_index(name: &str) -> usize {
     RULE_NAMES.iter().position(|r| *r == name).unwrap_or(0)
@@ -38,9 +38,41 @@ fn inconsistencies(p: &Profile) -> Vec<String> {
         .collect()
 }
 
+/// The departure of a rasterizer that is not point-sampled.
+fn sampler_departure(kind: SamplerKind) -> Option<&'static str> {
+    match kind {
+        SamplerKind::Point => None,
+        SamplerKind::Area => Some(
+            "It is not point-sampled (area sampler): a pixel's coverage depends on how much of it a primitive covers, where D3D11 and Vulkan decide coverage at sample points. A fill rule, subpixel bits and a sample position do not apply to it.",
+        ),
+        SamplerKind::AnyCoverage => Some(
+            "It is not point-sampled (any-coverage): a pixel is drawn when a primitive touches any part of it, as D3D12's and Vulkan's optional conservative rasterization (overestimate) does, not their default sample-point coverage. Shared edges are drawn by both triangles; a fill rule, subpixel bits and a sample position do not apply to it.",
+        ),
+        SamplerKind::Unknown => Some(
+            "Its frames fit neither a point sampler, an area sampler nor an any-coverage one, so its fill rule, subpixel bits and sample position were not measured.",
+        ),
+    }
+}
+
 /// Departures from D3D11 and Vulkan, as sentences.
 pub(super) fn departures(p: &Profile) -> Vec<String> {
     let mut out = Vec::new();
+    if let Some(d) = sampler_departure(p.sampler) {
+        out.push(d.to_owned());
+        if p.y_down == Some(false) {
+            out.push(Y_UP.to_owned());
+        }
+        out.extend(interpolation_departures(p));
+        return out;
+    }
+    if p.sample_offset.is_none() {
+        out.push(format!(
+            "Sample position: {}; D3D11 and single-sampled Vulkan sample at the pixel centre. Its tie rule and subpixel bits were not measured.",
+            p.sample_position
+        ));
+        out.extend(interpolation_departures(p));
+        return out;
+    }
     match p.fill_rule.as_deref() {
         None => out.push("It drew none of the fill-rule meshes, so its tie rule is unknown.".to_owned()),
         Some("top-left") => {}
@@ -68,7 +100,7 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
         ));
     }
     if p.y_down == Some(false) {
-        out.push("y points up: a triangle in the top half of the canvas is drawn in the bottom rows; D3D11 and Vulkan framebuffer coordinates point down.".to_owned());
+        out.push(Y_UP.to_owned());
     }
     match p.subpixel_bits {
         Some(b) if b < 4 => out.push(format!(
@@ -93,6 +125,14 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
             p.sample_position
         ));
     }
+    out.extend(interpolation_departures(p));
+    out
+}
+
+const Y_UP: &str = "y points up: a triangle in the top half of the canvas is drawn in the bottom rows; D3D11 and Vulkan framebuffer coordinates point down.";
+
+fn interpolation_departures(p: &Profile) -> Vec<String> {
+    let mut out = Vec::new();
     for probe in &p.interpolation {
         for c in probe.channels.iter().filter(|c| !c.within_bound) {
             out.push(format!(
@@ -116,8 +156,18 @@ impl Profile {
             .sum();
         s += &format!("profile of {}\n", self.rasterizer);
         s += &format!(
+            "  sampler:            {} ({})\n",
+            self.sampler.words(),
+            self.sampler_evidence
+        );
+        s += &format!(
             "  fill rule:          {}{}\n",
-            self.fill_rule.as_deref().unwrap_or("unknown"),
+            match (&self.fill_rule, self.sampler) {
+                (Some(rule), _) => rule.as_str(),
+                (None, SamplerKind::Point) if self.sample_offset.is_some() => "unknown",
+                (None, SamplerKind::Point) => "not measured (its sample position was not found)",
+                (None, _) => "not applicable (no point sample to decide ties at)",
+            },
             match (&self.fill_rule, self.fill_rule_consistent) {
                 (None, _) => String::new(),
                 (Some(_), true) => format!(

@@ -4,17 +4,18 @@
 //! scenes are `scenes.rs`'s; sentences about the result are `describe.rs`'s.
 
 use crate::frame::Frame;
+use crate::harness::diagnosis::{Eighths, CENTRE};
 use crate::harness::suite::{self, Verdict};
 use crate::plan::Plan;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference;
-use crate::scene::{FillRule, Scene};
+use crate::scene::{FillRule, Number, Scene};
 
 use super::scenes::{fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri};
 use super::{ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES};
 
 /// Draws a scene, catching panics.
-fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError> {
+pub(super) fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError> {
     let plan = Plan::for_scene(scene);
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         candidate.rasterize(scene, &plan)
@@ -27,8 +28,33 @@ fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError>
     })
 }
 
-/// Runs the fill-rule meshes; returns the evidence per mesh.
-pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer) -> Vec<MeshEvidence> {
+/// `scene` moved by (o − centre): a point sampler whose sample is at `o`
+/// then draws pixel Q exactly where a centre sampler draws it in `scene`
+/// (Q + o ∈ T + o − ½ ⇔ Q + ½ ∈ T), so the fill-rule and precision probes
+/// read its frames against the reference's centre samples. The move is a
+/// multiple of 1/8 px, on the grid of every rasterizer that keeps 3 bits
+/// or more, so it does not change how vertices snap.
+fn moved(scene: &Scene, o: Eighths) -> Scene {
+    let t = [o.0 - CENTRE.0, o.1 - CENTRE.1].map(|e| Number::ratio(e, 8));
+    let mut s = scene.clone();
+    if t.iter().all(Number::is_zero) {
+        return s;
+    }
+    for v in s.primitives.iter_mut().flat_map(|p| p.vertices_mut()) {
+        v.x = Number::from_rbig(v.x.as_rbig() + t[0].as_rbig());
+        v.y = Number::from_rbig(v.y.as_rbig() + t[1].as_rbig());
+    }
+    s
+}
+
+/// Draws `scene` moved for a sample at `o` ([`moved`]).
+fn draw_for(candidate: &dyn Rasterizer, scene: &Scene, o: Eighths) -> Result<Frame, RasterError> {
+    draw(candidate, &moved(scene, o))
+}
+
+/// Runs the fill-rule meshes, moved for a sample at `o`; returns the
+/// evidence per mesh.
+pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer, o: Eighths) -> Vec<MeshEvidence> {
     fill_rule_meshes()
         .into_iter()
         .map(|(label, s)| {
@@ -49,7 +75,7 @@ pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer) -> Vec<MeshEvidence> {
                 off_edge_differences: 0,
                 error: None,
             };
-            let frame = match draw(candidate, &s) {
+            let frame = match draw_for(candidate, &s, o) {
                 Ok(f) if f.sample_count() == n => f,
                 Ok(_) => {
                     evidence.error = Some("returned a frame of the wrong size".to_owned());
@@ -128,12 +154,17 @@ pub(super) fn probe_y(candidate: &dyn Rasterizer) -> Option<bool> {
     }
 }
 
-/// Bits resolved along one axis: the largest k such that all three steps
-/// of every k' ≤ k change their sample. `Err` when it could not draw.
-pub(super) fn probe_axis(candidate: &dyn Rasterizer, transpose: bool) -> Result<u32, String> {
+/// Bits resolved along one axis, the scenes moved for a sample at `o`:
+/// the largest k such that all three steps of every k' ≤ k change their
+/// sample. `Err` when it could not draw.
+pub(super) fn probe_axis(
+    candidate: &dyn Rasterizer,
+    transpose: bool,
+    o: Eighths,
+) -> Result<u32, String> {
     let (before, after, steps) = precision_scenes(transpose);
-    let f0 = draw(candidate, &before).map_err(|e| e.to_string())?;
-    let f1 = draw(candidate, &after).map_err(|e| e.to_string())?;
+    let f0 = draw_for(candidate, &before, o).map_err(|e| e.to_string())?;
+    let f1 = draw_for(candidate, &after, o).map_err(|e| e.to_string())?;
     if f0.sample_count() != before.canvas.pixel_count()
         || f1.sample_count() != after.canvas.pixel_count()
     {
@@ -153,14 +184,34 @@ pub(super) fn probe_axis(candidate: &dyn Rasterizer, transpose: bool) -> Result<
     Ok(bits)
 }
 
-/// Sample position: tiny triangles around (i/8, j/8) in pixel (2i+1, 2j+1).
-pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> (String, Option<[f64; 2]>) {
+/// The sample position: what `probe_sample_position` found.
+pub(super) struct Position {
+    /// "centre", "(x, y) in the pixel", "(1, 1) of the pixel, outside it",
+    /// "several: ..." or "none found ...".
+    pub(super) words: String,
+    /// The one offset found, in eighths of a pixel.
+    pub(super) offset: Option<Eighths>,
+}
+
+/// Pixels between the canvas border and the grid of tiny triangles: a
+/// sample up to this far outside its pixel (offsets from −2 to 3 px) still
+/// lands on the canvas.
+const POSITION_MARGIN: u32 = 2;
+
+/// Sample position: tiny triangles (3/32 px) around (i/8, j/8) of pixel
+/// (2i + 3, 2j + 3), i, j in 0..8. A point sampler draws the one whose
+/// anchor A lies by its sample, in the pixel Q with Q + o ≈ A: the offset
+/// o = A − Q is read to 1/8 whether or not it lies inside the pixel, since
+/// the anchors' fractions cover every eighth and the margin keeps Q on the
+/// canvas for o from −2 to 3 px (a sample at the bottom-right corner
+/// (1, 1), or at (1.5, 0.5), draws the whole raster shifted).
+pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> Position {
     let d = 1.0 / 32.0;
     let mut triangles = Vec::new();
     let mut anchors = Vec::new();
     for j in 0..8u32 {
         for i in 0..8u32 {
-            let (px, py) = (2 * i + 1, 2 * j + 1);
+            let (px, py) = (2 * i + 1 + POSITION_MARGIN, 2 * j + 1 + POSITION_MARGIN);
             let (x, y) = (
                 f64::from(px) + f64::from(i) / 8.0,
                 f64::from(py) + f64::from(j) / 8.0,
@@ -173,19 +224,33 @@ pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> (String, Opti
             anchors.push((x, y));
         }
     }
-    let s = mesh_scene("probe_sample_position", 18, 18, 8, triangles);
+    let side = 16 + 2 * POSITION_MARGIN;
+    let s = mesh_scene("probe_sample_position", side, side, 8, triangles);
     let frame = match draw(candidate, &s) {
-        Ok(f) => f,
-        Err(e) => return (format!("unknown: {e}"), None),
+        Ok(f) if f.samples == 1 && f.sample_count() == s.canvas.pixel_count() => f,
+        Ok(_) => {
+            return Position {
+                words: "unknown: returned a frame of the wrong size".to_owned(),
+                offset: None,
+            }
+        }
+        Err(e) => {
+            return Position {
+                words: format!("unknown: {e}"),
+                offset: None,
+            }
+        }
     };
-    let mut offsets: Vec<(i64, i64)> = Vec::new();
+    let mut offsets: Vec<Eighths> = Vec::new();
     for qy in 0..frame.height {
         for qx in 0..frame.width {
             let i = frame.index(qx, qy);
+            let Some(&(x, y)) = anchors.get((frame.last[i] as usize).wrapping_sub(1)) else {
+                continue;
+            };
             if frame.coverage[i] == 0 {
                 continue;
             }
-            let (x, y) = anchors[frame.last[i] as usize - 1];
             // The sample lies within 3/32 px of the anchor: name it to 1/8.
             let o = (
                 ((x - f64::from(qx)) * 8.0).round() as i64,
@@ -197,26 +262,30 @@ pub(super) fn probe_sample_position(candidate: &dyn Rasterizer) -> (String, Opti
         }
     }
     offsets.sort();
-    match offsets.as_slice() {
-        [] => (
-            "none found (no triangle of 3/32 px around an offset (i/8, j/8) was drawn)".to_owned(),
-            None,
-        ),
-        [(4, 4)] => ("centre".to_owned(), Some([0.5, 0.5])),
-        [(x, y)] => {
-            let o = [*x as f64 / 8.0, *y as f64 / 8.0];
-            (format!("({}, {}) in the pixel", o[0], o[1]), Some(o))
+    let eighths = |(x, y): Eighths| format!("({}, {})", x as f64 / 8.0, y as f64 / 8.0);
+    let inside = |v: i64| (0..8).contains(&v);
+    let words = match offsets.as_slice() {
+        [] => {
+            "none found (no triangle of 3/32 px around an offset (i/8, j/8) was drawn)".to_owned()
         }
-        many => (
-            format!(
-                "several: {}",
-                many.iter()
-                    .map(|(x, y)| format!("({}, {})", *x as f64 / 8.0, *y as f64 / 8.0))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-            None,
+        [CENTRE] => "centre".to_owned(),
+        [o] if inside(o.0) && inside(o.1) => format!("{} in the pixel", eighths(*o)),
+        [o] => format!(
+            "{} of the pixel, outside it (the raster is shifted by {} px)",
+            eighths(*o),
+            eighths((o.0 - CENTRE.0, o.1 - CENTRE.1))
         ),
+        many => format!(
+            "several: {}",
+            many.iter()
+                .map(|o| eighths(*o))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    };
+    Position {
+        words,
+        offset: (offsets.len() == 1).then(|| offsets[0]),
     }
 }
 

@@ -5,6 +5,16 @@
 //! Every probe draws small scenes built here (no case files) and reads the
 //! frames back; nothing about the rasterizer is assumed or asked:
 //!
+//! - **Sampler, first.** Slivers off every point of the 1/8 lattice, a
+//!   mesh of strips 1/8 px high and a triangle over whole pixels tell a
+//!   point sampler from an area sampler and an any-coverage (conservative)
+//!   one (`sampler.rs` shows why exactly). The fill-rule, subpixel and
+//!   sample-position probes below ask where one point per pixel falls;
+//!   for a rasterizer that is not point-sampled they are not run, and the
+//!   profile says "not applicable" instead of inventing a rule and bits.
+//!   [`diagnose`] is the sampler, position and tie-rule decision alone: the
+//!   matrix takes its words about a row's sampler and rule from it, so the
+//!   two cannot disagree.
 //! - **Fill rule.** Meshes whose samples lie exactly on shared horizontal,
 //!   vertical and diagonal edges and on fan centres, in several windings
 //!   and draw orders. The reference draws each under all five rules; the
@@ -37,7 +47,11 @@
 //!   subpixel bits, the most a case can: "exact" means the rasterizer
 //!   keeps all of them.
 //! - **Sample position.** 64 tiny triangles (3/32 px) around the offsets
-//!   (i/8, j/8) of separate pixels: the ones drawn say where the sample is.
+//!   (i/8, j/8) of separate pixels, with a margin: the ones drawn say where
+//!   the sample is, from −2 to 3 px, inside the pixel or not. It runs
+//!   before the fill-rule and precision probes, whose scenes are then moved
+//!   by (sample − centre) so that a shifted raster (a sample at (1, 1)) is
+//!   read against the reference's centre samples, not as a wrong rule.
 //! - **Interpolation.** A linear and a perspective mesh (w from 0.1 to 10)
 //!   with depth and two attributes, measured as in `run` (SPEC §6.3).
 //!
@@ -55,6 +69,7 @@
 
 mod describe;
 mod infer;
+mod sampler;
 mod scenes;
 
 use serde::Serialize;
@@ -65,6 +80,8 @@ use describe::departures;
 use infer::{
     nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
 };
+
+pub use crate::harness::diagnosis::{Diagnosis, Sampler, SamplerKind};
 
 pub use crate::harness::profile::SCHEMA;
 
@@ -77,8 +94,17 @@ pub struct Profile {
     pub schema: &'static str,
     pub tool: crate::report::json::Tool,
     pub rasterizer: String,
+    /// How it decides coverage: `point`, `area`, `any-coverage` or
+    /// `unknown`. Only for `point` are the fill rule, subpixel bits and
+    /// sample position measured; otherwise they are `null` / "not
+    /// applicable". (Optional in `rastercheck-profile/1`: a profile
+    /// without it was written for a point sampler.)
+    pub sampler: SamplerKind,
+    /// The frames that decided the sampler, in a sentence.
+    pub sampler_evidence: String,
     /// The rule that explains the most tie samples (`top-left`, ...,
-    /// `all-edges`, or `none` for open edges); `null` when nothing was drawn.
+    /// `all-edges`, or `none` for open edges); `null` when nothing was
+    /// drawn, or when it is not point-sampled.
     pub fill_rule: Option<String>,
     /// Whether that rule explains every tie sample.
     pub fill_rule_consistent: bool,
@@ -94,7 +120,8 @@ pub struct Profile {
     pub subpixel: String,
     /// Bits resolved along x and along y.
     pub subpixel_resolved: Resolved,
-    /// "centre", "(x, y)", "several: ..." or "none found".
+    /// "centre", "(x, y) in the pixel", "(1, 1) of the pixel, outside it
+    /// ...", "several: ...", "none found" or "not applicable (...)".
     pub sample_position: String,
     /// The sample's offset in its pixel, when there is exactly one.
     pub sample_offset: Option<[f64; 2]>,
@@ -149,7 +176,7 @@ pub struct ChannelProbe {
 }
 
 /// The candidate rules: the five fill rules, then "none" (open edges).
-pub(super) const RULE_NAMES: [&str; 6] = [
+pub const RULE_NAMES: [&str; 6] = [
     "top-left",
     "bottom-right",
     "top-right",
@@ -158,9 +185,49 @@ pub(super) const RULE_NAMES: [&str; 6] = [
     "none",
 ];
 
-/// Probes a rasterizer. `Err` when it draws none of the probe scenes.
-pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
-    let evidence = probe_fill_rule(candidate);
+/// Why the point-sampler probes were not run, or `None` when they were.
+fn not_measured(d: &Diagnosis) -> Option<String> {
+    match (d.sampler.kind, d.offset) {
+        (SamplerKind::Point, Some(_)) => None,
+        (SamplerKind::Point, None) => Some(format!(
+            "not measured: its sample position was not found ({})",
+            d.sample_position
+        )),
+        (kind, _) => Some(format!("not applicable ({})", kind.words())),
+    }
+}
+
+/// The sampler decision, then for a point sampler its sample position and
+/// tie rule (the meshes moved for its sample): what the matrix's findings
+/// say about a row. `Err` when it draws none of the probe scenes.
+pub fn diagnose(candidate: &dyn Rasterizer) -> Result<Diagnosis, String> {
+    diagnose_with_evidence(candidate).map(|(d, _)| d)
+}
+
+/// [`diagnose`], with the fill-rule evidence per mesh.
+fn diagnose_with_evidence(
+    candidate: &dyn Rasterizer,
+) -> Result<(Diagnosis, Vec<MeshEvidence>), String> {
+    let sampler = sampler::decide(candidate)
+        .map_err(|e| format!("{} could not draw the probe scenes: {e}", candidate.name()))?;
+    let mut d = Diagnosis {
+        sample_position: String::new(),
+        offset: None,
+        fill_rule: None,
+        fill_rule_consistent: false,
+        sampler,
+    };
+    if d.sampler.kind != SamplerKind::Point {
+        d.sample_position = not_measured(&d).unwrap_or_default();
+        return Ok((d, Vec::new()));
+    }
+    let position = probe_sample_position(candidate);
+    d.sample_position = position.words;
+    d.offset = position.offset;
+    let Some(o) = d.offset else {
+        return Ok((d, Vec::new()));
+    };
+    let evidence = probe_fill_rule(candidate, o);
     if let Some(e) = evidence.iter().find_map(|e| e.error.clone()) {
         if evidence.iter().all(|e| e.error.is_some()) {
             return Err(format!(
@@ -170,9 +237,25 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         }
     }
     let rule = nearest_rule(&evidence);
+    d.fill_rule = rule.as_ref().map(|r| r.0.clone());
+    d.fill_rule_consistent = rule.as_ref().is_some_and(|r| r.1);
+    Ok((d, evidence))
+}
+
+/// Probes a rasterizer. `Err` when it draws none of the probe scenes.
+pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
+    let (d, evidence) = diagnose_with_evidence(candidate)?;
     let y_down = probe_y(candidate);
-    let x_bits = probe_axis(candidate, false);
-    let y_bits = probe_axis(candidate, true);
+    let (x_bits, y_bits) = match (not_measured(&d), d.offset) {
+        (None, Some(o)) => (
+            probe_axis(candidate, false, o),
+            probe_axis(candidate, true, o),
+        ),
+        (why, _) => {
+            let why = why.unwrap_or_default();
+            (Err(why.clone()), Err(why))
+        }
+    };
     let (subpixel_bits, subpixel) = match (&x_bits, &y_bits) {
         (Ok(x), Ok(y)) => {
             // A rasterizer cannot resolve finer than its vertex grid along
@@ -193,9 +276,9 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
                 (Some(b), format!("{b} bits{axes}"))
             }
         }
+        (Err(e), _) | (_, Err(e)) if e.starts_with("not ") => (None, e.clone()),
         (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
     };
-    let (sample_position, sample_offset) = probe_sample_position(candidate);
     let interpolation = probe_interpolation(candidate);
     let mut profile = Profile {
         schema: SCHEMA,
@@ -204,8 +287,10 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
             version: env!("CARGO_PKG_VERSION"),
         },
         rasterizer: candidate.name().to_owned(),
-        fill_rule: rule.as_ref().map(|r| r.0.clone()),
-        fill_rule_consistent: rule.as_ref().is_some_and(|r| r.1),
+        sampler: d.sampler.kind,
+        sampler_evidence: d.sampler.evidence,
+        fill_rule: d.fill_rule,
+        fill_rule_consistent: d.fill_rule_consistent,
         fill_rule_evidence: evidence,
         y_down,
         subpixel_bits,
@@ -214,8 +299,8 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
             x: x_bits.ok(),
             y: y_bits.ok(),
         },
-        sample_position,
-        sample_offset,
+        sample_position: d.sample_position,
+        sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
         interpolation,
         departures: Vec::new(),
     };

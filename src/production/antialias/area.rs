@@ -21,7 +21,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::fixed::{Fixed, Format, MAX_FRAC_BITS};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Cull, LineRule, Number, PolygonFill, Primitive, Scene};
+use crate::scene::{LineRule, Number, PolygonFill, Primitive, Scene};
 
 /// The `area-f32` method.
 #[derive(Clone, Copy, Debug, Default)]
@@ -75,6 +75,8 @@ impl Rasterizer for AreaF32 {
 struct Shape {
     contours: Vec<Vec<[f64; 2]>>,
     fill: PolygonFill,
+    /// The primitive's index in the scene.
+    index: usize,
 }
 
 /// Every drawn primitive as a shape, its vertices snapped as production
@@ -98,7 +100,7 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
     let point = |v: &crate::scene::Vertex| [place(&v.x), place(&v.y)];
     let to_f64 = |p: [Fixed; 2]| p.map(|c| c.0 as f64 / format.one() as f64);
     let mut shapes = Vec::new();
-    for primitive in &scene.primitives {
+    for (index, primitive) in scene.primitives.iter().enumerate() {
         match primitive {
             Primitive::Triangle(t) => {
                 let [a, b, c] = t.vertices.each_ref().map(point);
@@ -106,15 +108,11 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                 // units).
                 let d = |u: Fixed, v: Fixed| i128::from(u.0) - i128::from(v.0);
                 let area = d(b[0], a[0]) * d(c[1], a[1]) - d(b[1], a[1]) * d(c[0], a[0]);
-                let culled = match scene.rules.cull {
-                    Cull::Clockwise => area > 0,
-                    Cull::CounterClockwise => area < 0,
-                    _ => false,
-                };
-                if area != 0 && !culled {
+                if area != 0 && !scene.rules.cull.discards(area.cmp(&0)) {
                     shapes.push(Shape {
                         contours: vec![[a, b, c].map(to_f64).to_vec()],
                         fill: PolygonFill::NonZero,
+                        index,
                     });
                 }
             }
@@ -144,6 +142,7 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                         corner(v0, 1.0),
                     ]],
                     fill: PolygonFill::NonZero,
+                    index,
                 });
             }
             Primitive::Polygon(polygon) => shapes.push(Shape {
@@ -152,10 +151,35 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                     .map(|c| c.iter().map(|v| to_f64(point(v))).collect())
                     .collect(),
                 fill: polygon.fill,
+                index,
             }),
         }
     }
     Ok(shapes)
+}
+
+/// Calls `each` with every drawn primitive's index and its coverage of
+/// every pixel (row-major), as `area-f32` computes it, one primitive at a
+/// time: what `foil-area-sampler` thresholds.
+pub(crate) fn each_primitive(
+    scene: &Scene,
+    mut each: impl FnMut(usize, &[f64]),
+) -> Result<(), RasterError> {
+    let canvas = scene.canvas;
+    let mut coverage = vec![0.0f64; canvas.pixel_count()];
+    let mut scratch = Vec::new();
+    for shape in shapes(scene)? {
+        accumulate(
+            &shape,
+            canvas.width,
+            canvas.height,
+            &mut scratch,
+            &mut coverage,
+        );
+        each(shape.index, &coverage);
+        coverage.fill(0.0);
+    }
+    Ok(())
 }
 
 /// Accumulates one shape over its bounding box and adds its coverage into
@@ -340,6 +364,7 @@ mod tests {
         let shape = Shape {
             contours: vec![contour],
             fill,
+            index: 0,
         };
         accumulate(&shape, w, h, &mut Vec::new(), &mut out);
         out
@@ -379,6 +404,7 @@ mod tests {
         let shape = Shape {
             contours: vec![square.to_vec(), square.to_vec()],
             fill: PolygonFill::EvenOdd,
+            index: 0,
         };
         let mut out = vec![0.0; 4];
         accumulate(&shape, 2, 2, &mut Vec::new(), &mut out);
