@@ -237,7 +237,27 @@ fn softpipe_is_bottom_right_in_its_own_process() {
             .to_owned()
     };
     assert_eq!(verdict("fill_rule_bottom_right"), "PASS", "{text}");
-    assert_eq!(verdict("fill_rule_top_left"), "FAIL", "{text}");
+    // Judged under its own rule (SPEC.md §3.1), the top-left case passes,
+    // and says so; probe, which holds it to no rule, finds bottom-right.
+    assert_eq!(verdict("fill_rule_top_left"), "PASS", "{text}");
+    assert!(
+        text.contains("(judged under its own bottom-right rule; the case states top-left)"),
+        "{text}"
+    );
+    let output = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .env_remove("GALLIUM_DRIVER")
+        .args(["probe", "-r", "softpipe"])
+        .output()
+        .expect("the rastercheck binary runs");
+    let text = String::from_utf8_lossy(&output.stdout);
+    let rule = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("fill rule:"));
+    assert!(
+        rule.is_some_and(|l| l.contains("bottom-right")),
+        "{text}{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
 }
 
 /// The prepared path the bench times draws what `rasterize` draws, and
