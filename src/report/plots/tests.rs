@@ -198,6 +198,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 reasons: Vec::new(),
                 time_ms: 0.0,
                 method: None,
+                judged_fill_rule: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })
