@@ -110,7 +110,10 @@ impl Diagnosis {
 
     /// Why a row shows `symptom` on its mesh cases, as probe's decision
     /// explains it: the matrix's only words about a row's sampler and rule.
-    pub fn cause(&self, symptom: Symptom) -> String {
+    /// `judged` is the rule its mesh cases were judged under: top-left, as
+    /// they state, or the rule it follows whatever a case states (SPEC.md
+    /// §3.1).
+    pub fn cause(&self, symptom: Symptom, judged: &str) -> String {
         let probe = "Probe finds it";
         match self.sampler.kind {
             SamplerKind::AnyCoverage => {
@@ -141,7 +144,7 @@ impl Diagnosis {
         match (symptom, rule.as_str()) {
             (Symptom::Overdraw, "all-edges") => format!("{probe} point-sampled with closed edges (all-edges, {consistent}): samples on shared edges are drawn by both triangles."),
             (Symptom::Holes, "none") => format!("{probe} point-sampled with open edges (none, {consistent}): samples on shared edges are owned by neither triangle."),
-            (Symptom::WrongOwner, r) if r != "top-left" && self.fill_rule_consistent => format!("{probe} point-sampled with a different consistent tie rule than top-left: {r}."),
+            (Symptom::WrongOwner, r) if r != judged && self.fill_rule_consistent => format!("{probe} point-sampled with a different consistent tie rule than {judged}: {r}."),
             (_, r) => format!("{probe} point-sampled with the {r} tie rule ({consistent}), which does not do this: its snapping, clipping or float arithmetic moves those edges."),
         }
     }

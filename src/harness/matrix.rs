@@ -97,6 +97,9 @@ pub struct Row {
     /// Probe's decision on its sampler and tie rule, when it is available
     /// (`Err`: why probe could not decide).
     pub diagnosis: Option<Result<Diagnosis, String>>,
+    /// The fill rule it follows whatever a case states, and is judged under
+    /// (SPEC.md §3.1), when it has one.
+    pub own_rule: Option<FillRule>,
 }
 
 /// How [`build`] diagnoses a row: `explore::probe::diagnose` (the harness
@@ -206,12 +209,18 @@ pub fn build(
             .is_ok()
             .then(|| candidates.last().map(|r| diagnose(r.as_ref())))
             .flatten();
+        // Asked after probe has drawn with it: a program's hello says it.
+        let own_rule = available
+            .is_ok()
+            .then(|| candidates.last().and_then(|r| r.fixed_fill_rule()))
+            .flatten();
         rows.push(Row {
             name: row_name,
             foil,
             available,
             cells: Vec::new(),
             diagnosis,
+            own_rule,
         });
     }
     let root = Path::new(".");
@@ -368,15 +377,16 @@ fn findings(rows: &[Row], slot: &[Option<usize>], outcomes: &[CaseOutcome]) -> V
         }
         let mut said = false;
         // Why: probe's decision, or why there is none.
+        let judged = row.own_rule.map_or("top-left", FillRule::name);
         let cause = |symptom: Symptom| match &row.diagnosis {
-            Some(Ok(d)) => d.cause(symptom),
+            Some(Ok(d)) => d.cause(symptom, judged),
             Some(Err(e)) => format!("Probe could not say why: {e}."),
             None => String::new(),
         };
         if overdraw > 0 {
             said = true;
             out.push(format!(
-                "{name} is not watertight under the top-left rule: {} in {} of {} ({}). {}",
+                "{name} is not watertight under the {judged} rule: {} in {} of {} ({}). {}",
                 plural(overdraw, "overdrawn sample", "overdrawn samples"),
                 od_cases.len(),
                 plural(meshes as u64, "mesh case", "mesh cases"),
