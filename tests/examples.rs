@@ -350,3 +350,41 @@ fn the_examples_answer_broken_requests_with_errors_and_go_on() {
         assert!(lines[4]["error"].is_string(), "{lines:?}");
     }
 }
+
+/// probe diagnoses both examples from their frames alone (SPEC §13): each
+/// point-samples single-sample scenes at the pixel centre with the case's
+/// tie rule (top-left, which probe's scenes state) and keeps every
+/// subpixel bit; the JavaScript one gives no values to measure.
+#[test]
+fn probe_diagnoses_both_examples() {
+    let (Some(exe), Some(js)) = (c_example("c-probe"), js_example("")) else {
+        return;
+    };
+    let c = format!("c=external-persistent:{}", exe.display());
+    let js = format!("js=external-persistent:{js}");
+    for (tag, spec, values) in [("c", &c, true), ("js", &js, false)] {
+        let out_file = scratch(&format!("examples-probe-{tag}")).join("profile.json");
+        let out = rastercheck_env(
+            &root(),
+            &[
+                "probe",
+                "-r",
+                spec,
+                "--out",
+                &out_file.display().to_string(),
+            ],
+            &[],
+        );
+        assert!(out.status.success(), "{}", text(&out));
+        let p = read_json(&out_file);
+        assert_eq!(p["rasterizer"], tag);
+        assert_eq!(p["sampler"], "point", "{p}");
+        assert_eq!(p["fill_rule"], "top-left", "{p}");
+        assert_eq!(p["fill_rule_consistent"], true, "{p}");
+        assert_eq!(p["subpixel"], "exact", "{p}");
+        assert_eq!(p["sample_position"], "centre", "{p}");
+        assert_eq!(p["y_down"], true, "{p}");
+        let printed = text(&out);
+        assert_eq!(printed.contains("nothing to compare"), !values, "{printed}");
+    }
+}
