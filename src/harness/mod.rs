@@ -2,6 +2,8 @@
 //!
 //! - [`suite`]: finding case files, reading them, running one case through
 //!   the reference and the candidates, and judging the golden file.
+//! - [`oracle`]: the reference's answer for a case and what the exact
+//!   rationals say beyond its frame, computed once for every candidate.
 //! - [`runner`]: many cases at once: selection, parallel execution, limits,
 //!   outcomes in a fixed order.
 //! - [`golden`]: the blessed reference outputs (EXR) and their comparison.
@@ -17,6 +19,7 @@ pub mod baseline;
 pub mod diagnosis;
 pub mod golden;
 pub mod matrix;
+pub mod oracle;
 pub mod profile;
 pub mod runner;
 pub mod suite;
