@@ -80,8 +80,8 @@ pub fn run(args: RunArgs) -> Exit {
     for d in &declared {
         outln!("{}", d.note());
     }
-    let mut candidates = match rasterizers_named(&names) {
-        Ok(candidates) => candidates,
+    let candidates = match rasterizers_named(&names) {
+        Ok(candidates) => crate::harness::profile::apply(candidates, &declared),
         Err(exit) => return exit,
     };
     let shard = match args
@@ -168,11 +168,10 @@ pub fn run(args: RunArgs) -> Exit {
         .report
         .as_deref()
         .map(|dir| report::case_files::CaseWriter::new(dir, &foils));
-    let mut outcomes = crate::harness::profile::run_all_with_profiles(
+    let mut outcomes = runner::run_all(
         &files,
         &limits,
-        &mut candidates,
-        &declared,
+        &candidates,
         &root,
         args.threads,
         &|k, outcome| {

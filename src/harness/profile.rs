@@ -1,6 +1,9 @@
-//! Declared conventions (`run --profile`): reading profile files, choosing
-//! the rasterizers to run, and judging each profiled rasterizer against a
-//! reference drawn under its declared fill rule instead of each case's.
+//! Declared conventions (`run --profile`, `fuzz --profile`): reading
+//! profile files, choosing the rasterizers to run, and wrapping each
+//! profiled rasterizer so that it follows its declared fill rule: the
+//! harness then judges it against a reference drawn under that rule
+//! instead of each case's, as it judges any rasterizer whose rule is fixed
+//! (`suite::run_candidate`, SPEC.md §3.1).
 //!
 //! `explore::probe` writes profiles; the harness only reads what they
 //! declare, so a hand-written profile is judged the same way.
@@ -9,12 +12,10 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use super::runner::{self, CaseOutcome};
-use super::suite::{self, CaseFile, Verdict};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Limits, Scene};
+use crate::scene::{FillRule, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -155,30 +156,6 @@ impl Rasterizer for Profiled {
     }
 }
 
-/// Stands in for a profiled rasterizer during the ordinary run, so that it
-/// is drawn only once, under its declared rule.
-struct Deferred {
-    name: String,
-    foil: bool,
-}
-
-impl Rasterizer for Deferred {
-    fn name(&self) -> &str {
-        &self.name
-    }
-    fn capabilities(&self) -> Capabilities {
-        Capabilities::everything()
-    }
-    fn is_foil(&self) -> bool {
-        self.foil
-    }
-    fn rasterize(&self, _: &Scene, _: &Plan) -> Result<Frame, RasterError> {
-        Err(RasterError::Unsupported(
-            "deferred to its profile".to_owned(),
-        ))
-    }
-}
-
 /// Why a case cannot be judged under `rule`: `all-edges` is not defined for
 /// polygons (SPEC.md §14.1), so a polygon case is unsupported under it
 /// rather than judged under another rule.
@@ -199,74 +176,23 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
     s
 }
 
-/// [`runner::run_all`], except that every candidate named by a profile is
-/// judged against a reference drawn under the profile's fill rule. That is
-/// done on the case's own thread, before `done` sees the outcome, so that
-/// the case's frames can be released as soon as it is written.
-pub fn run_all_with_profiles(
-    files: &[CaseFile],
-    limits: &Limits,
-    candidates: &mut [Box<dyn Rasterizer>],
+/// The candidates of `run --profile`, each one a profile names wrapped in
+/// [`Profiled`]: judged under the profile's fill rule by the same path as a
+/// rasterizer whose rule is fixed (`suite::run_candidate`, SPEC.md §3.1).
+pub fn apply(
+    candidates: Vec<Box<dyn Rasterizer>>,
     declared: &[Declared],
-    root: &Path,
-    threads: Option<usize>,
-    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
-) -> Vec<CaseOutcome> {
-    let mut swapped: Vec<(usize, Box<dyn Rasterizer>, FillRule)> = Vec::new();
-    for (index, candidate) in candidates.iter_mut().enumerate() {
-        if let Some(d) = declared.iter().find(|d| d.rasterizer == candidate.name()) {
-            let stand_in: Box<dyn Rasterizer> = Box::new(Deferred {
-                name: candidate.name().to_owned(),
-                foil: candidate.is_foil(),
-            });
-            swapped.push((index, std::mem::replace(candidate, stand_in), d.fill_rule));
-        }
-    }
-    let under_profiles = |k: usize, outcome: &mut CaseOutcome| {
-        if let (Some(scene), true) = (&outcome.scene, outcome.reference.is_some()) {
-            for (index, candidate, rule) in &swapped {
-                if let Some(why) = cannot_judge_under(scene, *rule) {
-                    if let Some(slot) = outcome.candidates.get_mut(*index) {
-                        *slot = suite::CandidateRun::without_frame(
-                            candidate.name().to_owned(),
-                            Verdict::Unsupported(why),
-                            std::time::Duration::ZERO,
-                        );
-                    }
-                    continue;
-                }
-                let s = under_rule(scene, *rule);
-                let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    let reference = suite::run_reference(&s);
-                    suite::run_candidate(&s, &reference, candidate.as_ref())
-                }));
-                let run = run.unwrap_or_else(|panic| suite::CandidateRun {
-                    rasterizer: candidate.name().to_owned(),
-                    verdict: Verdict::Error(format!(
-                        "the reference under the declared {rule} rule panicked: {}",
-                        suite::panic_message(&*panic)
-                    )),
-                    metrics: None,
-                    frame: None,
-                    elapsed: std::time::Duration::ZERO,
-                    method: None,
-                    judged_rule: None,
-                });
-                // The report names the rule judged beside the case's.
-                let run = suite::CandidateRun {
-                    judged_rule: (*rule != scene.rules.fill_rule).then_some(*rule),
-                    ..run
-                };
-                if let Some(slot) = outcome.candidates.get_mut(*index) {
-                    *slot = run;
-                }
-            }
-        }
-        done(k, outcome);
-    };
-    let outcomes = runner::run_all(files, limits, candidates, root, threads, &under_profiles);
-    for (index, candidate, _) in swapped {
-        candidates[index] = candidate;
-    }
-    outcomes
+) -> Vec<Box<dyn Rasterizer>> {
+    candidates
+        .into_iter()
+        .map(
+            |candidate| match declared.iter().find(|d| d.rasterizer == candidate.name()) {
+                Some(d) => Box::new(Profiled {
+                    inner: candidate,
+                    rule: d.fill_rule,
+                }) as Box<dyn Rasterizer>,
+                None => candidate,
+            },
+        )
+        .collect()
 }
