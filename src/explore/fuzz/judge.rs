@@ -4,6 +4,7 @@
 //! the samples that show each (what the shrinker crops to). Whether a
 //! failing moving scene is fair is `fair.rs`'s.
 
+use std::borrow::Cow;
 use std::time::Instant;
 
 use dashu_ratio::RBig;
@@ -166,15 +167,18 @@ pub enum Outcome {
 /// profile's under `fuzz --profile`), so that the reference, the failure's
 /// kinds and the case written all state the rule judged. `Err` when the
 /// scene cannot be judged under that rule (all-edges polygons).
-pub fn as_judged(scene: &Scene, candidate: &dyn Rasterizer) -> Result<Scene, String> {
+pub fn as_judged<'a>(
+    scene: &'a Scene,
+    candidate: &dyn Rasterizer,
+) -> Result<Cow<'a, Scene>, String> {
     match candidate
         .fixed_fill_rule()
         .filter(|&rule| rule != scene.rules.fill_rule)
     {
-        None => Ok(scene.clone()),
+        None => Ok(Cow::Borrowed(scene)),
         Some(rule) => match profile::cannot_judge_under(scene, rule) {
             Some(why) => Err(why),
-            None => Ok(profile::under_rule(scene, rule)),
+            None => Ok(Cow::Owned(profile::under_rule(scene, rule))),
         },
     }
 }
@@ -182,7 +186,7 @@ pub fn as_judged(scene: &Scene, candidate: &dyn Rasterizer) -> Result<Scene, Str
 /// Runs the reference and `candidate` on `scene` and judges the candidate
 /// as `run` does.
 pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
-    let scene = &match as_judged(scene, candidate) {
+    let scene = &*match as_judged(scene, candidate) {
         Ok(scene) => scene,
         Err(why) => return Outcome::Unsupported(why),
     };

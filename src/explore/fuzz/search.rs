@@ -3,6 +3,7 @@
 //! it back and judge it again, and write it. With its options, its summary,
 //! the default folder and the clock seed.
 
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 
 use dashu_ratio::RBig;
@@ -143,8 +144,8 @@ fn finished_case(
     shrunk: &Shrunk,
 ) -> Scene {
     // Stated under the rule it was judged under.
-    let mut scene =
-        super::judge::as_judged(&shrunk.scene, candidate).unwrap_or_else(|_| shrunk.scene.clone());
+    let mut scene = super::judge::as_judged(&shrunk.scene, candidate)
+        .map_or_else(|_| shrunk.scene.clone(), Cow::into_owned);
     scene.name = format!(
         "fuzz_{}_{}_{}",
         sanitize(candidate.name()),
