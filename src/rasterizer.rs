@@ -25,6 +25,9 @@ pub struct Capabilities {
     /// pixel. A scene that declares motion blur and moves nothing is
     /// static and needs no such capability.
     pub motion_blur: bool,
+    /// Scenes whose vertices are in clip space (SPEC.md §16): clipped,
+    /// divided and put through a viewport before they are rasterized.
+    pub clip_space: bool,
 }
 
 impl Capabilities {
@@ -37,6 +40,7 @@ impl Capabilities {
             polygons: true,
             antialias: true,
             motion_blur: true,
+            clip_space: true,
         }
     }
 
@@ -48,6 +52,11 @@ impl Capabilities {
         }
         if !self.antialias && scene.effects.antialias.is_some() {
             return Some("this rasterizer does not antialias".to_owned());
+        }
+        if !self.clip_space && scene.in_clip_space() {
+            return Some(
+                "this rasterizer takes screen-space vertices only, not clip space".to_owned(),
+            );
         }
         if !self.motion_blur && scene.effects.motion_blur.is_some() && scene.moves() {
             return Some("this rasterizer does not draw moving primitives".to_owned());

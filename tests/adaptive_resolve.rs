@@ -45,6 +45,7 @@ fn scene(rng: &mut Rng, pattern: Pattern, samples: u32, rule: FillRule) -> Scene
             subpixel_bits: *rng.pick(&[Some(0), Some(4), Some(8), None]),
             fill_rule: rule,
             cull: *rng.pick(&[Cull::None, Cull::Clockwise]),
+            ..Rules::default()
         },
         primitives,
         effects: Effects {
@@ -60,6 +61,7 @@ fn scene(rng: &mut Rng, pattern: Pattern, samples: u32, rule: FillRule) -> Scene
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     }
 }
 

@@ -104,6 +104,7 @@ fn random_scene_of(
             Cull::Clockwise,
             Cull::CounterClockwise,
         ]),
+        ..Rules::default()
     };
     let interpolation = rng.pick(&[
         Interpolation::Perspective,
@@ -143,6 +144,7 @@ fn random_scene_of(
         expect: Expect::default(),
         attribute_count: usize::from(valued),
         has_depth: valued,
+        viewport: None,
     }
 }
 
@@ -291,6 +293,7 @@ fn an_edge_on_samples_follows_the_fill_rule() {
             expect: Expect::default(),
             attribute_count: 0,
             has_depth: false,
+            viewport: None,
         };
         let frame = production_frame(&scene);
         let on_edge = frame.index(2, 1) + 12; // sample 12 is (0, 8/16)
@@ -385,6 +388,7 @@ fn adaptive_refine_misses_a_thin_sliver_and_resolves_its_own_mask() {
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     };
     let plan = Plan::for_scene(&scene);
     let exact = production_frame(&scene);

@@ -82,6 +82,7 @@ fn scene(canvas: Canvas, rules: Rules, primitives: Vec<Primitive>, effects: Effe
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     }
 }
 
@@ -268,6 +269,7 @@ fn maybe_moving_scene(rng: &mut Rng) -> Scene {
             subpixel_bits: Some(bits),
             fill_rule: rng.pick(&FillRule::ALL),
             cull: rng.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
+            ..Rules::default()
         },
         primitives,
         Effects {

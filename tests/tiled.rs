@@ -111,6 +111,7 @@ fn random_scene(rng: &mut Rng, antialiased: bool, polygons: bool) -> Scene {
             subpixel_bits: *rng.pick(&[Some(0), Some(4), Some(8), None]),
             fill_rule: *rng.pick(&FillRule::ALL),
             cull: *rng.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
+            ..Rules::default()
         },
         primitives,
         effects: Effects {
@@ -120,6 +121,7 @@ fn random_scene(rng: &mut Rng, antialiased: bool, polygons: bool) -> Scene {
         expect: Expect::default(),
         attribute_count: attributes,
         has_depth: values,
+        viewport: None,
     }
 }
 

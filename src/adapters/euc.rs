@@ -146,6 +146,7 @@ impl Rasterizer for Euc {
             polygons: false,
             antialias: false,
             motion_blur: false,
+            clip_space: false,
             ..Capabilities::everything()
         }
     }

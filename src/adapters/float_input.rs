@@ -102,6 +102,7 @@ pub(crate) fn path_fill_capabilities() -> Capabilities {
         attributes: false,
         depth: false,
         motion_blur: false,
+        clip_space: false,
         ..Capabilities::everything()
     }
 }

@@ -19,6 +19,7 @@ fn coverage_only(triangles: bool) -> Capabilities {
         polygons: false,
         antialias: false,
         motion_blur: false,
+        clip_space: false,
     }
 }
 

@@ -30,6 +30,7 @@ fn scene(name: &str, canvas: u32, primitives: Vec<Primitive>) -> Scene {
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     }
 }
 

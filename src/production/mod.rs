@@ -86,6 +86,7 @@ impl Rasterizer for Production {
             polygons: true,
             antialias: true,
             motion_blur: true,
+            clip_space: false,
             ..Capabilities::everything()
         }
     }

@@ -52,8 +52,12 @@ impl Rasterizer for Tiled {
         "production-tiled"
     }
 
+    /// Production's, but screen space only: clip-space scenes are not tiled.
     fn capabilities(&self) -> Capabilities {
-        Production.capabilities()
+        Capabilities {
+            clip_space: false,
+            ..Production.capabilities()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

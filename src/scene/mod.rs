@@ -31,15 +31,18 @@ macro_rules! case_names {
 }
 
 pub mod case;
+pub mod clip;
 pub mod number;
 pub mod rules;
 pub mod samples;
 pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
+pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, Viewport};
 pub use number::Number;
 pub use rules::{
-    Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
+    Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
+    ProvokingVertex, Rules,
 };
 pub use samples::{Antialias, Pattern};
 pub use time::{MotionBlur, TimePattern};
@@ -56,8 +59,13 @@ pub struct Scene {
     pub expect: Expect,
     /// Attributes every vertex carries (the same count for all vertices).
     pub attribute_count: usize,
-    /// Whether any vertex gives `z`; only then is depth interpolated.
+    /// Whether any vertex gives `z`, or the scene is in clip space; only
+    /// then is depth interpolated.
     pub has_depth: bool,
+    /// `Some` when every vertex is in clip space (SPEC.md §16): its x, y,
+    /// z and w are homogeneous clip coordinates, mapped onto the canvas by
+    /// this viewport after clipping. `None`: screen space, as in §2.
+    pub viewport: Option<Viewport>,
 }
 
 /// The pixel grid. Pixel (x, y) covers [x, x+1) × [y, y+1), y pointing down.
@@ -169,7 +177,9 @@ pub struct Triangle {
     pub interpolation: Interpolation,
 }
 
-/// A vertex as written in the case, before any snapping.
+/// A vertex as written in the case, before any snapping. In a clip-space
+/// scene (`Scene::viewport` is `Some`), x, y, z and w are its clip
+/// coordinates.
 #[derive(Clone, Debug)]
 pub struct Vertex {
     pub x: Number,
@@ -342,6 +352,11 @@ impl Scene {
         scene.effects.motion_blur = None;
         scene.expect = Expect::default();
         scene
+    }
+
+    /// Whether the vertices are in clip space (SPEC.md §16).
+    pub fn in_clip_space(&self) -> bool {
+        self.viewport.is_some()
     }
 
     /// Every vertex of every primitive.

@@ -6,6 +6,8 @@
 
 use std::fmt;
 
+use super::clip::ClipRules;
+
 /// Which edges own the samples that lie exactly on them.
 ///
 /// Named after the D3D11 top-left rule (D3D11.3 functional spec §3.4.2.1)
@@ -157,7 +159,8 @@ pub enum Interpolation {
     Perspective,
     /// Screen-space barycentric weights.
     Linear,
-    /// The first vertex's values everywhere.
+    /// The provoking vertex's values everywhere (the first vertex unless
+    /// the case's `provoking_vertex` is `last`).
     Flat,
 }
 
@@ -236,7 +239,32 @@ impl LineParameter {
     }
 }
 
-/// Snapping, fill rule and culling for a whole case.
+/// Which vertex of a primitive gives a `flat` primitive its values
+/// (SPEC.md §5): Vulkan's default and `VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT`,
+/// OpenGL's `glProvokingVertex`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ProvokingVertex {
+    First,
+    Last,
+}
+
+case_names!(ProvokingVertex {
+    First => "first",
+    Last => "last",
+});
+
+impl ProvokingVertex {
+    /// The index of the provoking vertex among `count` vertices.
+    pub fn index(self, count: usize) -> usize {
+        match self {
+            ProvokingVertex::First => 0,
+            ProvokingVertex::Last => count - 1,
+        }
+    }
+}
+
+/// Snapping, fill rule, culling, the provoking vertex and the clip-space
+/// conventions for a whole case.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Rules {
     /// Vertices snap to multiples of 2^-bits, ties to even; `None` keeps the
@@ -244,6 +272,10 @@ pub struct Rules {
     pub subpixel_bits: Option<u32>,
     pub fill_rule: FillRule,
     pub cull: Cull,
+    pub provoking_vertex: ProvokingVertex,
+    /// How a clip-space scene is clipped (SPEC.md §16); screen-space
+    /// scenes keep the defaults.
+    pub clip: ClipRules,
 }
 
 impl Default for Rules {
@@ -252,6 +284,8 @@ impl Default for Rules {
             subpixel_bits: Some(8),
             fill_rule: FillRule::TopLeft,
             cull: Cull::None,
+            provoking_vertex: ProvokingVertex::First,
+            clip: ClipRules::default(),
         }
     }
 }
@@ -292,6 +326,8 @@ pub mod limits {
     pub const MAX_ATTRIBUTES: usize = 16;
     /// |attribute| and |z| bound, so that every f32 pipeline stays finite.
     pub const VALUE_LIMIT: i64 = 1_000_000_000_000;
+    /// |x|, |y|, |z| and |w| of a clip-space vertex (SPEC.md §16.1).
+    pub const CLIP_LIMIT: i64 = 1_000_000;
     /// w lies in [1/W_LIMIT, W_LIMIT].
     pub const W_LIMIT: i64 = 1_000_000;
     /// Largest width of a wide line, in pixels.

@@ -167,6 +167,7 @@ pub fn scene_of(
             subpixel_bits,
             fill_rule: rule,
             cull: Cull::None,
+            ..Rules::default()
         },
         primitives: polygons.into_iter().map(Primitive::Polygon).collect(),
         effects: Effects {
@@ -176,6 +177,7 @@ pub fn scene_of(
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     }
 }
 

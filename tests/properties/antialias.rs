@@ -194,6 +194,7 @@ fn polygon_rules() -> impl Strategy<Value = Rules> {
             subpixel_bits,
             fill_rule,
             cull: Cull::None,
+            ..Rules::default()
         })
 }
 
@@ -214,6 +215,7 @@ fn aa_scene_of(primitives: Vec<Primitive>, rules: Rules, antialias: Option<Antia
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     }
 }
 

@@ -118,6 +118,7 @@ fn near_scene(triangles_only: bool) -> impl Strategy<Value = Scene> {
                 subpixel_bits,
                 fill_rule,
                 cull,
+                ..Rules::default()
             };
             scene_of(TSIZE, TSIZE, rules, primitives)
         })

@@ -58,6 +58,7 @@ fn many_lines_scene() -> impl Strategy<Value = Scene> {
         expect: Expect::default(),
         attribute_count: 0,
         has_depth: false,
+        viewport: None,
     })
 }
 

@@ -226,6 +226,7 @@ fn mesh_scene_of(shape: Shape, bits: Option<u32>, shuffles: &[u8]) -> Option<Sce
         subpixel_bits: bits,
         fill_rule: FillRule::TopLeft,
         cull: Cull::None,
+        ..Rules::default()
     };
     let mut scene = scene_of(MSIZE, MSIZE, rules, primitives);
     scene.has_depth = false;

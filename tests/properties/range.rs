@@ -64,6 +64,7 @@ fn extreme_scene() -> impl Strategy<Value = Scene> {
                         subpixel_bits,
                         fill_rule,
                         cull,
+                        ..Rules::default()
                     };
                     let mut scene = scene_of(width, height, rules, primitives);
                     scene.has_depth = has_depth;

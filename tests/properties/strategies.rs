@@ -124,6 +124,7 @@ pub fn scene_of(width: u32, height: u32, rules: Rules, primitives: Vec<Primitive
         expect: Expect::default(),
         attribute_count,
         has_depth: true,
+        viewport: None,
     }
 }
 

@@ -48,6 +48,7 @@ pub fn rules() -> impl Strategy<Value = Rules> {
             subpixel_bits,
             fill_rule,
             cull,
+            ..Rules::default()
         })
 }
 
@@ -86,6 +87,7 @@ pub fn scene() -> impl Strategy<Value = Scene> {
             expect: Expect::default(),
             attribute_count: 1,
             has_depth: false,
+            viewport: None,
         })
 }
 
@@ -132,6 +134,7 @@ fn line_scene_of(line_rules: Vec<LineRule>) -> impl Strategy<Value = Scene> {
                 expect: Expect::default(),
                 attribute_count: 1,
                 has_depth: false,
+                viewport: None,
             }
         })
 }

@@ -67,6 +67,7 @@ fn vertex_scene() -> impl Strategy<Value = Scene> {
                     subpixel_bits,
                     fill_rule,
                     cull: Cull::None,
+                    ..Rules::default()
                 };
                 scene_of(
                     VSIZE,

@@ -549,7 +549,10 @@ impl Rasterizer for External {
     /// whose version 2 hello declares motion (SPEC.md §12.8); the adapter
     /// refuses them itself, since only the hello says.
     fn capabilities(&self) -> Capabilities {
-        Capabilities::everything()
+        Capabilities {
+            clip_space: false,
+            ..Capabilities::everything()
+        }
     }
 
     fn fixed_fill_rule(&self) -> Option<FillRule> {

@@ -45,6 +45,7 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
         polygons: false,
         antialias,
         motion_blur: false,
+        clip_space: false,
         ..Capabilities::everything()
     }
 }

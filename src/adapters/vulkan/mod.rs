@@ -180,6 +180,7 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
+            clip_space: false,
             ..Capabilities::everything()
         }
     }

@@ -37,6 +37,7 @@ impl Rasterizer for AreaF32 {
             attributes: false,
             depth: false,
             motion_blur: false,
+            clip_space: false,
             ..Capabilities::everything()
         }
     }

@@ -49,6 +49,7 @@ impl Rasterizer for AnyCoverage {
             polygons: false,
             antialias: false,
             motion_blur: false,
+            clip_space: false,
         }
     }
 

@@ -26,6 +26,7 @@ macro_rules! foil {
                     polygons: false,
                     antialias: false,
                     motion_blur: false,
+                    clip_space: false,
                     ..Production.capabilities()
                 }
             }

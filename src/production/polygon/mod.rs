@@ -215,6 +215,7 @@ impl Rasterizer for PolygonMethod {
             polygons: true,
             antialias: false,
             motion_blur: false,
+            clip_space: false,
             ..Capabilities::everything()
         }
     }

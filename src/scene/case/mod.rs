@@ -27,6 +27,7 @@ use serde_json::Value;
 use super::rules::limits;
 use super::Scene;
 
+mod clip;
 mod json;
 mod schema;
 mod validate;

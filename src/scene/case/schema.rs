@@ -10,7 +10,8 @@ use serde_json::Value;
 
 use crate::scene::number::Number;
 use crate::scene::rules::{
-    limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill, Rules,
+    limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
+    ProvokingVertex, Rules,
 };
 use crate::scene::samples::{Antialias, Pattern};
 use crate::scene::time::{MotionBlur, TimePattern};
@@ -41,6 +42,7 @@ impl Reader<'_> {
                 "primitives",
                 "effects",
                 "expect",
+                "viewport",
             ],
         )?;
         let (name, name_path) = fields.require("name")?;
@@ -71,11 +73,13 @@ impl Reader<'_> {
         let attribute_count = primitives
             .first()
             .map_or(0, |p| p.vertices()[0].attributes.len());
-        let has_depth = fields
-            .map
-            .get("primitives")
-            .and_then(Value::as_array)
-            .is_some_and(|ps| ps.iter().any(mentions_depth));
+        let viewport = self.clip_space(&fields, &canvas)?;
+        let has_depth = viewport.is_some()
+            || fields
+                .map
+                .get("primitives")
+                .and_then(Value::as_array)
+                .is_some_and(|ps| ps.iter().any(mentions_depth));
         let scene = Scene {
             name,
             description,
@@ -86,8 +90,10 @@ impl Reader<'_> {
             expect,
             attribute_count,
             has_depth,
+            viewport,
         };
         self.check_attribute_counts(&scene, &primitives_path)?;
+        self.check_clip_space(&scene, &fields)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
         Ok(scene)
@@ -127,7 +133,19 @@ impl Reader<'_> {
     }
 
     fn rules(&self, value: &Value, path: &Path) -> Result<Rules> {
-        let fields = Fields::new(value, path, &["subpixel_bits", "fill_rule", "cull"])?;
+        let fields = Fields::new(
+            value,
+            path,
+            &[
+                "subpixel_bits",
+                "fill_rule",
+                "cull",
+                "provoking_vertex",
+                "clip_xy",
+                "clip_z",
+                "depth",
+            ],
+        )?;
         let mut rules = Rules::default();
         if let Some((v, p)) = fields.get("subpixel_bits") {
             rules.subpixel_bits = match v {
@@ -154,6 +172,11 @@ impl Reader<'_> {
         if let Some((v, p)) = fields.get("cull") {
             rules.cull = named(v, &p, Cull::from_name, &Cull::NAMES)?;
         }
+        if let Some((v, p)) = fields.get("provoking_vertex") {
+            rules.provoking_vertex =
+                named(v, &p, ProvokingVertex::from_name, &ProvokingVertex::NAMES)?;
+        }
+        self.clip_rules(&fields, &mut rules.clip)?;
         Ok(rules)
     }
 
@@ -379,9 +402,12 @@ impl Reader<'_> {
                 let fields = Fields::new(
                     value,
                     path,
-                    &["position", "from", "to", "z", "w", "attributes"],
+                    &["position", "from", "to", "clip", "z", "w", "attributes"],
                 )?;
-                let mut vertex = self.moving_position(&fields, path)?;
+                let mut vertex = match fields.get("clip") {
+                    Some((v, p)) => self.clip_vertex(v, &p, &fields)?,
+                    None => self.moving_position(&fields, path)?,
+                };
                 let value_limit = Number::from_int(limits::VALUE_LIMIT);
                 if let Some((v, p)) = fields.get("z") {
                     vertex.z = number(v, &p)?;

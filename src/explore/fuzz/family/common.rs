@@ -34,6 +34,7 @@ pub(super) fn any_rules(rng: &mut Rng) -> Rules {
         } else {
             *rng.pick(&[Cull::Clockwise, Cull::CounterClockwise])
         },
+        ..Rules::default()
     }
 }
 
@@ -142,6 +143,7 @@ pub(super) fn scene_of(
         expect: Expect::default(),
         attribute_count: values.attributes,
         has_depth: values.depth,
+        viewport: None,
     }
 }
 

@@ -300,6 +300,7 @@ pub(super) fn mesh_scene(rng: &mut Rng) -> Option<Scene> {
         subpixel_bits: bits,
         fill_rule: *rng.pick(&FillRule::CONSISTENT),
         cull: Cull::None,
+        ..Rules::default()
     };
     let mut scene = scene_of(canvas, rules, primitives, &values);
     scene.expect.watertight = true;

@@ -448,6 +448,7 @@ pub(super) fn motion_scene(rng: &mut Rng) -> Scene {
             *rng.pick(&FillRule::ALL)
         },
         cull: *rng.pick(&[Cull::None, Cull::Clockwise, Cull::CounterClockwise]),
+        ..Rules::default()
     };
     let none = Values {
         attributes: 0,

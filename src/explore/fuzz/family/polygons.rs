@@ -58,6 +58,7 @@ pub(super) fn polygon_rules(rng: &mut Rng) -> Rules {
         subpixel_bits: any_bits(rng),
         fill_rule: *rng.pick(&FillRule::CONSISTENT),
         cull: Cull::None,
+        ..Rules::default()
     }
 }
 
