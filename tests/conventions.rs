@@ -60,7 +60,7 @@ fn a_declared_fill_rule_is_judged_and_named_apart() {
     assert_eq!(
         summary(&printed),
         "own: 76 passed, 0 failed, 0 unsupported, 0 errors; 74 judged under its own fill rule \
-         instead of the case's (SPEC.md §3.1)",
+         or clipping instead of the case's (SPEC.md §3.1, §16)",
         "{printed}"
     );
     let mut judged = 0;
