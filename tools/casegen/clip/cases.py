@@ -71,6 +71,19 @@ case("spec_depth_clamp",
      [Tri(*NEAR)], conv="gb_clamp", subpixel_bits=4,
      viewport={"x": 0, "y": 0, "width": 16, "height": 16, "min_depth": 0.25, "max_depth": 0.75})
 
+# z_ndc = (x - 5.5)/7 is exactly 0 on the sample column x = 5.5 and exactly 1 on x = 12.5.
+CLOSED = [at(2, 1, "-0.5", 1, [0]), at(15, 1, "19/14", 2, [1]), at(15, 15, "19/14", "0.5", [2])]
+for conv in ("gb_ps", "gb_cts"):
+    case("depth_range_closed_" + conv,
+         "The near and far planes run exactly through sample centres: z_ndc = (x - 5.5)/7 is 0 "
+         "on the column x = 5.5 and 1 on x = 12.5. Per sample, both columns are kept (the "
+         "range [0, 1] is closed, as the clip volume's planes are); clipped then snapped, they "
+         "are edges of the clipped polygon and bottom-right owns only the right one (x = "
+         "12.5). {N} samples (per-sample {depth_range_closed_gb_ps}, clipped "
+         "{depth_range_closed_gb_cts}).",
+         [Tri(*CLOSED)], conv=conv, fill_rule="bottom-right",
+         checks=[differ("depth_range_closed_gb_ps", "depth_range_closed_gb_cts")])
+
 # ---------------------------------------------------------------------------
 # The worked examples of SPEC 16.3: the viewport's right side at x = 12.52.
 
