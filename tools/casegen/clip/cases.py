@@ -151,7 +151,7 @@ case("flat_provoking_first_clipped",
 case("spec_conventions_agree",
      "SPEC 16.7: all three vertices lie inside the clip volume with w > 0 (w = 3, 0.5, 1.25), so "
      "nothing is clipped and every combination of clip_xy, clip_z and depth draws the screen-space "
-     "triangle of the snapped (x_f, y_f), (1.3, 2.7) (14.2, 5.9) (4.4, 13.6): {N} samples under "
+     "triangle (1.3, 2.7) (14.2, 5.9) (4.4, 13.6) snapped to 8 bits: {N} samples under "
      "each of the six (the generator checks all six and the screen-space test of SPEC 3). A "
      "difference between conventions here is a bug, not a convention.",
      [Tri(at("1.3", "2.7", "0.1", 3, [1, 2]), at("14.2", "5.9", "0.6", "0.5", [3, 4]),
@@ -163,7 +163,7 @@ case("spec_conventions_agree",
 MESH_X = [-3, "7.3", 19]
 MESH_Y = [-2, "8.6", 18]
 MESH_W = [[1, 2, "0.5"], [3, "1.5", 1], ["0.75", "2.5", 4]]
-MESH_Z = [["-0.35", "-0.1", "0.45"], ["0.3", "0.05", "-0.2"], ["0.7", "0.55", "0.15"]]
+MESH_Z = [["0.35", "0.4", "-0.2"], ["0.3", "-0.3", "0.25"], ["0.7", "0.45", "0.15"]]
 MESH_V = [[at(MESH_X[c], MESH_Y[r], MESH_Z[r][c], MESH_W[r][c], [r, c]) for c in range(3)]
           for r in range(3)]
 MESH = []
@@ -173,8 +173,9 @@ for r in range(2):
         MESH.append(Tri(MESH_V[r][c], MESH_V[r + 1][c + 1], MESH_V[r + 1][c]))
 
 MESH_TEXT = ("Eight triangles of a 3 x 3 grid of vertices (w from 0.5 to 4) cover the canvas; "
-             "z_ndc changes sign along six of the shared edges, so the near plane z = 0 cuts "
-             "the mesh along a polyline through them. ")
+             "the centre vertex (7.3, 8.6) lies in front of the near plane (z_ndc = -0.3), so "
+             "z_ndc changes sign along six of the eight shared edges and the near plane z = 0 "
+             "cuts a hole around the centre whose rim runs through them. ")
 
 case("mesh_across_near",
      MESH_TEXT + "Clip-then-snap: both triangles of a shared edge compute its new vertex as the "
@@ -218,7 +219,7 @@ for conv in ("gb_ps", "gb_cts", "cts_cts", "gb_clamp"):
     case("w_one_behind_" + conv,
          "One vertex behind the eye (w = -0.5) and two in front (w = 1.5 and 0.8), under "
          + CONV_TEXT[conv] + ". The triangle's visible part runs off toward the top of the "
-         "canvas, where its rays meet it at w close to 0; a rasterizer that divides by the "
+         "canvas (toward w = 0), cut by the near plane before it gets there; a rasterizer that divides by the "
          "negative w draws the mirrored external triangle instead. {N} samples (per-sample "
          "{w_one_behind_gb_ps}, near clipped {w_one_behind_gb_cts}, all planes clipped "
          "{w_one_behind_cts_cts}, depth clamp {w_one_behind_gb_clamp}).",
@@ -291,9 +292,9 @@ for name, conv, bits in (("near_sliver_b4", "gb_cts", 4), ("near_sliver_b8", "gb
 FAR = [at(2, 3, "0.2", 2, [0]), at(14, 6, "1.6", "0.5", [1]), at(5, 14, "1.1", "1.25", [2])]
 for conv in ("gb_cts", "gb_ps"):
     case("far_clip_" + conv,
-         "Two vertices lie beyond the far plane z = w (z_ndc = 1.6 and 1.1, w = 0.5 and 1.25), "
-         "so the far plane cuts the triangle along a line that is straight on the screen but "
-         "not where a screen-space interpolation of z_ndc puts it. Under " + CONV_TEXT[conv]
+         "Two vertices lie beyond the far plane z = w (z_ndc = 1.6 and 1.1, w = 0.5 and 1.25): "
+         "the far plane cuts the triangle where the screen-linear z_ndc reaches 1, which is not "
+         "where clip z and w interpolated apart on the screen put it. Under " + CONV_TEXT[conv]
          + " at 4 subpixel bits: {N} samples (clipped {far_clip_gb_cts}, per-sample "
          "{far_clip_gb_ps}).",
          [Tri(*FAR)], conv=conv, subpixel_bits=4, checks=[drawn])
