@@ -60,8 +60,8 @@ fn every_clip_case_is_in_clip_space_and_pins_its_coverage() {
     for file in &files {
         let text = std::fs::read_to_string(file).expect("readable");
         let name = file.display().to_string();
-        let scene = parse_case(&text, &name, &Limits::default())
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let scene =
+            parse_case(&text, &name, &Limits::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(scene.in_clip_space(), "{name} is not in clip space");
         assert!(
             scene.expect.samples_covered.is_some(),

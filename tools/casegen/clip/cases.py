@@ -219,8 +219,9 @@ for conv in ("gb_ps", "gb_cts", "cts_cts", "gb_clamp"):
     case("w_one_behind_" + conv,
          "One vertex behind the eye (w = -0.5) and two in front (w = 1.5 and 0.8), under "
          + CONV_TEXT[conv] + ". The triangle's visible part runs off toward the top of the "
-         "canvas (toward w = 0), cut by the near plane before it gets there; a rasterizer that divides by the "
-         "negative w draws the mirrored external triangle instead. {N} samples (per-sample "
+         "canvas, toward w = 0 (depth clip cuts it at the near plane first); a rasterizer "
+         "that divides by the negative w draws the mirrored external triangle instead. {N} "
+         "samples (per-sample "
          "{w_one_behind_gb_ps}, near clipped {w_one_behind_gb_cts}, all planes clipped "
          "{w_one_behind_cts_cts}, depth clamp {w_one_behind_gb_clamp}).",
          [Tri(*ONE_BEHIND)], conv=conv, checks=[drawn])
@@ -376,7 +377,8 @@ case("depth_clamp_clip_xy",
      "(x_f = 20), one in front of the near plane, and one behind the eye (w = -0.3). The "
      "sides clip away everything with w <= 0 (each needs w >= |x|); depth is not clipped but "
      "clamped to [0, 1]. {N} samples.",
-     [Tri(at(3, 3, "-0.5", 1, [0]), at(20, 8, "0.5", 2, [1]), CV("-0.2", "0.9", "-0.4", "-0.3", [2]))],
+     [Tri(at(3, 3, "-0.5", 1, [0]), at(20, 8, "0.5", 2, [1]),
+          CV("-0.2", "0.9", "-0.4", "-0.3", [2]))],
      conv="cts_clamp", checks=[drawn])
 
 # ---------------------------------------------------------------------------
@@ -416,7 +418,8 @@ for conv in ("gb_cts", "cts_cts"):
 OFF_VP = {"x": "3.5", "y": "4.5", "width": "8.75", "height": "6.25"}
 OFFSET = [at(-20, -20, "0.5", 2, [0], OFF_VP), at(60, 0, "0.5", "0.5", [1], OFF_VP),
           at(0, 60, "0.5", 1, [2], OFF_VP)]
-for name, conv, bits in (("viewport_offset_gb", "gb_cts", 8), ("viewport_offset_cts_b8", "cts_cts", 8),
+for name, conv, bits in (("viewport_offset_gb", "gb_cts", 8),
+                         ("viewport_offset_cts_b8", "cts_cts", 8),
                          ("viewport_offset_cts_b0", "cts_cts", 0)):
     case(name,
          "The viewport [3.5, 12.25) x [4.5, 10.75) is smaller than the 16 x 16 canvas and offset "

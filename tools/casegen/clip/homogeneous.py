@@ -111,7 +111,8 @@ def homogeneous(v, vp, bits):
     if w > 0:
         X, Y = screen_xy(v, vp, bits)
         return (X, Y, F(1)), 1 / w
-    return (w * vp["x"] + vp["width"] / 2 * (w + x), w * vp["y"] + vp["height"] / 2 * (w + y), w), F(1)
+    return (w * vp["x"] + vp["width"] / 2 * (w + x),
+            w * vp["y"] + vp["height"] / 2 * (w + y), w), F(1)
 
 
 def cross(a, b):

@@ -53,7 +53,8 @@ def _homogeneous_y_up(v, vp, bits):
     if w > 0:
         X, Y = model.screen_xy(v, vp, bits)
         return (X, Y, F(1)), 1 / w
-    return (w * vp["x"] + vp["width"] / 2 * (w + x), w * vp["y"] + vp["height"] / 2 * (w - y), w), F(1)
+    return (w * vp["x"] + vp["width"] / 2 * (w + x),
+            w * vp["y"] + vp["height"] / 2 * (w - y), w), F(1)
 
 
 def _clamp_clips(scene):
