@@ -74,7 +74,7 @@ def provoking_last_case():
     rules = {"subpixel_bits": 8, "fill_rule": "top-left", "cull": "none",
              "provoking_vertex": "last"}
     lines = ["{",
-             '  "name": "spec_provoking_last",',
+             '  "name": "spec_provoking_last_screen_space",',
              '  "description": %s,' % js(description),
              '  "canvas": {"width": 16, "height": 16},',
              '  "rules": %s,' % js(rules),
