@@ -22,6 +22,7 @@ run before anything is written (casegen/clip/check.py):
   separately written screen-space test (casegen/clip/screen.py).
 
 Usage: python3 tools/gen_clip.py [-v] [--map NAME] [--check] [--self-test]
+       python3 tools/gen_clip.py --random SEED COUNT DIR [--wrong]
   (run from anywhere)
   -v           one line per case: samples_covered and the rules
   --map NAME   print the case's coverage as a picture
@@ -33,6 +34,11 @@ Usage: python3 tools/gen_clip.py [-v] [--map NAME] [--check] [--self-test]
                deliberately wrong variants of the model (casegen/clip/
                mutants.py), printing how many pins each changes; exit 1
                unless each changes at least one
+  --random     write nothing in the repository: COUNT random clip-space cases
+               into DIR, each pinned by the model (casegen/clip/random_cases.py
+               says which triangles it leaves out); with --wrong, pinned by a
+               wrong model (vertices behind the eye divided by their w).
+               tests/clip_cases.rs runs the reference on them
 Exits non-zero (an AssertionError) when a case's own check fails.
 """
 
@@ -41,12 +47,18 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from casegen.clip import check, mutants  # noqa: E402
+from casegen.clip.random_cases import write_random  # noqa: E402
 from casegen.clip.build import CASES  # noqa: E402
 from casegen.clip.generate import evaluate, files, stale_against, write  # noqa: E402
 
 
 def main():
     args = sys.argv[1:]
+    if "--random" in args:
+        seed, count, out_dir = args[args.index("--random") + 1:args.index("--random") + 4]
+        write_random(int(seed), int(count), out_dir, wrong="--wrong" in args)
+        print("wrote %s random cases to %s" % (count, out_dir))
+        return
     frames, counts = evaluate()
     if "-v" in args:
         for c in CASES:

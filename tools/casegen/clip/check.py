@@ -31,12 +31,13 @@ def rational(rng, lo, hi, den=97):
     return F(rng.randint(int(lo * den), int(hi * den)), den)
 
 
-def random_vertex(rng, attributes=1):
-    w = rng.choice([rational(rng, -2, -F(1, 8)), F(0), rational(rng, F(1, 8), 3),
-                    rational(rng, F(1, 8), 3)])
+def random_vertex(rng, attributes=1, den=97):
+    """(x, y, z, w, attributes...): w behind, at or in front of the eye."""
+    w = rng.choice([rational(rng, -2, -F(1, 10), den), F(0), rational(rng, F(1, 10), 3, den),
+                    rational(rng, F(1, 10), 3, den), rational(rng, F(1, 10), 3, den)])
     scale = max(abs(w), F(1, 2))
-    v = (rational(rng, -2 * scale, 2 * scale), rational(rng, -2 * scale, 2 * scale),
-         rational(rng, -scale, 2 * scale), w)
+    v = (rational(rng, -2 * scale, 2 * scale, den), rational(rng, -2 * scale, 2 * scale, den),
+         rational(rng, -scale, 2 * scale, den), w)
     return v + tuple(F(rng.randint(-9, 9)) for _ in range(attributes))
 
 

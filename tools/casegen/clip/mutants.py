@@ -13,7 +13,7 @@ from casegen.clip.build import CASES, model_scene
 from casegen.snapping import snap
 
 
-def _swap(name, value):
+def swap(name, value):
     old = getattr(model, name)
     setattr(model, name, value)
     return lambda: setattr(model, name, old)
@@ -34,7 +34,7 @@ def _float_intersect(p, q, dp, dq):
     return tuple(F(float(v) + t * (float(u) - float(v))) for u, v in zip(p, q))
 
 
-def _divided(v, vp, bits):
+def divided(v, vp, bits):
     """Every vertex divided by its w, whatever its sign."""
     x, y, _, w = v[:4]
     X, Y = model.screen_xy(v, vp, bits)
@@ -76,7 +76,7 @@ ORIGINAL = {name: getattr(model, name) for name in
 MUTANTS = [
     ("divide before clipping (t from z/w, x/w...)", "intersect", _ndc_intersect),
     ("clip t in f64 from the far end of the edge", "intersect", _float_intersect),
-    ("vertices behind the eye divided by their w", "homogeneous", _divided),
+    ("vertices behind the eye divided by their w", "homogeneous", divided),
     ("viewport y up (y_ndc = -1 at the bottom)", "screen_xy", _screen_xy_y_up),
     ("viewport y up for the vertices behind the eye only", "homogeneous", _homogeneous_y_up),
     ("snapping ties away from zero", "snap", lambda v, bits: snap(v, bits, "away")),
@@ -104,7 +104,7 @@ def run_mutants(counts):
     """Each wrong variant must change at least one pin; prints how many."""
     ok = True
     for what, name, bad in MUTANTS:
-        undo = _swap(name, bad)
+        undo = swap(name, bad)
         try:
             got = pins_under_mutant()
         finally:
