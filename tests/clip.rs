@@ -318,3 +318,81 @@ fn the_fuzz_clip_family_draws_what_clipping_is_for() {
     );
     assert!(clamped > 20, "{clamped} scenes drew under depth clamp");
 }
+
+/// The reference, clipping one way whatever a case states: what a driver
+/// does (SPEC.md §16.9).
+struct FixedClip(ClipRules);
+
+impl rastercheck::rasterizer::Rasterizer for FixedClip {
+    fn name(&self) -> &str {
+        "fixed-clip"
+    }
+    fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
+        rastercheck::rasterizer::Capabilities::everything()
+    }
+    fn rasterize(
+        &self,
+        scene: &Scene,
+        plan: &Plan,
+    ) -> Result<Frame, rastercheck::rasterizer::RasterError> {
+        let mut s = scene.clone();
+        s.rules.clip.xy = self.0.xy;
+        if s.rules.clip.depth == DepthMode::Clip {
+            s.rules.clip.z = self.0.z;
+        }
+        Ok(reference::render(&s, plan))
+    }
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((self.0.xy, self.0.z))
+    }
+}
+
+#[test]
+fn probe_finds_a_rasterizers_own_clipping() {
+    use rastercheck::explore::probe::probe_clip;
+    let found = probe_clip(&rastercheck::reference::Reference).expect("takes clip space");
+    assert!(found.follows_case && found.consistent, "{found:?}");
+    assert!(found.scenes >= 12, "{found:?}");
+    for clip in conventions()
+        .into_iter()
+        .filter(|c| c.depth == DepthMode::Clip)
+    {
+        let found = probe_clip(&FixedClip(clip)).expect("takes clip space");
+        assert!(
+            !found.follows_case && found.consistent,
+            "{clip:?}: {found:?}"
+        );
+        assert_eq!(found.clip_xy, Some(clip.xy.name()), "{found:?}");
+        assert_eq!(found.clip_z, Some(clip.z.name()), "{found:?}");
+    }
+    // Production does not take clip space until it says so; a screen-space
+    // rasterizer is not probed.
+    assert!(probe_clip(&rastercheck::production::foils::FloatF32).is_none());
+}
+
+#[test]
+fn a_rasterizers_own_clipping_is_judged_and_named() {
+    // Guard band, near and far clipped per sample: a triangle across the
+    // near plane whose cut is off the snapping grid.
+    let own = ClipRules {
+        xy: ClipXy::GuardBand,
+        z: ClipZ::PerSample,
+        depth: DepthMode::Clip,
+    };
+    let scene = common::case("clip/spec_near_clip_then_snap");
+    assert_eq!(scene.rules.clip.z, ClipZ::ClipThenSnap);
+    let (_, run) = common::run(&scene, &FixedClip(own));
+    assert_eq!(run.judged_clip, Some(own));
+    assert!(
+        matches!(run.verdict, rastercheck::harness::suite::Verdict::Pass),
+        "{:?}",
+        run.verdict
+    );
+    // Held to the case's clipping instead, it fails: the check can fail.
+    let (_, run) = common::run(&scene, &common::AsStated(&FixedClip(own)));
+    assert!(
+        matches!(run.verdict, rastercheck::harness::suite::Verdict::Fail(_)),
+        "{:?}",
+        run.verdict
+    );
+}

@@ -206,6 +206,12 @@ impl Profile {
             }
         );
         s += &format!("  sample position:    {}\n", self.sample_position);
+        if let Some(clip) = &self.clip {
+            s += &format!(
+                "  clipping:           {} ({} scenes)\n",
+                clip.finding, clip.scenes
+            );
+        }
         for probe in &self.interpolation {
             match probe.status.as_str() {
                 "measured" => {

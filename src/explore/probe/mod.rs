@@ -54,6 +54,9 @@
 //!   read against the reference's centre samples, not as a wrong rule.
 //! - **Interpolation.** A linear and a perspective mesh (w from 0.1 to 10)
 //!   with depth and two attributes, measured as in `run` (SPEC §6.3).
+//! - **Clipping** (`clip.rs`), for a rasterizer that takes clip space:
+//!   which `clip_xy` and `clip_z` it follows, or whether it follows each
+//!   case's (SPEC §16.9).
 //!
 //! `run --profile FILE` overrides each case's `rules.fill_rule` with the
 //! profile's rule for the rasterizer the profile names (and drops the
@@ -67,6 +70,7 @@
 //! JSON. Reading a profile for `run --profile` is the harness's
 //! (`harness/profile.rs`).
 
+mod clip;
 mod describe;
 mod infer;
 mod sampler;
@@ -76,6 +80,7 @@ use serde::Serialize;
 
 use crate::rasterizer::Rasterizer;
 
+pub use clip::{probe_clip, ClipProbe};
 use describe::departures;
 use infer::{
     nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
@@ -126,6 +131,9 @@ pub struct Profile {
     /// The sample's offset in its pixel, when there is exactly one.
     pub sample_offset: Option<[f64; 2]>,
     pub interpolation: Vec<InterpolationProbe>,
+    /// Its clipping (SPEC.md §16.9), when it takes clip space.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clip: Option<ClipProbe>,
     /// Departures from D3D11 and Vulkan, as sentences.
     pub departures: Vec<String>,
 }
@@ -302,6 +310,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         sample_position: d.sample_position,
         sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
         interpolation,
+        clip: probe_clip(candidate),
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);
