@@ -30,6 +30,7 @@
 //! `mutants.rs` (one deliberate bug each).
 
 pub mod antialias;
+pub mod clip;
 pub mod fixed;
 pub mod foils;
 pub mod line;
@@ -86,12 +87,14 @@ impl Rasterizer for Production {
             polygons: true,
             antialias: true,
             motion_blur: true,
-            clip_space: false,
             ..Capabilities::everything()
         }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if scene.in_clip_space() {
+            return clip::rasterize(scene, plan);
+        }
         rasterize_with(scene, plan, Sampling::for_plan(plan))
     }
 
@@ -101,7 +104,7 @@ impl Rasterizer for Production {
         scene: &'a Scene,
         plan: &'a Plan,
     ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
-        if plan.motion.is_some() {
+        if plan.motion.is_some() || scene.in_clip_space() {
             return None;
         }
         Some(
@@ -227,6 +230,7 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
                 plan,
                 samples,
                 index,
+                scene.rules.provoking_vertex,
                 frame,
             )?;
         }
