@@ -380,8 +380,15 @@ fn divide_first(
         clip: v.clip.clone().map(|c| c / v.w()),
         attributes: v.attributes.clone(),
     };
+    if *p.w() == RBig::ZERO || *q.w() == RBig::ZERO {
+        // Nothing to divide by: the right vertex.
+        return clipper::new_vertex(p, q, dp, dq);
+    }
     // The plane's distance is linear: d(P/w) = d(P)/w.
     let (dp, dq) = (dp / p.w(), dq / q.w());
+    if dp == dq {
+        return clipper::new_vertex(p, q, &dp, &(&dp - RBig::ONE));
+    }
     clipper::new_vertex(&divided(p), &divided(q), &dp, &dq)
 }
 
@@ -542,4 +549,138 @@ fn a_mesh_across_the_near_plane_is_watertight() {
     // Caught: the mesh without its second triangle has holes.
     let half = clip_case("\"clip_z\": \"clip-then-snap\"", "", &[a.clone()]);
     assert!(check(&draw(&half)).is_err());
+}
+
+/// Production against the reference (`reference::render`) on random
+/// clip-space scenes: every convention, fill rule, cull and provoking
+/// vertex, snapped or exact, w crossing zero and slivers cut by the near
+/// plane. Coverage and owners must be identical; depth and attributes
+/// within 2^-16·max(1, M) (SPEC.md §6.3).
+#[test]
+fn production_draws_clip_space_as_the_reference_does() {
+    use rastercheck::reference;
+    use rastercheck::scene::{ClipRules, ClipXy, ClipZ, Cull, DepthMode, FillRule, ProvokingVertex};
+    let mut rng = Rng(0xC11B_9E0D);
+    let ratio = |rng: &mut Rng, lo: i64, hi: i64, den: i64| RBig::from(rng.range(lo, hi)) / RBig::from(den);
+    let (mut crossing, mut covered) = (0, 0);
+    // Scenes on which each wrong clipper departs from the reference.
+    let mut caught = [0; 2];
+    for round in 0..400 {
+        let count = 1 + round % 2;
+        let tris: Vec<Tri> = (0..count)
+            .map(|_| {
+                let v = [0, 1, 2].map(|k| {
+                    let w = match round % 3 {
+                        // Anywhere, behind the eye included.
+                        0 => ratio(&mut rng, -8, 24, 8),
+                        // In front, one vertex a sliver behind the near plane.
+                        1 => ratio(&mut rng, 1, 24, 8),
+                        _ => ratio(&mut rng, -2, 16, 4),
+                    };
+                    let z = if round % 3 == 1 {
+                        let s = if k == 0 { -1 } else { 1 };
+                        RBig::from(s * rng.range(1, 64)) / RBig::from(1024) * &w
+                    } else {
+                        ratio(&mut rng, -12, 12, 4)
+                    };
+                    [ratio(&mut rng, -12, 12, 4), ratio(&mut rng, -12, 12, 4), z, w]
+                });
+                let a = [0, 1, 2].map(|_| vec![ratio(&mut rng, -40, 40, 4)]);
+                Tri {
+                    v,
+                    a,
+                    interpolation: if rng.range(0, 2) == 0 { "flat" } else { "perspective" },
+                }
+            })
+            .collect();
+        crossing += usize::from(tris.iter().any(|t| t.v.iter().any(|c| c[3] <= RBig::ZERO)));
+        let viewport = if round % 4 == 3 {
+            format!(
+                "{{\"x\": {}, \"y\": {}, \"width\": {}, \"height\": {}, \"min_depth\": {}, \"max_depth\": {}}}",
+                rng.range(-3, 3),
+                text(&ratio(&mut rng, -6, 6, 2)),
+                rng.range(6, 20),
+                text(&ratio(&mut rng, 12, 40, 2)),
+                text(&ratio(&mut rng, 0, 4, 4)),
+                text(&ratio(&mut rng, 0, 4, 4)),
+            )
+        } else {
+            String::new()
+        };
+        let bits = ["0", "4", "8", "null"][rng.range(0, 3) as usize];
+        let fill = FillRule::ALL[rng.range(0, FillRule::ALL.len() as i64 - 1) as usize];
+        let cull = Cull::ALL[rng.range(0, Cull::ALL.len() as i64 - 1) as usize];
+        let provoking = ProvokingVertex::ALL[rng.range(0, 1) as usize];
+        let base = format!(
+            "\"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\", \"provoking_vertex\": \"{}\"",
+            fill.name(),
+            cull.name(),
+            provoking.name()
+        );
+        let mut conventions = vec![];
+        for xy in ClipXy::ALL {
+            for z in ClipZ::ALL {
+                conventions.push(ClipRules { xy, z, depth: DepthMode::Clip });
+            }
+            conventions.push(ClipRules { xy, z: ClipZ::ClipThenSnap, depth: DepthMode::Clamp });
+        }
+        for clip in conventions {
+            let z = match clip.depth {
+                DepthMode::Clip => format!(", \"clip_z\": \"{}\"", clip.z.name()),
+                DepthMode::Clamp => String::new(),
+            };
+            let rules = format!(
+                "{base}, \"clip_xy\": \"{}\", \"depth\": \"{}\"{z}",
+                clip.xy.name(),
+                clip.depth.name()
+            );
+            let s = clip_case(&rules, &viewport, &tris);
+            let plan = Plan::for_scene(&s);
+            let want = reference::render(&s, &plan);
+            let got = draw(&s);
+            let at = || format!("round {round}, {rules}, viewport {viewport}\n{}", tris.iter().map(Tri::json).collect::<Vec<_>>().join("\n"));
+            covered += want.covered_samples();
+            let m = tris
+                .iter()
+                .flat_map(|t| t.a.iter().flatten())
+                .map(|a| f(a).abs())
+                .fold(1.0f64, f64::max);
+            if let Err(e) = agree(&got, &want, m) {
+                panic!("{e}; {}", at());
+            }
+            for (k, wrong) in [divide_first as clipper::NewVertex, rounded_t].into_iter().enumerate() {
+                let frame = clip::rasterize_with(&s, &plan, wrong).unwrap();
+                caught[k] += usize::from(agree(&frame, &want, m).is_err());
+            }
+        }
+    }
+    eprintln!("{crossing} of 400 scenes cross w = 0; {covered} samples covered in all");
+    eprintln!("the wrong clippers depart on {caught:?} scenes");
+    assert!(crossing > 100 && covered > 10_000);
+    assert!(caught.iter().all(|&n| n > 0));
+}
+
+/// Coverage and owners identical, depth within 2^-16 and attribute 0
+/// within 2^-16·m at every covered sample.
+fn agree(got: &Frame, want: &Frame, m: f64) -> Result<(), String> {
+    for i in 0..got.coverage.len() {
+        let (x, y) = (i % 16, i / 16);
+        if got.coverage[i] != want.coverage[i] || got.last[i] != want.last[i] {
+            return Err(format!(
+                "sample ({x}, {y}): production covers {} (last {}), the reference {} (last {})",
+                got.coverage[i], got.last[i], want.coverage[i], want.last[i]
+            ));
+        }
+        if got.coverage[i] == 0 {
+            continue;
+        }
+        let (gd, wd) = (got.depth.as_ref().unwrap()[i], want.depth.as_ref().unwrap()[i]);
+        let (ga, wa) = (got.attributes[0][i], want.attributes[0][i]);
+        if (gd - wd).abs() > 2f64.powi(-16) || (ga - wa).abs() > 2f64.powi(-16) * m {
+            return Err(format!(
+                "sample ({x}, {y}): depth {gd} vs {wd}, attribute {ga} vs {wa}"
+            ));
+        }
+    }
+    Ok(())
 }
