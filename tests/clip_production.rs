@@ -32,7 +32,9 @@ fn scene(json: &str) -> Scene {
 }
 
 fn draw(scene: &Scene) -> Frame {
-    Production.rasterize(scene, &Plan::for_scene(scene)).unwrap()
+    Production
+        .rasterize(scene, &Plan::for_scene(scene))
+        .unwrap()
 }
 
 /// A clip-space triangle: clip coordinates and attributes.
@@ -191,8 +193,13 @@ fn inside_triangles_draw_as_their_screen_space_triangles() {
             [c(rng, -999), c(rng, -999), c(rng, 0), w.clone()]
         };
         let v = [0, 1, 2].map(|_| vertex(&mut rng));
-        let a = [0, 1, 2].map(|_| vec![RBig::from(rng.range(-50, 50)), RBig::from(rng.range(0, 9))]);
-        let interpolation = if round % 3 == 0 { "flat" } else { "perspective" };
+        let a =
+            [0, 1, 2].map(|_| vec![RBig::from(rng.range(-50, 50)), RBig::from(rng.range(0, 9))]);
+        let interpolation = if round % 3 == 0 {
+            "flat"
+        } else {
+            "perspective"
+        };
         let provoking = if round % 2 == 0 { "first" } else { "last" };
         let t = Tri {
             v,
@@ -229,7 +236,10 @@ fn inside_triangles_draw_as_their_screen_space_triangles() {
         drawn += usize::from(got.covered_samples() > 0);
         assert_eq!(got, want, "round {round}: {}", t.json());
     }
-    assert!(drawn > 150, "only {drawn} of 240 triangles covered a sample");
+    assert!(
+        drawn > 150,
+        "only {drawn} of 240 triangles covered a sample"
+    );
 }
 
 /// v0 and v1 project onto (0, 0) and (16, 0); v2 is behind the eye.
@@ -257,7 +267,11 @@ fn check_values(frame: &Frame, t: &Tri, clamp: bool, bound: f64) -> Result<(), S
             }
             let (beta, p) = ray(t, px, py).ok_or("no ray hit")?;
             let z = &p[2] / &p[3];
-            let z = if clamp { z.clamp(RBig::ZERO, RBig::ONE) } else { z };
+            let z = if clamp {
+                z.clamp(RBig::ZERO, RBig::ONE)
+            } else {
+                z
+            };
             let a = sum((0..3).map(|k| &beta[k] * &t.a[k][0]));
             let depth = frame.depth.as_ref().ok_or("no depth")?[i];
             let got = frame.attributes[0][i];
@@ -333,7 +347,9 @@ fn differ_only_near_the_near_edge(a: &Frame, b: &Frame, t: &Tri) -> Result<usize
             if to_near <= 1.0 || near_an_edge(t, px, py) {
                 continue;
             }
-            return Err(format!("pixel ({px}, {py}) differs {to_near} px from the near line"));
+            return Err(format!(
+                "pixel ({px}, {py}) differs {to_near} px from the near line"
+            ));
         }
     }
     Ok(differing)
@@ -343,12 +359,20 @@ fn differ_only_near_the_near_edge(a: &Frame, b: &Frame, t: &Tri) -> Result<usize
 /// an edge of `t` (the line through its vertices' homogeneous projections).
 fn near_an_edge(t: &Tri, px: i64, py: i64) -> bool {
     let h = t.v.clone().map(|[x, y, _, w]| {
-        [f(&(RBig::from(8) * (&w + &x))), f(&(RBig::from(8) * (&w + &y))), f(&w)]
+        [
+            f(&(RBig::from(8) * (&w + &x))),
+            f(&(RBig::from(8) * (&w + &y))),
+            f(&w),
+        ]
     });
     let s = [px as f64 + 0.5, py as f64 + 0.5, 1.0];
     (0..3).any(|i| {
         let (p, q) = (h[(i + 1) % 3], h[(i + 2) % 3]);
-        let l = [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]];
+        let l = [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ];
         (l[0] * s[0] + l[1] * s[1] + l[2] * s[2]).abs() / (l[0] * l[0] + l[1] * l[1]).sqrt()
             <= 1.0 / 16.0
     })
@@ -370,12 +394,7 @@ fn crossing_near() -> Tri {
 
 /// The mutants of the clipper: dividing by w before clipping, and a t
 /// rounded down to eighths, which is not the same from either end.
-fn divide_first(
-    p: &ClipVertex,
-    q: &ClipVertex,
-    dp: &RBig,
-    dq: &RBig,
-) -> ClipVertex {
+fn divide_first(p: &ClipVertex, q: &ClipVertex, dp: &RBig, dq: &RBig) -> ClipVertex {
     let divided = |v: &ClipVertex| ClipVertex {
         clip: v.clip.clone().map(|c| c / v.w()),
         attributes: v.attributes.clone(),
@@ -403,7 +422,11 @@ fn rounded_t(p: &ClipVertex, q: &ClipVertex, dp: &RBig, dq: &RBig) -> ClipVertex
 #[test]
 fn near_clip_then_snap_and_per_sample_differ_only_at_the_near_edge() {
     let t = crossing_near();
-    let snap = clip_case("\"clip_z\": \"clip-then-snap\"", "", std::slice::from_ref(&t));
+    let snap = clip_case(
+        "\"clip_z\": \"clip-then-snap\"",
+        "",
+        std::slice::from_ref(&t),
+    );
     let per_sample = clip_case("\"clip_z\": \"per-sample\"", "", std::slice::from_ref(&t));
     let (a, b) = (draw(&snap), draw(&per_sample));
     assert!(check_rays(&b, &t, true).unwrap() > 20);
@@ -434,9 +457,11 @@ fn depth_clamp_writes_clamped_depths() {
     assert!(check_rays(&frame, &t, false).unwrap() > 20);
     // z_f = 0.75 − 0.5·z_ndc, clamped to [0.25, 0.75].
     let exact = |px, py, clamp: bool| {
-        let z = RBig::from_parts(3.into(), 4u8.into())
-            - z_ndc(&t, px, py).unwrap() / RBig::from(2);
-        let (lo, hi) = (RBig::from_parts(1.into(), 4u8.into()), RBig::from_parts(3.into(), 4u8.into()));
+        let z = RBig::from_parts(3.into(), 4u8.into()) - z_ndc(&t, px, py).unwrap() / RBig::from(2);
+        let (lo, hi) = (
+            RBig::from_parts(1.into(), 4u8.into()),
+            RBig::from_parts(3.into(), 4u8.into()),
+        );
         if clamp {
             z.clamp(lo, hi)
         } else {
@@ -463,9 +488,7 @@ fn depth_clamp_writes_clamped_depths() {
     let clamped = check(frame.depth.as_ref().unwrap()).unwrap();
     assert!(clamped > 5, "{clamped} samples clamped");
     // Caught: the unclamped depths.
-    let unclamped: Vec<f64> = (0..256)
-        .map(|i| f(&exact(i % 16, i / 16, false)))
-        .collect();
+    let unclamped: Vec<f64> = (0..256).map(|i| f(&exact(i % 16, i / 16, false))).collect();
     assert!(check(&unclamped).is_err());
 }
 
@@ -476,7 +499,10 @@ fn flat_everywhere(frame: &Frame, want: f64) -> Result<usize, String> {
         if frame.coverage[i] > 0 {
             n += 1;
             if frame.attributes[0][i] != want {
-                return Err(format!("sample {i}: {} instead of {want}", frame.attributes[0][i]));
+                return Err(format!(
+                    "sample {i}: {} instead of {want}",
+                    frame.attributes[0][i]
+                ));
             }
         }
     }
@@ -491,9 +517,17 @@ fn flat_primitives_take_the_last_vertex_when_it_provokes() {
         interpolation: "flat",
         ..crossing_near()
     };
-    let last = clip_case("\"provoking_vertex\": \"last\"", "", std::slice::from_ref(&t));
+    let last = clip_case(
+        "\"provoking_vertex\": \"last\"",
+        "",
+        std::slice::from_ref(&t),
+    );
     assert!(flat_everywhere(&draw(&last), 3.0).unwrap() > 20);
-    let first = clip_case("\"provoking_vertex\": \"first\"", "", std::slice::from_ref(&t));
+    let first = clip_case(
+        "\"provoking_vertex\": \"first\"",
+        "",
+        std::slice::from_ref(&t),
+    );
     assert!(flat_everywhere(&draw(&first), 3.0).is_err());
     // Screen space: a triangle and a line.
     for (primitive, want) in [
@@ -519,7 +553,11 @@ fn a_mesh_across_the_near_plane_is_watertight() {
     ];
     let tri = |i: [usize; 3]| Tri::new(i.map(|k| v[k]), [&[], &[], &[]], "perspective");
     let (a, b) = (tri([0, 1, 2]), tri([0, 2, 3]));
-    let s = clip_case("\"clip_z\": \"clip-then-snap\"", "", &[a.clone(), b.clone()]);
+    let s = clip_case(
+        "\"clip_z\": \"clip-then-snap\"",
+        "",
+        &[a.clone(), b.clone()],
+    );
     let check = |frame: &Frame| -> Result<(), String> {
         for py in 0..16 {
             for px in 0..16 {
@@ -559,9 +597,12 @@ fn a_mesh_across_the_near_plane_is_watertight() {
 #[test]
 fn production_draws_clip_space_as_the_reference_does() {
     use rastercheck::reference;
-    use rastercheck::scene::{ClipRules, ClipXy, ClipZ, Cull, DepthMode, FillRule, ProvokingVertex};
+    use rastercheck::scene::{
+        ClipRules, ClipXy, ClipZ, Cull, DepthMode, FillRule, ProvokingVertex,
+    };
     let mut rng = Rng(0xC11B_9E0D);
-    let ratio = |rng: &mut Rng, lo: i64, hi: i64, den: i64| RBig::from(rng.range(lo, hi)) / RBig::from(den);
+    let ratio =
+        |rng: &mut Rng, lo: i64, hi: i64, den: i64| RBig::from(rng.range(lo, hi)) / RBig::from(den);
     let (mut crossing, mut covered) = (0, 0);
     // Scenes on which each wrong clipper departs from the reference.
     let mut caught = [0; 2];
@@ -583,13 +624,22 @@ fn production_draws_clip_space_as_the_reference_does() {
                     } else {
                         ratio(&mut rng, -12, 12, 4)
                     };
-                    [ratio(&mut rng, -12, 12, 4), ratio(&mut rng, -12, 12, 4), z, w]
+                    [
+                        ratio(&mut rng, -12, 12, 4),
+                        ratio(&mut rng, -12, 12, 4),
+                        z,
+                        w,
+                    ]
                 });
                 let a = [0, 1, 2].map(|_| vec![ratio(&mut rng, -40, 40, 4)]);
                 Tri {
                     v,
                     a,
-                    interpolation: if rng.range(0, 2) == 0 { "flat" } else { "perspective" },
+                    interpolation: if rng.range(0, 2) == 0 {
+                        "flat"
+                    } else {
+                        "perspective"
+                    },
                 }
             })
             .collect();
@@ -620,9 +670,17 @@ fn production_draws_clip_space_as_the_reference_does() {
         let mut conventions = vec![];
         for xy in ClipXy::ALL {
             for z in ClipZ::ALL {
-                conventions.push(ClipRules { xy, z, depth: DepthMode::Clip });
+                conventions.push(ClipRules {
+                    xy,
+                    z,
+                    depth: DepthMode::Clip,
+                });
             }
-            conventions.push(ClipRules { xy, z: ClipZ::ClipThenSnap, depth: DepthMode::Clamp });
+            conventions.push(ClipRules {
+                xy,
+                z: ClipZ::ClipThenSnap,
+                depth: DepthMode::Clamp,
+            });
         }
         for clip in conventions {
             let z = match clip.depth {
@@ -638,7 +696,12 @@ fn production_draws_clip_space_as_the_reference_does() {
             let plan = Plan::for_scene(&s);
             let want = reference::render(&s, &plan);
             let got = draw(&s);
-            let at = || format!("round {round}, {rules}, viewport {viewport}\n{}", tris.iter().map(Tri::json).collect::<Vec<_>>().join("\n"));
+            let at = || {
+                format!(
+                    "round {round}, {rules}, viewport {viewport}\n{}",
+                    tris.iter().map(Tri::json).collect::<Vec<_>>().join("\n")
+                )
+            };
             covered += want.covered_samples();
             let m = tris
                 .iter()
@@ -648,7 +711,10 @@ fn production_draws_clip_space_as_the_reference_does() {
             if let Err(e) = agree(&got, &want, m) {
                 panic!("{e}; {}", at());
             }
-            for (k, wrong) in [divide_first as clipper::NewVertex, rounded_t].into_iter().enumerate() {
+            for (k, wrong) in [divide_first as clipper::NewVertex, rounded_t]
+                .into_iter()
+                .enumerate()
+            {
                 let frame = clip::rasterize_with(&s, &plan, wrong).unwrap();
                 caught[k] += usize::from(agree(&frame, &want, m).is_err());
             }
@@ -674,7 +740,10 @@ fn agree(got: &Frame, want: &Frame, m: f64) -> Result<(), String> {
         if got.coverage[i] == 0 {
             continue;
         }
-        let (gd, wd) = (got.depth.as_ref().unwrap()[i], want.depth.as_ref().unwrap()[i]);
+        let (gd, wd) = (
+            got.depth.as_ref().unwrap()[i],
+            want.depth.as_ref().unwrap()[i],
+        );
         let (ga, wa) = (got.attributes[0][i], want.attributes[0][i]);
         if (gd - wd).abs() > 2f64.powi(-16) || (ga - wa).abs() > 2f64.powi(-16) * m {
             return Err(format!(

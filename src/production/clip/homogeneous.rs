@@ -112,20 +112,20 @@ impl Piece {
         if det == IBig::ZERO {
             return None;
         }
-        let sigma = if det > IBig::ZERO { IBig::ONE } else { -IBig::ONE };
+        let sigma = if det > IBig::ZERO {
+            IBig::ONE
+        } else {
+            -IBig::ONE
+        };
         // At pixel (px, py) the sample is (2px+1, 2py+1, 1) in T's units:
         // σ·E = 2a·px + 2b·py + (a + b + c), a and b keeping their signs.
         let big: Coefficients<IBig> = cofactors.map(|[a, b, c]| {
             let (a, b, c) = (&sigma * a, &sigma * b, &sigma * c);
             [&a * 2, &b * 2, a + b + c]
         });
-        let bias = big.each_ref().map(|[a, b, _]| {
-            if owns(a, b, rule) {
-                0
-            } else {
-                -1
-            }
-        });
+        let bias = big
+            .each_ref()
+            .map(|[a, b, _]| if owns(a, b, rule) { 0 } else { -1 });
         let small = big
             .iter()
             .flatten()
@@ -148,9 +148,9 @@ impl Piece {
     pub fn at(&self, px: i64, py: i64) -> EdgeValues {
         match &self.edges {
             // |value| < 2^117 (SMALL_BITS): no overflow.
-            Edges::Small(e) => EdgeValues::Small(
-                e.map(|[a, b, c]| a * i128::from(px) + b * i128::from(py) + c),
-            ),
+            Edges::Small(e) => {
+                EdgeValues::Small(e.map(|[a, b, c]| a * i128::from(px) + b * i128::from(py) + c))
+            }
             Edges::Big(e) => EdgeValues::Big(
                 e.each_ref()
                     .map(|[a, b, c]| a * IBig::from(px) + b * IBig::from(py) + c),
@@ -217,4 +217,106 @@ pub fn region(h: &[Projected; 3], limit: [[i64; 2]; 2]) -> [[i64; 2]; 2] {
         let last = super::project::clamp_i64((hi - &half).floor());
         [first.max(limit[k][0]), (last + 1).min(limit[k][1])]
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::production::clip::clipper::ClipVertex;
+    use crate::production::clip::project::Mapping;
+    use crate::scene::Viewport;
+
+    fn projected(c: [(i64, i64); 4]) -> Projected {
+        let v = ClipVertex {
+            clip: c.map(|(n, d)| RBig::from(n) / RBig::from(d)),
+            attributes: vec![],
+        };
+        Mapping::new(&Viewport::canvas(16, 16), Some(8)).project(&v)
+    }
+
+    /// The same piece with its coefficients forced into big integers.
+    fn big(piece: &Piece) -> Piece {
+        let Edges::Small(e) = &piece.edges else {
+            return piece.clone();
+        };
+        Piece {
+            edges: Edges::Big(e.map(|row| row.map(IBig::from))),
+            ..piece.clone()
+        }
+    }
+
+    #[test]
+    fn the_i128_path_decides_as_big_integers_do() {
+        let mut seed = 0x1234_5678_u64;
+        let mut next = |lo: i64, hi: i64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + ((seed >> 33) % (hi - lo + 1) as u64) as i64
+        };
+        let mut covered = 0;
+        for _ in 0..200 {
+            let h = [0, 1, 2].map(|_| {
+                projected([
+                    (next(-40, 40), 16),
+                    (next(-40, 40), 16),
+                    (0, 1),
+                    (next(-16, 32), 16),
+                ])
+            });
+            let Some(piece) = Piece::new(&h, FillRule::TopLeft) else {
+                continue;
+            };
+            assert!(matches!(piece.edges, Edges::Small(_)));
+            let slow = big(&piece);
+            for py in -2..18 {
+                for px in -2..18 {
+                    let (a, b) = (piece.at(px, py), slow.at(px, py));
+                    assert_eq!(a.big(), b.big());
+                    assert_eq!(piece.covers(&a), slow.covers(&b));
+                    covered += usize::from(piece.covers(&a));
+                }
+            }
+        }
+        assert!(covered > 1000, "{covered}");
+    }
+
+    #[test]
+    fn huge_coefficients_take_big_integers() {
+        // Unsnapped coordinates with three large prime denominators: their
+        // common multiple, times a coordinate, squared, is past 2^100.
+        let exact = Mapping::new(&Viewport::canvas(16, 16), None);
+        let at = |x: RBig, y: RBig| {
+            exact.project(&ClipVertex {
+                clip: [x, y, RBig::ZERO, RBig::ONE],
+                attributes: vec![],
+            })
+        };
+        let inv = |q: i64| RBig::ONE / RBig::from(q);
+        let one = RBig::ONE;
+        let h = [
+            at(inv(1_000_000_007) - &one, inv(1_000_000_007) - &one),
+            at(&one - inv(998_244_353), inv(998_244_353) - &one),
+            at(inv(1_000_000_009), &one - inv(1_000_000_009)),
+        ];
+        let piece = Piece::new(&h, FillRule::TopLeft).expect("not degenerate");
+        assert!(matches!(piece.edges, Edges::Big(_)));
+        // About (0, 0), (16, 0), (8, 16).
+        assert!(piece.covers(&piece.at(8, 2)));
+        assert!(piece.covers(&piece.at(8, 14)));
+        assert!(!piece.covers(&piece.at(0, 15)));
+        assert!(!piece.covers(&piece.at(15, 15)));
+    }
+
+    #[test]
+    fn an_edge_owns_by_its_coefficients() {
+        let zero = IBig::ZERO;
+        let (pos, neg) = (IBig::ONE, -IBig::ONE);
+        let rule = FillRule::TopLeft;
+        assert!(owns(&pos, &zero, rule)); // left
+        assert!(!owns(&neg, &zero, rule)); // right
+        assert!(owns(&zero, &pos, rule)); // top
+        assert!(!owns(&zero, &neg, rule)); // bottom
+        assert!(!owns(&zero, &zero, FillRule::AllEdges));
+    }
 }

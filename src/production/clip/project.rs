@@ -75,8 +75,7 @@ impl Mapping {
                 k: RBig::ONE / w,
             }
         } else {
-            let point =
-                |origin: &RBig, size: &RBig, c: &RBig| w * origin + size * &half * (w + c);
+            let point = |origin: &RBig, size: &RBig, c: &RBig| w * origin + size * &half * (w + c);
             Projected {
                 h: [
                     point(&self.x, &self.width, x),

@@ -56,7 +56,10 @@ enum How {
 enum Attribute {
     Flat(f64),
     /// Σ E_i·numerator[i] / (Σ E_i·weight[i]) · ratio.
-    Perspective { numerator: [IBig; 3], ratio: RBig },
+    Perspective {
+        numerator: [IBig; 3],
+        ratio: RBig,
+    },
 }
 
 impl Values {
@@ -79,15 +82,21 @@ impl Values {
         let how = if !plan.interpolates() {
             How::None
         } else if piece.in_front && matches!(piece.edges, super::homogeneous::Edges::Small(_)) {
-            How::Screen(screen_shading(piece, vertices, interpolation, flat, plan, mapping))
+            How::Screen(screen_shading(
+                piece,
+                vertices,
+                interpolation,
+                flat,
+                plan,
+                mapping,
+            ))
         } else {
             let (weight, q_weight) = integers(&weights);
             let attributes = (0..plan.attributes)
                 .map(|j| match interpolation {
                     Interpolation::Perspective => {
-                        let (numerator, q_j) = integers(
-                            &[0, 1, 2].map(|i| &weights[i] * &vertices[i].attributes[j]),
-                        );
+                        let (numerator, q_j) =
+                            integers(&[0, 1, 2].map(|i| &weights[i] * &vertices[i].attributes[j]));
                         Attribute::Perspective {
                             numerator,
                             ratio: RBig::from(q_weight.clone()) / RBig::from(q_j),
