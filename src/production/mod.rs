@@ -22,6 +22,9 @@
 //!    - a polygon: `polygon/` (scanline fill).
 //! 4. An antialiased frame is resolved (`Frame::resolve`).
 //!
+//! A clip-space scene (SPEC.md §16) goes whole to `clip/` instead, whose
+//! `mod.rs` gives its own order (clip, project, rasterize, shade).
+//!
 //! The methods measured on their own reuse that path: `tiled.rs` (bands
 //! drawn in parallel through [`draw_primitive`]), `antialias/`
 //! (`adaptive-refine`, `adaptive-resolve`, `area-f32`), `polygon/`'s other

@@ -231,7 +231,7 @@ mod tests {
             clip: c.map(|(n, d)| RBig::from(n) / RBig::from(d)),
             attributes: vec![],
         };
-        Mapping::new(&Viewport::canvas(16, 16), Some(8)).project(&v)
+        Mapping::new(&Viewport::canvas(16, 16), Some(8), false).project(&v)
     }
 
     /// The same piece with its coefficients forced into big integers.
@@ -285,7 +285,7 @@ mod tests {
     fn huge_coefficients_take_big_integers() {
         // Unsnapped coordinates with three large prime denominators: their
         // common multiple, times a coordinate, squared, is past 2^100.
-        let exact = Mapping::new(&Viewport::canvas(16, 16), None);
+        let exact = Mapping::new(&Viewport::canvas(16, 16), None, false);
         let at = |x: RBig, y: RBig| {
             exact.project(&ClipVertex {
                 clip: [x, y, RBig::ZERO, RBig::ONE],

@@ -52,7 +52,8 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
             "a clip-space case neither antialiases nor moves (SPEC.md §16.1)".to_owned(),
         ));
     }
-    let mapping = Mapping::new(viewport, scene.rules.subpixel_bits);
+    let clamp = scene.rules.clip.depth == DepthMode::Clamp;
+    let mapping = Mapping::new(viewport, scene.rules.subpixel_bits, clamp);
     let canvas = [
         [0, i64::from(scene.canvas.width)],
         [0, i64::from(scene.canvas.height)],
@@ -146,7 +147,6 @@ impl Draw<'_> {
             flat,
             self.plan,
             self.mapping,
-            rules.clip.depth,
         );
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);

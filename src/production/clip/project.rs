@@ -42,10 +42,12 @@ pub struct Mapping {
     pub max_depth: RBig,
     /// `subpixel_bits`: `None` keeps x_f and y_f exact.
     pub bits: Option<u32>,
+    /// `depth: clamp`: each sample's depth is clamped to the depth range.
+    pub clamp: bool,
 }
 
 impl Mapping {
-    pub fn new(viewport: &Viewport, bits: Option<u32>) -> Mapping {
+    pub fn new(viewport: &Viewport, bits: Option<u32>, clamp: bool) -> Mapping {
         let r = |n: &Number| n.as_rbig().clone();
         Mapping {
             x: r(&viewport.x),
@@ -55,6 +57,7 @@ impl Mapping {
             min_depth: r(&viewport.min_depth),
             max_depth: r(&viewport.max_depth),
             bits,
+            clamp,
         }
     }
 

@@ -25,7 +25,7 @@ use super::project::{Mapping, Projected};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::setup::{self, Shading};
-use crate::scene::{DepthMode, Interpolation, Number, Triangle, Vertex};
+use crate::scene::{Interpolation, Number, Triangle, Vertex};
 
 /// How a piece's values are found at a covered sample.
 #[derive(Clone, Debug)]
@@ -74,11 +74,10 @@ impl Values {
         flat: &[RBig],
         plan: &Plan,
         mapping: &Mapping,
-        depth_mode: DepthMode,
     ) -> Values {
         let weights: [RBig; 3] = [0, 1, 2].map(|i| &piece.scale[i] * &h[i].k);
         let (depth, q) = integers(&[0, 1, 2].map(|i| &weights[i] * &vertices[i].clip[2]));
-        let clamp = (depth_mode == DepthMode::Clamp).then(|| mapping.depth_range());
+        let clamp = mapping.clamp.then(|| mapping.depth_range());
         let how = if !plan.interpolates() {
             How::None
         } else if piece.in_front && matches!(piece.edges, super::homogeneous::Edges::Small(_)) {
