@@ -152,6 +152,9 @@ impl Draw<'_> {
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);
         let width = frame.width as usize;
         for py in y0..y1 {
+            // A piece with a vertex behind the eye visits the whole canvas:
+            // the time limit is polled every row.
+            crate::deadline::check();
             for px in x0..x1 {
                 let e = piece.at(px, py);
                 if !piece.covers(&e) || (depth_test && !values.depth_inside(&e)) {
