@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -118,6 +118,17 @@ pub trait Rasterizer: Send + Sync {
     /// the rasterizer has drawn the case, so a program may declare it in
     /// its hello.
     fn fixed_fill_rule(&self) -> Option<FillRule> {
+        None
+    }
+
+    /// The clip-space conventions (`clip_xy`, `clip_z`) this rasterizer
+    /// follows whatever a case states, when it cannot follow the case's: a
+    /// driver clips as its hardware or its software pipeline does (SPEC.md
+    /// §16.2, §16.3). A clip-space case under other conventions is judged
+    /// against the reference drawn under these, and reported as such, as
+    /// for [`Rasterizer::fixed_fill_rule`]. `None` for a rasterizer that
+    /// follows each case's.
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
         None
     }
 
