@@ -22,6 +22,9 @@
 //!    - a polygon: `polygon/` (scanline fill).
 //! 4. An antialiased frame is resolved (`Frame::resolve`).
 //!
+//! A clip-space scene (SPEC.md §16) goes whole to `clip/` instead, whose
+//! `mod.rs` gives its own order (clip, project, rasterize, shade).
+//!
 //! The methods measured on their own reuse that path: `tiled.rs` (bands
 //! drawn in parallel through [`draw_primitive`]), `antialias/`
 //! (`adaptive-refine`, `adaptive-resolve`, `area-f32`), `polygon/`'s other
@@ -30,6 +33,7 @@
 //! `mutants.rs` (one deliberate bug each).
 
 pub mod antialias;
+pub mod clip;
 pub mod fixed;
 pub mod foils;
 pub mod line;
@@ -86,12 +90,14 @@ impl Rasterizer for Production {
             polygons: true,
             antialias: true,
             motion_blur: true,
-            clip_space: false,
             ..Capabilities::everything()
         }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if scene.in_clip_space() {
+            return clip::rasterize(scene, plan);
+        }
         rasterize_with(scene, plan, Sampling::for_plan(plan))
     }
 
@@ -101,7 +107,7 @@ impl Rasterizer for Production {
         scene: &'a Scene,
         plan: &'a Plan,
     ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
-        if plan.motion.is_some() {
+        if plan.motion.is_some() || scene.in_clip_space() {
             return None;
         }
         Some(
@@ -227,6 +233,7 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
                 plan,
                 samples,
                 index,
+                scene.rules.provoking_vertex,
                 frame,
             )?;
         }

@@ -83,6 +83,9 @@ pub enum Shading {
         attributes: Vec<Vec3>,
         /// 1/wᵢ per vertex.
         inv_w: Vec3,
+        /// The vertex (in the case's order) whose values a `flat`
+        /// triangle takes (SPEC.md §16.6).
+        provoking: usize,
     },
 }
 
@@ -265,6 +268,15 @@ fn pixel_box(
 }
 
 impl Shading {
+    /// Makes vertex `vertex` (in the case's order) the one whose values a
+    /// `flat` triangle takes (`rules.provoking_vertex`, SPEC.md §16.6);
+    /// the first unless set.
+    pub fn set_provoking(&mut self, vertex: usize) {
+        if let Shading::Values { provoking, .. } = self {
+            *provoking = vertex;
+        }
+    }
+
     /// Writes depth and attributes into slot `i` of the frame from the three
     /// exact edge values at the sample, bias removed.
     #[inline]
@@ -276,6 +288,7 @@ impl Shading {
             depth,
             attributes,
             inv_w,
+            provoking,
         } = self
         else {
             return;
@@ -295,7 +308,7 @@ impl Shading {
         };
         for (channel, values) in frame.attributes.iter_mut().zip(attributes) {
             let value = match interpolation {
-                Interpolation::Flat => values.x,
+                Interpolation::Flat => values[*provoking],
                 Interpolation::Linear => blend(values),
                 Interpolation::Perspective => blend(values) / perspective_w,
             };
@@ -305,7 +318,12 @@ impl Shading {
 }
 
 /// Per-vertex values for interpolation, in f32.
-fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f64) -> Shading {
+pub(crate) fn shading(
+    triangle: &Triangle,
+    opposite: [usize; 3],
+    plan: &Plan,
+    twice_area: f64,
+) -> Shading {
     let vs = &triangle.vertices;
     let inv_w = [0, 1, 2].map(|i| 1.0 / vs[i].w.to_f64_lossy());
     let interpolation = triangle.interpolation;
@@ -333,5 +351,6 @@ fn shading(triangle: &Triangle, opposite: [usize; 3], plan: &Plan, twice_area: f
             .then(|| [0, 1, 2].map(|i| vs[i].z.to_f64_lossy() as f32).into()),
         attributes,
         inv_w: inv_w.map(|v| v as f32).into(),
+        provoking: 0,
     }
 }

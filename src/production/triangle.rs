@@ -32,7 +32,7 @@ pub(crate) fn draw<E: EdgeInt>(
         Some(_) => Footprint::Squares,
         None => Footprint::Centres,
     };
-    let Some(setup) = setup::setup_in::<E>(
+    let Some(mut setup) = setup::setup_in::<E>(
         positions,
         triangle,
         format,
@@ -45,6 +45,9 @@ pub(crate) fn draw<E: EdgeInt>(
     ) else {
         return;
     };
+    setup
+        .shading
+        .set_provoking(scene.rules.provoking_vertex.index(3));
     match sampled {
         Some((samples, offsets)) => {
             antialias::write_triangle(&setup, format, offsets, samples.sampling, index, frame)

@@ -400,6 +400,8 @@ impl Rasterizer for AdaptiveRefine {
             antialias: true,
             // Its static samples are inexact, and it has no time loop.
             motion_blur: false,
+            // Clip-space scenes neither antialias nor reach its sampler.
+            clip_space: false,
             ..super::Production.capabilities()
         }
     }

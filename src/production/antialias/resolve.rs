@@ -40,6 +40,7 @@ impl Rasterizer for AdaptiveResolve {
             polygons: false,
             antialias: true,
             motion_blur: false,
+            clip_space: false,
             ..Production.capabilities()
         }
     }

@@ -114,7 +114,9 @@ fn rasterize<F: Float>(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>
         if g.is_point() {
             continue;
         }
-        let shading = plan.interpolates().then(|| LineShading::new(l, &g, plan));
+        let shading = plan
+            .interpolates()
+            .then(|| LineShading::new(l, &g, plan, scene.rules.provoking_vertex.index(2)));
         let owner = index as u32 + 1;
         dda::<F>(&g, format, l.last_pixel, scene.canvas, |x, y| {
             let i = y as usize * frame.width as usize + x as usize;

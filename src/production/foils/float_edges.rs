@@ -282,7 +282,7 @@ fn draw_triangle<F: Float>(
             for (k, channel) in frame.attributes.iter_mut().enumerate() {
                 let a = |j: usize| f(&vs[j].attributes[k]);
                 let value = match triangle.interpolation {
-                    Interpolation::Flat => a(0),
+                    Interpolation::Flat => a(scene.rules.provoking_vertex.index(3)),
                     Interpolation::Linear => blend(&a),
                     Interpolation::Perspective => {
                         blend(&|j| a(j) * inv_w[j]) / blend(&|j| inv_w[j])

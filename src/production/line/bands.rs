@@ -487,6 +487,7 @@ mod tests {
                             &plan,
                             None,
                             *index,
+                            crate::scene::ProvokingVertex::First,
                             &mut expected,
                         )
                         .unwrap();

@@ -54,7 +54,7 @@ use super::fixed::{EdgeInt, Fixed, Format};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::{Canvas, FillRule, Line, LineRule};
+use crate::scene::{Canvas, FillRule, Line, LineRule, ProvokingVertex};
 
 /// Draws one line into the frame as primitive `index`.
 ///
@@ -71,6 +71,7 @@ pub fn draw<E: EdgeInt>(
     plan: &Plan,
     samples: Option<&Samples>,
     index: usize,
+    provoking: ProvokingVertex,
     frame: &mut Frame,
 ) -> Result<(), RasterError> {
     if samples.is_some() && line.rule != LineRule::Parallelogram {
@@ -86,7 +87,7 @@ pub fn draw<E: EdgeInt>(
     }
     let shading = plan
         .interpolates()
-        .then(|| LineShading::new(line, &g, plan));
+        .then(|| LineShading::new(line, &g, plan, provoking.index(2)));
     if line.rule == LineRule::Midpoint && shading.is_none() {
         midpoint_coverage(&g, format, line.last_pixel, canvas, index, frame);
         return Ok(());

@@ -26,10 +26,13 @@ pub(crate) struct LineShading {
     /// Per attribute: a/w at each end for perspective, a otherwise.
     attributes: Vec<[f32; 2]>,
     inv_w: [f32; 2],
+    /// The end (0 or 1) whose values a `flat` line takes (SPEC.md §16.6).
+    provoking: usize,
 }
 
 impl LineShading {
-    pub fn new(line: &Line, g: &Geometry, plan: &Plan) -> LineShading {
+    /// A line's shading; a `flat` line takes end `provoking`'s values.
+    pub fn new(line: &Line, g: &Geometry, plan: &Plan, provoking: usize) -> LineShading {
         let vs = &line.vertices;
         let inv_w = [0, 1].map(|i| 1.0 / vs[i].w.to_f64_lossy());
         let interpolation = line.interpolation;
@@ -62,6 +65,7 @@ impl LineShading {
                 .then(|| [0, 1].map(|i| vs[i].z.to_f64_lossy() as f32)),
             attributes,
             inv_w: inv_w.map(|w| w as f32),
+            provoking,
         }
     }
 
@@ -102,7 +106,7 @@ impl LineShading {
         };
         for (channel, [a0, a1]) in frame.attributes.iter_mut().zip(&self.attributes) {
             let value = match self.interpolation {
-                Interpolation::Flat => *a0,
+                Interpolation::Flat => [*a0, *a1][self.provoking],
                 Interpolation::Linear => s * a0 + t * a1,
                 Interpolation::Perspective => (s * a0 + t * a1) / perspective_w,
             };
@@ -181,12 +185,12 @@ mod tests {
             attributes: 0,
             motion: None,
         };
-        let shading = LineShading::new(&line, &g, &plan);
+        let shading = LineShading::new(&line, &g, &plan, 0);
         assert_eq!(shading.weights([-3, 5]), [1.0, 0.0]);
         assert_eq!(shading.weights([8, 0]), [0.0, 1.0]);
         assert_eq!(shading.weights([2, 100]), [0.75, 0.25]);
         line.parameter = LineParameter::Projected;
-        let shading = LineShading::new(&line, &g, &plan);
+        let shading = LineShading::new(&line, &g, &plan, 0);
         // (2, 100)·(8, 2) = 216 > 68: clamped.
         assert_eq!(shading.weights([2, 100]), [0.0, 1.0]);
         assert_eq!(shading.weights([4, 1]), [0.5, 0.5]);

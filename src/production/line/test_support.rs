@@ -70,6 +70,17 @@ pub(super) fn draw_one<E: EdgeInt>(
         [Fixed(g.v0[0]), Fixed(g.v0[1])],
         [Fixed(g.v1[0]), Fixed(g.v1[1])],
     ];
-    draw::<E>(line, ends, format, rule, canvas, &plan, None, 0, &mut frame)?;
+    draw::<E>(
+        line,
+        ends,
+        format,
+        rule,
+        canvas,
+        &plan,
+        None,
+        0,
+        crate::scene::ProvokingVertex::First,
+        &mut frame,
+    )?;
     Ok(frame)
 }

@@ -1,0 +1,177 @@
+//! Production's clip-space path (SPEC.md §16): a scene whose vertices are
+//! homogeneous clip coordinates. A triangle flows through these files in
+//! order:
+//!
+//! 1. [`draw_triangle`]: culling by the original triangle's D (§16.4),
+//!    whatever its pieces;
+//! 2. `clipper.rs`: Sutherland–Hodgman against the planes the rules clip
+//!    before the divide, exact rationals, then the fan (§16.3);
+//! 3. `project.rs`: each piece's vertices divided, put through the viewport
+//!    and snapped (w > 0), or kept homogeneous (w ≤ 0) (§16.1, §16.4);
+//! 4. `homogeneous.rs`: the piece's integer edge functions, their
+//!    ownership under the fill rule, the samples to visit (§16.4);
+//! 5. `shade.rs`: the per-sample depth test and the values written
+//!    (§16.2, §16.5).
+//!
+//! Per-primitive set-up is exact (rationals and big integers); per-sample
+//! work is integer dot products, in i128 when the coefficients fit
+//! (`homogeneous.rs` states the bound) and in big integers otherwise. One
+//! sample per pixel, at its centre: a clip-space case neither antialiases
+//! nor moves (§16.1).
+
+pub mod clipper;
+mod homogeneous;
+mod project;
+mod shade;
+
+use dashu_ratio::RBig;
+
+use clipper::{ClipVertex, NewVertex};
+use homogeneous::Piece;
+use project::{Mapping, Projected};
+use shade::Values;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::RasterError;
+use crate::scene::{ClipXy, ClipZ, Cull, DepthMode, Primitive, Scene, Triangle};
+
+/// Draws a clip-space scene.
+pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+    rasterize_with(scene, plan, clipper::new_vertex)
+}
+
+/// [`rasterize`] with the clipper's new vertices computed by `new`: tests
+/// pass wrong ones to show that their checks catch them.
+pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Frame, RasterError> {
+    let viewport = scene.viewport.as_ref().ok_or_else(|| {
+        RasterError::Unsupported("the clip-space path draws clip-space scenes only".to_owned())
+    })?;
+    if plan.antialias.is_some() || plan.motion.is_some() {
+        return Err(RasterError::Unsupported(
+            "a clip-space case neither antialiases nor moves (SPEC.md §16.1)".to_owned(),
+        ));
+    }
+    let clamp = scene.rules.clip.depth == DepthMode::Clamp;
+    let mapping = Mapping::new(viewport, scene.rules.subpixel_bits, clamp);
+    let canvas = [
+        [0, i64::from(scene.canvas.width)],
+        [0, i64::from(scene.canvas.height)],
+    ];
+    // Under the guard band a sample outside the viewport rectangle is not
+    // covered: the rectangle bounds every piece's samples.
+    let limit = match scene.rules.clip.xy {
+        ClipXy::GuardBand => {
+            let rect = mapping.pixel_rectangle();
+            [0, 1].map(|k| [canvas[k][0].max(rect[k][0]), canvas[k][1].min(rect[k][1])])
+        }
+        ClipXy::ClipThenSnap => canvas,
+    };
+    let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        if index % 16 == 0 {
+            // The per-case time limit, polled every few primitives.
+            crate::deadline::check();
+        }
+        let Primitive::Triangle(triangle) = primitive else {
+            return Err(RasterError::Unsupported(format!(
+                "a clip-space case draws triangles only (SPEC.md §16.1), primitive {index} is a {}",
+                primitive.kind()
+            )));
+        };
+        let draw = Draw {
+            scene,
+            plan,
+            mapping: &mapping,
+            limit,
+            index,
+        };
+        draw.triangle(triangle, new, &mut frame);
+    }
+    Ok(frame)
+}
+
+/// One primitive's drawing context.
+struct Draw<'a> {
+    scene: &'a Scene,
+    plan: &'a Plan,
+    mapping: &'a Mapping,
+    /// The pixels any sample may lie in, half-open [[x0, x1], [y0, y1]].
+    limit: [[i64; 2]; 2],
+    index: usize,
+}
+
+impl Draw<'_> {
+    /// Culls the triangle by its own winding, clips it, and draws its fan.
+    fn triangle(&self, triangle: &Triangle, new: NewVertex, frame: &mut Frame) {
+        let rules = &self.scene.rules;
+        let original = triangle.vertices.each_ref().map(ClipVertex::of);
+        let h = original.each_ref().map(|v| self.mapping.project(v));
+        let d = det(&h);
+        let culled = match rules.cull {
+            Cull::None => false,
+            Cull::Clockwise => d > RBig::ZERO,
+            Cull::CounterClockwise => d < RBig::ZERO,
+        };
+        if culled {
+            return;
+        }
+        let flat = original[rules.provoking_vertex.index(3)].attributes.clone();
+        let polygon = clipper::clip(original.into(), rules.clip.clipped_planes(), new);
+        let projected: Vec<Projected> = polygon.iter().map(|v| self.mapping.project(v)).collect();
+        for [a, b, c] in clipper::fan(polygon.len()) {
+            let h = [&projected[a], &projected[b], &projected[c]].map(Clone::clone);
+            let vertices = [&polygon[a], &polygon[b], &polygon[c]];
+            self.piece(&h, vertices, triangle, &flat, frame);
+        }
+    }
+
+    /// Tests and writes every sample of one piece's region.
+    fn piece(
+        &self,
+        h: &[Projected; 3],
+        vertices: [&ClipVertex; 3],
+        triangle: &Triangle,
+        flat: &[RBig],
+        frame: &mut Frame,
+    ) {
+        let rules = &self.scene.rules;
+        let Some(piece) = Piece::new(h, rules.fill_rule) else {
+            return;
+        };
+        let values = Values::new(
+            &piece,
+            h,
+            vertices,
+            triangle.interpolation,
+            flat,
+            self.plan,
+            self.mapping,
+        );
+        let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
+        let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);
+        let width = frame.width as usize;
+        for py in y0..y1 {
+            // A piece with a vertex behind the eye visits the whole canvas:
+            // the time limit is polled every row.
+            crate::deadline::check();
+            for px in x0..x1 {
+                let e = piece.at(px, py);
+                if !piece.covers(&e) || (depth_test && !values.depth_inside(&e)) {
+                    continue;
+                }
+                let i = py as usize * width + px as usize;
+                frame.hit(i, self.index);
+                values.write(frame, i, &e, self.mapping);
+            }
+        }
+    }
+}
+
+/// D = det[H_0, H_1, H_2], exact: positive when the triangle runs
+/// clockwise on the screen (y down).
+fn det(h: &[Projected; 3]) -> RBig {
+    let [a, b, c] = h.each_ref().map(|p| &p.h);
+    &a[0] * (&b[1] * &c[2] - &b[2] * &c[1]) - &a[1] * (&b[0] * &c[2] - &b[2] * &c[0])
+        + &a[2] * (&b[0] * &c[1] - &b[1] * &c[0])
+}
