@@ -365,8 +365,9 @@ fn probe_finds_a_rasterizers_own_clipping() {
         assert_eq!(found.clip_xy, Some(clip.xy.name()), "{found:?}");
         assert_eq!(found.clip_z, Some(clip.z.name()), "{found:?}");
     }
-    // Production does not take clip space until it says so; a screen-space
-    // rasterizer is not probed.
+    // Production follows each case; a screen-space rasterizer is not probed.
+    let found = probe_clip(&rastercheck::production::Production).expect("takes clip space");
+    assert!(found.follows_case, "{found:?}");
     assert!(probe_clip(&rastercheck::production::foils::FloatF32).is_none());
 }
 
