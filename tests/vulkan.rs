@@ -357,3 +357,27 @@ fn the_report_names_the_device_and_driver() {
     assert!(declared.contains("shifted passes"), "{declared}");
     assert!(rastercheck::adapters::names().contains(&vulkan::NAME));
 }
+
+#[test]
+fn clip_space_honours_the_provoking_vertex() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_provoking_vertex(&VULKAN);
+}
+
+#[test]
+fn clip_space_depth_is_clipped_or_clamped() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_depth_clip_and_clamp(&VULKAN);
+}
+
+#[test]
+fn clip_space_refuses_what_it_cannot_hand_the_driver() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_refusals(&VULKAN);
+}

@@ -6,6 +6,7 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 pub mod adapters;
+pub mod clip_drivers;
 pub mod cli;
 
 #[allow(unused_imports)] // not every binary runs the binary

@@ -107,7 +107,7 @@ use std::sync::{Mutex, MutexGuard, OnceLock};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Antialias, FillRule, LineRule, Pattern, Primitive, Scene};
+use crate::scene::{Antialias, DepthMode, FillRule, LineRule, Pattern, Primitive, Scene};
 
 use super::gpu::{self, Placement};
 use device::{Device, Offers};
@@ -180,7 +180,6 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
-            clip_space: false,
             ..Capabilities::everything()
         }
     }
@@ -306,6 +305,16 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
             _ => {}
         }
     }
+    if let Some(why) = clip_space_refusal(scene, offers) {
+        return unsupported(why);
+    }
+    if scene.needs_last_provoking_vertex() && !offers.provoking_last {
+        return unsupported(
+            "provoking_vertex: last on a flat primitive with attributes: the device has no \
+             VK_EXT_provoking_vertex with provokingVertexLast"
+                .into(),
+        );
+    }
     let Some(bits) = scene.rules.subpixel_bits else {
         return unsupported(format!(
             "unsnapped geometry (subpixel_bits: null): the device snaps to {} subpixel bits",
@@ -320,6 +329,39 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
         ));
     }
     Ok(bits)
+}
+
+/// Why the device cannot draw a clip-space scene, if it cannot: the case's
+/// numbers are not the device's (`gpu::clip_space_refusal`), depth clamp
+/// without depth clip is not offered, or the viewport is outside the
+/// device's bounds.
+fn clip_space_refusal(scene: &Scene, offers: &Offers) -> Option<String> {
+    let v = scene.viewport.as_ref()?;
+    if let Some(why) = gpu::clip_space_refusal(scene, "the Vulkan device", offers.subpixel_bits) {
+        return Some(why);
+    }
+    if scene.rules.clip.depth == DepthMode::Clamp && !offers.depth_clamp {
+        return Some(
+            "depth: clamp: the device lacks depthClamp or VK_EXT_depth_clip_enable \
+             (depthClampEnable alone would still clip)"
+                .into(),
+        );
+    }
+    let [lo, hi] = offers.viewport_bounds;
+    let [x, y, w, h] = [&v.x, &v.y, &v.width, &v.height].map(super::float_input::f32_of);
+    let inside = x >= lo
+        && y >= lo
+        && x + w <= hi
+        && y + h <= hi
+        && w <= offers.max_viewport[0] as f32
+        && h <= offers.max_viewport[1] as f32;
+    (!inside).then(|| {
+        format!(
+            "viewport ({x}, {y}) {w}×{h}: the device's viewports lie in [{lo}, {hi}], \
+             at most {}×{}",
+            offers.max_viewport[0], offers.max_viewport[1]
+        )
+    })
 }
 
 /// Why the device has no line mode for this rule and width, if it has none.
