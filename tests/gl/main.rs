@@ -586,3 +586,27 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
     let known = ["midpoint", "wide aliased lines", "subpixel_bits: null"];
     common::adapters::assert_judges_at_least_85_percent(&Gl, &known);
 }
+
+#[test]
+fn clip_space_honours_the_provoking_vertex() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_provoking_vertex(&Gl);
+}
+
+#[test]
+fn clip_space_depth_is_clipped_or_clamped() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_depth_clip_and_clamp(&Gl);
+}
+
+#[test]
+fn clip_space_refuses_what_it_cannot_hand_the_driver() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_refusals(&Gl);
+}

@@ -202,6 +202,7 @@
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
 //!   at a time, for the bench to time the draw apart.
 
+mod clip;
 mod context;
 mod drawing;
 mod lines;
@@ -301,11 +302,12 @@ impl Rasterizer for Softpipe {
 /// lines (`lines.rs` refuses the other rules) and polygons by stencil then
 /// cover, snapped to the case's grid; antialiased scenes by shifted passes
 /// (`passes.rs`) or native MSAA (`msaa.rs`); moving scenes by time passes
-/// (`time.rs`).
+/// (`time.rs`); clip-space scenes, clipped by the driver (`clip.rs`).
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
         motion_blur: true,
+        clip_space: true,
         ..gpu::capabilities(true)
     }
 }
