@@ -161,7 +161,12 @@ pub fn measure_known(
         ulp_floor: DEFAULT_RELATIVE_BOUND * magnitude.max(1.0),
     };
     if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
-        let m = largest(scene.vertices().map(|v| &v.z));
+        // A clip-space scene writes depths in the viewport's range, within
+        // [0, 1] (SPEC.md §16.1), whatever its clip z.
+        let m = match &scene.viewport {
+            Some(viewport) => largest([&viewport.min_depth, &viewport.max_depth].into_iter()),
+            None => largest(scene.vertices().map(|v| &v.z)),
+        };
         channels.push(interpolation::channel_error(
             "depth",
             reference,

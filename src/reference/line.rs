@@ -402,8 +402,16 @@ impl Region {
     }
 }
 
-/// Writes exact depth and attributes at a sample with parameter t.
-pub fn write(line: &Line, frame: &mut Frame, pixel: usize, plan: &Plan, t: &RBig) {
+/// Writes exact depth and attributes at a sample with parameter t; a flat
+/// line takes vertex `provoking`'s values (SPEC.md §16.6).
+pub fn write(
+    line: &Line,
+    provoking: usize,
+    frame: &mut Frame,
+    pixel: usize,
+    plan: &Plan,
+    t: &RBig,
+) {
     let [v0, v1] = &line.vertices;
     let s = RBig::ONE - t;
     let mix = |a: &RBig, b: &RBig| &s * a + t * b;
@@ -417,7 +425,7 @@ pub fn write(line: &Line, frame: &mut Frame, pixel: usize, plan: &Plan, t: &RBig
     for k in 0..plan.attributes {
         let (a0, a1) = (v0.attributes[k].as_rbig(), v1.attributes[k].as_rbig());
         let exact = match line.interpolation {
-            Interpolation::Flat => a0.clone(),
+            Interpolation::Flat => line.vertices[provoking].attributes[k].as_rbig().clone(),
             Interpolation::Linear => mix(a0, a1),
             Interpolation::Perspective => {
                 mix(&(a0 * &inv_w[0]), &(a1 * &inv_w[1])) / mix(&inv_w[0], &inv_w[1])

@@ -13,6 +13,7 @@
 //! when the plan antialiases.
 
 pub mod area;
+pub mod clip;
 pub mod exact;
 pub mod grid;
 pub mod line;
@@ -68,6 +69,8 @@ enum Exact {
     Triangle([IBig; 3], IBig),
     /// A line's interpolation parameter.
     Line(RBig),
+    /// A clip-space triangle's exact depth and attributes (SPEC.md §16.5).
+    Clip(Box<clip::Values>),
 }
 
 /// Visits every covered sample of every primitive under `rule`, in scene
@@ -85,6 +88,16 @@ fn visit_samples<F>(
 ) where
     F: FnMut(usize, usize, Exact),
 {
+    if scene.in_clip_space() {
+        // The reader refuses antialiasing in clip space.
+        return clip::visit(scene, rule, with_values, |index, pixel, values| {
+            visit(
+                index,
+                pixel,
+                values.map_or(Exact::Nothing, |v| Exact::Clip(Box::new(v))),
+            )
+        });
+    }
     let Some(samples) = antialias else {
         let on = grid::on_grid(scene);
         return visit_scene(scene, &on, rule, arithmetic, with_values, false, visit);
@@ -217,11 +230,14 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
         _ => plan,
     };
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+    let provoking_line = scene.rules.provoking_vertex.index(2);
     let values: Vec<Option<triangle::VertexValues>> = scene
         .primitives
         .iter()
         .map(|p| match p {
-            Primitive::Triangle(t) if plan.interpolates() => Some(triangle::VertexValues::new(t)),
+            Primitive::Triangle(t) if plan.interpolates() && !scene.in_clip_space() => Some(
+                triangle::VertexValues::new(t, scene.rules.provoking_vertex.index(3)),
+            ),
             _ => None,
         })
         .collect();
@@ -238,8 +254,16 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
                     .as_ref()
                     .expect("prepared for triangles")
                     .write(&mut frame, slot, plan, &e, &area),
+                (Exact::Clip(values), _) => {
+                    if let Some(depth) = frame.depth.as_mut() {
+                        depth[slot] = exact::to_f64_round_odd(&values.depth);
+                    }
+                    for (channel, value) in frame.attributes.iter_mut().zip(&values.attributes) {
+                        channel[slot] = exact::to_f64_round_odd(value);
+                    }
+                }
                 (Exact::Line(t), Primitive::Line(line)) => {
-                    line::write(line, &mut frame, slot, plan, &t)
+                    line::write(line, provoking_line, &mut frame, slot, plan, &t)
                 }
                 // A polygon's vertices carry z = 0 and no attributes.
                 (_, Primitive::Polygon(_)) => {

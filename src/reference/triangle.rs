@@ -304,7 +304,7 @@ fn gcd(a: &IBig, b: &IBig) -> IBig {
 }
 
 enum Channel {
-    /// The first vertex's value, rounded once.
+    /// The provoking vertex's value, rounded once.
     Flat(f64),
     Linear(Combination),
     /// Σ e'_i a_i/w_i over the combination of 1/w_i.
@@ -312,7 +312,8 @@ enum Channel {
 }
 
 impl VertexValues {
-    pub fn new(t: &Triangle) -> VertexValues {
+    /// `provoking`: the vertex whose values a flat triangle takes (SPEC.md §16.6).
+    pub fn new(t: &Triangle, provoking: usize) -> VertexValues {
         let v = &t.vertices;
         let count = v[0].attributes.len();
         let inv_w: [RBig; 3] = [0, 1, 2].map(|i| RBig::ONE / v[i].w.as_rbig());
@@ -320,7 +321,7 @@ impl VertexValues {
             .map(|k| {
                 let values = [0, 1, 2].map(|i| v[i].attributes[k].as_rbig().clone());
                 match t.interpolation {
-                    Interpolation::Flat => Channel::Flat(to_f64_round_odd(&values[0])),
+                    Interpolation::Flat => Channel::Flat(to_f64_round_odd(&values[provoking])),
                     Interpolation::Linear => Channel::Linear(Combination::new(&values)),
                     Interpolation::Perspective => {
                         let over_w = [0, 1, 2].map(|i| &values[i] * &inv_w[i]);
@@ -439,7 +440,7 @@ mod tests {
                 motion: None,
             };
             let mut frame = Frame::new(1, 1, true, 2);
-            VertexValues::new(&t).write(&mut frame, 0, &plan, &e, &area);
+            VertexValues::new(&t, 0).write(&mut frame, 0, &plan, &e, &area);
             let (z, attributes) = by_formula(&t, &e, &area);
             assert_eq!(frame.depth.as_ref().unwrap()[0], to_f64_round_odd(&z));
             for (channel, exact) in frame.attributes.iter().zip(&attributes) {

@@ -129,12 +129,24 @@ pub struct CaseEntry {
     pub results: Vec<ResultEntry>,
 }
 
+/// A clip-space case's `clip_xy`, `clip_z` and `depth`.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClipInfo {
+    pub clip_xy: &'static str,
+    pub clip_z: &'static str,
+    pub depth: &'static str,
+}
+
 #[derive(Clone, Debug, Serialize)]
 pub struct RulesInfo {
     pub canvas: [u32; 2],
     pub subpixel_bits: Option<u32>,
     pub fill_rule: &'static str,
     pub cull: &'static str,
+    pub provoking_vertex: &'static str,
+    /// Clip-space cases only: their clip rules (SPEC.md §16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clip: Option<ClipInfo>,
     pub primitives: usize,
     /// Antialiased cases only: `effects.antialias` as the case gives it.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -289,6 +301,12 @@ fn rules_info(scene: &Scene) -> RulesInfo {
         subpixel_bits: scene.rules.subpixel_bits,
         fill_rule: scene.rules.fill_rule.name(),
         cull: scene.rules.cull.name(),
+        provoking_vertex: scene.rules.provoking_vertex.name(),
+        clip: scene.in_clip_space().then(|| ClipInfo {
+            clip_xy: scene.rules.clip.xy.name(),
+            clip_z: scene.rules.clip.z.name(),
+            depth: scene.rules.clip.depth.name(),
+        }),
         primitives: scene.primitives.len(),
         antialias: scene.effects.antialias.as_ref().map(|a| AntialiasRules {
             samples: a.samples,

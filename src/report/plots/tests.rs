@@ -157,6 +157,8 @@ fn rules(antialias: Option<(&'static str, u32)>, motion: Option<(&'static str, u
         subpixel_bits: None,
         fill_rule: "top-left",
         cull: "none",
+        provoking_vertex: "first",
+        clip: None,
         primitives: 1,
         antialias: antialias.map(|(pattern, samples)| AntialiasRules {
             samples,

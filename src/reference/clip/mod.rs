@@ -1,0 +1,133 @@
+//! Clip space (SPEC.md §16): each triangle is culled by its winding,
+//! clipped against the planes the case clips (`clipper.rs`), fanned, and
+//! each piece rasterized by homogeneous edge functions (`homogeneous.rs`),
+//! with the planes the case does not clip tested at each sample.
+//!
+//! Every step is exact: new vertices are rationals, snapping is the scene
+//! model's, and every sample decision the sign of a big integer. Speed is
+//! not the point; clip-space cases are small.
+
+pub mod clipper;
+pub mod homogeneous;
+
+use dashu_int::IBig;
+use dashu_ratio::RBig;
+
+use crate::scene::{ClipXy, ClipZ, DepthMode, FillRule, Interpolation, Primitive, Scene};
+use clipper::ClipVertex;
+use homogeneous::Homogeneous;
+
+/// The exact depth and attributes at a covered sample.
+pub struct Values {
+    /// z_f: z_ndc through the viewport's depth range (clamped under
+    /// `depth: clamp`).
+    pub depth: RBig,
+    pub attributes: Vec<RBig>,
+}
+
+/// Visits every covered pixel centre of every triangle of a clip-space
+/// scene under `rule`, in scene order: `visit(primitive, pixel, values)`,
+/// the values only when `with_values`.
+pub fn visit<F>(scene: &Scene, rule: FillRule, with_values: bool, mut visit: F)
+where
+    F: FnMut(usize, usize, Option<Values>),
+{
+    let viewport = scene.viewport.as_ref().expect("a clip-space scene");
+    let clip = scene.rules.clip;
+    let bits = scene.rules.subpixel_bits;
+    let canvas = scene.canvas;
+    let (min_d, max_d) = (viewport.min_depth.as_rbig(), viewport.max_depth.as_rbig());
+    let depth_low = min_d.min(max_d).clone();
+    let depth_high = min_d.max(max_d).clone();
+    let per_sample_z = clip.depth == DepthMode::Clip && clip.z == ClipZ::PerSample;
+    // Pixel centres the guard band lets through: x + ½ in [vx, vx + vw).
+    let mut columns = 0..i64::from(canvas.width);
+    let mut rows = 0..i64::from(canvas.height);
+    if clip.xy == ClipXy::GuardBand {
+        columns = within(&columns, viewport.x.as_rbig(), viewport.width.as_rbig());
+        rows = within(&rows, viewport.y.as_rbig(), viewport.height.as_rbig());
+    }
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        crate::deadline::check();
+        let Primitive::Triangle(triangle) = primitive else {
+            unreachable!("the reader refuses other primitives in clip space")
+        };
+        let original = triangle.vertices.each_ref().map(ClipVertex::of);
+        let winding = homogeneous::winding(&original, viewport, bits);
+        if winding == 0 || scene.rules.cull.discards(winding.cmp(&0)) {
+            continue;
+        }
+        let provoking = scene.rules.provoking_vertex.index(3);
+        let flat = original[provoking].attributes.clone();
+        let polygon = clipper::clip(original.to_vec(), clip.clipped_planes());
+        for i in 1..polygon.len().saturating_sub(1) {
+            let piece = [&polygon[0], &polygon[i], &polygon[i + 1]].map(Clone::clone);
+            let Some(h) = Homogeneous::new(&piece, viewport, bits, rule) else {
+                continue;
+            };
+            let (mut xs, mut ys) = (columns.clone(), rows.clone());
+            if let Some([x0, x1, y0, y1]) = &h.bounded {
+                xs = centres_between(&xs, x0, x1);
+                ys = centres_between(&ys, y0, y1);
+            }
+            for py in ys {
+                crate::deadline::check();
+                for px in xs.clone() {
+                    let Some(e) = h.covers(px, py) else {
+                        continue;
+                    };
+                    let needs_depth = with_values || per_sample_z;
+                    let z_ndc = needs_depth.then(|| h.depth(&e));
+                    if per_sample_z {
+                        let z = z_ndc.as_ref().expect("computed");
+                        if *z < RBig::ZERO || *z > RBig::ONE {
+                            continue;
+                        }
+                    }
+                    let pixel = (py * i64::from(canvas.width) + px) as usize;
+                    let values = with_values.then(|| {
+                        let z_ndc = z_ndc.expect("computed");
+                        let mut depth = min_d + (max_d - min_d) * z_ndc;
+                        if clip.depth == DepthMode::Clamp {
+                            depth = depth.clamp(depth_low.clone(), depth_high.clone());
+                        }
+                        let attributes = (0..flat.len())
+                            .map(|k| match triangle.interpolation {
+                                Interpolation::Flat => flat[k].clone(),
+                                _ => h.perspective(&e, k),
+                            })
+                            .collect();
+                        Values { depth, attributes }
+                    });
+                    visit(index, pixel, values);
+                }
+            }
+        }
+    }
+}
+
+/// The pixels of `range` whose centre p + ½ lies in [origin, origin + size).
+fn within(range: &std::ops::Range<i64>, origin: &RBig, size: &RBig) -> std::ops::Range<i64> {
+    let half = RBig::from_parts(IBig::ONE, 2u8.into());
+    let first = ceil(&(origin - &half));
+    let end = ceil(&(origin + size - &half));
+    first.max(range.start)..end.min(range.end).max(first.max(range.start))
+}
+
+/// The pixels of `range` whose centre p + ½ lies in [low, high].
+fn centres_between(range: &std::ops::Range<i64>, low: &RBig, high: &RBig) -> std::ops::Range<i64> {
+    let half = RBig::from_parts(IBig::ONE, 2u8.into());
+    let first = ceil(&(low - &half)).max(range.start);
+    let last = floor(&(high - &half)).min(range.end - 1);
+    first..(last + 1).max(first)
+}
+
+fn floor(q: &RBig) -> i64 {
+    let f = q.floor();
+    i64::try_from(f.clamp(IBig::from(i64::MIN / 2), IBig::from(i64::MAX / 2))).expect("clamped")
+}
+
+fn ceil(q: &RBig) -> i64 {
+    let c = q.ceil();
+    i64::try_from(c.clamp(IBig::from(i64::MIN / 2), IBig::from(i64::MAX / 2))).expect("clamped")
+}
