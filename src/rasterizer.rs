@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -133,6 +133,18 @@ pub trait Rasterizer: Send + Sync {
     /// the rasterizer has drawn the case, so a program may declare it in
     /// its hello.
     fn fixed_fill_rule(&self) -> Option<FillRule> {
+        None
+    }
+
+    /// The clipping conventions (SPEC.md §16.2, §16.3) this rasterizer
+    /// follows whatever a clip-space case states, when it cannot follow the
+    /// case's: a driver clips as it clips, and no API lets the application
+    /// choose. As with [`Rasterizer::fixed_fill_rule`], a case under other
+    /// conventions is to be judged against the reference drawn under these:
+    /// a convention, not a failure. `None` for a rasterizer that follows
+    /// each case's `clip_xy` and `clip_z`. (`depth: clip` or `clamp` is
+    /// pipeline state every API offers, and not fixed.)
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
         None
     }
 

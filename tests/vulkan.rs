@@ -381,3 +381,13 @@ fn clip_space_refuses_what_it_cannot_hand_the_driver() {
     }
     common::clip_drivers::assert_clip_refusals(&VULKAN);
 }
+
+/// The device's clipping conventions (`fixed_clip_rules`) hold sample for
+/// sample on scenes that separate them, and the other conventions do not.
+#[test]
+fn clip_space_follows_its_declared_clipping_conventions() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_conventions(&VULKAN);
+}

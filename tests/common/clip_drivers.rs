@@ -7,7 +7,7 @@
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
-use rastercheck::scene::Scene;
+use rastercheck::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, Scene};
 
 use super::inline;
 
@@ -131,4 +131,125 @@ pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
         &whole_viewport("", "flat", (0.0, 1.0), 0.1),
         "not an f32",
     );
+}
+
+/// A 16×16 clip-space case (viewport = canvas, w = 1 everywhere, so that
+/// x_f = 8(x + 1) and y_f = 8(y + 1)) of `triangles`, each vertex (x, y,
+/// z) in clip coordinates, all f32.
+fn clip_case(name: &str, triangles: &[[[f64; 3]; 3]]) -> Scene {
+    let primitives: Vec<String> = triangles
+        .iter()
+        .map(|t| {
+            let vertices: Vec<String> = t
+                .iter()
+                .map(|[x, y, z]| format!(r#"{{"clip": [{x}, {y}, {z}, 1]}}"#))
+                .collect();
+            format!(r#"{{"triangle": [{}]}}"#, vertices.join(", "))
+        })
+        .collect();
+    inline(&format!(
+        r#"{{"name": "{name}", "canvas": {{"width": 16, "height": 16}},
+            "viewport": {{"x": 0, "y": 0, "width": 16, "height": 16}},
+            "primitives": [{}]}}"#,
+        primitives.join(", ")
+    ))
+}
+
+/// A triangle across the near plane whose new vertices land off the
+/// 8-bit grid: z = x − x0, x0 = 1/16 + 1/8192, so z = 0 on the line
+/// x_f = 8.5 + 1/1024. Clipped then snapped, its new vertices (8.5 + 1/1024,
+/// 0) and (≈ 8.50098, ≈ 6.00130) snap to (8.5, 0) and (8.5, 6): a left edge
+/// through the samples x = 8.5, y = 0.5 … 5.5, which top-left and
+/// bottom-left both own; per sample, those six samples have z_ndc < 0 and
+/// are not covered. Guard band or not changes nothing: the triangle lies
+/// inside x, y ∈ [−w, w].
+pub fn across_the_near_plane() -> Scene {
+    let x0 = 1.0 / 16.0 + 1.0 / 8192.0;
+    clip_case(
+        "separates_clip_z",
+        &[[
+            [-0.5, -1.0, -0.5 - x0],
+            [1.0, -1.0, 1.0 - x0],
+            [1.0, 1.0, 1.0 - x0],
+        ]],
+    )
+}
+
+/// Triangles cut by the viewport's right side whose cut lands off the
+/// grid. On screen: V0 = (3.5, 3.5 + k), V1 = (27.5, 13.5 + k), V2 =
+/// (3.5, 15.5 + k) for k = 0, −1, −2, each on the grid; V0V1 is a right
+/// edge through the sample (15.5, 8.5 + k). Under a guard band that
+/// sample lies on the edge, which top-left and bottom-left leave
+/// uncovered. Clipped at x_f = 16 the new vertex (16, 8.70833… + k)
+/// snaps to y = 8.70703125 + k, and the clipped edge passes above the
+/// sample (y = 8.49875 + k at x = 15.5): covered. One sample each.
+pub fn cut_by_the_viewport_side() -> Scene {
+    let clip = |x: f64, y: f64| [x / 8.0 - 1.0, y / 8.0 - 1.0, 0.5];
+    let triangles: Vec<[[f64; 3]; 3]> = [0.0, -1.0, -2.0]
+        .into_iter()
+        .map(|k| [clip(3.5, 3.5 + k), clip(27.5, 13.5 + k), clip(3.5, 15.5 + k)])
+        .collect();
+    clip_case("separates_clip_xy", &triangles)
+}
+
+/// Samples whose coverage count differs between `candidate`'s frame of
+/// `scene` and the reference's under `xy`, `z` (depth clip) and `rule`.
+pub fn departures(
+    candidate: &dyn Rasterizer,
+    scene: &Scene,
+    rule: FillRule,
+    xy: ClipXy,
+    z: ClipZ,
+) -> usize {
+    let mut scene = scene.with_fill_rule(rule);
+    scene.rules.clip = ClipRules {
+        xy,
+        z,
+        depth: DepthMode::Clip,
+    };
+    let plan = Plan::for_scene(&scene);
+    let reference = rastercheck::reference::render(&scene, &plan);
+    let got = drawn(candidate, &scene);
+    assert!(
+        reference.coverage.iter().any(|&c| c > 0),
+        "{}: the reference draws something",
+        scene.name
+    );
+    super::mismatched_samples(&reference, &got).len()
+}
+
+/// The driver matches the reference sample for sample under its own
+/// clipping conventions (`fixed_clip_rules`) on the scenes that separate
+/// them, and departs from it under the other convention on each: the
+/// scenes tell the conventions apart, and the claim can fail. Returns the
+/// departures under the other conventions, (clip_z, clip_xy), for the
+/// record.
+pub fn assert_clip_conventions(candidate: &dyn Rasterizer) -> (usize, usize) {
+    let rule = candidate.fixed_fill_rule().expect("a driver's own tie rule");
+    let (xy, z) = candidate
+        .fixed_clip_rules()
+        .expect("a driver declares its clipping conventions");
+    let other_z = ClipZ::ALL.into_iter().find(|&c| c != z).unwrap();
+    let other_xy = ClipXy::ALL.into_iter().find(|&c| c != xy).unwrap();
+    let near = across_the_near_plane();
+    let side = cut_by_the_viewport_side();
+    let name = candidate.name();
+    let own = [
+        departures(candidate, &near, rule, xy, z),
+        departures(candidate, &side, rule, xy, z),
+    ];
+    let z_departs = departures(candidate, &near, rule, xy, other_z);
+    let xy_departs = departures(candidate, &side, rule, other_xy, z);
+    eprintln!(
+        "{name}: clip_xy {} clip_z {}: departures {own:?}; under clip_z {}: {z_departs}, \
+         under clip_xy {}: {xy_departs}",
+        xy.name(),
+        z.name(),
+        other_z.name(),
+        other_xy.name()
+    );
+    assert_eq!(own, [0, 0], "{name} under its own clip conventions");
+    assert!(z_departs > 0, "{name}: the near-plane scene does not separate clip_z");
+    assert!(xy_departs > 0, "{name}: the viewport-side scene does not separate clip_xy");
+    (z_departs, xy_departs)
 }
