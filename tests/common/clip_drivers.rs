@@ -109,16 +109,18 @@ pub fn assert_depth_clip_and_clamp(candidate: &dyn Rasterizer) {
 /// its reason: unsnapped, fewer subpixel bits than the driver's, a clip
 /// coordinate that is no f32.
 pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
-    let refused = |scene: &Scene, why: &str| match candidate
-        .rasterize(scene, &Plan::for_scene(scene))
-    {
-        Err(RasterError::Unsupported(reason)) => assert!(
-            reason.contains(why),
-            "{}: refused for {reason:?}, want {why:?}",
-            candidate.name()
-        ),
-        other => panic!("{}: want unsupported ({why}), got {other:?}", candidate.name()),
-    };
+    let refused =
+        |scene: &Scene, why: &str| match candidate.rasterize(scene, &Plan::for_scene(scene)) {
+            Err(RasterError::Unsupported(reason)) => assert!(
+                reason.contains(why),
+                "{}: refused for {reason:?}, want {why:?}",
+                candidate.name()
+            ),
+            other => panic!(
+                "{}: want unsupported ({why}), got {other:?}",
+                candidate.name()
+            ),
+        };
     refused(
         &whole_viewport(r#""subpixel_bits": null"#, "flat", (0.0, 1.0), 1.0),
         "unsnapped",
@@ -127,10 +129,7 @@ pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
         &whole_viewport(r#""subpixel_bits": 4"#, "flat", (0.0, 1.0), 1.0),
         "subpixel_bits 4",
     );
-    refused(
-        &whole_viewport("", "flat", (0.0, 1.0), 0.1),
-        "not an f32",
-    );
+    refused(&whole_viewport("", "flat", (0.0, 1.0), 0.1), "not an f32");
 }
 
 /// A 16×16 clip-space case (viewport = canvas, w = 1 everywhere, so that
@@ -187,7 +186,13 @@ pub fn cut_by_the_viewport_side() -> Scene {
     let clip = |x: f64, y: f64| [x / 8.0 - 1.0, y / 8.0 - 1.0, 0.5];
     let triangles: Vec<[[f64; 3]; 3]> = [0.0, -1.0, -2.0]
         .into_iter()
-        .map(|k| [clip(3.5, 3.5 + k), clip(27.5, 13.5 + k), clip(3.5, 15.5 + k)])
+        .map(|k| {
+            [
+                clip(3.5, 3.5 + k),
+                clip(27.5, 13.5 + k),
+                clip(3.5, 15.5 + k),
+            ]
+        })
         .collect();
     clip_case("separates_clip_xy", &triangles)
 }
@@ -225,7 +230,9 @@ pub fn departures(
 /// departures under the other conventions, (clip_z, clip_xy), for the
 /// record.
 pub fn assert_clip_conventions(candidate: &dyn Rasterizer) -> (usize, usize) {
-    let rule = candidate.fixed_fill_rule().expect("a driver's own tie rule");
+    let rule = candidate
+        .fixed_fill_rule()
+        .expect("a driver's own tie rule");
     let (xy, z) = candidate
         .fixed_clip_rules()
         .expect("a driver declares its clipping conventions");
@@ -249,7 +256,13 @@ pub fn assert_clip_conventions(candidate: &dyn Rasterizer) -> (usize, usize) {
         other_xy.name()
     );
     assert_eq!(own, [0, 0], "{name} under its own clip conventions");
-    assert!(z_departs > 0, "{name}: the near-plane scene does not separate clip_z");
-    assert!(xy_departs > 0, "{name}: the viewport-side scene does not separate clip_xy");
+    assert!(
+        z_departs > 0,
+        "{name}: the near-plane scene does not separate clip_z"
+    );
+    assert!(
+        xy_departs > 0,
+        "{name}: the viewport-side scene does not separate clip_xy"
+    );
     (z_departs, xy_departs)
 }

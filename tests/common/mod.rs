@@ -6,8 +6,8 @@
 #![allow(dead_code)] // each test crate uses its own subset
 
 pub mod adapters;
-pub mod clip_drivers;
 pub mod cli;
+pub mod clip_drivers;
 
 #[allow(unused_imports)] // not every binary runs the binary
 pub use cli::{rastercheck, text};

@@ -167,16 +167,18 @@ impl GlContext {
         let (renderer, version, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let made = set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
-                let fetch = msaa::fetch(&gl)?;
-                let offered = samples::query(&gl, multisample)?;
-                // SAFETY: glClipControl(GLenum, GLenum) is this entry
-                // point's signature.
-                let clip_control = clip_control
-                    .map(|f| std::mem::transmute::<extern "system" fn(), clip::ClipControlFn>(f));
-                let clip = clip::Offers::set_up(&gl, clip_control);
-                Ok((max_side, programs, fetch, offered, provoking, clip))
-            });
+            let made =
+                set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
+                    let fetch = msaa::fetch(&gl)?;
+                    let offered = samples::query(&gl, multisample)?;
+                    // SAFETY: glClipControl(GLenum, GLenum) is this entry
+                    // point's signature.
+                    let clip_control = clip_control.map(|f| {
+                        std::mem::transmute::<extern "system" fn(), clip::ClipControlFn>(f)
+                    });
+                    let clip = clip::Offers::set_up(&gl, clip_control);
+                    Ok((max_side, programs, fetch, offered, provoking, clip))
+                });
             (renderer, version, made)
         };
         let _ = egl.make_current(display, None, None, None);

@@ -20,11 +20,13 @@
 //!
 //! The primitive index (+ 1, exact in f32 up to 2^24) is a `flat` varying and
 //! doubles as the coverage marker of the last writer. Depth is the case's `z`
-//! as a `noperspective` varying, not the depth buffer. Attributes are
+//! as a `noperspective` varying, not the depth buffer (in clip space the
+//! driver's `gl_FragCoord.z`, clamped: `clip.rs`). Attributes are
 //! varyings with the case's interpolation: `smooth` (perspective),
 //! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
-//! last; the adapter sets `glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)`
-//! (core since GL 3.2), the case's rule, for triangles and lines alike.
+//! last; the adapter sets `glProvokingVertex` (core since GL 3.2) to the
+//! case's rule (first unless it says `last`) before each scene's draws, for
+//! triangles and lines alike. Clip-space scenes (SPEC.md §16): `clip.rs`.
 //! Consecutive triangles of one interpolation mode share one draw call, as
 //! do consecutive lines of one rule, width and mode (`gpu::Stream`).
 //!

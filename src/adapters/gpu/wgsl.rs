@@ -58,7 +58,8 @@ fn vs(v: VertexIn) -> Varyings {{
 /// the fragment's own depth clamped to `range` in clip space (the
 /// stream's `[lo, hi]`, `gpu::stream`).
 pub(crate) fn channels() -> Vec<String> {
-    let depth = "select(v.depth, clamp(v.position.z, v.range.x, v.range.y), v.range.x <= v.range.y)";
+    let depth =
+        "select(v.depth, clamp(v.position.z, v.range.x, v.range.y), v.range.x <= v.range.y)";
     let mut channels = vec!["v.prim".to_owned(), depth.to_owned()];
     for k in 0..MAX_ATTRIBUTES {
         channels.push(format!("v.a{}.{}", k / 4, ["x", "y", "z", "w"][k % 4]));

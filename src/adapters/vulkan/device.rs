@@ -168,8 +168,7 @@ impl Device {
             vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
         let mut enable_depth_clip =
             vk::PhysicalDeviceDepthClipEnableFeaturesEXT::default().depth_clip_enable(true);
-        let mut names: Vec<*const std::ffi::c_char> =
-            line_ext.iter().map(|e| e.as_ptr()).collect();
+        let mut names: Vec<*const std::ffi::c_char> = line_ext.iter().map(|e| e.as_ptr()).collect();
         if provoking_last {
             names.push(ash::ext::provoking_vertex::NAME.as_ptr());
         }

@@ -30,7 +30,20 @@
 //! `subpixel_bits: null` is unsupported. Depth is the case's `z` as a
 //! `noperspective` varying; attributes are varyings with the case's
 //! interpolation; flat ones take the first vertex (Vulkan's default
-//! provoking vertex, the case's rule).
+//! provoking vertex), or the last with VK_EXT_provoking_vertex where the
+//! case says `last` (a device without it refuses such cases).
+//!
+//! # Clip space (SPEC.md §16)
+//!
+//! A clip-space case's clip coordinates go to the device unchanged (y
+//! negated in the stream, which naga's flip undoes), with the case's
+//! viewport and depth range: the device clips, divides, applies the
+//! viewport and snaps, and that is what is judged. Depth is the device's
+//! fragment depth, clamped to the depth range. `depth: clamp` is
+//! depthClampEnable with VK_EXT_depth_clip_enable's depthClipEnable off.
+//! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
+//! §16.9). Refused: what `gpu::clip_space_refusal` says, and a viewport
+//! outside the device's bounds.
 //!
 //! # Rules
 //!

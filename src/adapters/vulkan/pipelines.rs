@@ -23,9 +23,7 @@ use ash::vk;
 use super::super::gpu::{Draw, VERTEX_FLOATS};
 use super::device::Device;
 use super::shaders;
-use crate::scene::{
-    Cull, DepthMode, Interpolation, LineRule, PolygonFill, ProvokingVertex, Scene,
-};
+use crate::scene::{Cull, DepthMode, Interpolation, LineRule, PolygonFill, ProvokingVertex, Scene};
 
 /// The count's format and the channel groups'.
 pub(super) const COUNT_FORMAT: vk::Format = vk::Format::R32_SFLOAT;
@@ -294,8 +292,8 @@ impl Pipelines {
         if key.stage.provoking_last {
             raster = raster.push_next(&mut provoking);
         }
-        let mut depth_clip =
-            vk::PipelineRasterizationDepthClipStateCreateInfoEXT::default().depth_clip_enable(false);
+        let mut depth_clip = vk::PipelineRasterizationDepthClipStateCreateInfoEXT::default()
+            .depth_clip_enable(false);
         if key.stage.depth_clamp {
             raster = raster.depth_clamp_enable(true).push_next(&mut depth_clip);
         }
