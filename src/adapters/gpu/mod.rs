@@ -1,7 +1,8 @@
 //! What the GPU-API adapters (`vulkan`, `lavapipe`, `gl`) share: the
 //! vertex stream they upload (`stream.rs`), the shifts of shifted passes
 //! (`passes.rs`), the draws of time passes (`time.rs`), the WGSL of the two
-//! Vulkan adapters (`wgsl.rs`), and the size of the target they draw into.
+//! Vulkan adapters (`wgsl.rs`), what a driver cannot be handed of a
+//! clip-space scene (`clip.rs`), and the size of the target they draw into.
 //!
 //! Positions are snapped exactly to the case's grid, rounded once to f32,
 //! and mapped to clip space over a power-of-two target, on which the
@@ -10,6 +11,8 @@
 //! `(x_ndc·w, y_ndc·w, w/2, w)` so the driver's perspective division sees
 //! the vertex's w.
 
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+mod clip;
 mod passes;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
@@ -17,6 +20,8 @@ mod time;
 #[cfg(any(feature = "lavapipe", feature = "vulkan"))]
 pub(crate) mod wgsl;
 
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+pub(crate) use clip::clip_space_refusal;
 #[cfg_attr(not(feature = "vulkan"), allow(unused_imports))]
 pub(crate) use passes::shifts;
 #[allow(unused_imports)] // `Run` is the gl adapter's
@@ -26,10 +31,7 @@ pub(crate) use time::time_draws;
 
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError};
-use dashu_ratio::RBig;
-
-use super::float_input::to_f32;
-use crate::scene::{Line, Number, Primitive, Scene};
+use crate::scene::{Line, Primitive, Scene};
 
 /// Attributes a vertex can carry through the pipelines.
 pub(crate) const MAX_ATTRIBUTES: usize = 16;
@@ -84,72 +86,6 @@ pub(crate) fn snapping_bits(
         )));
     }
     Ok(bits)
-}
-
-/// Why a driver that snaps to `driver_bits` subpixel bits cannot draw a
-/// clip-space scene (SPEC.md §16) as the case asks, if it cannot.
-///
-/// The driver clips, divides, applies the viewport and snaps: that is what
-/// is judged, so the adapter hands it the case's numbers as they are and
-/// cannot snap for it. Hence:
-///
-/// - **subpixel bits**: as in screen space, unsnapped geometry (`null`) is
-///   refused, and a case at more bits than the driver's is drawn and shows
-///   the driver's coarser grid. A case at fewer bits is refused: in screen
-///   space the adapter snaps to the coarser grid itself before the driver
-///   sees the vertex (exact on the driver's finer grid), but here the
-///   vertices are the driver's own (divided, and new ones from clipping).
-/// - **f32**: every clip coordinate and viewport value must be an f32, the
-///   type the driver takes, so that it is handed the case's number and not
-///   a rounding of it.
-pub(crate) fn clip_space_refusal(scene: &Scene, driver: &str, driver_bits: u32) -> Option<String> {
-    let viewport = scene.viewport.as_ref()?;
-    match scene.rules.subpixel_bits {
-        None => {
-            return Some(format!(
-                "unsnapped geometry (subpixel_bits: null): {driver} snaps to {driver_bits} subpixel bits"
-            ))
-        }
-        Some(bits) if bits < driver_bits => {
-            return Some(format!(
-                "subpixel_bits {bits}: {driver} snaps clip-space vertices (divided, and those \
-                 clipping makes) to its own {driver_bits} bits, and the adapter cannot snap them coarser"
-            ))
-        }
-        Some(_) => {}
-    }
-    let not_f32 = |n: &Number| {
-        let q = n.as_rbig();
-        !RBig::try_from(to_f32(q)).is_ok_and(|back| &back == q)
-    };
-    let v = viewport;
-    for (name, n) in [
-        ("x", &v.x),
-        ("y", &v.y),
-        ("width", &v.width),
-        ("height", &v.height),
-        ("min_depth", &v.min_depth),
-        ("max_depth", &v.max_depth),
-    ] {
-        if not_f32(n) {
-            return Some(format!(
-                "viewport.{name} {} is not an f32, the type {driver} takes",
-                n.to_exact_string()
-            ));
-        }
-    }
-    for (i, vertex) in scene.vertices().enumerate() {
-        if let Some(n) = [&vertex.x, &vertex.y, &vertex.z, &vertex.w]
-            .into_iter()
-            .find(|n| not_f32(n))
-        {
-            return Some(format!(
-                "clip coordinate {} of vertex {i} is not an f32, the type {driver} takes",
-                n.to_exact_string()
-            ));
-        }
-    }
-    None
 }
 
 /// The power-of-two target a canvas is drawn in, or why it cannot be.
