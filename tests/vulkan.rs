@@ -391,3 +391,19 @@ fn clip_space_follows_its_declared_clipping_conventions() {
     }
     common::clip_drivers::assert_clip_conventions(&VULKAN);
 }
+
+#[test]
+fn clip_space_viewport_places_the_scene() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_viewport_placement(&VULKAN);
+}
+
+#[test]
+fn clip_space_inside_the_volume_passes() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_inside_the_volume_passes(&VULKAN);
+}

@@ -266,3 +266,63 @@ pub fn assert_clip_conventions(candidate: &dyn Rasterizer) -> (usize, usize) {
     );
     (z_departs, xy_departs)
 }
+
+/// The viewport places the scene where SPEC §16.1 says, y down: on a
+/// 16×8 canvas, a triangle over all of NDC [−1, 1]² drawn in viewports at
+/// an offset, smaller than the canvas, one of them off the integers
+/// (x = 2.5, height 4.5) and one hanging off the canvas, matches the
+/// reference sample for sample under the driver's conventions. A driver
+/// adapter that flipped y, or dropped the offset, would cover other rows.
+pub fn assert_viewport_placement(candidate: &dyn Rasterizer) {
+    let rule = candidate
+        .fixed_fill_rule()
+        .expect("a driver's own tie rule");
+    let (xy, z) = candidate.fixed_clip_rules().expect("declared conventions");
+    for (x, y, w, h) in [
+        (2.0, 1.0, 8.0, 4.0),
+        (2.5, 0.0, 9.0, 4.5),
+        (-3.0, 5.0, 12.0, 6.0),
+    ] {
+        let scene = inline(&format!(
+            r#"{{"name": "viewport", "canvas": {{"width": 16, "height": 8}},
+                "viewport": {{"x": {x}, "y": {y}, "width": {w}, "height": {h}}},
+                "primitives": [{{"triangle": [
+                    {{"clip": [-1, -1, 0.5, 1]}}, {{"clip": [1, -1, 0.5, 1]}},
+                    {{"clip": [-1, 0.5, 0.5, 1]}}]}}]}}"#
+        ));
+        let departed = departures(candidate, &scene, rule, xy, z);
+        assert_eq!(
+            departed,
+            0,
+            "{}: viewport ({x}, {y}) {w}×{h}",
+            candidate.name()
+        );
+    }
+}
+
+/// Inside the clip volume, where every convention agrees (SPEC §16.7), a
+/// clip-space scene with w from 0.5 to 4, perspective and flat attributes
+/// and depth passes the suite's judgement: coverage exact, depth and
+/// attributes within the bound.
+pub fn assert_inside_the_volume_passes(candidate: &dyn Rasterizer) {
+    let scene = inline(
+        r#"{"name": "inside", "canvas": {"width": 16, "height": 16},
+            "viewport": {"x": 0, "y": 0, "width": 16, "height": 16, "min_depth": 0.25, "max_depth": 1},
+            "rules": {"provoking_vertex": "last"},
+            "primitives": [
+              {"triangle": [{"clip": [-0.4375, -0.46875, 0.25, 0.5], "attributes": [0, 1]},
+                            {"clip": [3.5, -1.5, 1, 4], "attributes": [1, 0]},
+                            {"clip": [-0.75, 0.875, 0.5, 1], "attributes": [2, 5]}]},
+              {"interpolation": "flat",
+               "triangle": [{"clip": [1, 1, 0.5, 2], "attributes": [7, 8]},
+                            {"clip": [-1.5, 1.75, 1.5, 2], "attributes": [9, 10]},
+                            {"clip": [1.5, -1.5, 1.75, 2], "attributes": [11, 12]}]}]}"#,
+    );
+    let (reference, run) = super::run(&scene, candidate);
+    assert_eq!(
+        run.verdict,
+        rastercheck::harness::suite::Verdict::Pass,
+        "{}",
+        super::report("inside", &reference, &run)
+    );
+}

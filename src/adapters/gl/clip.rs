@@ -33,7 +33,9 @@
 
 use glow::HasContext;
 
-use crate::adapters::float_input::f32_of;
+use dashu_ratio::RBig;
+
+use crate::adapters::float_input::{f32_of, to_f32};
 use crate::adapters::gpu;
 use crate::scene::{DepthMode, ProvokingVertex, Scene};
 
@@ -103,7 +105,17 @@ impl Offers {
                     .to_owned(),
             );
         }
-        let [x, y, w, h] = [&v.x, &v.y, &v.width, &v.height].map(f32_of);
+        // The window y of the viewport's lower edge, Q − y − height (the
+        // module's notes), must be an f32 too: GL takes it.
+        let q = scene.canvas.height.next_power_of_two();
+        let window_y = RBig::from(q) - v.y.as_rbig() - v.height.as_rbig();
+        if RBig::try_from(to_f32(&window_y)).ok() != Some(window_y.clone()) {
+            return Some(format!(
+                "viewport: its window y {q} − y − height is not an f32, the type GL takes"
+            ));
+        }
+        let [x, w, h] = [&v.x, &v.width, &v.height].map(f32_of);
+        let y = to_f32(&window_y);
         let [lo, hi] = self.bounds;
         let inside = x >= lo
             && x + w <= hi
@@ -113,7 +125,7 @@ impl Offers {
             && h <= self.max_viewport[1] as f32;
         (!inside).then(|| {
             format!(
-                "viewport ({x}, {y}) {w}×{h}: the context's viewports lie in [{lo}, {hi}], \
+                "viewport at window ({x}, {y}), {w}×{h}: the context's viewports lie in [{lo}, {hi}], \
                  at most {}×{}",
                 self.max_viewport[0], self.max_viewport[1]
             )
@@ -165,8 +177,8 @@ impl Stage {
             gl.disable(glow::DEPTH_CLAMP);
             return;
         };
-        // Exact in f32: integers and f32 coordinates under 2^24 in
-        // magnitude that the bounds check kept.
+        // Exact: `Offers::refusal` kept viewports whose window y is an f32
+        // (clip-space scenes are drawn in one tile, at the origin).
         let (gx, gy) = (ox as f32 + x, (oy + tile.1) as f32 - y - h);
         if [gx, gy, w, h].iter().all(|c| c.fract() == 0.0) {
             gl.viewport(gx as i32, gy as i32, w as i32, h as i32);
