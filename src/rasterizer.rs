@@ -136,14 +136,13 @@ pub trait Rasterizer: Send + Sync {
         None
     }
 
-    /// The clipping conventions (SPEC.md §16.2, §16.3) this rasterizer
-    /// follows whatever a clip-space case states, when it cannot follow the
-    /// case's: a driver clips as it clips, and no API lets the application
-    /// choose. As with [`Rasterizer::fixed_fill_rule`], a case under other
-    /// conventions is to be judged against the reference drawn under these:
-    /// a convention, not a failure. `None` for a rasterizer that follows
-    /// each case's `clip_xy` and `clip_z`. (`depth: clip` or `clamp` is
-    /// pipeline state every API offers, and not fixed.)
+    /// The clip-space conventions (`clip_xy`, `clip_z`) this rasterizer
+    /// follows whatever a case states, when it cannot follow the case's: a
+    /// driver clips as its hardware or its software pipeline does (SPEC.md
+    /// §16.2, §16.3). A clip-space case under other conventions is judged
+    /// against the reference drawn under these, and reported as such, as
+    /// for [`Rasterizer::fixed_fill_rule`]. `None` for a rasterizer that
+    /// follows each case's.
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
         None
     }

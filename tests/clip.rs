@@ -297,3 +297,24 @@ fn a_mesh_across_the_near_plane_stays_watertight() {
     }
     assert!(cut > 30, "only {cut} meshes crossed the near plane");
 }
+
+#[test]
+fn the_fuzz_clip_family_draws_what_clipping_is_for() {
+    use rastercheck::explore::fuzz::{generate, Family};
+    let (mut drawn, mut behind, mut clamped) = (0, 0, 0);
+    for index in 0..200 {
+        let (_, scene) = generate(11, index, Some(Family::Clip));
+        assert!(scene.in_clip_space());
+        let frame = render(&scene);
+        let covered = frame.covered_samples() > 0;
+        drawn += usize::from(covered);
+        behind += usize::from(covered && scene.vertices().any(|v| !v.w.is_positive()));
+        clamped += usize::from(covered && scene.rules.clip.depth == DepthMode::Clamp);
+    }
+    assert!(drawn > 100, "{drawn} of 200 scenes drew something");
+    assert!(
+        behind > 30,
+        "{behind} scenes drew a triangle with a vertex behind the eye"
+    );
+    assert!(clamped > 20, "{clamped} scenes drew under depth clamp");
+}

@@ -105,6 +105,16 @@ pub(crate) fn print_outcome(
                 scene.rules.fill_rule
             ));
         }
+        if let (Some(clip), Some(scene)) = (result.judged_clip, &outcome.scene) {
+            let stated = scene.rules.clip;
+            method.push_str(&format!(
+                " (judged under its own clipping, {} and {}; the case states {} and {})",
+                clip.xy.name(),
+                clip.z.name(),
+                stated.xy.name(),
+                stated.z.name()
+            ));
+        }
         outln!(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),

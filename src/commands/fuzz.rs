@@ -23,8 +23,8 @@ pub struct FuzzArgs {
     /// Folder for the shrunk case files.
     #[arg(long, value_name = "DIR", default_value = crate::explore::fuzz::default_out().to_str())]
     pub out: PathBuf,
-    /// Only this family: triangles, lines, meshes, polygons, antialias or
-    /// motion (default: each in turn).
+    /// Only this family: triangles, lines, meshes, polygons, antialias,
+    /// motion or clip (default: each in turn).
     #[arg(long)]
     pub family: Option<String>,
     /// Only failures of this check count: coverage, holes, overdraw,

@@ -56,13 +56,14 @@ pub struct RunArgs {
 /// `rastercheck run`: every selected case through the reference and the
 /// candidates, one line each, a summary, and the report folder.
 /// The summary's note on the results judged under a rasterizer's own fill
-/// rule (SPEC.md §3.1): counted among the verdicts, and named apart.
+/// rule or clipping (SPEC.md §3.1, §16): counted among the verdicts, and
+/// named apart.
 fn own_rule(x: &runner::Tally) -> String {
     if x.own_rule == 0 {
         return String::new();
     }
     format!(
-        "; {} judged under its own fill rule instead of the case's (SPEC.md §3.1)",
+        "; {} judged under its own fill rule or clipping instead of the case's (SPEC.md §3.1, §16)",
         x.own_rule
     )
 }

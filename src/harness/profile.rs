@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Scene};
+use crate::scene::{ClipRules, DepthMode, FillRule, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -174,6 +174,75 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
     // The pin describes the case's own rule, not the declared one.
     s.expect.samples_covered = None;
     s
+}
+
+/// The conventions a rasterizer is judged under instead of a case's, when
+/// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
+/// case states another, and for a clip-space case under depth clip its
+/// fixed `clip_xy` and `clip_z` where the case states others (under
+/// depth clamp `clip_z` means nothing; `clip_xy` still does).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OwnConventions {
+    pub fill_rule: Option<FillRule>,
+    pub clip: Option<ClipRules>,
+}
+
+impl OwnConventions {
+    /// What `candidate` is judged under on `scene`; the default (nothing)
+    /// when it follows the case.
+    pub fn of(candidate: &dyn Rasterizer, scene: &Scene) -> OwnConventions {
+        let fill_rule = candidate
+            .fixed_fill_rule()
+            .filter(|&rule| rule != scene.rules.fill_rule);
+        let clip = candidate
+            .fixed_clip_rules()
+            .filter(|_| scene.in_clip_space())
+            .map(|(xy, z)| ClipRules {
+                xy,
+                z: if scene.rules.clip.depth == DepthMode::Clip {
+                    z
+                } else {
+                    scene.rules.clip.z
+                },
+                ..scene.rules.clip
+            })
+            .filter(|&clip| clip != scene.rules.clip);
+        OwnConventions { fill_rule, clip }
+    }
+
+    pub fn any(&self) -> bool {
+        self.fill_rule.is_some() || self.clip.is_some()
+    }
+
+    /// The case restated under these conventions. The pin
+    /// `samples_covered` describes the case's own, so it is dropped.
+    pub fn restate(&self, scene: &Scene) -> Scene {
+        let mut s = scene.clone();
+        if let Some(rule) = self.fill_rule {
+            s.rules.fill_rule = rule;
+        }
+        if let Some(clip) = self.clip {
+            s.rules.clip = clip;
+        }
+        s.expect.samples_covered = None;
+        s
+    }
+
+    /// In words, for a failure of the reference under them.
+    pub fn describe(&self) -> String {
+        let mut words = Vec::new();
+        if let Some(rule) = self.fill_rule {
+            words.push(format!("the {rule} rule"));
+        }
+        if let Some(clip) = self.clip {
+            words.push(format!(
+                "clip_xy {} and clip_z {}",
+                clip.xy.name(),
+                clip.z.name()
+            ));
+        }
+        words.join(" and ")
+    }
 }
 
 /// The candidates of `run --profile`, each one a profile names wrapped in

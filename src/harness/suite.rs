@@ -15,7 +15,7 @@ use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference::Reference;
-use crate::scene::{parse_case, CaseError, FillRule, Limits, Scene};
+use crate::scene::{parse_case, CaseError, ClipRules, FillRule, Limits, Scene};
 
 pub use super::oracle::{
     area_check, check_areas, check_time, run_reference, run_reference_with, AreaCheck,
@@ -391,6 +391,9 @@ pub struct CandidateRun {
     /// rasterizer follows a fill rule of its own
     /// ([`Rasterizer::fixed_fill_rule`]).
     pub judged_rule: Option<FillRule>,
+    /// The clip conventions it was judged under, when they are not the
+    /// case's ([`Rasterizer::fixed_clip_rules`]).
+    pub judged_clip: Option<ClipRules>,
 }
 
 impl CandidateRun {
@@ -403,6 +406,7 @@ impl CandidateRun {
             elapsed,
             method: None,
             judged_rule: None,
+            judged_clip: None,
         }
     }
 }
@@ -438,25 +442,31 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Error(why), elapsed);
         }
     };
-    // A rasterizer that cannot follow the case's fill rule is judged under
-    // the one it follows, against the reference drawn under that rule.
-    let judged_rule = candidate
-        .fixed_fill_rule()
-        .filter(|&rule| rule != scene.rules.fill_rule);
-    if let Some(rule) = judged_rule {
-        if let Some(why) = super::profile::cannot_judge_under(scene, rule) {
+    // A rasterizer that cannot follow the case's fill rule (or, in clip
+    // space, its clip conventions) is judged under the ones it follows,
+    // against the reference drawn under them.
+    let own = super::profile::OwnConventions::of(candidate, scene);
+    if own.any() {
+        if let Some(why) = own
+            .fill_rule
+            .and_then(|rule| super::profile::cannot_judge_under(scene, rule))
+        {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
-        let under = super::profile::under_rule(scene, rule);
+        let under = own.restate(scene);
         let reference = catch_oracle_run(|| run_reference(&under));
         let mut run = match reference {
             Ok(reference) => judge(&under, &reference, frame, name, elapsed),
             Err(why) => {
-                let why = format!("the reference under the {rule} rule it follows failed: {why}");
+                let why = format!(
+                    "the reference under {} it follows failed: {why}",
+                    own.describe()
+                );
                 CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
             }
         };
-        run.judged_rule = Some(rule);
+        run.judged_rule = own.fill_rule;
+        run.judged_clip = own.clip;
         return run;
     }
     judge(scene, reference, frame, name, elapsed)
@@ -480,6 +490,7 @@ fn judge(
             frame: Some(frame),
             elapsed,
             judged_rule: None,
+            judged_clip: None,
         };
     }
     // The oracle's exact areas, computed once with the reference's frame;
@@ -537,6 +548,7 @@ fn judge(
         frame: Some(frame),
         elapsed,
         judged_rule: None,
+        judged_clip: None,
     }
 }
 

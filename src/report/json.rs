@@ -11,7 +11,7 @@ use crate::harness::suite::{GoldenStatus, Verdict};
 use crate::metrics::antialias::AntialiasMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
-use crate::scene::Scene;
+use crate::scene::{ClipRules, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
@@ -137,6 +137,16 @@ pub struct ClipInfo {
     pub depth: &'static str,
 }
 
+impl ClipInfo {
+    fn of(clip: &ClipRules) -> ClipInfo {
+        ClipInfo {
+            clip_xy: clip.xy.name(),
+            clip_z: clip.z.name(),
+            depth: clip.depth.name(),
+        }
+    }
+}
+
 #[derive(Clone, Debug, Serialize)]
 pub struct RulesInfo {
     pub canvas: [u32; 2],
@@ -192,6 +202,10 @@ pub struct ResultEntry {
     /// case's rule, or a profile's.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub judged_fill_rule: Option<&'static str>,
+    /// The clip conventions it was judged under, when they are its own and
+    /// not the case's (`rules.clip`, SPEC.md §16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_clip: Option<ClipInfo>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -302,11 +316,9 @@ fn rules_info(scene: &Scene) -> RulesInfo {
         fill_rule: scene.rules.fill_rule.name(),
         cull: scene.rules.cull.name(),
         provoking_vertex: scene.rules.provoking_vertex.name(),
-        clip: scene.in_clip_space().then(|| ClipInfo {
-            clip_xy: scene.rules.clip.xy.name(),
-            clip_z: scene.rules.clip.z.name(),
-            depth: scene.rules.clip.depth.name(),
-        }),
+        clip: scene
+            .in_clip_space()
+            .then(|| ClipInfo::of(&scene.rules.clip)),
         primitives: scene.primitives.len(),
         antialias: scene.effects.antialias.as_ref().map(|a| AntialiasRules {
             samples: a.samples,
@@ -393,6 +405,7 @@ impl CaseEntry {
                 time_ms: millis(run.elapsed),
                 method: run.method,
                 judged_fill_rule: run.judged_rule.map(|r| r.name()),
+                judged_clip: run.judged_clip.map(|c| ClipInfo::of(&c)),
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })
@@ -468,7 +481,8 @@ impl Report {
                     "unsupported" => tally.unsupported += 1,
                     _ => tally.error += 1,
                 }
-                tally.own_rule += usize::from(result.judged_fill_rule.is_some());
+                tally.own_rule +=
+                    usize::from(result.judged_fill_rule.is_some() || result.judged_clip.is_some());
             }
         }
         self.totals = totals;

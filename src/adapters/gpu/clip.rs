@@ -1,5 +1,5 @@
 //! What a driver adapter cannot hand a driver of a clip-space scene
-//! (SPEC.md §16.9): the `vulkan` and `gl` adapters' shared refusal.
+//! (SPEC.md §16.10): the `vulkan` and `gl` adapters' shared refusal.
 
 use dashu_ratio::RBig;
 

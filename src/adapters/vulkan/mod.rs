@@ -42,7 +42,7 @@
 //! fragment depth, clamped to the depth range. `depth: clamp` is
 //! depthClampEnable with VK_EXT_depth_clip_enable's depthClipEnable off.
 //! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
-//! §16.9). Refused: what `gpu::clip_space_refusal` says, and a viewport
+//! §16.10). Refused: what `gpu::clip_space_refusal` says, and a viewport
 //! outside the device's bounds.
 //!
 //! # Rules

@@ -3,11 +3,11 @@
 //! antialiasing and motion, reading back from its own file). Writing only:
 //! reading is [`crate::scene::parse_case`].
 
-use crate::scene::rules::limits::{COORD_LIMIT, W_LIMIT};
+use crate::scene::rules::limits::{CLIP_LIMIT, COORD_LIMIT, W_LIMIT};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{
-    parse_case, Interpolation, LastPixel, Limits, LineParameter, LineRule, Number, Primitive,
-    Scene, Vertex,
+    parse_case, DepthMode, Interpolation, LastPixel, Limits, LineParameter, LineRule, Number,
+    Primitive, ProvokingVertex, Scene, Vertex,
 };
 
 /// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
@@ -18,6 +18,17 @@ pub(super) fn valid(scene: &Scene) -> Result<(), String> {
     }
     if scene.primitives.is_empty() {
         return Err("no primitives".to_owned());
+    }
+    if scene.in_clip_space() {
+        // Clip coordinates have their own bound, w any sign (SPEC.md §16.1);
+        // the viewport and the rules' combinations are the reader's to check.
+        let limit = Number::from_int(CLIP_LIMIT);
+        for v in scene.vertices() {
+            if [&v.x, &v.y, &v.z, &v.w].iter().any(|c| c.abs() > limit) {
+                return Err("clip coordinate out of range".to_owned());
+            }
+        }
+        return reads_back(scene);
     }
     let limit = Number::from_int(COORD_LIMIT);
     let (w_lo, w_hi) = (Number::ratio(1, W_LIMIT), Number::from_int(W_LIMIT));
@@ -40,13 +51,19 @@ pub(super) fn valid(scene: &Scene) -> Result<(), String> {
     // a shrunk counterexample is a case.
     let motion = scene.effects.motion_blur.is_some() || scene.vertices().any(|v| v.to.is_some());
     if scene.has_polygons() || scene.effects.antialias.is_some() || motion {
-        let mut named = scene.clone();
-        named.name = "fuzz".to_owned();
-        named.description = "fuzz".to_owned();
-        parse_case(&case_json(&named), "fuzz", &Limits::default())
-            .map_err(|e| format!("not a valid case: {}", e.message))?;
+        return reads_back(scene);
     }
     Ok(())
+}
+
+/// Whether the scene reads back from its own case file.
+fn reads_back(scene: &Scene) -> Result<(), String> {
+    let mut named = scene.clone();
+    named.name = "fuzz".to_owned();
+    named.description = "fuzz".to_owned();
+    parse_case(&case_json(&named), "fuzz", &Limits::default())
+        .map(|_| ())
+        .map_err(|e| format!("not a valid case: {}", e.message))
 }
 
 fn json_number(n: &Number) -> String {
@@ -67,6 +84,15 @@ fn position_json(x: &Number, y: &Number) -> String {
 }
 
 fn vertex_json(scene: &Scene, v: &Vertex) -> String {
+    if scene.in_clip_space() {
+        let c: Vec<String> = [&v.x, &v.y, &v.z, &v.w].map(json_number).to_vec();
+        let mut fields = vec![format!("\"clip\": [{}]", c.join(", "))];
+        if !v.attributes.is_empty() {
+            let values: Vec<String> = v.attributes.iter().map(json_number).collect();
+            fields.push(format!("\"attributes\": [{}]", values.join(", ")));
+        }
+        return format!("{{ {} }}", fields.join(", "));
+    }
     let position = position_json(&v.x, &v.y);
     if !scene.has_depth && v.w == Number::ONE && v.attributes.is_empty() && v.to.is_none() {
         return position;
@@ -223,14 +249,42 @@ pub fn case_json(scene: &Scene) -> String {
     } else {
         format!("  \"effects\": {{ {} }},\n", effects.join(", "))
     };
+    let mut rules = vec![
+        format!("\"subpixel_bits\": {bits}"),
+        format!("\"fill_rule\": \"{}\"", scene.rules.fill_rule.name()),
+        format!("\"cull\": \"{}\"", scene.rules.cull.name()),
+    ];
+    if scene.rules.provoking_vertex != ProvokingVertex::First {
+        rules.push(format!(
+            "\"provoking_vertex\": \"{}\"",
+            scene.rules.provoking_vertex.name()
+        ));
+    }
+    let mut viewport = String::new();
+    if let Some(v) = &scene.viewport {
+        let clip = scene.rules.clip;
+        rules.push(format!("\"clip_xy\": \"{}\"", clip.xy.name()));
+        if clip.depth == DepthMode::Clip {
+            rules.push(format!("\"clip_z\": \"{}\"", clip.z.name()));
+        }
+        rules.push(format!("\"depth\": \"{}\"", clip.depth.name()));
+        viewport = format!(
+            "  \"viewport\": {{ \"x\": {}, \"y\": {}, \"width\": {}, \"height\": {}, \"min_depth\": {}, \"max_depth\": {} }},\n",
+            json_number(&v.x),
+            json_number(&v.y),
+            json_number(&v.width),
+            json_number(&v.height),
+            json_number(&v.min_depth),
+            json_number(&v.max_depth)
+        );
+    }
     format!(
-        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ \"subpixel_bits\": {bits}, \"fill_rule\": \"{}\", \"cull\": \"{}\" }},\n{effects}  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
+        "{{\n  \"name\": {},\n  \"description\": {},\n  \"canvas\": {{ \"width\": {}, \"height\": {} }},\n  \"rules\": {{ {} }},\n{viewport}{effects}  \"primitives\": [\n{}\n  ],\n  \"expect\": {{ {} }}\n}}\n",
         json_string(&scene.name),
         json_string(&scene.description),
         scene.canvas.width,
         scene.canvas.height,
-        scene.rules.fill_rule.name(),
-        scene.rules.cull.name(),
+        rules.join(", "),
         primitives.join(",\n"),
         expect.join(", "),
     )

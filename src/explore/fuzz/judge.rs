@@ -162,24 +162,26 @@ pub enum Outcome {
     Fail(Failure),
 }
 
-/// The scene as `candidate` is judged on it: stated under the fill rule it
-/// follows whatever a case states, when it has one (SPEC.md §3.1; a
-/// profile's under `fuzz --profile`), so that the reference, the failure's
-/// kinds and the case written all state the rule judged. `Err` when the
-/// scene cannot be judged under that rule (all-edges polygons).
+/// The scene as `candidate` is judged on it: stated under the fill rule
+/// (and, in clip space, the clip conventions) it follows whatever a case
+/// states, when it has them (SPEC.md §3.1, §16; a profile's under `fuzz
+/// --profile`), so that the reference, the failure's kinds and the case
+/// written all state the conventions judged. `Err` when the scene cannot
+/// be judged under that rule (all-edges polygons).
 pub fn as_judged<'a>(
     scene: &'a Scene,
     candidate: &dyn Rasterizer,
 ) -> Result<Cow<'a, Scene>, String> {
-    match candidate
-        .fixed_fill_rule()
-        .filter(|&rule| rule != scene.rules.fill_rule)
+    let own = profile::OwnConventions::of(candidate, scene);
+    if !own.any() {
+        return Ok(Cow::Borrowed(scene));
+    }
+    match own
+        .fill_rule
+        .and_then(|rule| profile::cannot_judge_under(scene, rule))
     {
-        None => Ok(Cow::Borrowed(scene)),
-        Some(rule) => match profile::cannot_judge_under(scene, rule) {
-            Some(why) => Err(why),
-            None => Ok(Cow::Owned(profile::under_rule(scene, rule))),
-        },
+        Some(why) => Err(why),
+        None => Ok(Cow::Owned(own.restate(scene))),
     }
 }
 

@@ -54,7 +54,9 @@ where
         };
         let original = triangle.vertices.each_ref().map(ClipVertex::of);
         let winding = homogeneous::winding(&original, viewport, bits);
-        if winding == 0 || scene.rules.cull.discards(winding.cmp(&0)) {
+        // A triangle of no winding is never culled: its pieces, snapped
+        // apart, may have an area of their own (SPEC.md §16.4).
+        if scene.rules.cull.discards(winding.cmp(&0)) {
             continue;
         }
         let provoking = scene.rules.provoking_vertex.index(3);

@@ -201,6 +201,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 time_ms: 0.0,
                 method: None,
                 judged_fill_rule: None,
+                judged_clip: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })

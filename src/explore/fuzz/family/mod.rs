@@ -1,9 +1,10 @@
-//! Scene generation: the six [`Family`]s and [`generate`], which draws case
+//! Scene generation: the seven [`Family`]s and [`generate`], which draws case
 //! `index` of a seed from its own stream and keeps it only when it is a
 //! valid case (SPEC.md §8). One file per family; `common.rs` holds what
 //! several draw from.
 
 mod antialias;
+mod clip;
 mod common;
 mod lines;
 mod mesh;
@@ -17,6 +18,7 @@ use super::case_json::valid;
 use super::rng::Rng;
 use crate::scene::Scene;
 use antialias::antialias_scene;
+use clip::clip_scene;
 use lines::line_scene;
 use mesh::mesh_scene;
 use motion::motion_scene;
@@ -45,16 +47,21 @@ pub enum Family {
     /// flips, double roots, vanishing τ² coefficients; every time pattern,
     /// 1 to 64 time samples, parts of the shutter, sometimes antialiased.
     Motion,
+    /// Triangles in clip space (SPEC.md §16): vertices behind the eye, on
+    /// w = 0, across the near and far planes, extreme ratios of w; every
+    /// clip convention, depth clip or clamp, either provoking vertex.
+    Clip,
 }
 
 impl Family {
-    pub const ALL: [Family; 6] = [
+    pub const ALL: [Family; 7] = [
         Family::Triangles,
         Family::Meshes,
         Family::Lines,
         Family::Polygons,
         Family::Antialias,
         Family::Motion,
+        Family::Clip,
     ];
 
     pub fn name(self) -> &'static str {
@@ -65,6 +72,7 @@ impl Family {
             Family::Polygons => "polygons",
             Family::Antialias => "antialias",
             Family::Motion => "motion",
+            Family::Clip => "clip",
         }
     }
 
@@ -92,6 +100,7 @@ fn generate_with(rng: &mut Rng, family: Family) -> Scene {
             Family::Polygons => Some(polygon_scene(rng)),
             Family::Antialias => Some(antialias_scene(rng)),
             Family::Motion => Some(motion_scene(rng)),
+            Family::Clip => Some(clip_scene(rng)),
         };
         if let Some(scene) = scene.filter(|s| valid(s).is_ok()) {
             return scene;
