@@ -106,8 +106,8 @@ pub fn assert_depth_clip_and_clamp(candidate: &dyn Rasterizer) {
 }
 
 /// Clip-space cases the driver cannot draw as asked are refused, each with
-/// its reason: unsnapped, fewer subpixel bits than the driver's, a clip
-/// coordinate that is no f32.
+/// its reason: unsnapped, fewer subpixel bits than the driver's, a
+/// viewport value that is no f32.
 pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
     let refused =
         |scene: &Scene, why: &str| match candidate.rasterize(scene, &Plan::for_scene(scene)) {
@@ -129,7 +129,10 @@ pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
         &whole_viewport(r#""subpixel_bits": 4"#, "flat", (0.0, 1.0), 1.0),
         "subpixel_bits 4",
     );
-    refused(&whole_viewport("", "flat", (0.0, 1.0), 0.1), "not an f32");
+    refused(
+        &whole_viewport("", "flat", (0.0, 0.1), 1.0),
+        "viewport.max_depth 0.1 is not an f32",
+    );
 }
 
 /// A 16×16 clip-space case (viewport = canvas, w = 1 everywhere, so that

@@ -19,9 +19,13 @@ use crate::scene::{Number, Scene};
 ///   space the adapter snaps to the coarser grid itself before the driver
 ///   sees the vertex (exact on the driver's finer grid), but here the
 ///   vertices are the driver's own (divided, and new ones from clipping).
-/// - **f32**: every clip coordinate and viewport value must be an f32, the
-///   type the driver takes, so that it is handed the case's number and not
-///   a rounding of it.
+/// - **f32**: every viewport value must be an f32, the type the driver
+///   takes, as it places every vertex. Clip coordinates are rounded once to
+///   f32, as z, w and attributes are in screen space: a relative error of
+///   2^-24, which moves a snapped position only where the exact one lies
+///   that close to a rounding tie of the driver's grid (the bundled cases
+///   give decimals such as 0.9, and refusing them would lose most of
+///   `cases/clip`).
 pub(crate) fn clip_space_refusal(scene: &Scene, driver: &str, driver_bits: u32) -> Option<String> {
     let viewport = scene.viewport.as_ref()?;
     match scene.rules.subpixel_bits {
@@ -54,17 +58,6 @@ pub(crate) fn clip_space_refusal(scene: &Scene, driver: &str, driver_bits: u32) 
         if not_f32(n) {
             return Some(format!(
                 "viewport.{name} {} is not an f32, the type {driver} takes",
-                n.to_exact_string()
-            ));
-        }
-    }
-    for (i, vertex) in scene.vertices().enumerate() {
-        if let Some(n) = [&vertex.x, &vertex.y, &vertex.z, &vertex.w]
-            .into_iter()
-            .find(|n| not_f32(n))
-        {
-            return Some(format!(
-                "clip coordinate {} of vertex {i} is not an f32, the type {driver} takes",
                 n.to_exact_string()
             ));
         }
