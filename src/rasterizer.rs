@@ -65,6 +65,21 @@ impl Capabilities {
     }
 }
 
+/// `Unsupported` for a scene that needs the last vertex to provoke
+/// (`Scene::needs_last_provoking_vertex`), from a rasterizer whose flat
+/// values are always the first vertex's: it answers that it cannot, rather
+/// than draw the first vertex's values and be judged wrong, or worse, be
+/// right by chance where the two vertices agree.
+pub fn refuse_last_provoking(scene: &Scene, who: &str) -> Result<(), RasterError> {
+    if scene.needs_last_provoking_vertex() {
+        return Err(RasterError::Unsupported(format!(
+            "provoking_vertex: last on a flat primitive with attributes: \
+             {who} takes flat values from the first vertex only"
+        )));
+    }
+    Ok(())
+}
+
 /// Why a rasterizer produced no frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RasterError {

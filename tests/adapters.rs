@@ -344,3 +344,50 @@ fn adapters_print_family_counts() {
         println!("triangles: {name}: {pass} passed, {fail} failed, {unsupported} unsupported");
     }
 }
+
+/// A flat triangle whose vertices carry 10, 20, 30, under the provoking
+/// vertex `rule`, with `interpolation`.
+fn provoking_scene(rule: &str, interpolation: &str) -> Scene {
+    let json = format!(
+        r#"{{"name": "provoking", "canvas": {{"width": 4, "height": 4}},
+            "rules": {{"provoking_vertex": "{rule}"}},
+            "primitives": [{{"interpolation": "{interpolation}", "triangle": [
+                {{"position": [0, 0], "attributes": [10]}},
+                {{"position": [8, 0], "attributes": [20]}},
+                {{"position": [0, 8], "attributes": [30]}}]}}]}}"#
+    );
+    rastercheck::scene::parse_case(&json, "provoking.json", &Limits::default()).unwrap()
+}
+
+/// Adapters whose flat values are always the first vertex's (euc, the
+/// external protocol) answer unsupported, with the reason, when a flat
+/// primitive with attributes asks for the last vertex, and draw the same
+/// scene under `first`, or with perspective attributes, where the rule
+/// does not show. Without the refusal euc would draw 10 where the
+/// reference has 30 and be judged wrong on a convention it never claimed.
+#[cfg(feature = "euc")]
+#[test]
+fn adapters_that_take_the_first_vertex_refuse_provoking_last() {
+    use rastercheck::plan::Plan;
+    use rastercheck::rasterizer::RasterError;
+    let last = provoking_scene("last", "flat");
+    assert!(last.needs_last_provoking_vertex());
+    for name in ["euc", "external:/bin/false"] {
+        let candidate = adapter(name);
+        match candidate.rasterize(&last, &Plan::for_scene(&last)) {
+            Err(RasterError::Unsupported(why)) => {
+                assert!(why.contains("provoking_vertex: last"), "{name}: {why}")
+            }
+            other => panic!("{name}: want unsupported, got {other:?}"),
+        }
+    }
+    let euc = adapter("euc");
+    for scene in [
+        provoking_scene("first", "flat"),
+        provoking_scene("last", "perspective"),
+    ] {
+        assert!(!scene.needs_last_provoking_vertex());
+        let frame = euc.rasterize(&scene, &Plan::for_scene(&scene)).unwrap();
+        assert!(frame.coverage.iter().any(|&c| c > 0));
+    }
+}

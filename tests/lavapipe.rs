@@ -619,3 +619,29 @@ fn ties_at_sample_positions_follow_the_top_left_rule() {
         );
     }
 }
+
+/// wgpu has no choice of provoking vertex: a flat primitive with
+/// attributes under `provoking_vertex: last` is unsupported, with the
+/// reason, rather than drawn with the first vertex's values.
+#[test]
+fn provoking_last_is_unsupported() {
+    use rastercheck::rasterizer::Rasterizer;
+    if !available() {
+        return;
+    }
+    let scene = inline(
+        r#"{"name": "provoking_last", "canvas": {"width": 4, "height": 4},
+            "rules": {"provoking_vertex": "last"},
+            "primitives": [{"interpolation": "flat", "triangle": [
+                {"position": [0, 0], "attributes": [10]},
+                {"position": [8, 0], "attributes": [20]},
+                {"position": [0, 8], "attributes": [30]}]}]}"#,
+    );
+    let plan = rastercheck::plan::Plan::for_scene(&scene);
+    match Lavapipe.rasterize(&scene, &plan) {
+        Err(rastercheck::rasterizer::RasterError::Unsupported(why)) => {
+            assert!(why.contains("provoking_vertex: last"), "{why}")
+        }
+        other => panic!("want unsupported, got {other:?}"),
+    }
+}

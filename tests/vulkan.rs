@@ -357,3 +357,53 @@ fn the_report_names_the_device_and_driver() {
     assert!(declared.contains("shifted passes"), "{declared}");
     assert!(rastercheck::adapters::names().contains(&vulkan::NAME));
 }
+
+#[test]
+fn clip_space_honours_the_provoking_vertex() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_provoking_vertex(&VULKAN);
+}
+
+#[test]
+fn clip_space_depth_is_clipped_or_clamped() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_depth_clip_and_clamp(&VULKAN);
+}
+
+#[test]
+fn clip_space_refuses_what_it_cannot_hand_the_driver() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_refusals(&VULKAN);
+}
+
+/// The device's clipping conventions (`fixed_clip_rules`) hold sample for
+/// sample on scenes that separate them, and the other conventions do not.
+#[test]
+fn clip_space_follows_its_declared_clipping_conventions() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_conventions(&VULKAN);
+}
+
+#[test]
+fn clip_space_viewport_places_the_scene() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_viewport_placement(&VULKAN);
+}
+
+#[test]
+fn clip_space_inside_the_volume_passes() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_inside_the_volume_passes(&VULKAN);
+}

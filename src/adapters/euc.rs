@@ -44,7 +44,9 @@ use euc::{DepthStrategy, Interpolate, Pipeline, Target};
 use super::float_input::{culled, f32_of, single_sample, snapped_triangle, to_f32, triangles_only};
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{owners_frame, Capabilities, Prepared, RasterError, Rasterizer};
+use crate::rasterizer::{
+    owners_frame, refuse_last_provoking, Capabilities, Prepared, RasterError, Rasterizer,
+};
 use crate::scene::rules::limits::MAX_ATTRIBUTES;
 use crate::scene::{Interpolation, Scene, Triangle};
 
@@ -154,6 +156,7 @@ impl Rasterizer for Euc {
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         triangles_only(scene, "euc")?;
         single_sample(plan, "euc")?;
+        refuse_last_provoking(scene, "euc")?;
         let (width, height) = (scene.canvas.width, scene.canvas.height);
         let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
         let mut color = Recorder::new(width, height, Varyings::default());

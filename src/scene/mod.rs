@@ -359,6 +359,22 @@ impl Scene {
         self.viewport.is_some()
     }
 
+    /// Whether the scene's flat values come from the last vertex
+    /// (`provoking_vertex: last`, SPEC.md §16.6) on some primitive where
+    /// that shows: a `flat` triangle or line carrying attributes. A
+    /// rasterizer that can only take the first vertex's values must refuse
+    /// exactly these scenes (`rasterizer::refuse_last_provoking`); every
+    /// other scene draws the same under either rule.
+    pub fn needs_last_provoking_vertex(&self) -> bool {
+        self.rules.provoking_vertex == ProvokingVertex::Last
+            && self.attribute_count > 0
+            && self.primitives.iter().any(|p| match p {
+                Primitive::Triangle(t) => t.interpolation == Interpolation::Flat,
+                Primitive::Line(l) => l.interpolation == Interpolation::Flat,
+                Primitive::Polygon(_) => false,
+            })
+    }
+
     /// Every vertex of every primitive.
     pub fn vertices(&self) -> impl Iterator<Item = &Vertex> {
         self.primitives.iter().flat_map(|p| p.vertices())

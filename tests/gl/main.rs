@@ -586,3 +586,53 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
     let known = ["midpoint", "wide aliased lines", "subpixel_bits: null"];
     common::adapters::assert_judges_at_least_85_percent(&Gl, &known);
 }
+
+#[test]
+fn clip_space_honours_the_provoking_vertex() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_provoking_vertex(&Gl);
+}
+
+#[test]
+fn clip_space_depth_is_clipped_or_clamped() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_depth_clip_and_clamp(&Gl);
+}
+
+#[test]
+fn clip_space_refuses_what_it_cannot_hand_the_driver() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_refusals(&Gl);
+}
+
+/// llvmpipe's clipping conventions (`fixed_clip_rules`) hold sample for
+/// sample on scenes that separate them, and the other conventions do not.
+#[test]
+fn clip_space_follows_its_declared_clipping_conventions() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_clip_conventions(&Gl);
+}
+
+#[test]
+fn clip_space_viewport_places_the_scene() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_viewport_placement(&Gl);
+}
+
+#[test]
+fn clip_space_inside_the_volume_passes() {
+    if !available() {
+        return;
+    }
+    common::clip_drivers::assert_inside_the_volume_passes(&Gl);
+}

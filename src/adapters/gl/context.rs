@@ -8,6 +8,7 @@ use std::sync::{Mutex, OnceLock};
 use glow::HasContext;
 use khronos_egl as egl;
 
+use super::clip::{self, ProvokingFn};
 use super::msaa::{self, Fetch};
 use super::samples::{self, DriverSamples};
 use super::shaders::program;
@@ -85,6 +86,10 @@ pub(super) struct GlContext {
     pub(super) max_samples: u32,
     /// The driver's sample counts and positions.
     pub(super) offered: Vec<DriverSamples>,
+    /// `glProvokingVertex`, set for each scene (`clip.rs`).
+    pub(super) provoking: ProvokingFn,
+    /// What the context offers for clip space (`clip.rs`).
+    pub(super) clip: clip::Offers,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -156,20 +161,28 @@ impl GlContext {
             })
         };
         let provoking = egl.get_proc_address("glProvokingVertex");
+        let clip_control = egl.get_proc_address("glClipControl");
         let multisample = egl.get_proc_address("glGetMultisamplefv");
         // SAFETY: plain queries and object creation on the current context.
         let (renderer, version, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let made = set_up_context(&gl, provoking).and_then(|(max_side, programs)| {
-                let fetch = msaa::fetch(&gl)?;
-                let offered = samples::query(&gl, multisample)?;
-                Ok((max_side, programs, fetch, offered))
-            });
+            let made =
+                set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
+                    let fetch = msaa::fetch(&gl)?;
+                    let offered = samples::query(&gl, multisample)?;
+                    // SAFETY: glClipControl(GLenum, GLenum) is this entry
+                    // point's signature.
+                    let clip_control = clip_control.map(|f| {
+                        std::mem::transmute::<extern "system" fn(), clip::ClipControlFn>(f)
+                    });
+                    let clip = clip::Offers::set_up(&gl, clip_control);
+                    Ok((max_side, programs, fetch, offered, provoking, clip))
+                });
             (renderer, version, made)
         };
         let _ = egl.make_current(display, None, None, None);
-        let (max_side, programs, fetch, (max_samples, offered)) =
+        let (max_side, programs, fetch, (max_samples, offered), provoking, clip) =
             made.map_err(|e| format!("OpenGL ({renderer}, {version}): {e}"))?;
         Ok(GlContext {
             egl,
@@ -183,6 +196,8 @@ impl GlContext {
             fetch,
             max_samples,
             offered,
+            provoking,
+            clip,
         })
     }
 
@@ -224,8 +239,9 @@ impl GlContext {
     }
 }
 
-/// What one context keeps: the largest target side and the three programs.
-type Parts = (u32, [glow::Program; 3]);
+/// What one context keeps: the largest target side, the three programs
+/// and `glProvokingVertex`.
+type Parts = (u32, [glow::Program; 3], ProvokingFn);
 
 /// Sets up the current context: first-vertex provoking, the programs and
 /// the fixed state.
@@ -237,7 +253,7 @@ pub(super) unsafe fn set_up_context(
         return Err("no glProvokingVertex (GL 3.2)".to_owned());
     };
     // SAFETY: glProvokingVertex(GLenum) is this entry point's signature.
-    let provoking: unsafe extern "system" fn(u32) = std::mem::transmute(provoking);
+    let provoking: ProvokingFn = std::mem::transmute(provoking);
     provoking(glow::FIRST_VERTEX_CONVENTION);
     let mut dims = [0i32; 2];
     gl.get_parameter_i32_slice(glow::MAX_VIEWPORT_DIMS, &mut dims);
@@ -264,7 +280,7 @@ pub(super) unsafe fn set_up_context(
     if let Some(e) = gl_error(gl) {
         return Err(format!("setting up: GL error {e:#x}"));
     }
-    Ok((max_side, programs))
+    Ok((max_side, programs, provoking))
 }
 
 /// The first pending GL error, clearing the rest.

@@ -16,6 +16,7 @@
 
 use glow::HasContext;
 
+use super::clip::Stage;
 use super::context::{gl_error, GlContext};
 use super::passes::{self, Pass, Reading};
 use super::{lines, msaa, samples, time};
@@ -35,6 +36,9 @@ impl GlContext {
         plan: &'a Plan,
         bits: u32,
     ) -> Result<Drawing<'a>, RasterError> {
+        if let Some(why) = self.clip.refusal(scene) {
+            return Err(RasterError::Unsupported(why));
+        }
         let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
         let layout = self.layout(scene, plan, bits, tile)?;
@@ -55,6 +59,7 @@ impl GlContext {
             target: tile,
             size,
             cull: scene.rules.cull,
+            stage: Stage::of(scene),
             streams,
             passes,
             samples: reading.target_samples(),
@@ -239,7 +244,7 @@ impl GlContext {
         gl.bind_vertex_array(Some(drawing.vao));
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
-            gl.viewport(ox as i32, oy as i32, tw as i32, th as i32);
+            drawing.stage.set(gl, self.provoking, pass.origin, (tw, th));
             match pass.pixel {
                 // Canvas row y is window row Q − 1 − y of the tile.
                 Some((x, y)) => gl.scissor((ox + x) as i32, (oy + th - 1 - y) as i32, 1, 1),
@@ -373,6 +378,9 @@ pub(super) struct Drawing<'a> {
     /// The framebuffer's size: every tile.
     pub(super) size: (u32, u32),
     pub(super) cull: Cull,
+    /// The provoking vertex, and a clip-space scene's viewport, depth range
+    /// and clamp (`clip.rs`).
+    pub(super) stage: Stage,
     /// Each stream's runs, indexing the vertex buffer.
     pub(super) streams: Vec<Vec<gpu::Run>>,
     /// One pass per tile (one sample slot, slot order), or one per time

@@ -20,11 +20,13 @@
 //!
 //! The primitive index (+ 1, exact in f32 up to 2^24) is a `flat` varying and
 //! doubles as the coverage marker of the last writer. Depth is the case's `z`
-//! as a `noperspective` varying, not the depth buffer. Attributes are
+//! as a `noperspective` varying, not the depth buffer (in clip space the
+//! driver's `gl_FragCoord.z`, clamped: `clip.rs`). Attributes are
 //! varyings with the case's interpolation: `smooth` (perspective),
 //! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
-//! last; the adapter sets `glProvokingVertex(GL_FIRST_VERTEX_CONVENTION)`
-//! (core since GL 3.2), the case's rule, for triangles and lines alike.
+//! last; the adapter sets `glProvokingVertex` (core since GL 3.2) to the
+//! case's rule (first unless it says `last`) before each scene's draws, for
+//! triangles and lines alike. Clip-space scenes (SPEC.md §16): `clip.rs`.
 //! Consecutive triangles of one interpolation mode share one draw call, as
 //! do consecutive lines of one rule, width and mode (`gpu::Stream`).
 //!
@@ -202,6 +204,7 @@
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
 //!   at a time, for the bench to time the draw apart.
 
+mod clip;
 mod context;
 mod drawing;
 mod lines;
@@ -216,7 +219,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
 
 use super::gpu;
 use context::{ask_for_softpipe, context, with_context};
@@ -253,6 +256,15 @@ impl Rasterizer for Gl {
         Some(FillRule::BottomLeft)
     }
 
+    /// GL lets the driver choose. llvmpipe clips against all six planes
+    /// before the divide and snaps the new vertices (Mesa's draw module;
+    /// measured on scenes that separate the conventions, `tests/gl/`: 6
+    /// samples depart from per-sample near clipping, 3 from a guard band,
+    /// none from clip then snap).
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+
     fn declared(&self) -> Option<String> {
         declared()
     }
@@ -271,8 +283,13 @@ impl Rasterizer for Softpipe {
         SOFTPIPE
     }
 
+    /// llvmpipe's, but clip space: softpipe's clipping conventions have not
+    /// been measured (`tests/gl/` measures llvmpipe's), so it claims none.
     fn capabilities(&self) -> Capabilities {
-        capabilities()
+        Capabilities {
+            clip_space: false,
+            ..capabilities()
+        }
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -301,11 +318,12 @@ impl Rasterizer for Softpipe {
 /// lines (`lines.rs` refuses the other rules) and polygons by stencil then
 /// cover, snapped to the case's grid; antialiased scenes by shifted passes
 /// (`passes.rs`) or native MSAA (`msaa.rs`); moving scenes by time passes
-/// (`time.rs`).
+/// (`time.rs`); clip-space scenes, clipped by the driver (`clip.rs`).
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
         motion_blur: true,
+        clip_space: true,
         ..gpu::capabilities(true)
     }
 }

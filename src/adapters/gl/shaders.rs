@@ -70,6 +70,7 @@ layout(location = 4) in vec4 a2;
 layout(location = 5) in vec4 a3;
 flat out float prim;
 noperspective out float depth;
+flat out vec2 range;
 {qualifier} out vec4 v0;
 {qualifier} out vec4 v1;
 {qualifier} out vec4 v2;
@@ -78,6 +79,7 @@ void main() {{
     gl_Position = position;
     prim = info.x;
     depth = info.y;
+    range = info.zw;
     v0 = a0;
     v1 = a1;
     v2 = a2;
@@ -89,6 +91,7 @@ void main() {{
         "#version 330 core
 flat in float prim;
 noperspective in float depth;
+flat in vec2 range;
 {qualifier} in vec4 v0;
 {qualifier} in vec4 v1;
 {qualifier} in vec4 v2;
@@ -101,7 +104,10 @@ layout(location = 4) out vec4 g3;
 layout(location = 5) out vec4 g4;
 void main() {{
     count = 1.0;
-    g0 = vec4(prim, depth, v0.xy);
+    // Screen space: the depth varying; clip space (range.x <= range.y):
+    // the driver's own depth, clamped to the viewport's range.
+    float z = range.x <= range.y ? clamp(gl_FragCoord.z, range.x, range.y) : depth;
+    g0 = vec4(prim, z, v0.xy);
     g1 = vec4(v0.zw, v1.xy);
     g2 = vec4(v1.zw, v2.xy);
     g3 = vec4(v2.zw, v3.xy);

@@ -1,7 +1,8 @@
 //! What the GPU-API adapters (`vulkan`, `lavapipe`, `gl`) share: the
 //! vertex stream they upload (`stream.rs`), the shifts of shifted passes
 //! (`passes.rs`), the draws of time passes (`time.rs`), the WGSL of the two
-//! Vulkan adapters (`wgsl.rs`), and the size of the target they draw into.
+//! Vulkan adapters (`wgsl.rs`), what a driver cannot be handed of a
+//! clip-space scene (`clip.rs`), and the size of the target they draw into.
 //!
 //! Positions are snapped exactly to the case's grid, rounded once to f32,
 //! and mapped to clip space over a power-of-two target, on which the
@@ -10,6 +11,8 @@
 //! `(x_ndc·w, y_ndc·w, w/2, w)` so the driver's perspective division sees
 //! the vertex's w.
 
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+mod clip;
 mod passes;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
@@ -17,6 +20,8 @@ mod time;
 #[cfg(any(feature = "lavapipe", feature = "vulkan"))]
 pub(crate) mod wgsl;
 
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+pub(crate) use clip::clip_space_refusal;
 #[cfg_attr(not(feature = "vulkan"), allow(unused_imports))]
 pub(crate) use passes::shifts;
 #[allow(unused_imports)] // `Run` is the gl adapter's

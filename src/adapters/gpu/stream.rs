@@ -34,9 +34,16 @@ use super::super::float_input::{f32_of, snapped, to_f32};
 use super::MAX_ATTRIBUTES;
 use crate::scene::{Interpolation, LineRule, Polygon, PolygonFill, Primitive, Scene, Vertex};
 
-/// Floats per vertex: clip position (4), `[primitive + 1, depth, 0, 0]` (4),
-/// attributes (16).
+/// Floats per vertex: clip position (4), `[primitive + 1, depth, lo, hi]`
+/// (4), attributes (16). The depth channel is the `depth` float
+/// (screen space, lo > hi), or the driver's own fragment depth clamped to
+/// [lo, hi] (clip space, lo ≤ hi: the viewport's depth range; see
+/// [`SCREEN_DEPTH`]).
 pub(crate) const VERTEX_FLOATS: usize = 8 + MAX_ATTRIBUTES;
+
+/// `[lo, hi]` of a screen-space vertex: lo > hi says "the depth channel is
+/// the `depth` varying, not the fragment's depth" (the shaders' test).
+pub(crate) const SCREEN_DEPTH: [f32; 2] = [1.0, 0.0];
 
 /// The pipeline state a run of vertices is drawn with.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,6 +75,11 @@ pub(crate) struct Run {
 pub(crate) struct Stream {
     pub vertices: Vec<f32>,
     pub runs: Vec<Run>,
+    /// A clip-space scene's depth range `[lo, hi]` (SPEC.md §16.1): its
+    /// vertices are its clip coordinates, placed by the driver's viewport
+    /// (the adapter sets it from `Scene::viewport`), and the placement's
+    /// snapping, shift and instant do not apply.
+    clip_depth: Option<[f32; 2]>,
 }
 
 /// How a stream places the scene on the target.
@@ -122,6 +134,10 @@ impl Stream {
         let mut stream = Stream {
             vertices: Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS),
             runs: Vec::new(),
+            clip_depth: scene.viewport.as_ref().map(|v| {
+                let [a, b] = [&v.min_depth, &v.max_depth].map(f32_of);
+                [a.min(b), a.max(b)]
+            }),
         };
         for (i, primitive) in scene.primitives.iter().enumerate() {
             let id = (i + 1) as f32;
@@ -149,12 +165,27 @@ impl Stream {
         stream
     }
 
-    /// Appends one vertex: position, `[id, depth, 0, 0]`, attributes.
+    /// Appends one vertex: position, `[id, depth, lo, hi]`, attributes.
+    ///
+    /// A clip-space vertex (SPEC.md §16.1) is the case's clip coordinates
+    /// unchanged but for y, negated (exact): the stream's clip space is
+    /// y up, as GL's is and as wgpu's is before naga's SPIR-V flips it
+    /// back, so that the driver sees the case's y (Vulkan's y down). Its
+    /// depth channel is the driver's fragment depth, clamped to the
+    /// viewport's depth range (what `depth: clamp` asks for; under
+    /// `depth: clip` it only trims the driver's rounding past the range).
     fn vertex(&mut self, v: &Vertex, id: f32, place: &Placement) {
-        let [x, y] = self.position(v, place);
-        let w = f32_of(&v.w);
-        self.vertices.extend([x * w, y * w, 0.5 * w, w]);
-        self.vertices.extend([id, f32_of(&v.z), 0.0, 0.0]);
+        if let Some([lo, hi]) = self.clip_depth {
+            let [x, y, z, w] = [&v.x, &v.y, &v.z, &v.w].map(f32_of);
+            self.vertices.extend([x, -y, z, w]);
+            self.vertices.extend([id, 0.0, lo, hi]);
+        } else {
+            let [x, y] = self.position(v, place);
+            let w = f32_of(&v.w);
+            self.vertices.extend([x * w, y * w, 0.5 * w, w]);
+            self.vertices
+                .extend([id, f32_of(&v.z), SCREEN_DEPTH[0], SCREEN_DEPTH[1]]);
+        }
         let mut attributes = [0f32; MAX_ATTRIBUTES];
         for (slot, a) in attributes.iter_mut().zip(&v.attributes) {
             *slot = f32_of(a);
@@ -176,7 +207,8 @@ impl Stream {
     fn corner(&mut self, x: f32, y: f32, id: f32, place: &Placement) {
         let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
         self.vertices.extend([x * sx - 1.0, 1.0 - y * sy, 0.5, 1.0]);
-        self.vertices.extend([id, 0.0, 0.0, 0.0]);
+        self.vertices
+            .extend([id, 0.0, SCREEN_DEPTH[0], SCREEN_DEPTH[1]]);
         self.vertices.extend([0f32; MAX_ATTRIBUTES]);
     }
 

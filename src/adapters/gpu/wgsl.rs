@@ -41,11 +41,12 @@ struct Varyings {{
     @location(3) @interpolate({qualifier}) a1: vec4<f32>,
     @location(4) @interpolate({qualifier}) a2: vec4<f32>,
     @location(5) @interpolate({qualifier}) a3: vec4<f32>,
+    @location(6) @interpolate(flat) range: vec2<f32>,
 }}
 
 @vertex
 fn vs(v: VertexIn) -> Varyings {{
-    return Varyings(v.position, v.info.x, v.info.y, v.a0, v.a1, v.a2, v.a3);
+    return Varyings(v.position, v.info.x, v.info.y, v.a0, v.a1, v.a2, v.a3, v.info.zw);
 }}
 "
     )
@@ -53,9 +54,13 @@ fn vs(v: VertexIn) -> Varyings {{
 
 /// The expression of each channel `[primitive + 1, depth, attribute 0, …]`
 /// in a fragment shader over `Varyings v`, padded with zeros to
-/// `GROUPS` groups of four.
+/// `GROUPS` groups of four. Depth is the `depth` varying in screen space,
+/// the fragment's own depth clamped to `range` in clip space (the
+/// stream's `[lo, hi]`, `gpu::stream`).
 pub(crate) fn channels() -> Vec<String> {
-    let mut channels = vec!["v.prim".to_owned(), "v.depth".to_owned()];
+    let depth =
+        "select(v.depth, clamp(v.position.z, v.range.x, v.range.y), v.range.x <= v.range.y)";
+    let mut channels = vec!["v.prim".to_owned(), depth.to_owned()];
     for k in 0..MAX_ATTRIBUTES {
         channels.push(format!("v.a{}.{}", k / 4, ["x", "y", "z", "w"][k % 4]));
     }

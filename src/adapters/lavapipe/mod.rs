@@ -146,7 +146,7 @@ use std::sync::{Mutex, MutexGuard, OnceLock};
 
 use crate::frame::Frame;
 use crate::plan::{Plan, SamplePlan};
-use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::rasterizer::{refuse_last_provoking, Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{FillRule, Scene};
 
 use super::gpu;
@@ -203,6 +203,10 @@ fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
             plan.samples_per_pixel
         )));
     }
+    refuse_last_provoking(
+        scene,
+        "the wgpu adapter (wgpu has no choice of provoking vertex)",
+    )?;
     gpu::snapping_bits(
         scene,
         plan,

@@ -34,6 +34,15 @@ pub(super) struct Offers {
     /// `sampleRateShading`: depth and attributes interpolated at each
     /// sample of a multisampled target.
     pub sample_rate_shading: bool,
+    /// VK_EXT_provoking_vertex's `provokingVertexLast`, enabled: flat
+    /// values may come from the last vertex.
+    pub provoking_last: bool,
+    /// `depthClamp` with VK_EXT_depth_clip_enable's `depthClipEnable`,
+    /// both enabled: depth clamped and not clipped (SPEC.md §16.2).
+    pub depth_clamp: bool,
+    /// `viewportBoundsRange` and `maxViewportDimensions`.
+    pub viewport_bounds: [f32; 2],
+    pub max_viewport: [u32; 2],
 }
 
 /// The device this adapter draws with, created once.
@@ -114,13 +123,27 @@ impl Device {
             vk::api_version_patch(v)
         );
 
+        let provoking_ext = has(ash::ext::provoking_vertex::NAME);
+        let depth_clip_ext = has(ash::ext::depth_clip_enable::NAME);
         let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default();
+        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+        let mut depth_clip = vk::PhysicalDeviceDepthClipEnableFeaturesEXT::default();
         let mut features2 = vk::PhysicalDeviceFeatures2::default();
         if line_ext.is_some() {
             features2 = features2.push_next(&mut lines);
         }
+        if provoking_ext {
+            features2 = features2.push_next(&mut provoking);
+        }
+        if depth_clip_ext {
+            features2 = features2.push_next(&mut depth_clip);
+        }
         instance.get_physical_device_features2(physical, &mut features2);
         let base = features2.features;
+        let provoking_last = provoking_ext && provoking.provoking_vertex_last == vk::TRUE;
+        let depth_clamp = base.depth_clamp == vk::TRUE
+            && depth_clip_ext
+            && depth_clip.depth_clip_enable == vk::TRUE;
         let wide_lines = base.wide_lines == vk::TRUE;
         let sample_rate_shading = base.sample_rate_shading == vk::TRUE;
         let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
@@ -136,17 +159,34 @@ impl Device {
             .queue_priorities(&priorities)];
         let enabled = vk::PhysicalDeviceFeatures::default()
             .wide_lines(wide_lines)
-            .sample_rate_shading(sample_rate_shading);
+            .sample_rate_shading(sample_rate_shading)
+            .depth_clamp(depth_clamp);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
             .bresenham_lines(bresenham == vk::TRUE)
             .rectangular_lines(rectangular == vk::TRUE);
-        let names: Vec<*const std::ffi::c_char> = line_ext.iter().map(|e| e.as_ptr()).collect();
+        let mut enable_provoking =
+            vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
+        let mut enable_depth_clip =
+            vk::PhysicalDeviceDepthClipEnableFeaturesEXT::default().depth_clip_enable(true);
+        let mut names: Vec<*const std::ffi::c_char> = line_ext.iter().map(|e| e.as_ptr()).collect();
+        if provoking_last {
+            names.push(ash::ext::provoking_vertex::NAME.as_ptr());
+        }
+        if depth_clamp {
+            names.push(ash::ext::depth_clip_enable::NAME.as_ptr());
+        }
         let mut info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_features(&enabled)
             .enabled_extension_names(&names);
         if line_ext.is_some() {
             info = info.push_next(&mut enable_lines);
+        }
+        if provoking_last {
+            info = info.push_next(&mut enable_provoking);
+        }
+        if depth_clamp {
+            info = info.push_next(&mut enable_depth_clip);
         }
         let device = instance
             .create_device(physical, &info, None)
@@ -186,6 +226,10 @@ impl Device {
                 & limits.framebuffer_stencil_sample_counts,
             standard_locations: limits.standard_sample_locations == vk::TRUE,
             sample_rate_shading,
+            provoking_last,
+            depth_clamp,
+            viewport_bounds: limits.viewport_bounds_range,
+            max_viewport: limits.max_viewport_dimensions,
         };
         Ok(Device {
             _entry: entry,

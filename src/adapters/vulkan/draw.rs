@@ -9,9 +9,10 @@
 
 use ash::vk;
 
+use super::super::float_input::f32_of;
 use super::super::gpu::{self, Placement, Stream, VERTEX_FLOATS};
 use super::device::Device;
-use super::pipelines::{Pipelines, COUNT_FORMAT, VALUE_FORMAT};
+use super::pipelines::{Pipelines, Stage, COUNT_FORMAT, VALUE_FORMAT};
 use super::unpack::Unpack;
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -50,6 +51,31 @@ impl Job {
             passes: (0..placements.len()).map(|i| vec![(canvas, i)]).collect(),
             samples: 1,
         }
+    }
+}
+
+/// The viewport: a clip-space scene's own (SPEC.md §16.1, y down as
+/// Vulkan's; `vulkan/mod.rs` checked that its values are f32 and within
+/// the device's bounds), else the whole target, onto which the stream's
+/// screen-space positions map exactly.
+fn viewport(scene: &Scene, target: (u32, u32)) -> vk::Viewport {
+    match &scene.viewport {
+        Some(v) => vk::Viewport {
+            x: f32_of(&v.x),
+            y: f32_of(&v.y),
+            width: f32_of(&v.width),
+            height: f32_of(&v.height),
+            min_depth: f32_of(&v.min_depth),
+            max_depth: f32_of(&v.max_depth),
+        },
+        None => vk::Viewport {
+            x: 0.0,
+            y: 0.0,
+            width: target.0 as f32,
+            height: target.1 as f32,
+            min_depth: 0.0,
+            max_depth: 1.0,
+        },
     }
 }
 
@@ -164,7 +190,7 @@ pub(super) fn render(
         let mut runs = Vec::with_capacity(stream.runs.len());
         for run in &stream.runs {
             let pipeline = pipelines
-                .pipeline(run.draw, scene.rules.cull, groups, n)
+                .pipeline(run.draw, scene.rules.cull, Stage::of(scene), groups, n)
                 .map_err(failed)?;
             runs.push((pipeline, run.first, run.end));
         }
@@ -211,15 +237,7 @@ pub(super) fn render(
                 })
                 .clear_values(&clears);
             d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
-            let viewport = vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: target.0 as f32,
-                height: target.1 as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            };
-            d.cmd_set_viewport(cb, 0, &[viewport]);
+            d.cmd_set_viewport(cb, 0, &[viewport(scene, target)]);
             let mut bound = vk::Pipeline::null();
             for &(scissor, stream) in draws {
                 let (offset, runs) = &placed[stream];

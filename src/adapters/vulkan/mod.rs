@@ -30,7 +30,20 @@
 //! `subpixel_bits: null` is unsupported. Depth is the case's `z` as a
 //! `noperspective` varying; attributes are varyings with the case's
 //! interpolation; flat ones take the first vertex (Vulkan's default
-//! provoking vertex, the case's rule).
+//! provoking vertex), or the last with VK_EXT_provoking_vertex where the
+//! case says `last` (a device without it refuses such cases).
+//!
+//! # Clip space (SPEC.md §16)
+//!
+//! A clip-space case's clip coordinates go to the device unchanged (y
+//! negated in the stream, which naga's flip undoes), with the case's
+//! viewport and depth range: the device clips, divides, applies the
+//! viewport and snaps, and that is what is judged. Depth is the device's
+//! fragment depth, clamped to the depth range. `depth: clamp` is
+//! depthClampEnable with VK_EXT_depth_clip_enable's depthClipEnable off.
+//! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
+//! §16.10). Refused: what `gpu::clip_space_refusal` says, and a viewport
+//! outside the device's bounds.
 //!
 //! # Rules
 //!
@@ -107,7 +120,9 @@ use std::sync::{Mutex, MutexGuard, OnceLock};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{Antialias, FillRule, LineRule, Pattern, Primitive, Scene};
+use crate::scene::{
+    Antialias, ClipXy, ClipZ, DepthMode, FillRule, LineRule, Pattern, Primitive, Scene,
+};
 
 use super::gpu::{self, Placement};
 use device::{Device, Offers};
@@ -180,7 +195,6 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
-            clip_space: false,
             ..Capabilities::everything()
         }
     }
@@ -190,6 +204,15 @@ impl Rasterizer for Vulkan {
     /// its cases are judged under top-left.
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         Some(FillRule::TopLeft)
+    }
+
+    /// Vulkan lets the device choose. lavapipe clips against all six planes
+    /// before the divide and snaps the new vertices (measured on scenes
+    /// that separate the conventions, `tests/vulkan.rs`: 6 samples depart
+    /// from per-sample near clipping, 3 from a guard band, none from clip
+    /// then snap). Another device is judged under these and shows it.
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -306,6 +329,16 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
             _ => {}
         }
     }
+    if let Some(why) = clip_space_refusal(scene, offers) {
+        return unsupported(why);
+    }
+    if scene.needs_last_provoking_vertex() && !offers.provoking_last {
+        return unsupported(
+            "provoking_vertex: last on a flat primitive with attributes: the device has no \
+             VK_EXT_provoking_vertex with provokingVertexLast"
+                .into(),
+        );
+    }
     let Some(bits) = scene.rules.subpixel_bits else {
         return unsupported(format!(
             "unsnapped geometry (subpixel_bits: null): the device snaps to {} subpixel bits",
@@ -320,6 +353,39 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
         ));
     }
     Ok(bits)
+}
+
+/// Why the device cannot draw a clip-space scene, if it cannot: the case's
+/// numbers are not the device's (`gpu::clip_space_refusal`), depth clamp
+/// without depth clip is not offered, or the viewport is outside the
+/// device's bounds.
+fn clip_space_refusal(scene: &Scene, offers: &Offers) -> Option<String> {
+    let v = scene.viewport.as_ref()?;
+    if let Some(why) = gpu::clip_space_refusal(scene, "the Vulkan device", offers.subpixel_bits) {
+        return Some(why);
+    }
+    if scene.rules.clip.depth == DepthMode::Clamp && !offers.depth_clamp {
+        return Some(
+            "depth: clamp: the device lacks depthClamp or VK_EXT_depth_clip_enable \
+             (depthClampEnable alone would still clip)"
+                .into(),
+        );
+    }
+    let [lo, hi] = offers.viewport_bounds;
+    let [x, y, w, h] = [&v.x, &v.y, &v.width, &v.height].map(super::float_input::f32_of);
+    let inside = x >= lo
+        && y >= lo
+        && x + w <= hi
+        && y + h <= hi
+        && w <= offers.max_viewport[0] as f32
+        && h <= offers.max_viewport[1] as f32;
+    (!inside).then(|| {
+        format!(
+            "viewport ({x}, {y}) {w}×{h}: the device's viewports lie in [{lo}, {hi}], \
+             at most {}×{}",
+            offers.max_viewport[0], offers.max_viewport[1]
+        )
+    })
 }
 
 /// Why the device has no line mode for this rule and width, if it has none.

@@ -23,7 +23,7 @@ use ash::vk;
 use super::super::gpu::{Draw, VERTEX_FLOATS};
 use super::device::Device;
 use super::shaders;
-use crate::scene::{Cull, Interpolation, LineRule, PolygonFill};
+use crate::scene::{Cull, DepthMode, Interpolation, LineRule, PolygonFill, ProvokingVertex, Scene};
 
 /// The count's format and the channel groups'.
 pub(super) const COUNT_FORMAT: vk::Format = vk::Format::R32_SFLOAT;
@@ -34,8 +34,29 @@ pub(super) const VALUE_FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
 struct Key {
     draw: DrawKey,
     cull: Cull,
+    stage: Stage,
     groups: usize,
     samples: u32,
+}
+
+/// The vertex post-processing state a scene asks for (SPEC.md §16), kept
+/// in the pipeline: which vertex provokes, and whether depth is clamped
+/// rather than clipped. `vulkan/mod.rs` refuses what the device lacks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub(super) struct Stage {
+    /// `provoking_vertex: last`: VK_EXT_provoking_vertex's LAST_VERTEX.
+    pub provoking_last: bool,
+    /// `depth: clamp`: depthClampEnable, and depthClipEnable false.
+    pub depth_clamp: bool,
+}
+
+impl Stage {
+    pub(super) fn of(scene: &Scene) -> Stage {
+        Stage {
+            provoking_last: scene.rules.provoking_vertex == ProvokingVertex::Last,
+            depth_clamp: scene.in_clip_space() && scene.rules.clip.depth == DepthMode::Clamp,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -166,12 +187,13 @@ impl Pipelines {
         Ok(pass)
     }
 
-    /// The pipeline of a run drawn as `draw`, under `cull`, into `groups`
-    /// channel groups of `samples` samples per pixel.
+    /// The pipeline of a run drawn as `draw`, under `cull` and `stage`,
+    /// into `groups` channel groups of `samples` samples per pixel.
     pub(super) fn pipeline(
         &mut self,
         draw: Draw,
         cull: Cull,
+        stage: Stage,
         groups: usize,
         samples: u32,
     ) -> Result<vk::Pipeline, String> {
@@ -190,6 +212,7 @@ impl Pipelines {
                 Draw::Triangles(_) => cull,
                 _ => Cull::None,
             },
+            stage,
             groups,
             samples,
         };
@@ -263,6 +286,16 @@ impl Pipelines {
             .line_width(width);
         if line_mode.is_some_and(|m| m != vk::LineRasterizationModeKHR::DEFAULT) {
             raster = raster.push_next(&mut line_state);
+        }
+        let mut provoking = vk::PipelineRasterizationProvokingVertexStateCreateInfoEXT::default()
+            .provoking_vertex_mode(vk::ProvokingVertexModeEXT::LAST_VERTEX);
+        if key.stage.provoking_last {
+            raster = raster.push_next(&mut provoking);
+        }
+        let mut depth_clip = vk::PipelineRasterizationDepthClipStateCreateInfoEXT::default()
+            .depth_clip_enable(false);
+        if key.stage.depth_clamp {
+            raster = raster.depth_clamp_enable(true).push_next(&mut depth_clip);
         }
         let multisample = vk::PipelineMultisampleStateCreateInfo::default()
             .rasterization_samples(vk::SampleCountFlags::from_raw(key.samples));
