@@ -107,7 +107,7 @@ pub fn assert_depth_clip_and_clamp(candidate: &dyn Rasterizer) {
 
 /// Clip-space cases the driver cannot draw as asked are refused, each with
 /// its reason: unsnapped, fewer subpixel bits than the driver's, a
-/// viewport value that is no f32.
+/// viewport rectangle that is no f32 (a depth range off the f32s is drawn).
 pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
     let refused =
         |scene: &Scene, why: &str| match candidate.rasterize(scene, &Plan::for_scene(scene)) {
@@ -129,9 +129,18 @@ pub fn assert_clip_refusals(candidate: &dyn Rasterizer) {
         &whole_viewport(r#""subpixel_bits": 4"#, "flat", (0.0, 1.0), 1.0),
         "subpixel_bits 4",
     );
-    refused(
-        &whole_viewport("", "flat", (0.0, 0.1), 1.0),
-        "viewport.max_depth 0.1 is not an f32",
+    // The viewport's rectangle places vertices, so it must be an f32; its
+    // depth range is a value, rounded once.
+    let mut off_f32 = whole_viewport("", "flat", (0.0, 1.0), 1.0);
+    off_f32.viewport.as_mut().expect("clip space").x = rastercheck::scene::Number::ratio(1, 10);
+    refused(&off_f32, "is not an f32");
+    let depth = whole_viewport("", "flat", (0.0, 0.1), 1.0);
+    assert!(
+        candidate
+            .rasterize(&depth, &Plan::for_scene(&depth))
+            .is_ok(),
+        "{}: a depth range off the f32s is drawn",
+        candidate.name()
     );
 }
 

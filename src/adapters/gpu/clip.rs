@@ -19,8 +19,10 @@ use crate::scene::{Number, Scene};
 ///   space the adapter snaps to the coarser grid itself before the driver
 ///   sees the vertex (exact on the driver's finer grid), but here the
 ///   vertices are the driver's own (divided, and new ones from clipping).
-/// - **f32**: every viewport value must be an f32, the type the driver
-///   takes, as it places every vertex. Clip coordinates are rounded once to
+/// - **f32**: the viewport's rectangle must be f32s, the type the driver
+///   takes, as it places every vertex (coverage). Its depth range is
+///   rounded once to f32 like any value (a relative error of 2^-24, far
+///   inside depth's tolerance, SPEC.md §6.3). Clip coordinates are rounded once to
 ///   f32, as z, w and attributes are in screen space: a relative error of
 ///   2^-24, which moves a snapped position only where the exact one lies
 ///   that close to a rounding tie of the driver's grid (the bundled cases
@@ -52,8 +54,6 @@ pub(crate) fn clip_space_refusal(scene: &Scene, driver: &str, driver_bits: u32) 
         ("y", &v.y),
         ("width", &v.width),
         ("height", &v.height),
-        ("min_depth", &v.min_depth),
-        ("max_depth", &v.max_depth),
     ] {
         if not_f32(n) {
             return Some(format!(
