@@ -503,7 +503,8 @@ fn the_request_carries_exact_and_float_values() {
     assert_eq!(request["canvas"], json!({"width": 4, "height": 2}));
     assert_eq!(
         request["rules"],
-        json!({"subpixel_bits": null, "fill_rule": "bottom-right", "cull": "cw"})
+        json!({"subpixel_bits": null, "fill_rule": "bottom-right", "cull": "cw",
+               "provoking_vertex": "first"})
     );
     assert_eq!(
         request["plan"],

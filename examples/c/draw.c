@@ -34,6 +34,7 @@ typedef struct {
     enum cull cull;
     nudge tie;
     int depth, attributes;
+    int last_provokes; /* flat values from the last vertex (SPEC.md §16.6) */
     int samples;                  /* spatial samples per pixel */
     int antialiased;              /* fragments name their sample slot */
     fx16 offsets[MAX_SAMPLES][2]; /* from the pixel's top-left corner */
@@ -166,7 +167,7 @@ static void values(buffer *out, const scene *s, const vertex *v, int n, enum int
     for (k = 0; k < s->attributes; k++) {
         double a = 0, den = 0;
         if (mode == FLAT) {
-            a = v[0].attributes[k];
+            a = v[s->last_provokes ? n - 1 : 0].attributes[k];
         } else if (mode == LINEAR) {
             for (i = 0; i < n; i++) a += b[i] * v[i].attributes[k];
         } else { /* interpolate a/w and 1/w linearly, then divide */
@@ -472,6 +473,8 @@ enum outcome draw_request(const json *request, const options *opt, buffer *out, 
     if (rule < 0) return fail(&s, FAILED, "$.rules.fill_rule is not a fill rule");
     if (cull < 0) return fail(&s, FAILED, "$.rules.cull is not a cull mode");
     s.rule = (enum fill_rule)rule;
+    s.last_provokes =
+        strcmp(json_string(json_get(rules, "provoking_vertex"), "first"), "last") == 0;
     s.cull = (enum cull)cull;
     s.tie = nudge_of(s.rule, opt->wrong_tie);
     if ((o = read_plan(&s, json_get(request, "plan"))) != DRAWN) return o;

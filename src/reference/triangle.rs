@@ -289,7 +289,8 @@ impl Combination {
     }
 }
 
-fn gcd(a: &IBig, b: &IBig) -> IBig {
+/// The greatest common divisor, non-negative.
+pub(super) fn gcd(a: &IBig, b: &IBig) -> IBig {
     let (mut a, mut b) = (a.clone(), b.clone());
     while b != IBig::ZERO {
         let r = &a % &b;

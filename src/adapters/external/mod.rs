@@ -64,7 +64,7 @@ use serde_json::Value;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{refuse_last_provoking, Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, Scene};
 
 pub use hello::Answers;
@@ -570,9 +570,6 @@ impl Rasterizer for External {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        // The protocol (SPEC.md §12) does not send the provoking vertex: a
-        // program takes the first vertex's values, as §5 says.
-        refuse_last_provoking(scene, "the external protocol")?;
         let mut timeout = self.timeout.clone().map_err(RasterError::Failed)?;
         let max_output = self.max_output.clone().map_err(RasterError::Failed)?;
         // The case's deadline (`--case-timeout`) stops the program too; the

@@ -106,6 +106,7 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
             "subpixel_bits": scene.rules.subpixel_bits,
             "fill_rule": scene.rules.fill_rule.name(),
             "cull": scene.rules.cull.name(),
+            "provoking_vertex": scene.rules.provoking_vertex.name(),
         },
         "plan": plan_out,
         "primitives": primitives,

@@ -12,6 +12,7 @@
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
+use super::super::triangle::gcd;
 use super::clipper::ClipVertex;
 use crate::scene::{FillRule, Number, Viewport};
 
@@ -82,20 +83,6 @@ fn integral(p: &[RBig; 3]) -> ([IBig; 3], IBig) {
         .clone()
         .map(|c| c.numerator() * (&l / IBig::from(c.denominator().clone())));
     (g, l)
-}
-
-fn gcd(a: &IBig, b: &IBig) -> IBig {
-    let (mut a, mut b) = (a.clone(), b.clone());
-    while b != IBig::ZERO {
-        let r = &a % &b;
-        a = b;
-        b = r;
-    }
-    if a < IBig::ZERO {
-        -a
-    } else {
-        a
-    }
 }
 
 fn cross(p: &[IBig; 3], q: &[IBig; 3]) -> [IBig; 3] {
