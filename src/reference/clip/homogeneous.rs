@@ -24,7 +24,7 @@ pub struct Homogeneous {
     edges: [[IBig; 3]; 3],
     /// Whether edge i owns the samples on it.
     owns: [bool; 3],
-    /// |D|·(the common denominator of the m_i·z_i); see [`Homogeneous::depth`].
+    /// Each vertex's weight m_i, clip z and attributes, for the values.
     vertices: [Weighted; 3],
     /// D = det[G0, G1, G2], times σ (so positive).
     det: IBig,

@@ -40,6 +40,7 @@ where
     let depth_low = min_d.min(max_d).clone();
     let depth_high = min_d.max(max_d).clone();
     let per_sample_z = clip.depth == DepthMode::Clip && clip.z == ClipZ::PerSample;
+    let needs_depth = with_values || per_sample_z;
     // Pixel centres the guard band lets through: x + ½ in [vx, vx + vw).
     let mut columns = 0..i64::from(canvas.width);
     let mut rows = 0..i64::from(canvas.height);
@@ -78,7 +79,6 @@ where
                     let Some(e) = h.covers(px, py) else {
                         continue;
                     };
-                    let needs_depth = with_values || per_sample_z;
                     let z_ndc = needs_depth.then(|| h.depth(&e));
                     if per_sample_z {
                         let z = z_ndc.as_ref().expect("computed");
