@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -144,6 +144,13 @@ pub trait Rasterizer: Send + Sync {
     /// for [`Rasterizer::fixed_fill_rule`]. `None` for a rasterizer that
     /// follows each case's.
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        None
+    }
+
+    /// The positions this rasterizer interpolates clip-space values from
+    /// whatever a case states (SPEC.md §16.5): a driver sets its planes up
+    /// as its pipeline does. Judged as [`Rasterizer::fixed_clip_rules`].
+    fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
         None
     }
 

@@ -407,3 +407,15 @@ fn clip_space_inside_the_volume_passes() {
     }
     common::clip_drivers::assert_inside_the_volume_passes(&VULKAN);
 }
+
+/// The device interpolates from the positions it declares
+/// (`fixed_interpolate_from`: lavapipe's unsnapped ones), and not from
+/// the others.
+#[test]
+fn clip_space_values_come_from_the_declared_positions() {
+    if !available() {
+        return;
+    }
+    let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&VULKAN);
+    eprintln!("vulkan: values depart {own:e} from its own positions', {other:e} from the others'");
+}

@@ -108,11 +108,9 @@ pub(crate) fn print_outcome(
         if let (Some(clip), Some(scene)) = (result.judged_clip, &outcome.scene) {
             let stated = scene.rules.clip;
             method.push_str(&format!(
-                " (judged under its own clipping, {} and {}; the case states {} and {})",
-                clip.xy.name(),
-                clip.z.name(),
-                stated.xy.name(),
-                stated.z.name()
+                " (judged under its own clipping, {}; the case states {})",
+                clip.words(),
+                stated.words()
             ));
         }
         outln!(

@@ -194,19 +194,18 @@ impl OwnConventions {
         let fill_rule = candidate
             .fixed_fill_rule()
             .filter(|&rule| rule != scene.rules.fill_rule);
-        let clip = candidate
-            .fixed_clip_rules()
-            .filter(|_| scene.in_clip_space())
-            .map(|(xy, z)| ClipRules {
-                xy,
-                z: if scene.rules.clip.depth == DepthMode::Clip {
-                    z
-                } else {
-                    scene.rules.clip.z
-                },
-                ..scene.rules.clip
-            })
-            .filter(|&clip| clip != scene.rules.clip);
+        let stated = scene.rules.clip;
+        let mut own = stated;
+        if let Some((xy, z)) = candidate.fixed_clip_rules() {
+            own.xy = xy;
+            if stated.depth == DepthMode::Clip {
+                own.z = z;
+            }
+        }
+        if let Some(values) = candidate.fixed_interpolate_from() {
+            own.values = values;
+        }
+        let clip = Some(own).filter(|&own| scene.in_clip_space() && own != stated);
         OwnConventions { fill_rule, clip }
     }
 
@@ -235,11 +234,7 @@ impl OwnConventions {
             words.push(format!("the {rule} rule"));
         }
         if let Some(clip) = self.clip {
-            words.push(format!(
-                "clip_xy {} and clip_z {}",
-                clip.xy.name(),
-                clip.z.name()
-            ));
+            words.push(clip.words());
         }
         words.join(" and ")
     }

@@ -135,6 +135,7 @@ pub struct ClipInfo {
     pub clip_xy: &'static str,
     pub clip_z: &'static str,
     pub depth: &'static str,
+    pub interpolate_from: &'static str,
 }
 
 impl ClipInfo {
@@ -143,6 +144,7 @@ impl ClipInfo {
             clip_xy: clip.xy.name(),
             clip_z: clip.z.name(),
             depth: clip.depth.name(),
+            interpolate_from: clip.values.name(),
         }
     }
 }

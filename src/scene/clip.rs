@@ -83,12 +83,32 @@ case_names!(DepthMode {
     Clamp => "clamp",
 });
 
+/// Which positions depth and attributes are interpolated from
+/// (SPEC.md §16.5): coverage always uses the snapped ones.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum InterpolateFrom {
+    /// The snapped screen positions, the ones coverage uses (D3D11's
+    /// fixed-point set-up).
+    Snapped,
+    /// The exact projected positions before snapping, as a driver that
+    /// sets its planes up in floating point from the divided vertices
+    /// does (Mesa's llvmpipe and lavapipe, SPEC.md §16.10).
+    Unsnapped,
+}
+
+case_names!(InterpolateFrom {
+    Snapped => "snapped",
+    Unsnapped => "unsnapped",
+});
+
 /// The clip-space conventions of a case, with their defaults.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ClipRules {
     pub xy: ClipXy,
     pub z: ClipZ,
     pub depth: DepthMode,
+    /// The positions values are interpolated from.
+    pub values: InterpolateFrom,
 }
 
 impl Default for ClipRules {
@@ -97,11 +117,23 @@ impl Default for ClipRules {
             xy: ClipXy::GuardBand,
             z: ClipZ::ClipThenSnap,
             depth: DepthMode::Clip,
+            values: InterpolateFrom::Snapped,
         }
     }
 }
 
 impl ClipRules {
+    /// The conventions a clipping stage fixes, in words: `clip_xy`,
+    /// `clip_z` and `interpolate_from` (`depth` is always the case's).
+    pub fn words(&self) -> String {
+        format!(
+            "clip_xy {}, clip_z {}, interpolate_from {}",
+            self.xy.name(),
+            self.z.name(),
+            self.values.name()
+        )
+    }
+
     /// Which of the six planes are clipped before the divide, in the order
     /// SPEC.md §16.3 clips them: near, far, left, right, top, bottom.
     pub fn clipped_planes(&self) -> [bool; 6] {

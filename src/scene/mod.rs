@@ -38,7 +38,7 @@ pub mod samples;
 pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
-pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, Viewport};
+pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
 pub use number::Number;
 pub use rules::{
     Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,

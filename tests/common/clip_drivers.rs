@@ -7,7 +7,7 @@
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
-use rastercheck::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, Scene};
+use rastercheck::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Scene};
 
 use super::inline;
 
@@ -223,6 +223,7 @@ pub fn departures(
         xy,
         z,
         depth: DepthMode::Clip,
+        ..ClipRules::default()
     };
     let plan = Plan::for_scene(&scene);
     let reference = rastercheck::reference::render(&scene, &plan);
@@ -337,4 +338,69 @@ pub fn assert_inside_the_volume_passes(candidate: &dyn Rasterizer) {
         "{}",
         super::report("inside", &reference, &run)
     );
+}
+
+/// The largest |driver − reference| over depth and attributes where both
+/// cover a sample with the same primitive, the reference drawn under
+/// `values`.
+fn value_departure(candidate: &dyn Rasterizer, scene: &Scene, values: InterpolateFrom) -> f64 {
+    let mut scene = scene.clone();
+    scene.rules.clip.values = values;
+    let reference = rastercheck::reference::render(&scene, &Plan::for_scene(&scene));
+    let got = drawn(candidate, &scene);
+    let mut worst: f64 = 0.0;
+    for i in 0..got.coverage.len() {
+        if got.coverage[i] == 0 || reference.coverage[i] == 0 || got.last[i] != reference.last[i] {
+            continue;
+        }
+        if let (Some(a), Some(b)) = (&got.depth, &reference.depth) {
+            worst = worst.max((a[i] - b[i]).abs());
+        }
+        for (a, b) in got.attributes.iter().zip(&reference.attributes) {
+            worst = worst.max((a[i] - b[i]).abs());
+        }
+    }
+    worst
+}
+
+/// The driver's depth and attributes are those of the positions it
+/// declares it interpolates from (`fixed_interpolate_from`), within §6.3's
+/// 2^-16, on the worked examples whose vertices land off the grid, and
+/// depart from the other positions' beyond it: the claim can fail.
+/// Returns the departures (own, other), for the record.
+pub fn assert_values_from_declared_positions(candidate: &dyn Rasterizer) -> (f64, f64) {
+    let own = candidate
+        .fixed_interpolate_from()
+        .expect("a driver declares the positions it interpolates from");
+    let other = InterpolateFrom::ALL
+        .into_iter()
+        .find(|&v| v != own)
+        .unwrap();
+    let bound = 2f64.powi(-16);
+    let (mut worst_own, mut worst_other) = (0f64, 0f64);
+    for id in [
+        "clip/spec_interpolate_snapped",
+        "clip/interp_perspective_clipped_gb_cts",
+    ] {
+        let scene = super::case(id);
+        let (d_own, d_other) = (
+            value_departure(candidate, &scene, own),
+            value_departure(candidate, &scene, other),
+        );
+        assert!(
+            d_own <= bound,
+            "{} {id}: departs {d_own:e} from the {} positions' values it declares",
+            candidate.name(),
+            own.name()
+        );
+        assert!(
+            d_other > bound,
+            "{} {id}: departs only {d_other:e} from the {} positions' values: the scene does not tell them apart",
+            candidate.name(),
+            other.name()
+        );
+        worst_own = worst_own.max(d_own);
+        worst_other = worst_other.max(d_other);
+    }
+    (worst_own, worst_other)
 }

@@ -636,3 +636,14 @@ fn clip_space_inside_the_volume_passes() {
     }
     common::clip_drivers::assert_inside_the_volume_passes(&Gl);
 }
+
+/// llvmpipe interpolates from the unsnapped positions it divides
+/// (`fixed_interpolate_from`), and not from the snapped ones.
+#[test]
+fn clip_space_values_come_from_the_declared_positions() {
+    if !available() {
+        return;
+    }
+    let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&Gl);
+    eprintln!("gl: values depart {own:e} from its own positions', {other:e} from the others'");
+}

@@ -219,7 +219,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, Scene};
 
 use super::gpu;
 use context::{ask_for_softpipe, context, with_context};
@@ -263,6 +263,15 @@ impl Rasterizer for Gl {
     /// none from clip then snap).
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
         Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+
+    /// llvmpipe sets its planes up in floating point from the divided,
+    /// unsnapped vertices, and snaps only the edges (SPEC.md §16.10: on
+    /// the bundled clip-space cases its depth and attributes depart from
+    /// the snapped positions' values by up to 1.3e-3, and from the
+    /// unsnapped positions' by at most 2.3e-6).
+    fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
+        Some(InterpolateFrom::Unsnapped)
     }
 
     fn declared(&self) -> Option<String> {

@@ -121,7 +121,8 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{
-    Antialias, ClipXy, ClipZ, DepthMode, FillRule, LineRule, Pattern, Primitive, Scene,
+    Antialias, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, LineRule, Pattern, Primitive,
+    Scene,
 };
 
 use super::gpu::{self, Placement};
@@ -213,6 +214,15 @@ impl Rasterizer for Vulkan {
     /// then snap). Another device is judged under these and shows it.
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
         Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+
+    /// lavapipe sets its planes up in floating point from the divided,
+    /// unsnapped vertices, and snaps only the edges (SPEC.md §16.10: on
+    /// the bundled clip-space cases its depth and attributes depart from
+    /// the snapped positions' values by up to 1.3e-3, and from the
+    /// unsnapped positions' by at most 2.3e-6).
+    fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
+        Some(InterpolateFrom::Unsnapped)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

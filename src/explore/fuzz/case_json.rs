@@ -6,8 +6,8 @@
 use crate::scene::rules::limits::{CLIP_LIMIT, COORD_LIMIT, W_LIMIT};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{
-    parse_case, DepthMode, Interpolation, LastPixel, Limits, LineParameter, LineRule, Number,
-    Primitive, ProvokingVertex, Scene, Vertex,
+    parse_case, DepthMode, InterpolateFrom, Interpolation, LastPixel, Limits, LineParameter,
+    LineRule, Number, Primitive, ProvokingVertex, Scene, Vertex,
 };
 
 /// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
@@ -268,6 +268,9 @@ pub fn case_json(scene: &Scene) -> String {
             rules.push(format!("\"clip_z\": \"{}\"", clip.z.name()));
         }
         rules.push(format!("\"depth\": \"{}\"", clip.depth.name()));
+        if clip.values != InterpolateFrom::Snapped {
+            rules.push(format!("\"interpolate_from\": \"{}\"", clip.values.name()));
+        }
         viewport = format!(
             "  \"viewport\": {{ \"x\": {}, \"y\": {}, \"width\": {}, \"height\": {}, \"min_depth\": {}, \"max_depth\": {} }},\n",
             json_number(&v.x),

@@ -34,7 +34,7 @@ use shade::Values;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::{ClipXy, ClipZ, Cull, DepthMode, Primitive, Scene, Triangle};
+use crate::scene::{ClipXy, ClipZ, Cull, DepthMode, InterpolateFrom, Primitive, Scene, Triangle};
 
 /// Draws a clip-space scene.
 pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -52,8 +52,14 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
             "a clip-space case neither antialiases nor moves (SPEC.md §16.1)".to_owned(),
         ));
     }
-    let clamp = scene.rules.clip.depth == DepthMode::Clamp;
+    // `interpolate_from: unsnapped`: values come from the exact projected
+    // positions, and the depth written is held to the depth range
+    // (SPEC.md §16.5).
+    let from_unsnapped = scene.rules.clip.values == InterpolateFrom::Unsnapped;
+    let clamp = scene.rules.clip.depth == DepthMode::Clamp || from_unsnapped;
     let mapping = Mapping::new(viewport, scene.rules.subpixel_bits, clamp);
+    let unsnapped = (from_unsnapped && scene.rules.subpixel_bits.is_some())
+        .then(|| Mapping::new(viewport, None, clamp));
     let canvas = [
         [0, i64::from(scene.canvas.width)],
         [0, i64::from(scene.canvas.height)],
@@ -83,6 +89,7 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
             scene,
             plan,
             mapping: &mapping,
+            unsnapped: unsnapped.as_ref(),
             limit,
             index,
         };
@@ -96,6 +103,9 @@ struct Draw<'a> {
     scene: &'a Scene,
     plan: &'a Plan,
     mapping: &'a Mapping,
+    /// The mapping without snapping, when values are interpolated from
+    /// the unsnapped positions.
+    unsnapped: Option<&'a Mapping>,
     /// The pixels any sample may lie in, half-open [[x0, x1], [y0, y1]].
     limit: [[i64; 2]; 2],
     index: usize,
@@ -119,17 +129,24 @@ impl Draw<'_> {
         let flat = original[rules.provoking_vertex.index(3)].attributes.clone();
         let polygon = clipper::clip(original.into(), rules.clip.clipped_planes(), new);
         let projected: Vec<Projected> = polygon.iter().map(|v| self.mapping.project(v)).collect();
+        let exact: Option<Vec<Projected>> = self
+            .unsnapped
+            .map(|m| polygon.iter().map(|v| m.project(v)).collect());
         for [a, b, c] in clipper::fan(polygon.len()) {
-            let h = [&projected[a], &projected[b], &projected[c]].map(Clone::clone);
+            let pick = |p: &[Projected]| [&p[a], &p[b], &p[c]].map(Clone::clone);
+            let h = pick(&projected);
             let vertices = [&polygon[a], &polygon[b], &polygon[c]];
-            self.piece(&h, vertices, triangle, &flat, frame);
+            let exact = exact.as_deref().map(pick);
+            self.piece(&h, exact.as_ref(), vertices, triangle, &flat, frame);
         }
     }
 
-    /// Tests and writes every sample of one piece's region.
+    /// Tests and writes every sample of one piece's region; its values
+    /// from `exact`, the piece unsnapped, when given and of some area.
     fn piece(
         &self,
         h: &[Projected; 3],
+        exact: Option<&[Projected; 3]>,
         vertices: [&ClipVertex; 3],
         triangle: &Triangle,
         flat: &[RBig],
@@ -139,15 +156,20 @@ impl Draw<'_> {
         let Some(piece) = Piece::new(h, rules.fill_rule) else {
             return;
         };
-        let values = Values::new(
-            &piece,
-            h,
-            vertices,
-            triangle.interpolation,
-            flat,
-            self.plan,
-            self.mapping,
-        );
+        let values_of = |piece: &Piece, h: &[Projected; 3]| {
+            Values::new(
+                piece,
+                h,
+                vertices,
+                triangle.interpolation,
+                flat,
+                self.plan,
+                self.mapping,
+            )
+        };
+        let values = values_of(&piece, h);
+        let unsnapped =
+            exact.and_then(|h| Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h), p)));
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);
         let width = frame.width as usize;
@@ -157,7 +179,23 @@ impl Draw<'_> {
             crate::deadline::check();
             for px in x0..x1 {
                 let e = piece.at(px, py);
-                if !piece.covers(&e) || (depth_test && !values.depth_inside(&e)) {
+                if !piece.covers(&e) {
+                    continue;
+                }
+                // Where the unsnapped piece's plane does not reach in
+                // front of the eye, the snapped piece's values stand.
+                let (values, e) = match &unsnapped {
+                    Some((v, p)) => {
+                        let eu = p.at(px, py);
+                        if v.in_front(&eu) {
+                            (v, eu)
+                        } else {
+                            (&values, e)
+                        }
+                    }
+                    None => (&values, e),
+                };
+                if depth_test && !values.depth_inside(&e) {
                     continue;
                 }
                 let i = py as usize * width + px as usize;

@@ -42,7 +42,8 @@ pub struct Mapping {
     pub max_depth: RBig,
     /// `subpixel_bits`: `None` keeps x_f and y_f exact.
     pub bits: Option<u32>,
-    /// `depth: clamp`: each sample's depth is clamped to the depth range.
+    /// `depth: clamp` or `interpolate_from: unsnapped`: each sample's
+    /// depth is clamped to the depth range.
     pub clamp: bool,
 }
 

@@ -35,6 +35,9 @@ pub struct Values {
     depth_over: IBig,
     /// `depth: clamp`: the depth range, exact and as f64.
     clamp: Option<[RBig; 2]>,
+    /// Σ E_i·weight[i] is positive where the piece's plane lies in front
+    /// of the eye.
+    weight: [IBig; 3],
     how: How,
 }
 
@@ -110,8 +113,16 @@ impl Values {
             depth,
             depth_over: IBig::from(q) * &piece.det,
             clamp,
+            weight: integers(&weights).0,
             how,
         }
+    }
+
+    /// Whether the piece's plane lies in front of the eye at the sample
+    /// whose edge values are `e`: Σ E_i·K_i > 0 (at a sample the piece
+    /// covers it always does).
+    pub fn in_front(&self, e: &EdgeValues) -> bool {
+        dot(&e.big(), &self.weight) > IBig::ZERO
     }
 
     /// Whether the sample's exact z_ndc lies in [0, 1] (`clip_z:

@@ -187,20 +187,26 @@ impl Homogeneous {
     /// The edge values at pixel centre (px, py) when the triangle covers it
     /// (each ≥ 0, positive inside), `None` otherwise.
     pub fn covers(&self, px: i64, py: i64) -> Option<[IBig; 3]> {
+        let values = self.edge_values(px, py);
+        for (i, e) in values.iter().enumerate() {
+            if *e < IBig::ZERO || (*e == IBig::ZERO && !self.owns[i]) {
+                return None;
+            }
+        }
+        Some(values)
+    }
+
+    /// The σ-signed edge values at pixel centre (px, py), covered or not:
+    /// what the values of another triangle's covered sample are
+    /// interpolated with under `interpolate_from: unsnapped` (SPEC.md
+    /// §16.5).
+    pub fn edge_values(&self, px: i64, py: i64) -> [IBig; 3] {
         let s = [
             IBig::from(2 * px + 1),
             IBig::from(2 * py + 1),
             IBig::from(2),
         ];
-        let mut values = [IBig::ZERO, IBig::ZERO, IBig::ZERO];
-        for (i, value) in values.iter_mut().enumerate() {
-            let e = dot(&self.edges[i], &s);
-            if e < IBig::ZERO || (e == IBig::ZERO && !self.owns[i]) {
-                return None;
-            }
-            *value = e;
-        }
-        Some(values)
+        [0, 1, 2].map(|i| dot(&self.edges[i], &s))
     }
 
     /// z_ndc at a covered sample: Σ E_i·m_i·z_i / D. The edge values are
@@ -212,7 +218,13 @@ impl Homogeneous {
 
     /// A perspective attribute: Σ E_i·m_i·a_i / Σ E_i·m_i.
     pub fn perspective(&self, e: &[IBig; 3], k: usize) -> RBig {
-        self.sum(e, |v| &v.m * &v.attributes[k]) / self.sum(e, |v| v.m.clone())
+        self.sum(e, |v| &v.m * &v.attributes[k]) / self.weight(e)
+    }
+
+    /// Σ E_i·m_i: positive wherever the triangle's plane lies in front of
+    /// the eye, and so at every sample it covers.
+    pub fn weight(&self, e: &[IBig; 3]) -> RBig {
+        self.sum(e, |v| v.m.clone())
     }
 
     fn sum(&self, e: &[IBig; 3], f: impl Fn(&Weighted) -> RBig) -> RBig {

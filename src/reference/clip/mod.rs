@@ -13,7 +13,9 @@ pub mod homogeneous;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-use crate::scene::{ClipXy, ClipZ, DepthMode, FillRule, Interpolation, Primitive, Scene};
+use crate::scene::{
+    ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Interpolation, Primitive, Scene,
+};
 use clipper::ClipVertex;
 use homogeneous::Homogeneous;
 
@@ -68,6 +70,12 @@ where
             let Some(h) = Homogeneous::new(&piece, viewport, bits, rule) else {
                 continue;
             };
+            // The triangle values are interpolated over (SPEC.md §16.5):
+            // the snapped one, or the exact one before snapping, unless
+            // that one has no area.
+            let unsnapped = (clip.values == InterpolateFrom::Unsnapped && bits.is_some())
+                .then(|| Homogeneous::new(&piece, viewport, None, rule))
+                .flatten();
             let (mut xs, mut ys) = (columns.clone(), rows.clone());
             if let Some([x0, x1, y0, y1]) = &h.bounded {
                 xs = centres_between(&xs, x0, x1);
@@ -79,7 +87,20 @@ where
                     let Some(e) = h.covers(px, py) else {
                         continue;
                     };
-                    let z_ndc = needs_depth.then(|| h.depth(&e));
+                    // A sample the unsnapped triangle's plane does not
+                    // reach in front of the eye takes the snapped one's.
+                    let (v, e) = match &unsnapped {
+                        Some(u) => {
+                            let eu = u.edge_values(px, py);
+                            if u.weight(&eu) > RBig::ZERO {
+                                (u, eu)
+                            } else {
+                                (&h, e)
+                            }
+                        }
+                        None => (&h, e),
+                    };
+                    let z_ndc = needs_depth.then(|| v.depth(&e));
                     if per_sample_z {
                         let z = z_ndc.as_ref().expect("computed");
                         if *z < RBig::ZERO || *z > RBig::ONE {
@@ -90,13 +111,18 @@ where
                     let values = with_values.then(|| {
                         let z_ndc = z_ndc.expect("computed");
                         let mut depth = min_d + (max_d - min_d) * z_ndc;
-                        if clip.depth == DepthMode::Clamp {
+                        // Values from the unsnapped positions may reach a
+                        // hair beyond a plane the snapped piece was cut
+                        // by: the range holds them (SPEC.md §16.5).
+                        if clip.depth == DepthMode::Clamp
+                            || clip.values == InterpolateFrom::Unsnapped
+                        {
                             depth = depth.clamp(depth_low.clone(), depth_high.clone());
                         }
                         let attributes = (0..flat.len())
                             .map(|k| match triangle.interpolation {
                                 Interpolation::Flat => flat[k].clone(),
-                                _ => h.perspective(&e, k),
+                                _ => v.perspective(&e, k),
                             })
                             .collect();
                         Values { depth, attributes }

@@ -6,7 +6,7 @@
 
 use serde_json::Value;
 
-use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, Viewport};
+use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
 use crate::scene::number::Number;
 use crate::scene::rules::{limits, Interpolation};
 use crate::scene::{Canvas, Primitive, Scene, Vertex};
@@ -16,10 +16,11 @@ use super::schema::Reader;
 use super::validate::within;
 
 /// The rules that only a clip-space case may give.
-const CLIP_RULES: [&str; 3] = ["clip_xy", "clip_z", "depth"];
+const CLIP_RULES: [&str; 4] = ["clip_xy", "clip_z", "depth", "interpolate_from"];
 
 impl Reader<'_> {
-    /// `rules.clip_xy`, `rules.clip_z` and `rules.depth`.
+    /// `rules.clip_xy`, `rules.clip_z`, `rules.depth` and
+    /// `rules.interpolate_from`.
     pub(super) fn clip_rules(&self, fields: &Fields, clip: &mut ClipRules) -> Result<()> {
         if let Some((v, p)) = fields.get("clip_xy") {
             clip.xy = named(v, &p, ClipXy::from_name, &ClipXy::NAMES)?;
@@ -29,6 +30,9 @@ impl Reader<'_> {
         }
         if let Some((v, p)) = fields.get("depth") {
             clip.depth = named(v, &p, DepthMode::from_name, &DepthMode::NAMES)?;
+        }
+        if let Some((v, p)) = fields.get("interpolate_from") {
+            clip.values = named(v, &p, InterpolateFrom::from_name, &InterpolateFrom::NAMES)?;
         }
         if let (DepthMode::Clamp, Some((_, p))) = (clip.depth, fields.get("clip_z")) {
             return fail(

@@ -144,6 +144,7 @@ impl Reader<'_> {
                 "clip_xy",
                 "clip_z",
                 "depth",
+                "interpolate_from",
             ],
         )?;
         let mut rules = Rules::default();

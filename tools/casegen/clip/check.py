@@ -160,7 +160,17 @@ def check_case_values():
     assert min(depths) == F(3, 10) and max(depths) == F(4, 5)
     assert min(cell[2] for cell in frame("spec_depth_clamp").values()) == F(1, 4)
     assert {cell[2] for cell in frame("spec_w_crossing").values()} == {F(1, 2)}
-    return 5
+    # interpolate_from: unsnapped gives the values of the triangle drawn
+    # unsnapped, and they part from the snapped positions' beyond 2^-16.
+    unsnapped, snapped = frame("spec_interpolate_unsnapped"), frame("spec_interpolate_snapped")
+    ideal = rasterize(model_scene(by["spec_interpolate_unsnapped"], subpixel_bits=None),
+                      values=True)
+    assert unsnapped.keys() == snapped.keys()
+    assert all(unsnapped[k][2:] == ideal[k][2:] for k in unsnapped if k in ideal)
+    apart = max(max(abs(unsnapped[k][2] - snapped[k][2]), abs(unsnapped[k][3][0] - snapped[k][3][0]))
+                for k in unsnapped)
+    assert apart > F(1, 2 ** 16), apart
+    return 6
 
 
 def run_all():

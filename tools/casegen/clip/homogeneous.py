@@ -56,6 +56,7 @@ class Scene:
         self.clip_z = rules.get("clip_z", "clip-then-snap")
         self.depth = rules["depth"]
         self.provoking = rules["provoking_vertex"]
+        self.interpolate_from = rules.get("interpolate_from", "snapped")
         self.triangles = triangles
 
 
@@ -201,12 +202,13 @@ def draw_piece(scene, index, original, interpolation, piece, frame, values):
         a, b, c = sigma * a, sigma * b, sigma * c
         forms.append((integer_form((a, b, c)), owns(a, b, scene.fill_rule)))
     per_sample = scene.depth == "clip" and scene.clip_z == "per-sample"
-    if per_sample:
-        # sigma * sum E_i k_i z_i, against |D|.
-        nz = [sigma * sum(piece.E[i][c] * piece.k[i] * piece.verts[i][2] for i in range(3))
-              for c in range(3)]
-        zlow = integer_form(nz)
-        zhigh = integer_form((-nz[0], -nz[1], abs(D) - nz[2]))
+    # interpolate_from: unsnapped (16.5): values, and the per-sample depth
+    # test, come from the piece's exact positions, unless it has no area.
+    exact = None
+    if scene.interpolate_from == "unsnapped" and scene.bits is not None:
+        exact = Piece(piece.verts, scene.vp, None)
+        if exact.D == 0:
+            exact = None
     guard = scene.clip_xy == "guard-band"
     for j in range(scene.height):
         sy2 = 2 * j + 1
@@ -223,17 +225,34 @@ def draw_piece(scene, index, original, interpolation, piece, frame, values):
             s = (F(sx2, 2), F(sy2, 2))
             if guard and not in_viewport(s[0], s[1], scene.vp):
                 continue
+            by = piece
+            if exact is not None and in_front(exact, s):
+                by = exact
             if per_sample:
-                lo = zlow[0] * sx2 + zlow[1] * sy2 + 2 * zlow[2]
-                hi = zhigh[0] * sx2 + zhigh[1] * sy2 + 2 * zhigh[2]
-                if not depth_in_range(lo, hi):
+                z = z_ndc(by, s)
+                if not depth_in_range(z, 1 - z):
                     continue
             cell = frame.setdefault((i, j), [0, None, None, None])
             cell[0] += 1
             cell[1] = index
             if values:
-                cell[2], cell[3] = sample_values(scene, original, interpolation, piece, s)
+                cell[2], cell[3] = sample_values(scene, original, interpolation, by, s)
     return frame
+
+
+def weights(piece, s):
+    """E_i(s)*k_i, divided by D (the signs cancel)."""
+    S = (s[0], s[1], F(1))
+    return [dot(piece.E[i], S) * piece.k[i] / piece.D for i in range(3)]
+
+
+def in_front(piece, s):
+    """Whether the piece's plane lies in front of the eye at s."""
+    return sum(weights(piece, s)) > 0
+
+
+def z_ndc(piece, s):
+    return sum(w * v[2] for w, v in zip(weights(piece, s), piece.verts))
 
 
 def sample_values(scene, original, interpolation, piece, s):
@@ -244,7 +263,7 @@ def sample_values(scene, original, interpolation, piece, s):
     z_ndc = sum(ek[i] * piece.verts[i][2] for i in range(3)) / piece.D
     vp = scene.vp
     depth = vp["min_depth"] + (vp["max_depth"] - vp["min_depth"]) * z_ndc
-    if scene.depth == "clamp":
+    if scene.depth == "clamp" or scene.interpolate_from == "unsnapped":
         lo, hi = sorted((vp["min_depth"], vp["max_depth"]))
         depth = min(max(depth, lo), hi)
     if interpolation == "flat":
