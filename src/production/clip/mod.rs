@@ -88,6 +88,7 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
         };
         draw.triangle(triangle, new, &mut frame);
     }
+    super::depth::store_all(scene.rules.depth_format, &mut frame);
     Ok(frame)
 }
 
@@ -148,6 +149,12 @@ impl Draw<'_> {
             self.plan,
             self.mapping,
         );
+        let values = match &rules.depth_bias {
+            Some(bias) if self.plan.depth => {
+                values.with_offset(bias, rules.depth_format, &piece, vertices, self.mapping)
+            }
+            _ => values,
+        };
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);
         let width = frame.width as usize;
