@@ -66,7 +66,8 @@ pub fn run_reference_with(
             elapsed: started.elapsed(),
         };
     }
-    let (frame, depth_allowed) = reference::render_judged(scene, &plan, reference::Arithmetic::Auto);
+    let (frame, depth_allowed) =
+        reference::render_judged(scene, &plan, reference::Arithmetic::Auto);
     let interior = scene
         .expect
         .watertight

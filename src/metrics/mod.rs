@@ -179,7 +179,9 @@ pub fn measure_known(
                     &computed
                 }
             };
-            channels.push(depth::measure(format, reference, candidate, allowed, values));
+            channels.push(depth::measure(
+                format, reference, candidate, allowed, values,
+            ));
         }
         (Some(exact), Some(values)) => {
             // A clip-space scene writes depths in the viewport's range,

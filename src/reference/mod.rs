@@ -310,7 +310,12 @@ pub fn render_judged(
                     }
                     if let Some(rules) = &depth_rules {
                         let zero = dashu_ratio::RBig::ZERO;
-                        store(&mut frame, allowed.as_mut(), slot, rules.store([&zero, &zero]));
+                        store(
+                            &mut frame,
+                            allowed.as_mut(),
+                            slot,
+                            rules.store([&zero, &zero]),
+                        );
                     }
                 }
                 _ => {}
@@ -335,7 +340,12 @@ pub fn depth_allowed(scene: &Scene, plan: &Plan) -> Option<Vec<[f64; 2]>> {
 }
 
 /// Writes a slot's stored depth and what it allows.
-fn store(frame: &mut Frame, allowed: Option<&mut Vec<[f64; 2]>>, slot: usize, stored: depth::Stored) {
+fn store(
+    frame: &mut Frame,
+    allowed: Option<&mut Vec<[f64; 2]>>,
+    slot: usize,
+    stored: depth::Stored,
+) {
     if let Some(depth) = frame.depth.as_mut() {
         depth[slot] = stored.value;
     }

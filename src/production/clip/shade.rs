@@ -131,14 +131,23 @@ impl Values {
         mapping: &Mapping,
     ) -> Values {
         let z_f = |px, py| {
-            let z_ndc = quotient(dot(&piece.at(px, py).big(), &self.depth), self.depth_over.clone());
+            let z_ndc = quotient(
+                dot(&piece.at(px, py).big(), &self.depth),
+                self.depth_over.clone(),
+            );
             mapping.depth(&z_ndc)
         };
         let origin = z_f(0, 0);
         let gradient = [z_f(1, 0), z_f(0, 1)].map(|z| (z - &origin).to_f64().value());
         let largest = vertices
             .iter()
-            .map(|v| mapping.depth(&(&v.clip[2] / &v.clip[3])).to_f64().value().abs())
+            .map(|v| {
+                mapping
+                    .depth(&(&v.clip[2] / &v.clip[3]))
+                    .to_f64()
+                    .value()
+                    .abs()
+            })
             .fold(0.0, f64::max);
         self.offset = depth::offset(bias, format, gradient, largest);
         self

@@ -75,28 +75,33 @@ where
             // The piece's offset (SPEC.md §18.2): the reader keeps every
             // w > 0 under depth_bias, so the piece is a screen triangle
             // whose depth z_f is a plane and whose vertices have a depth.
-            let offset = scene.rules.depth_bias.as_ref().filter(|_| with_values).map(|bias| {
-                let range = max_d - min_d;
-                let gradient = h.depth_gradient().map(|g| &range * g);
-                let largest = piece
-                    .iter()
-                    .map(|v| {
-                        let z_f = min_d + &range * (&v.c[2] / &v.c[3]);
-                        if z_f < RBig::ZERO {
-                            -z_f
-                        } else {
-                            z_f
-                        }
-                    })
-                    .max()
-                    .expect("three");
-                crate::reference::depth::offset_interval(
-                    bias,
-                    scene.rules.depth_format,
-                    &gradient,
-                    &largest,
-                )
-            });
+            let offset = scene
+                .rules
+                .depth_bias
+                .as_ref()
+                .filter(|_| with_values)
+                .map(|bias| {
+                    let range = max_d - min_d;
+                    let gradient = h.depth_gradient().map(|g| &range * g);
+                    let largest = piece
+                        .iter()
+                        .map(|v| {
+                            let z_f = min_d + &range * (&v.c[2] / &v.c[3]);
+                            if z_f < RBig::ZERO {
+                                -z_f
+                            } else {
+                                z_f
+                            }
+                        })
+                        .max()
+                        .expect("three");
+                    crate::reference::depth::offset_interval(
+                        bias,
+                        scene.rules.depth_format,
+                        &gradient,
+                        &largest,
+                    )
+                });
             let (mut xs, mut ys) = (columns.clone(), rows.clone());
             if let Some([x0, x1, y0, y1]) = &h.bounded {
                 xs = centres_between(&xs, x0, x1);

@@ -34,7 +34,13 @@ impl Reader<'_> {
                 return Ok(Number::ZERO);
             };
             let n = number(v, &p)?;
-            within(&n, &p, &-limit.clone(), &limit, &format!("depth_bias {key}"))?;
+            within(
+                &n,
+                &p,
+                &-limit.clone(),
+                &limit,
+                &format!("depth_bias {key}"),
+            )?;
             Ok(n)
         };
         Ok(DepthBias {
