@@ -353,3 +353,22 @@ fn rasterizers_without_an_attachment_refuse() {
         None
     );
 }
+
+/// Every case SPEC.md §18 names as a worked example exists and reads.
+#[test]
+fn the_worked_examples_spec_section_18_names_exist() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let spec = std::fs::read_to_string(root.join("SPEC.md")).unwrap();
+    let section = &spec[spec.find("## 18.").expect("§18")..];
+    let mut named = 0;
+    for piece in section.split('`') {
+        if let Some(id) = piece
+            .strip_prefix("cases/")
+            .and_then(|p| p.strip_suffix(".json"))
+        {
+            case(id);
+            named += 1;
+        }
+    }
+    assert!(named >= 12, "§18 names {named} cases");
+}
