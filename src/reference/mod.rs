@@ -333,7 +333,7 @@ pub fn render_judged(
 /// depth format (SPEC.md §18), `None` for `exact` depth: the second half
 /// of [`render_judged`].
 pub fn depth_allowed(scene: &Scene, plan: &Plan) -> Option<Vec<[f64; 2]>> {
-    if depth::DepthRules::new(scene).is_none() {
+    if scene.rules.depth_format == crate::scene::DepthFormat::Exact {
         return None;
     }
     render_judged(scene, plan, Arithmetic::Auto).1
