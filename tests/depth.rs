@@ -372,3 +372,54 @@ fn the_worked_examples_spec_section_18_names_exist() {
     }
     assert!(named >= 12, "§18 names {named} cases");
 }
+
+/// report.json names a case's depth rules (exact fractions) and a depth
+/// channel's misses; euc, which has no depth attachment, is unsupported.
+#[test]
+fn report_json_shows_the_depth_rules() {
+    use common::cli::{rastercheck, read_json, text, workspace};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let file = "cases/depth/spec_offset_constant.json";
+    let dir = workspace(
+        "depth-report",
+        &[(file, &std::fs::read_to_string(root.join(file)).unwrap())],
+    );
+    rastercheck(&dir, &["bless", "cases"]);
+    let out = rastercheck(
+        &dir,
+        &[
+            "run",
+            "cases",
+            "-r",
+            "production",
+            "-r",
+            "euc",
+            "-r",
+            "float-f32",
+            "--report",
+            "rep",
+        ],
+    );
+    let report = read_json(&dir.join("rep/report.json"));
+    let case = &report["cases"][0];
+    let depth = &case["rules"]["depth"];
+    assert_eq!(depth["depth_format"], "unorm16", "{}", text(&out));
+    assert_eq!(depth["depth_bias"]["constant"], "4");
+    assert_eq!(depth["depth_bias"]["clamp"], "0");
+    let result = |name: &str| {
+        case["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["rasterizer"] == name)
+            .unwrap()
+            .clone()
+    };
+    assert_eq!(result("production")["verdict"], "pass");
+    assert_eq!(result("euc")["verdict"], "unsupported");
+    // float-f32 interpolates without the offset or the grid: every sample
+    // misses, and the channel says how.
+    let channel = &result("float-f32")["metrics"]["channels"][0];
+    assert_eq!(channel["depth_set"]["format"], "unorm16", "{channel}");
+    assert_eq!(channel["depth_set"]["outside"], channel["samples"]);
+}
