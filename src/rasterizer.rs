@@ -28,6 +28,12 @@ pub struct Capabilities {
     /// Scenes whose vertices are in clip space (SPEC.md §16): clipped,
     /// divided and put through a viewport before they are rasterized.
     pub clip_space: bool,
+    /// Scenes with a depth format other than `exact` or a polygon offset
+    /// (SPEC.md §18, `Scene::depth_rules_need_attachment`): only a
+    /// rasterizer that writes a depth attachment of that format can follow
+    /// them. An adapter that reads the fragment shader's depth (which
+    /// carries neither offset nor quantization) sets this false.
+    pub depth_attachment: bool,
 }
 
 impl Capabilities {
@@ -41,6 +47,7 @@ impl Capabilities {
             antialias: true,
             motion_blur: true,
             clip_space: true,
+            depth_attachment: true,
         }
     }
 
@@ -56,6 +63,11 @@ impl Capabilities {
         if !self.clip_space && scene.in_clip_space() {
             return Some(
                 "this rasterizer takes screen-space vertices only, not clip space".to_owned(),
+            );
+        }
+        if !self.depth_attachment && scene.depth_rules_need_attachment() {
+            return Some(
+                "a depth format or polygon offset (SPEC.md §18) needs a depth attachment; this rasterizer reads the fragment's depth, which carries neither".to_owned(),
             );
         }
         if !self.motion_blur && scene.effects.motion_blur.is_some() && scene.moves() {

@@ -103,6 +103,7 @@ pub(crate) fn path_fill_capabilities() -> Capabilities {
         depth: false,
         motion_blur: false,
         clip_space: false,
+        depth_attachment: false,
         ..Capabilities::everything()
     }
 }

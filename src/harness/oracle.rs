@@ -33,6 +33,9 @@ pub struct ReferenceRun {
     /// coverage says ([`check_time`]), or why the oracle failed to compute
     /// it (then `frame` holds NaN, which no golden file matches).
     pub time: Option<Result<TimeCheck, String>>,
+    /// For scenes with a depth format (SPEC.md §18) only: the depths a
+    /// candidate may read back at each slot (`reference::render_judged`).
+    pub depth_allowed: Option<Vec<[f64; 2]>>,
     pub elapsed: Duration,
 }
 
@@ -59,10 +62,12 @@ pub fn run_reference_with(
             interior: None,
             areas: None,
             time: Some(time),
+            depth_allowed: None,
             elapsed: started.elapsed(),
         };
     }
-    let frame = reference::render(scene, &plan);
+    let (frame, depth_allowed) =
+        reference::render_judged(scene, &plan, reference::Arithmetic::Auto);
     let interior = scene
         .expect
         .watertight
@@ -74,6 +79,7 @@ pub fn run_reference_with(
         interior,
         areas,
         time: None,
+        depth_allowed,
         elapsed: started.elapsed(),
     }
 }

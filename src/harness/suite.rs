@@ -518,6 +518,7 @@ fn judge(
         classes: areas.as_ref().map(|a| a.classes.as_slice()),
         whole_time: time.map(|t| t.whole.as_slice()),
         part_areas: part_areas.as_deref(),
+        depth_allowed: reference.depth_allowed.as_deref(),
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the

@@ -16,10 +16,29 @@ pub struct ChannelError {
     /// The bound this channel is held to.
     pub allowed_abs: f64,
     pub allowed_ulp: Option<f64>,
+    /// Depth under a depth format (SPEC.md §18): the samples outside the
+    /// allowed set. `max_abs`, `max_ulp` and `rms` then measure the
+    /// distance from the allowed interval (0 inside), and `allowed_abs` is
+    /// 0: the set already holds §6.3's tolerance.
+    pub depth_set: Option<DepthSetMiss>,
+}
+
+/// How a candidate's depths miss the set a depth format allows.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DepthSetMiss {
+    /// `rules.depth_format`.
+    pub format: &'static str,
+    /// Samples whose depth is not on the unorm grid (0 for float32).
+    pub off_grid: u64,
+    /// Samples whose depth lies outside the allowed interval.
+    pub outside: u64,
 }
 
 impl ChannelError {
     pub fn within_bounds(&self) -> bool {
+        if let Some(miss) = &self.depth_set {
+            return miss.off_grid == 0 && miss.outside == 0;
+        }
         self.max_abs <= self.allowed_abs && self.allowed_ulp.is_none_or(|u| self.max_ulp <= u)
     }
 }
@@ -85,6 +104,7 @@ pub fn channel_error(
         rms,
         allowed_abs,
         allowed_ulp,
+        depth_set: None,
     }
 }
 

@@ -3,6 +3,7 @@
 
 pub mod antialias;
 pub mod coverage;
+pub mod depth;
 pub mod interpolation;
 pub mod line;
 pub mod parts;
@@ -10,7 +11,7 @@ pub mod time;
 pub mod watertight;
 
 use crate::frame::Frame;
-use crate::scene::{Number, Scene};
+use crate::scene::{DepthFormat, Number, Scene};
 
 pub use antialias::{AntialiasMetrics, AreaClass};
 pub use coverage::{CoverageMetrics, SampleDiff};
@@ -23,7 +24,7 @@ pub use watertight::WatertightMetrics;
 /// magnitude M: |error| ≤ 2^-16 · max(1, M) (SPEC.md, "Interpolation
 /// tolerance"). That is 128 f32 ulps of M: loose enough for any f32 plane
 /// setup, tight enough to catch a wrong weight, vertex or formula.
-pub const DEFAULT_RELATIVE_BOUND: f64 = 1.0 / 65536.0;
+pub const DEFAULT_RELATIVE_BOUND: f64 = crate::scene::depth::RELATIVE_BOUND;
 
 /// candidate − exact per pixel, a NaN error counted as infinite; empty when
 /// either is missing or they differ in length.
@@ -75,6 +76,10 @@ pub struct Known<'a> {
     /// Each primitive's exact area of each pixel it covers, for a candidate
     /// that gives its coverage per primitive (`reference::primitive_pixel_areas`).
     pub part_areas: Option<&'a [Vec<(u32, dashu_ratio::RBig)>]>,
+    /// The depths a candidate may read back at each slot, for a scene with
+    /// a depth format (`reference::render_judged`); computed here when not
+    /// given.
+    pub depth_allowed: Option<&'a [[f64; 2]]>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -160,21 +165,37 @@ pub fn measure_known(
         allowed_ulp: expect.max_ulp_error,
         ulp_floor: DEFAULT_RELATIVE_BOUND * magnitude.max(1.0),
     };
-    if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
-        // A clip-space scene writes depths in the viewport's range, within
-        // [0, 1] (SPEC.md §16.1), whatever its clip z.
-        let m = match &scene.viewport {
-            Some(viewport) => largest([&viewport.min_depth, &viewport.max_depth].into_iter()),
-            None => largest(scene.vertices().map(|v| &v.z)),
-        };
-        channels.push(interpolation::channel_error(
-            "depth",
-            reference,
-            candidate,
-            exact,
-            values,
-            bounds(m),
-        ));
+    let format = scene.rules.depth_format;
+    match (&reference.depth, &candidate.depth) {
+        (Some(_), Some(values)) if format != DepthFormat::Exact => {
+            // Judged against the set the format allows (SPEC.md §18.1).
+            let computed;
+            let allowed = match known.depth_allowed {
+                Some(allowed) => allowed,
+                None => {
+                    let plan = crate::plan::Plan::for_scene(scene);
+                    computed = crate::reference::depth_allowed(scene, &plan)
+                        .expect("a scene with a depth format");
+                    &computed
+                }
+            };
+            channels.push(depth::measure(
+                format, reference, candidate, allowed, values,
+            ));
+        }
+        (Some(exact), Some(values)) => {
+            // A clip-space scene writes depths in the viewport's range,
+            // within [0, 1] (SPEC.md §16.1), whatever its clip z.
+            channels.push(interpolation::channel_error(
+                "depth",
+                reference,
+                candidate,
+                exact,
+                values,
+                bounds(scene.depth_magnitude()),
+            ));
+        }
+        _ => {}
     }
     for (k, (exact, values)) in reference
         .attributes
@@ -243,7 +264,12 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
         }
     }
     for ch in &m.channels {
-        if !ch.within_bounds() {
+        if let (Some(miss), false) = (&ch.depth_set, ch.within_bounds()) {
+            out.push(format!(
+                "{}: {} samples outside the depths {} allows (largest distance {:.3e}), {} off its grid (SPEC.md §18)",
+                ch.channel, miss.outside, miss.format, ch.max_abs, miss.off_grid
+            ));
+        } else if !ch.within_bounds() {
             let ulp = ch
                 .allowed_ulp
                 .map(|u| format!(" or {u} ulp"))

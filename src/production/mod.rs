@@ -34,6 +34,7 @@
 
 pub mod antialias;
 pub mod clip;
+pub mod depth;
 pub mod fixed;
 pub mod foils;
 pub mod line;
@@ -107,7 +108,7 @@ impl Rasterizer for Production {
         scene: &'a Scene,
         plan: &'a Plan,
     ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
-        if plan.motion.is_some() || scene.in_clip_space() {
+        if plan.motion.is_some() || scene.in_clip_space() || scene.depth_rules_need_attachment() {
             return None;
         }
         Some(
@@ -130,7 +131,9 @@ pub(crate) fn rasterize_with(
     if plan.motion.is_some() {
         return motion::rasterize(scene, plan, sampling);
     }
-    draw_frame(scene, plan, sampling, |_| true)
+    let mut frame = draw_frame(scene, plan, sampling, |_| true)?;
+    depth::apply(scene, &mut frame);
+    Ok(frame)
 }
 
 /// Production's frame of the primitives `keep` selects (by index in the

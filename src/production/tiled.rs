@@ -56,6 +56,7 @@ impl Rasterizer for Tiled {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
+            depth_attachment: false,
             ..Production.capabilities()
         }
     }

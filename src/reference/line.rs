@@ -402,6 +402,12 @@ impl Region {
     }
 }
 
+/// The exact depth at a sample with parameter t, (1 − t)·z0 + t·z1.
+pub fn depth(line: &Line, t: &RBig) -> RBig {
+    let [v0, v1] = &line.vertices;
+    (RBig::ONE - t) * v0.z.as_rbig() + t * v1.z.as_rbig()
+}
+
 /// Writes exact depth and attributes at a sample with parameter t; a flat
 /// line takes vertex `provoking`'s values (SPEC.md §16.6).
 pub fn write(

@@ -14,6 +14,7 @@
 
 pub mod area;
 pub mod clip;
+pub mod depth;
 pub mod exact;
 pub mod grid;
 pub mod line;
@@ -214,8 +215,21 @@ pub fn render(scene: &Scene, plan: &Plan) -> Frame {
 
 /// [`render`] with a choice of integer arithmetic.
 pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame {
+    render_judged(scene, plan, arithmetic).0
+}
+
+/// The exact frame and, for a scene with a depth format (SPEC.md §18),
+/// the depths a candidate may read back at each slot ([`depth::Stored`];
+/// `None` for `exact` depth, judged by §6.3 against the frame): what the
+/// metrics judge a candidate's depth against. The frame's depth is then
+/// each slot's stored midpoint, the golden file's value.
+pub fn render_judged(
+    scene: &Scene,
+    plan: &Plan,
+    arithmetic: Arithmetic,
+) -> (Frame, Option<Vec<[f64; 2]>>) {
     if plan.motion.is_some() {
-        return motion::frame(scene, plan);
+        return (motion::frame(scene, plan), None);
     }
     // One slot per offset, whatever a hand-made plan says.
     let consistent;
@@ -241,6 +255,10 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
             _ => None,
         })
         .collect();
+    let depth_rules = depth::DepthRules::new(scene).filter(|_| plan.depth);
+    let mut allowed = depth_rules
+        .as_ref()
+        .map(|_| vec![[0.0; 2]; frame.sample_count()]);
     visit_samples(
         scene,
         plan.antialias.as_ref(),
@@ -250,11 +268,23 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
         |index, slot, exact| {
             frame.hit(slot, index);
             match (exact, &scene.primitives[index]) {
-                (Exact::Triangle(e, area), _) => values[index]
-                    .as_ref()
-                    .expect("prepared for triangles")
-                    .write(&mut frame, slot, plan, &e, &area),
+                (Exact::Triangle(e, area), _) => {
+                    let values = values[index].as_ref().expect("prepared for triangles");
+                    values.write(&mut frame, slot, plan, &e, &area);
+                    if let Some(rules) = &depth_rules {
+                        let z = values.depth(&e, &area);
+                        let stored = match rules.offset(index) {
+                            Some([lo, hi]) => rules.store([&(&z + lo), &(&z + hi)]),
+                            None => rules.store([&z, &z]),
+                        };
+                        store(&mut frame, allowed.as_mut(), slot, stored);
+                    }
+                }
                 (Exact::Clip(values), _) => {
+                    if let Some(rules) = &depth_rules {
+                        let [lo, hi] = &values.depth_interval;
+                        store(&mut frame, allowed.as_mut(), slot, rules.store([lo, hi]));
+                    }
                     if let Some(depth) = frame.depth.as_mut() {
                         depth[slot] = exact::to_f64_round_odd(&values.depth);
                     }
@@ -263,7 +293,12 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
                     }
                 }
                 (Exact::Line(t), Primitive::Line(line)) => {
-                    line::write(line, provoking_line, &mut frame, slot, plan, &t)
+                    line::write(line, provoking_line, &mut frame, slot, plan, &t);
+                    // Lines are never offset (SPEC.md §18.2).
+                    if let Some(rules) = &depth_rules {
+                        let z = line::depth(line, &t);
+                        store(&mut frame, allowed.as_mut(), slot, rules.store([&z, &z]));
+                    }
                 }
                 // A polygon's vertices carry z = 0 and no attributes.
                 (_, Primitive::Polygon(_)) => {
@@ -272,6 +307,15 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
                     }
                     for channel in &mut frame.attributes {
                         channel[slot] = 0.0;
+                    }
+                    if let Some(rules) = &depth_rules {
+                        let zero = dashu_ratio::RBig::ZERO;
+                        store(
+                            &mut frame,
+                            allowed.as_mut(),
+                            slot,
+                            rules.store([&zero, &zero]),
+                        );
                     }
                 }
                 _ => {}
@@ -282,7 +326,32 @@ pub fn render_with(scene: &Scene, plan: &Plan, arithmetic: Arithmetic) -> Frame 
         let areas = exact_areas(scene);
         frame.resolved = Some(areas.iter().map(area::to_f64_nearest).collect());
     }
-    frame
+    (frame, allowed)
+}
+
+/// The depths a candidate may read back at each slot of a scene with a
+/// depth format (SPEC.md §18), `None` for `exact` depth: the second half
+/// of [`render_judged`].
+pub fn depth_allowed(scene: &Scene, plan: &Plan) -> Option<Vec<[f64; 2]>> {
+    if scene.rules.depth_format == crate::scene::DepthFormat::Exact {
+        return None;
+    }
+    render_judged(scene, plan, Arithmetic::Auto).1
+}
+
+/// Writes a slot's stored depth and what it allows.
+fn store(
+    frame: &mut Frame,
+    allowed: Option<&mut Vec<[f64; 2]>>,
+    slot: usize,
+    stored: depth::Stored,
+) {
+    if let Some(depth) = frame.depth.as_mut() {
+        depth[slot] = stored.value;
+    }
+    if let Some(allowed) = allowed {
+        allowed[slot] = stored.allowed;
+    }
 }
 
 /// Samples in the interior of the union of the scene's primitives: those

@@ -338,6 +338,13 @@ impl VertexValues {
         }
     }
 
+    /// The exact depth at a covered sample (for the depth formats of
+    /// SPEC.md §18, which judge it before rounding).
+    pub fn depth(&self, e: &[IBig; 3], area: &IBig) -> RBig {
+        let weights = [&e[1], &e[2], &e[0]];
+        RBig::from_parts_signed(self.z.sum(&weights), area * &self.z.den)
+    }
+
     /// Writes exact depth and attributes at a covered sample. `e[i]` is the
     /// edge value of edge v[i]→v[i+1], which is the area-weighted barycentric
     /// weight of the opposite vertex v[i+2].

@@ -149,6 +149,35 @@ impl ClipInfo {
     }
 }
 
+/// A case's `rules.depth_format` and `rules.depth_bias`, the bias's
+/// numbers as the exact fractions the case gives.
+#[derive(Clone, Debug, Serialize)]
+pub struct DepthInfo {
+    pub depth_format: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth_bias: Option<DepthBiasInfo>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct DepthBiasInfo {
+    pub constant: String,
+    pub slope: String,
+    pub clamp: String,
+}
+
+impl DepthInfo {
+    fn of(scene: &Scene) -> Option<DepthInfo> {
+        scene.depth_rules_need_attachment().then(|| DepthInfo {
+            depth_format: scene.rules.depth_format.name(),
+            depth_bias: scene.rules.depth_bias.as_ref().map(|b| DepthBiasInfo {
+                constant: b.constant.to_exact_string(),
+                slope: b.slope.to_exact_string(),
+                clamp: b.clamp.to_exact_string(),
+            }),
+        })
+    }
+}
+
 #[derive(Clone, Debug, Serialize)]
 pub struct RulesInfo {
     pub canvas: [u32; 2],
@@ -159,6 +188,9 @@ pub struct RulesInfo {
     /// Clip-space cases only: their clip rules (SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clip: Option<ClipInfo>,
+    /// Cases with a depth format or polygon offset only (SPEC.md §18).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth: Option<DepthInfo>,
     pub primitives: usize,
     /// Antialiased cases only: `effects.antialias` as the case gives it.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -268,6 +300,17 @@ pub struct ChannelEntry {
     pub allowed_abs: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_ulp: Option<f64>,
+    /// Depth under a depth format (SPEC.md §18): the samples off its grid
+    /// and outside the allowed set (the distances above are from that set).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth_set: Option<DepthSetEntry>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct DepthSetEntry {
+    pub format: &'static str,
+    pub off_grid: u64,
+    pub outside: u64,
 }
 
 impl MetricsEntry {
@@ -303,6 +346,11 @@ impl MetricsEntry {
                     rms: ch.rms,
                     allowed_abs: ch.allowed_abs,
                     allowed_ulp: ch.allowed_ulp,
+                    depth_set: ch.depth_set.as_ref().map(|d| DepthSetEntry {
+                        format: d.format,
+                        off_grid: d.off_grid,
+                        outside: d.outside,
+                    }),
                 })
                 .collect(),
             antialias: m.antialias.clone(),
@@ -321,6 +369,7 @@ fn rules_info(scene: &Scene) -> RulesInfo {
         clip: scene
             .in_clip_space()
             .then(|| ClipInfo::of(&scene.rules.clip)),
+        depth: DepthInfo::of(scene),
         primitives: scene.primitives.len(),
         antialias: scene.effects.antialias.as_ref().map(|a| AntialiasRules {
             samples: a.samples,

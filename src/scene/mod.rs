@@ -32,6 +32,7 @@ macro_rules! case_names {
 
 pub mod case;
 pub mod clip;
+pub mod depth;
 pub mod number;
 pub mod rules;
 pub mod samples;
@@ -39,6 +40,7 @@ pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
 pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
+pub use depth::{DepthBias, DepthFormat};
 pub use number::Number;
 pub use rules::{
     Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,

@@ -7,6 +7,7 @@
 use std::fmt;
 
 use super::clip::ClipRules;
+use super::depth::{DepthBias, DepthFormat};
 
 /// Which edges own the samples that lie exactly on them.
 ///
@@ -276,6 +277,10 @@ pub struct Rules {
     /// How a clip-space scene is clipped (SPEC.md §16); screen-space
     /// scenes keep the defaults.
     pub clip: ClipRules,
+    /// How depth is stored (SPEC.md §18.1); `exact` unless the case says.
+    pub depth_format: DepthFormat,
+    /// Polygon offset (SPEC.md §18.2), when the case gives one.
+    pub depth_bias: Option<DepthBias>,
 }
 
 impl Default for Rules {
@@ -286,6 +291,8 @@ impl Default for Rules {
             cull: Cull::None,
             provoking_vertex: ProvokingVertex::First,
             clip: ClipRules::default(),
+            depth_format: DepthFormat::Exact,
+            depth_bias: None,
         }
     }
 }

@@ -551,6 +551,8 @@ impl Rasterizer for External {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
+            // The protocol carries no depth format or offset (SPEC.md §12).
+            depth_attachment: false,
             ..Capabilities::everything()
         }
     }

@@ -196,6 +196,7 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
+            depth_attachment: false,
             ..Capabilities::everything()
         }
     }

@@ -304,6 +304,8 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
         interior,
         areas,
         time: None,
+        // Fuzzed scenes state no depth format.
+        depth_allowed: None,
         elapsed: started.elapsed(),
     })
 }

@@ -95,6 +95,7 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
         };
         draw.triangle(triangle, new, &mut frame);
     }
+    super::depth::store_all(scene.rules.depth_format, &mut frame);
     Ok(frame)
 }
 
@@ -156,20 +157,28 @@ impl Draw<'_> {
         let Some(piece) = Piece::new(h, rules.fill_rule) else {
             return;
         };
-        let values_of = |piece: &Piece, h: &[Projected; 3]| {
-            Values::new(
+        let values_of = |piece: &Piece, h: &[Projected; 3], mapping: &Mapping| {
+            let values = Values::new(
                 piece,
                 h,
                 vertices,
                 triangle.interpolation,
                 flat,
                 self.plan,
-                self.mapping,
-            )
+                mapping,
+            );
+            match &rules.depth_bias {
+                Some(bias) if self.plan.depth => {
+                    values.with_offset(bias, rules.depth_format, piece, vertices, mapping)
+                }
+                _ => values,
+            }
         };
-        let values = values_of(&piece, h);
-        let unsnapped =
-            exact.and_then(|h| Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h), p)));
+        let values = values_of(&piece, h, self.mapping);
+        let unsnapped = exact.and_then(|h| {
+            let mapping = self.unsnapped.expect("exact positions come with their mapping");
+            Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h, mapping), p))
+        });
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);
         let width = frame.width as usize;

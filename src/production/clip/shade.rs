@@ -24,8 +24,9 @@ use super::homogeneous::{lcm_of_denominators, EdgeValues, Piece};
 use super::project::{Mapping, Projected};
 use crate::frame::Frame;
 use crate::plan::Plan;
+use crate::production::depth;
 use crate::production::setup::{self, Shading};
-use crate::scene::{Interpolation, Number, Triangle, Vertex};
+use crate::scene::{DepthBias, DepthFormat, Interpolation, Number, Triangle, Vertex};
 
 /// How a piece's values are found at a covered sample.
 #[derive(Clone, Debug)]
@@ -38,6 +39,8 @@ pub struct Values {
     /// Σ E_i·weight[i] is positive where the piece's plane lies in front
     /// of the eye.
     weight: [IBig; 3],
+    /// The piece's polygon offset (SPEC.md §18.2), added before the clamp.
+    offset: f64,
     how: How,
 }
 
@@ -114,6 +117,7 @@ impl Values {
             depth_over: IBig::from(q) * &piece.det,
             clamp,
             weight: integers(&weights).0,
+            offset: 0.0,
             how,
         }
     }
@@ -123,6 +127,41 @@ impl Values {
     /// covers it always does).
     pub fn in_front(&self, e: &EdgeValues) -> bool {
         dot(&e.big(), &self.weight) > IBig::ZERO
+    }
+
+    /// These values with the piece's polygon offset under `bias`
+    /// (SPEC.md §18.2): its plane's gradient exact, from the depth at three
+    /// pixel centres, and its largest |z_f| at a vertex (every w > 0
+    /// under an offset, the reader's rule).
+    pub fn with_offset(
+        mut self,
+        bias: &DepthBias,
+        format: DepthFormat,
+        piece: &Piece,
+        vertices: [&ClipVertex; 3],
+        mapping: &Mapping,
+    ) -> Values {
+        let z_f = |px, py| {
+            let z_ndc = quotient(
+                dot(&piece.at(px, py).big(), &self.depth),
+                self.depth_over.clone(),
+            );
+            mapping.depth(&z_ndc)
+        };
+        let origin = z_f(0, 0);
+        let gradient = [z_f(1, 0), z_f(0, 1)].map(|z| (z - &origin).to_f64().value());
+        let largest = vertices
+            .iter()
+            .map(|v| {
+                mapping
+                    .depth(&(&v.clip[2] / &v.clip[3]))
+                    .to_f64()
+                    .value()
+                    .abs()
+            })
+            .fold(0.0, f64::max);
+        self.offset = depth::offset(bias, format, gradient, largest);
+        self
     }
 
     /// Whether the sample's exact z_ndc lies in [0, 1] (`clip_z:
@@ -157,6 +196,9 @@ impl Values {
                     };
                 }
             }
+        }
+        if let (true, Some(out)) = (self.offset != 0.0, frame.depth.as_mut()) {
+            out[i] += self.offset;
         }
         if let (Some([lo, hi]), Some(out)) = (&self.clamp, frame.depth.as_mut()) {
             let (lo, hi) = (lo.to_f64().value(), hi.to_f64().value());

@@ -216,6 +216,22 @@ impl Homogeneous {
         num / RBig::from(&self.det * IBig::from(2))
     }
 
+    /// The gradient (∂z_ndc/∂x, ∂z_ndc/∂y) on the screen of the plane
+    /// z_ndc(s) = Σ E_i(s)·m_i·z_i / D of [`Homogeneous::depth`]: E_i at
+    /// S = (2·sx, 2·sy, 2) grows by 2·a_i per unit of sx (2·b_i of sy), and
+    /// `depth` divides by 2·D.
+    pub fn depth_gradient(&self) -> [RBig; 2] {
+        [0, 1].map(|k| {
+            let num = self
+                .vertices
+                .iter()
+                .zip(&self.edges)
+                .map(|(v, e)| &v.m * &v.z * RBig::from(e[k].clone()))
+                .fold(RBig::ZERO, |a, b| a + b);
+            num / RBig::from(self.det.clone())
+        })
+    }
+
     /// A perspective attribute: Σ E_i·m_i·a_i / Σ E_i·m_i.
     pub fn perspective(&self, e: &[IBig; 3], k: usize) -> RBig {
         self.sum(e, |v| &v.m * &v.attributes[k]) / self.weight(e)

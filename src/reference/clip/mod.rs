@@ -24,6 +24,10 @@ pub struct Values {
     /// z_f: z_ndc through the viewport's depth range (clamped under
     /// `depth: clamp`).
     pub depth: RBig,
+    /// The depth before the format (SPEC.md §18): z_f plus the piece's
+    /// offset interval under `depth_bias`, then clamped under `depth:
+    /// clamp`; [depth, depth] without an offset.
+    pub depth_interval: [RBig; 2],
     pub attributes: Vec<RBig>,
 }
 
@@ -76,6 +80,41 @@ where
             let unsnapped = (clip.values == InterpolateFrom::Unsnapped && bits.is_some())
                 .then(|| Homogeneous::new(&piece, viewport, None, rule))
                 .flatten();
+            // The piece's offset (SPEC.md §18.2), its slope read from the
+            // plane its depth is interpolated over: the reader keeps every
+            // w > 0 under depth_bias, so the piece is a screen triangle
+            // whose depth z_f is a plane and whose vertices have a depth.
+            let offset = scene
+                .rules
+                .depth_bias
+                .as_ref()
+                .filter(|_| with_values)
+                .map(|bias| {
+                    let range = max_d - min_d;
+                    let gradient = unsnapped
+                        .as_ref()
+                        .unwrap_or(&h)
+                        .depth_gradient()
+                        .map(|g| &range * g);
+                    let largest = piece
+                        .iter()
+                        .map(|v| {
+                            let z_f = min_d + &range * (&v.c[2] / &v.c[3]);
+                            if z_f < RBig::ZERO {
+                                -z_f
+                            } else {
+                                z_f
+                            }
+                        })
+                        .max()
+                        .expect("three");
+                    crate::reference::depth::offset_interval(
+                        bias,
+                        scene.rules.depth_format,
+                        &gradient,
+                        &largest,
+                    )
+                });
             let (mut xs, mut ys) = (columns.clone(), rows.clone());
             if let Some([x0, x1, y0, y1]) = &h.bounded {
                 xs = centres_between(&xs, x0, x1);
@@ -110,22 +149,35 @@ where
                     let pixel = (py * i64::from(canvas.width) + px) as usize;
                     let values = with_values.then(|| {
                         let z_ndc = z_ndc.expect("computed");
-                        let mut depth = min_d + (max_d - min_d) * z_ndc;
+                        let unclamped = min_d + (max_d - min_d) * z_ndc;
                         // Values from the unsnapped positions may reach a
                         // hair beyond a plane the snapped piece was cut
                         // by: the range holds them (SPEC.md §16.5).
-                        if clip.depth == DepthMode::Clamp
-                            || clip.values == InterpolateFrom::Unsnapped
-                        {
-                            depth = depth.clamp(depth_low.clone(), depth_high.clone());
-                        }
+                        let hold = clip.depth == DepthMode::Clamp
+                            || clip.values == InterpolateFrom::Unsnapped;
+                        let clamped = |depth: RBig| {
+                            if hold {
+                                depth.clamp(depth_low.clone(), depth_high.clone())
+                            } else {
+                                depth
+                            }
+                        };
+                        let depth_interval = match &offset {
+                            Some([lo, hi]) => [&unclamped + lo, &unclamped + hi].map(clamped),
+                            None => [0, 1].map(|_| clamped(unclamped.clone())),
+                        };
+                        let depth = clamped(unclamped);
                         let attributes = (0..flat.len())
                             .map(|k| match triangle.interpolation {
                                 Interpolation::Flat => flat[k].clone(),
                                 _ => v.perspective(&e, k),
                             })
                             .collect();
-                        Values { depth, attributes }
+                        Values {
+                            depth,
+                            depth_interval,
+                            attributes,
+                        }
                     });
                     visit(index, pixel, values);
                 }

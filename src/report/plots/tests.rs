@@ -159,6 +159,7 @@ fn rules(antialias: Option<(&'static str, u32)>, motion: Option<(&'static str, u
         cull: "none",
         provoking_vertex: "first",
         clip: None,
+        depth: None,
         primitives: 1,
         antialias: antialias.map(|(pattern, samples)| AntialiasRules {
             samples,
@@ -255,6 +256,7 @@ fn sweep() -> Report {
         rms: 1e-8,
         allowed_abs: 1e-5,
         allowed_ulp: None,
+        depth_set: None,
     });
     let mut exact = m.clone();
     exact.channels[0].max_ulp = 0.0;

@@ -15,7 +15,9 @@
 //! - `schema.rs`: the walk that maps each field of the format onto the
 //!   scene model;
 //! - `validate.rs`: documented ranges, and the checks across fields on the
-//!   whole scene.
+//!   whole scene;
+//! - `clip.rs` and `depth.rs`: the clip-space (§16) and depth (§18)
+//!   fields and their checks.
 //!
 //! This file holds the entry point, [`parse_case`], the run's [`Limits`]
 //! and the error it returns, [`CaseError`].
@@ -28,6 +30,7 @@ use super::rules::limits;
 use super::Scene;
 
 mod clip;
+mod depth;
 mod json;
 mod schema;
 mod validate;

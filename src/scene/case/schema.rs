@@ -94,6 +94,7 @@ impl Reader<'_> {
         };
         self.check_attribute_counts(&scene, &primitives_path)?;
         self.check_clip_space(&scene, &fields)?;
+        self.check_depth_rules(&scene)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
         Ok(scene)
@@ -145,6 +146,8 @@ impl Reader<'_> {
                 "clip_z",
                 "depth",
                 "interpolate_from",
+                "depth_format",
+                "depth_bias",
             ],
         )?;
         let mut rules = Rules::default();
@@ -178,6 +181,7 @@ impl Reader<'_> {
                 named(v, &p, ProvokingVertex::from_name, &ProvokingVertex::NAMES)?;
         }
         self.clip_rules(&fields, &mut rules.clip)?;
+        self.depth_rules(&fields, &mut rules)?;
         Ok(rules)
     }
 
