@@ -28,6 +28,8 @@ pub struct Capabilities {
     /// Scenes whose vertices are in clip space (SPEC.md §16): clipped,
     /// divided and put through a viewport before they are rasterized.
     pub clip_space: bool,
+    /// `point` primitives (SPEC.md §17).
+    pub points: bool,
 }
 
 impl Capabilities {
@@ -41,6 +43,7 @@ impl Capabilities {
             antialias: true,
             motion_blur: true,
             clip_space: true,
+            points: true,
         }
     }
 
