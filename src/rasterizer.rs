@@ -53,6 +53,9 @@ impl Capabilities {
         if !self.polygons && scene.has_polygons() {
             return Some("this rasterizer does not draw polygons".to_owned());
         }
+        if !self.points && scene.has_points() {
+            return Some("this rasterizer does not draw points".to_owned());
+        }
         if !self.antialias && scene.effects.antialias.is_some() {
             return Some("this rasterizer does not antialias".to_owned());
         }

@@ -149,6 +149,7 @@ impl Rasterizer for Euc {
             antialias: false,
             motion_blur: false,
             clip_space: false,
+            points: false,
             ..Capabilities::everything()
         }
     }

@@ -334,6 +334,13 @@ impl Scene {
             .any(|p| matches!(p, Primitive::Polygon(_)))
     }
 
+    /// Whether any primitive is a point (SPEC.md §17).
+    pub fn has_points(&self) -> bool {
+        self.primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Point(_)))
+    }
+
     /// Whether any primitive moves: only then is there a time loop.
     pub fn moves(&self) -> bool {
         self.primitives.iter().any(Primitive::moves)
@@ -385,7 +392,7 @@ impl Scene {
             && self.primitives.iter().any(|p| match p {
                 Primitive::Triangle(t) => t.interpolation == Interpolation::Flat,
                 Primitive::Line(l) => l.interpolation == Interpolation::Flat,
-                Primitive::Polygon(_) => false,
+                Primitive::Polygon(_) | Primitive::Point(_) => false,
             })
     }
 

@@ -288,6 +288,7 @@ impl Rasterizer for Softpipe {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
+            points: false,
             ..capabilities()
         }
     }
@@ -324,6 +325,7 @@ fn capabilities() -> Capabilities {
         polygons: true,
         motion_blur: true,
         clip_space: true,
+        points: false,
         ..gpu::capabilities(true)
     }
 }

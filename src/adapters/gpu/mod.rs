@@ -51,6 +51,7 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
         antialias,
         motion_blur: false,
         clip_space: false,
+        points: false,
         ..Capabilities::everything()
     }
 }

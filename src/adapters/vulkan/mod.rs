@@ -195,6 +195,7 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
+            points: false,
             ..Capabilities::everything()
         }
     }

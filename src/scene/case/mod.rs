@@ -8,14 +8,15 @@
 //! numbers exactly.
 
 //!
-//! The reader is in three rooms:
+//! The reader is in these rooms:
 //!
 //! - `json.rs`: the JSON access layer (paths, fields with "did you mean",
 //!   typed getters), which knows nothing of the format;
 //! - `schema.rs`: the walk that maps each field of the format onto the
 //!   scene model;
 //! - `validate.rs`: documented ranges, and the checks across fields on the
-//!   whole scene.
+//!   whole scene;
+//! - `clip.rs` and `point.rs`: clip space's and points' fields and checks.
 //!
 //! This file holds the entry point, [`parse_case`], the run's [`Limits`]
 //! and the error it returns, [`CaseError`].
@@ -29,6 +30,7 @@ use super::Scene;
 
 mod clip;
 mod json;
+mod point;
 mod schema;
 mod validate;
 

@@ -94,6 +94,7 @@ impl Reader<'_> {
         };
         self.check_attribute_counts(&scene, &primitives_path)?;
         self.check_clip_space(&scene, &fields)?;
+        self.check_points(&scene)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
         Ok(scene)
@@ -144,6 +145,7 @@ impl Reader<'_> {
                 "clip_xy",
                 "clip_z",
                 "depth",
+                "clip_points",
             ],
         )?;
         let mut rules = Rules::default();
@@ -211,6 +213,9 @@ impl Reader<'_> {
         }
         if value.get("polygon").is_some() || value.get("contours").is_some() {
             return self.polygon(value, path);
+        }
+        if value.get("point").is_some() {
+            return self.point(value, path);
         }
         let fields = Fields::new(value, path, &["triangle", "interpolation"])?;
         let (vertices, vertices_path) = fields.require("triangle")?;
@@ -392,7 +397,7 @@ impl Reader<'_> {
         }))
     }
 
-    fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
+    pub(super) fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
         match value {
             Value::Array(_) => {
                 let (x, y) = self.position(value, path)?;
@@ -767,6 +772,9 @@ fn seed(fields: &Fields) -> Result<u64> {
 
 /// Whether a primitive's JSON gives `z` on any vertex.
 fn mentions_depth(primitive: &Value) -> bool {
+    if let Some(vertex) = primitive.get("point") {
+        return vertex.get("z").is_some();
+    }
     ["triangle", "line"].iter().any(|kind| {
         primitive
             .get(kind)

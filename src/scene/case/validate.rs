@@ -171,6 +171,7 @@ impl Reader<'_> {
                     continue;
                 }
                 let why = match primitive {
+                    Primitive::Point(_) => "a moving point is not defined in this version (SPEC.md §17); move triangles or parallelogram lines",
                     Primitive::Polygon(_) => "a polygon cannot move in this version of rastercheck; move triangles or parallelogram lines",
                     Primitive::Line(line) if line.rule != LineRule::Parallelogram => "only parallelogram lines can move in this version of rastercheck (a midpoint or diamond-exit line chooses whole pixels at each instant, and a rectangle's corners are irrational)",
                     _ => continue,
