@@ -28,7 +28,7 @@ use super::fixed::{Fixed, Format, MAX_FRAC_BITS};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_POINT_SIZE};
-use crate::scene::{Canvas, ClipRules, DepthMode, FillRule, Number, Point, PointClip, Vertex};
+use crate::scene::{Canvas, DepthMode, FillRule, Number, Point, PointClip, Scene, Vertex};
 
 // The bounds the module doc states: a centre plus or minus half the side,
 // in units, fits in i64 with room to spare.
@@ -73,7 +73,9 @@ impl Half {
         // p > 0: truncation is the floor.
         let floor = &scaled / &q;
         let exact = &floor * &q == scaled;
-        let floor: i64 = (&floor).try_into().expect("size ≤ 1024: at most 2^26 units");
+        let floor: i64 = (&floor)
+            .try_into()
+            .expect("size ≤ 1024: at most 2^26 units");
         Half {
             floor,
             ceil: floor + i64::from(!exact),
@@ -93,9 +95,7 @@ fn span(x: Fixed, half: Half, ends: Ends, format: Format, side: u32) -> Range<i6
     // i·one ≥ x + low − one/2 and i·one ≤ x + high − one/2.
     let first = -(-(x.0 + low - one / 2)).div_euclid(one);
     let last = (x.0 + high - one / 2).div_euclid(one);
-    let first = first.max(0);
-    let end = (last + 1).min(i64::from(side));
-    first..end.max(first)
+    clamped(first, last, side)
 }
 
 /// The pixels of `0..side` whose centre i + ½ lies in [x − h, x + h] with
@@ -119,9 +119,16 @@ fn exact_span(x: &RBig, half: &RBig, ends: Ends, side: u32) -> Range<i64> {
         let limit = IBig::from(i64::from(side) + 1);
         i64::try_from(n.clamp(-limit.clone(), limit)).expect("clamped")
     };
-    let first = clamp(first).max(0);
-    let end = (clamp(last) + 1).min(i64::from(side));
-    first..end.max(first)
+    clamped(clamp(first), clamp(last), side)
+}
+
+/// first..=last limited to the canvas side 0..side; empty (and within it)
+/// when they do not meet.
+fn clamped(first: i64, last: i64, side: u32) -> Range<i64> {
+    let side = i64::from(side);
+    let first = first.clamp(0, side);
+    let end = (last + 1).clamp(first, side);
+    first..end
 }
 
 /// What a covered pixel gets: depth and attributes in f32, or nothing
@@ -198,14 +205,13 @@ pub(crate) fn draw(
 /// its whole square within the canvas (not the viewport).
 pub(crate) fn draw_clip(
     point: &Point,
+    scene: &Scene,
     mapping: &Mapping,
-    clip: ClipRules,
-    rule: FillRule,
     plan: &Plan,
-    canvas: Canvas,
     index: usize,
     frame: &mut Frame,
 ) {
+    let (clip, rule, canvas) = (scene.rules.clip, scene.rules.fill_rule, scene.canvas);
     let vertex = &point.vertices[0];
     let [x, y, z, w] = [&vertex.x, &vertex.y, &vertex.z, &vertex.w].map(Number::as_rbig);
     if *w <= RBig::ZERO {
@@ -250,7 +256,13 @@ mod tests {
         // 1.5 and 2.5 are the centres of pixels 1 and 2.
         let format = Format::snapped(4);
         let half = Half::new(&Number::ONE, format);
-        assert_eq!(half, Half { floor: 16, ceil: 16 });
+        assert_eq!(
+            half,
+            Half {
+                floor: 16,
+                ceil: 16
+            }
+        );
         let x = Fixed(64);
         let ends = |low, high| Ends { low, high };
         assert_eq!(span(x, half, ends(true, false), format, 8), 1..2);

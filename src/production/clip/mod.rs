@@ -77,16 +77,7 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
         let triangle = match primitive {
             Primitive::Triangle(triangle) => triangle,
             Primitive::Point(point) => {
-                super::point::draw_clip(
-                    point,
-                    &mapping,
-                    scene.rules.clip,
-                    scene.rules.fill_rule,
-                    plan,
-                    scene.canvas,
-                    index,
-                    &mut frame,
-                );
+                super::point::draw_clip(point, scene, &mapping, plan, index, &mut frame);
                 continue;
             }
             _ => {

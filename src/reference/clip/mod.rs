@@ -55,8 +55,7 @@ where
         if let Primitive::Point(point) = primitive {
             // Kept or discarded whole by its centre (SPEC.md §17.2); its
             // square is limited by the canvas only.
-            if let Some((square, values)) = super::point::clip_square(point, viewport, clip, bits)
-            {
+            if let Some((square, values)) = super::point::clip_square(point, viewport, clip, bits) {
                 super::point::visit(&square, rule, canvas, |pixel| {
                     visit(index, pixel, with_values.then(|| values.clone()))
                 });
