@@ -384,3 +384,46 @@ fn the_bundled_cases_pin_the_reference() {
         assert_eq!(reference(&s).covered_samples(), expected, "{name}");
     }
 }
+
+/// The bundled cases are what tools/gen_points.py writes (its exact model
+/// of §17 gives every `samples_covered`), and its two wrong models each
+/// change a pin (the generator asserts so before it compares).
+#[test]
+fn the_cases_are_the_generators() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = std::process::Command::new("python3")
+        .arg(root.join("tools/gen_points.py"))
+        .args(["--check", "-v"])
+        .current_dir(root)
+        .output()
+        .expect("python3 runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "gen_points.py --check:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("wrong model unsnapped changes"), "{stdout}");
+    assert!(stdout.contains("wrong model pops changes"), "{stdout}");
+}
+
+/// Every case SPEC.md §17 names exists, and it names the worked examples.
+#[test]
+fn the_worked_examples_spec_section_17_names_exist() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let spec = std::fs::read_to_string(root.join("SPEC.md")).expect("SPEC.md");
+    let section = &spec[spec.find("## 17. Points").expect("SPEC §17")..];
+    let mut named = Vec::new();
+    for (i, _) in section.match_indices("`cases/") {
+        let rest = &section[i + 1..];
+        let path = &rest[..rest.find('`').expect("closing backtick")];
+        assert!(root.join(path).is_file(), "SPEC §17 names {path}");
+        named.push(path);
+    }
+    for example in ["spec_square", "spec_clip_on_plane", "spec_clip_pop"] {
+        assert!(
+            named.iter().any(|p| p.contains(example)),
+            "SPEC §17 cites {example}: {named:?}"
+        );
+    }
+}
