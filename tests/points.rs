@@ -427,3 +427,33 @@ fn the_worked_examples_spec_section_17_names_exist() {
         );
     }
 }
+
+/// `fuzz --family clip` draws points too, under both side-plane rules; a
+/// scene with points reads back from the case file the fuzzer writes, and
+/// production draws it as the reference does.
+#[test]
+fn the_fuzz_clip_family_draws_points_that_round_trip() {
+    use rastercheck::explore::fuzz::{case_json, generate, Family};
+    let (mut with_points, mut rules) = (0, Vec::new());
+    for index in 0..150 {
+        let (_, s) = generate(7, index, Some(Family::Clip));
+        if !s.has_points() {
+            continue;
+        }
+        with_points += 1;
+        if !rules.contains(&s.rules.clip.points) {
+            rules.push(s.rules.clip.points);
+        }
+        let text = case_json(&s);
+        let back = scene(&text);
+        assert_eq!(case_json(&back), text);
+        same(
+            &reference(&back),
+            &draw(&Production, &back),
+            "production",
+            &text,
+        );
+    }
+    assert!(with_points > 20, "{with_points} scenes with points");
+    assert_eq!(rules.len(), 2, "{rules:?}");
+}
