@@ -318,20 +318,19 @@ fn wrong_point_rasterizers_are_caught_by_the_cases() {
     assert!(closed.contains(&"spec_square".to_owned()), "{closed:?}");
     assert!(closed.contains(&"ties_top_left".to_owned()), "{closed:?}");
     // Popping under guard-band, and guard-band under pop.
-    let popping = caught_by(|s| {
-        let mut s = s.clone();
-        s.rules.clip.points = PointClip::Pop;
-        draw(&Production, &s)
-    });
+    let under = |rule: PointClip| {
+        caught_by(move |s| {
+            let mut s = s.clone();
+            s.rules.clip.points = rule;
+            draw(&Production, &s)
+        })
+    };
+    let popping = under(PointClip::Pop);
     assert!(
         popping.contains(&"spec_clip_guard_band".to_owned()),
         "{popping:?}"
     );
-    let never_pops = caught_by(|s| {
-        let mut s = s.clone();
-        s.rules.clip.points = PointClip::GuardBand;
-        draw(&Production, &s)
-    });
+    let never_pops = under(PointClip::GuardBand);
     assert!(
         never_pops.contains(&"spec_clip_pop".to_owned()),
         "{never_pops:?}"

@@ -10,7 +10,7 @@ use crate::scene::{Point, Primitive, Scene};
 
 use super::json::{fail, number, Fields, Path, Result};
 use super::schema::Reader;
-use super::validate::within;
+use super::validate::positive_length;
 
 impl Reader<'_> {
     /// `{"point": <vertex>, "size": <number, default 1>}`: the vertex in any
@@ -28,16 +28,7 @@ impl Reader<'_> {
         let size = match fields.get("size") {
             Some((v, p)) => {
                 let size = number(v, &p)?;
-                if !size.is_positive() {
-                    return fail(&p, format!("a point size must be positive, found {size}"));
-                }
-                within(
-                    &size,
-                    &p,
-                    &Number::ZERO,
-                    &Number::from_int(limits::MAX_POINT_SIZE),
-                    "size",
-                )?;
+                positive_length(&size, &p, limits::MAX_POINT_SIZE, "a point size", "size")?;
                 size
             }
             None => Number::ONE,

@@ -20,7 +20,7 @@ use crate::scene::{
 };
 
 use super::json::{array, boolean, count, fail, kind, named, number, string, Fields, Path, Result};
-use super::validate::within;
+use super::validate::{positive_length, within};
 use super::Limits;
 
 /// The walk over one case file's JSON, under the run's limits.
@@ -281,16 +281,7 @@ impl Reader<'_> {
                     );
                 }
                 let w = number(v, &p)?;
-                if !w.is_positive() {
-                    return fail(&p, format!("a line width must be positive, found {w}"));
-                }
-                within(
-                    &w,
-                    &p,
-                    &Number::ZERO,
-                    &Number::from_int(limits::MAX_LINE_WIDTH),
-                    "width",
-                )?;
+                positive_length(&w, &p, limits::MAX_LINE_WIDTH, "a line width", "width")?;
                 w
             }
             None => Number::ONE,

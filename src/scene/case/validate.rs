@@ -34,6 +34,22 @@ pub(super) fn within(
     Ok(())
 }
 
+/// A length that must be positive and at most `high` pixels: a line's
+/// width, a point's size. `what` names it in the error ("a line width"),
+/// `short` in the range error ("width").
+pub(super) fn positive_length(
+    n: &Number,
+    path: &Path,
+    high: i64,
+    what: &str,
+    short: &str,
+) -> Result<()> {
+    if !n.is_positive() {
+        return fail(path, format!("{what} must be positive, found {n}"));
+    }
+    within(n, path, &Number::ZERO, &Number::from_int(high), short)
+}
+
 impl Reader<'_> {
     /// Every vertex of a case carries the same number of attributes, so that
     /// every pixel of the frame has the same channels.
