@@ -60,8 +60,10 @@ def inside(c, low, high, low_closed, high_closed):
 
 class Case:
     def __init__(self, name, description, primitives, width=16, height=16,
-                 bits=8, fill_rule="top-left", clip=None, viewport=None):
+                 bits=8, fill_rule="top-left", clip=None, viewport=None,
+                 watertight=False):
         self.name, self.description = name, description
+        self.watertight = watertight
         self.primitives = primitives
         self.width, self.height = width, height
         self.bits, self.fill_rule = bits, fill_rule
@@ -252,6 +254,12 @@ def cases():
              [{"triangle": [{"clip": ["-0.8", "-0.7", "0.5", 1]}, {"clip": ["0.8", "-0.6", "0.5", 1]}, {"clip": ["-0.5", "0.7", "0.5", 1]}]},
               cpt("0.5", "0.5", "0.25", 1, 4)], clip=CLIP),
     ]
+    out.append(Case("tiling_size2", "Sixteen size-2 points centred on the odd pixel corners (1, 1), (3, 1), ..., (7, 7) tile the 8 x 8 canvas: the squares [2i, 2i + 2] x [2j, 2j + 2] meet on pixel edges, no pixel centre lies on a side, and each of the 64 centres is covered exactly once (watertight).",
+                    [pt(2 * i + 1, 2 * j + 1, 2) for j in range(4) for i in range(4)],
+                    width=8, height=8, watertight=True))
+    out.append(Case("tiling_size1_ties", "Size-1 points centred on the pixel corners (i, j), i, j = 1..4: every side passes through pixel centres, and top-left gives each centre to exactly one square (the one whose left and top sides hold it): the 4 x 4 block of pixels 0..3 covered once each, watertight.",
+                    [pt(i, j) for j in range(1, 5) for i in range(1, 5)],
+                    width=6, height=6, watertight=True))
     for rule in ["top-left", "bottom-right", "top-right", "bottom-left", "all-edges"]:
         out.append(Case("ties_%s" % rule.replace("-", "_"),
                         "Size 1 centred on the pixel corner (3, 6): every side passes through pixel centres (columns 2 and 3, rows 5 and 6); %s owns %s." % (
@@ -303,7 +311,12 @@ def text(case):
     lines.append('  "primitives": [')
     lines.append(",\n".join("    " + js(p) for p in case.primitives))
     lines.append("  ],")
-    lines.append('  "expect": {"samples_covered": %d}' % covered(case))
+    if case.watertight:
+        # A mesh of squares: no sample covered twice, none left inside.
+        assert max(c for row in coverage(case) for c in row) == 1, case.name
+        lines.append('  "expect": {"watertight": true, "samples_covered": %d}' % covered(case))
+    else:
+        lines.append('  "expect": {"samples_covered": %d}' % covered(case))
     lines.append("}")
     return "\n".join(lines) + "\n"
 
