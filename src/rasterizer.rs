@@ -34,6 +34,8 @@ pub struct Capabilities {
     /// them. An adapter that reads the fragment shader's depth (which
     /// carries neither offset nor quantization) sets this false.
     pub depth_attachment: bool,
+    /// `point` primitives (SPEC.md §17).
+    pub points: bool,
 }
 
 impl Capabilities {
@@ -48,6 +50,7 @@ impl Capabilities {
             motion_blur: true,
             clip_space: true,
             depth_attachment: true,
+            points: true,
         }
     }
 
@@ -56,6 +59,9 @@ impl Capabilities {
     pub fn refuses(&self, scene: &Scene) -> Option<String> {
         if !self.polygons && scene.has_polygons() {
             return Some("this rasterizer does not draw polygons".to_owned());
+        }
+        if !self.points && scene.has_points() {
+            return Some("this rasterizer does not draw points".to_owned());
         }
         if !self.antialias && scene.effects.antialias.is_some() {
             return Some("this rasterizer does not antialias".to_owned());

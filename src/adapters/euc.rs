@@ -150,6 +150,7 @@ impl Rasterizer for Euc {
             motion_blur: false,
             clip_space: false,
             depth_attachment: false,
+            points: false,
             ..Capabilities::everything()
         }
     }

@@ -104,6 +104,7 @@ pub(crate) fn path_fill_capabilities() -> Capabilities {
         motion_blur: false,
         clip_space: false,
         depth_attachment: false,
+        points: false,
         ..Capabilities::everything()
     }
 }
@@ -114,11 +115,14 @@ pub(crate) fn triangles_only(scene: &Scene, library: &str) -> Result<(), RasterE
     match scene
         .primitives
         .iter()
-        .find(|p| matches!(p, Primitive::Line(_)))
+        .find(|p| matches!(p, Primitive::Line(_) | Primitive::Point(_)))
     {
         Some(Primitive::Line(l)) => Err(RasterError::Unsupported(format!(
             "{library} has no line rule equal to `{}` (SPEC.md §4); only triangles are drawn",
             l.rule.name()
+        ))),
+        Some(Primitive::Point(_)) => Err(RasterError::Unsupported(format!(
+            "{library} has no point primitive (SPEC.md §17); only triangles and paths are drawn"
         ))),
         _ => Ok(()),
     }
@@ -187,7 +191,7 @@ pub(crate) fn fill_paths(
                     .collect(),
                 even_odd: polygon.fill == PolygonFill::EvenOdd,
             }),
-            Primitive::Line(_) => unreachable!("refused by triangles_only"),
+            Primitive::Line(_) | Primitive::Point(_) => unreachable!("refused by triangles_only"),
         })
         .collect())
 }

@@ -21,6 +21,7 @@ fn coverage_only(triangles: bool) -> Capabilities {
         motion_blur: false,
         clip_space: false,
         depth_attachment: false,
+        points: false,
     }
 }
 

@@ -19,7 +19,8 @@
 //!      offsets);
 //!    - a line: `line/` (one file per rule; a parallelogram's two triangles
 //!      go through `setup.rs` and `traverse.rs` or `antialias/` too);
-//!    - a polygon: `polygon/` (scanline fill).
+//!    - a polygon: `polygon/` (scanline fill);
+//!    - a point: `point.rs` (a rectangle of whole pixels, SPEC.md §17).
 //! 4. An antialiased frame is resolved (`Frame::resolve`).
 //!
 //! A clip-space scene (SPEC.md §16) goes whole to `clip/` instead, whose
@@ -41,6 +42,7 @@ pub mod line;
 pub mod motion;
 pub mod mutants;
 mod placed;
+mod point;
 pub mod polygon;
 pub mod setup;
 mod sweep;
@@ -247,6 +249,16 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
             );
             polygon::draw::<E>(scene, plan, format, index, polygon, frame)?;
         }
+        Primitive::Point(p) => point::draw(
+            p,
+            points[0],
+            format,
+            scene.rules.fill_rule,
+            plan,
+            target.canvas,
+            index,
+            frame,
+        ),
     }
     Ok(())
 }

@@ -91,6 +91,7 @@ impl<'a> Placed<'a> {
                             [a, b, b]
                         }
                         Primitive::Polygon(_) => [[Fixed(0); 2]; 3],
+                        Primitive::Point(p) => [at(&p.vertices[0]); 3],
                     };
                     (index, points)
                 })

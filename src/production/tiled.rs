@@ -148,6 +148,7 @@ fn placed<'a>(
                     [a, b, b]
                 }
                 Primitive::Polygon(_) => unreachable!("polygons are drawn by production"),
+                Primitive::Point(p) => [at(&p.vertices[0]); 3],
             }
         })
         .collect();
@@ -188,8 +189,10 @@ fn bands_of(scene: &Scene, format: Format, p: usize, points: &[[Fixed; 2]; 3]) -
     let hi = points.iter().map(|q| q[1].0).max().unwrap().div_euclid(one);
     // A pixel row whose centre or square meets the extent lies within one
     // row of it; a wide line reaches its half width (and a rectangle's
-    // caps as much again) beyond its ends.
+    // caps as much again) beyond its ends, a point half its size (at most
+    // 512 pixels) beyond its centre.
     let margin = match &scene.primitives[p] {
+        Primitive::Point(point) => point.size.to_f64_lossy().ceil() as i64 / 2 + 2,
         Primitive::Line(l) => {
             let w = l.width.to_f64_lossy();
             if w.is_finite() && w < SAFE as f64 {

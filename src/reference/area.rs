@@ -192,6 +192,8 @@ fn outline(scene: &Scene, index: usize) -> Option<Outline> {
             })
         }
         Primitive::Line(_) => None,
+        // The reader refuses points in antialiased scenes (SPEC.md §17).
+        Primitive::Point(_) => None,
         Primitive::Polygon(polygon) => Some(Outline {
             edges: super::polygon::edges(polygon, &points)
                 .into_iter()

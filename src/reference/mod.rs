@@ -7,7 +7,8 @@
 //! it is written out.
 //!
 //! Triangles (`triangle.rs`), lines (`line.rs`) and polygons (`polygon.rs`)
-//! are visited at pixel centres on one integer grid (`grid.rs`); an
+//! are visited at pixel centres on one integer grid (`grid.rs`); points
+//! (`point.rs`) compare pixel centres with their square's exact sides; an
 //! antialiased scene is visited once per sample, moved so that the sample
 //! sits on the centre. Exact area coverage (`area.rs`) is computed only
 //! when the plan antialiases.
@@ -19,6 +20,7 @@ pub mod exact;
 pub mod grid;
 pub mod line;
 pub mod motion;
+pub mod point;
 pub mod polygon;
 pub mod triangle;
 
@@ -70,8 +72,9 @@ enum Exact {
     Triangle([IBig; 3], IBig),
     /// A line's interpolation parameter.
     Line(RBig),
-    /// A clip-space triangle's exact depth and attributes (SPEC.md §16.5).
-    Clip(Box<clip::Values>),
+    /// Exact depth and attributes at the sample: a clip-space triangle's
+    /// (SPEC.md §16.5), or a point's, the same at every sample (§17).
+    Values(Box<clip::Values>),
 }
 
 /// Visits every covered sample of every primitive under `rule`, in scene
@@ -95,7 +98,7 @@ fn visit_samples<F>(
             visit(
                 index,
                 pixel,
-                values.map_or(Exact::Nothing, |v| Exact::Clip(Box::new(v))),
+                values.map_or(Exact::Nothing, |v| Exact::Values(Box::new(v))),
             )
         });
     }
@@ -168,6 +171,17 @@ fn visit_scene<F>(
             Primitive::Polygon(polygon) => {
                 polygon::visit(grid, canvas, polygon, points, IBig::clone, rule, |p| {
                     visit(index, p, Exact::Nothing)
+                })
+            }
+            // The reader refuses points in antialiased scenes.
+            Primitive::Point(_) if antialiased => {}
+            Primitive::Point(p) => {
+                let values = with_values.then(|| point::screen_values(p));
+                point::visit(&point::screen_square(scene, p), rule, canvas, |pixel| {
+                    let exact = values
+                        .as_ref()
+                        .map_or(Exact::Nothing, |v| Exact::Values(Box::new(v.clone())));
+                    visit(index, pixel, exact)
                 })
             }
             Primitive::Line(line) if antialiased && line.rule != LineRule::Parallelogram => {}
@@ -280,7 +294,7 @@ pub fn render_judged(
                         store(&mut frame, allowed.as_mut(), slot, stored);
                     }
                 }
-                (Exact::Clip(values), _) => {
+                (Exact::Values(values), _) => {
                     if let Some(rules) = &depth_rules {
                         let [lo, hi] = &values.depth_interval;
                         store(&mut frame, allowed.as_mut(), slot, rules.store([lo, hi]));

@@ -101,6 +101,21 @@ case_names!(InterpolateFrom {
     Unsnapped => "unsnapped",
 });
 
+/// What the planes x = ±w and y = ±w do to a point (SPEC.md §17.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointClip {
+    /// A point whose centre lies outside them is discarded whole
+    /// ("popping"), as the Vulkan and OpenGL specifications clip points.
+    Pop,
+    /// They discard nothing: the square is drawn whatever its centre.
+    GuardBand,
+}
+
+case_names!(PointClip {
+    Pop => "pop",
+    GuardBand => "guard-band",
+});
+
 /// The clip-space conventions of a case, with their defaults.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ClipRules {
@@ -109,6 +124,8 @@ pub struct ClipRules {
     pub depth: DepthMode,
     /// The positions values are interpolated from.
     pub values: InterpolateFrom,
+    /// What the side planes do to a point.
+    pub points: PointClip,
 }
 
 impl Default for ClipRules {
@@ -118,6 +135,7 @@ impl Default for ClipRules {
             z: ClipZ::ClipThenSnap,
             depth: DepthMode::Clip,
             values: InterpolateFrom::Snapped,
+            points: PointClip::Pop,
         }
     }
 }

@@ -39,7 +39,7 @@ pub mod samples;
 pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
-pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
+pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport};
 pub use depth::{DepthBias, DepthFormat};
 pub use number::Number;
 pub use rules::{
@@ -88,6 +88,7 @@ pub enum Primitive {
     Triangle(Triangle),
     Line(Line),
     Polygon(Polygon),
+    Point(Point),
 }
 
 impl Primitive {
@@ -96,6 +97,7 @@ impl Primitive {
             Primitive::Triangle(t) => &t.vertices,
             Primitive::Line(l) => &l.vertices,
             Primitive::Polygon(p) => &p.vertices,
+            Primitive::Point(p) => &p.vertices,
         }
     }
 
@@ -104,6 +106,7 @@ impl Primitive {
             Primitive::Triangle(t) => &mut t.vertices,
             Primitive::Line(l) => &mut l.vertices,
             Primitive::Polygon(p) => &mut p.vertices,
+            Primitive::Point(p) => &mut p.vertices,
         }
     }
 
@@ -112,6 +115,7 @@ impl Primitive {
             Primitive::Triangle(t) => t.interpolation,
             Primitive::Line(l) => l.interpolation,
             Primitive::Polygon(_) => Interpolation::Linear,
+            Primitive::Point(_) => Interpolation::Flat,
         }
     }
 
@@ -126,6 +130,7 @@ impl Primitive {
             Primitive::Triangle(_) => "triangle",
             Primitive::Line(_) => "line",
             Primitive::Polygon(_) => "polygon",
+            Primitive::Point(_) => "point",
         }
     }
 }
@@ -177,6 +182,15 @@ impl Polygon {
 pub struct Triangle {
     pub vertices: [Vertex; 3],
     pub interpolation: Interpolation,
+}
+
+/// A point: the square of side `size` centred on its snapped position,
+/// with the vertex's depth and attributes everywhere (SPEC.md §17).
+#[derive(Clone, Debug)]
+pub struct Point {
+    pub vertices: [Vertex; 1],
+    /// The square's side in pixels, exact, in (0, 1024].
+    pub size: Number,
 }
 
 /// A vertex as written in the case, before any snapping. In a clip-space
@@ -322,6 +336,13 @@ impl Scene {
             .any(|p| matches!(p, Primitive::Polygon(_)))
     }
 
+    /// Whether any primitive is a point (SPEC.md §17).
+    pub fn has_points(&self) -> bool {
+        self.primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Point(_)))
+    }
+
     /// Whether any primitive moves: only then is there a time loop.
     pub fn moves(&self) -> bool {
         self.primitives.iter().any(Primitive::moves)
@@ -373,7 +394,7 @@ impl Scene {
             && self.primitives.iter().any(|p| match p {
                 Primitive::Triangle(t) => t.interpolation == Interpolation::Flat,
                 Primitive::Line(l) => l.interpolation == Interpolation::Flat,
-                Primitive::Polygon(_) => false,
+                Primitive::Polygon(_) | Primitive::Point(_) => false,
             })
     }
 

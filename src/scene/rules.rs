@@ -339,6 +339,8 @@ pub mod limits {
     pub const W_LIMIT: i64 = 1_000_000;
     /// Largest width of a wide line, in pixels.
     pub const MAX_LINE_WIDTH: i64 = 1024;
+    /// Largest side of a point's square, in pixels (SPEC.md §17.1).
+    pub const MAX_POINT_SIZE: i64 = 1024;
     /// Largest number of vertices of one polygon, all contours together.
     pub const MAX_POLYGON_VERTICES: usize = 4096;
 

@@ -547,12 +547,14 @@ impl Rasterizer for External {
     /// Everything: the program says what it does not do, case by case
     /// (`unsupported`, or its hello). Moving scenes go only to a program
     /// whose version 2 hello declares motion (SPEC.md §12.8); the adapter
-    /// refuses them itself, since only the hello says.
+    /// refuses them itself, since only the hello says. The protocol has no
+    /// point (SPEC.md §12), so points are refused.
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
             // The protocol carries no depth format or offset (SPEC.md §12).
             depth_attachment: false,
+            points: false,
             ..Capabilities::everything()
         }
     }
@@ -572,6 +574,11 @@ impl Rasterizer for External {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        // Checked here too, for callers that skip the harness: a request
+        // cannot carry a point.
+        if let Some(why) = self.capabilities().refuses(scene) {
+            return Err(RasterError::Unsupported(why));
+        }
         let mut timeout = self.timeout.clone().map_err(RasterError::Failed)?;
         let max_output = self.max_output.clone().map_err(RasterError::Failed)?;
         // The case's deadline (`--case-timeout`) stops the program too; the

@@ -89,6 +89,9 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
                     .collect::<Vec<_>>(),
                 "fill": polygon.fill.name(),
             }),
+            Primitive::Point(_) => {
+                unreachable!("the protocol has no point: External::rasterize refuses them first")
+            }
         })
         .collect();
     let mut plan_out = plan_json(plan);

@@ -297,6 +297,7 @@ impl Rasterizer for Softpipe {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
+            points: false,
             ..capabilities()
         }
     }
@@ -333,6 +334,7 @@ fn capabilities() -> Capabilities {
         polygons: true,
         motion_blur: true,
         clip_space: true,
+        points: false,
         ..gpu::capabilities(true)
     }
 }

@@ -52,6 +52,7 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
         motion_blur: false,
         clip_space: false,
         depth_attachment: false,
+        points: false,
         ..Capabilities::everything()
     }
 }

@@ -193,6 +193,11 @@ impl Rasterizer for Lavapipe {
 /// samples other than Vulkan's standard 4×, a line, unsnapped geometry or
 /// too many attributes.
 fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
+    if scene.has_points() {
+        return Err(RasterError::Unsupported(
+            "the wgpu adapter draws no points (wgpu has only 1-pixel points, no size)".to_owned(),
+        ));
+    }
     if let Some(aa) = &plan.antialias {
         if let Some(why) = standard_4x_refusal(aa) {
             return Err(RasterError::Unsupported(why));

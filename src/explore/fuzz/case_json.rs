@@ -7,7 +7,7 @@ use crate::scene::rules::limits::{CLIP_LIMIT, COORD_LIMIT, W_LIMIT};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{
     parse_case, DepthMode, InterpolateFrom, Interpolation, LastPixel, Limits, LineParameter,
-    LineRule, Number, Primitive, ProvokingVertex, Scene, Vertex,
+    LineRule, Number, PointClip, Primitive, ProvokingVertex, Scene, Vertex,
 };
 
 /// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
@@ -122,6 +122,13 @@ fn primitive_json(scene: &Scene, p: &Primitive) -> String {
     let vertices: Vec<String> = p.vertices().iter().map(|v| vertex_json(scene, v)).collect();
     let mut fields = match p {
         Primitive::Triangle(_) => vec![format!("\"triangle\": [{}]", vertices.join(", "))],
+        Primitive::Point(point) => {
+            let mut f = vec![format!("\"point\": {}", vertices[0])];
+            if point.size != Number::ONE {
+                f.push(format!("\"size\": {}", json_number(&point.size)));
+            }
+            f
+        }
         Primitive::Polygon(polygon) => {
             let contours: Vec<String> = polygon
                 .contours()
@@ -152,7 +159,10 @@ fn primitive_json(scene: &Scene, p: &Primitive) -> String {
             f
         }
     };
-    if !matches!(p, Primitive::Polygon(_)) && p.interpolation() != Interpolation::Perspective {
+    // A polygon and a point take no interpolation.
+    if !matches!(p, Primitive::Polygon(_) | Primitive::Point(_))
+        && p.interpolation() != Interpolation::Perspective
+    {
         fields.push(format!(
             "\"interpolation\": \"{}\"",
             p.interpolation().name()
@@ -270,6 +280,9 @@ pub fn case_json(scene: &Scene) -> String {
         rules.push(format!("\"depth\": \"{}\"", clip.depth.name()));
         if clip.values != InterpolateFrom::Snapped {
             rules.push(format!("\"interpolate_from\": \"{}\"", clip.values.name()));
+        }
+        if clip.points != PointClip::Pop {
+            rules.push(format!("\"clip_points\": \"{}\"", clip.points.name()));
         }
         viewport = format!(
             "  \"viewport\": {{ \"x\": {}, \"y\": {}, \"width\": {}, \"height\": {}, \"min_depth\": {}, \"max_depth\": {} }},\n",

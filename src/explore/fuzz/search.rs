@@ -92,11 +92,13 @@ fn describe_size(scene: &Scene) -> String {
     let triangles = count(|p| matches!(p, Primitive::Triangle(_)));
     let lines = count(|p| matches!(p, Primitive::Line(_)));
     let polygons = count(|p| matches!(p, Primitive::Polygon(_)));
+    let points = count(|p| matches!(p, Primitive::Point(_)));
     let mut parts = Vec::new();
     for (n, what) in [
         (triangles, "triangle"),
         (lines, "line"),
         (polygons, "polygon"),
+        (points, "point"),
     ] {
         if n > 0 {
             parts.push(format!("{n} {what}{}", if n == 1 { "" } else { "s" }));

@@ -16,7 +16,9 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference;
-use crate::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Scene};
+use crate::scene::{
+    ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, PointClip, Scene,
+};
 
 /// How many separating scenes the probe draws, and how many it looks
 /// through to find them.
@@ -51,6 +53,7 @@ fn combinations() -> [ClipRules; 4] {
         z,
         depth: DepthMode::Clip,
         values: InterpolateFrom::Snapped,
+        points: PointClip::Pop,
     };
     [
         c(ClipXy::GuardBand, ClipZ::ClipThenSnap),

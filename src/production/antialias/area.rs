@@ -38,6 +38,7 @@ impl Rasterizer for AreaF32 {
             depth: false,
             motion_blur: false,
             clip_space: false,
+            points: false,
             ..Capabilities::everything()
         }
     }
@@ -154,6 +155,11 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                 fill: polygon.fill,
                 index,
             }),
+            Primitive::Point(_) => {
+                return Err(RasterError::Unsupported(
+                    "points are not defined with antialiasing (SPEC.md §17)".to_owned(),
+                ))
+            }
         }
     }
     Ok(shapes)

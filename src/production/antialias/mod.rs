@@ -402,6 +402,7 @@ impl Rasterizer for AdaptiveRefine {
             motion_blur: false,
             // Clip-space scenes neither antialias nor reach its sampler.
             clip_space: false,
+            points: false,
             ..super::Production.capabilities()
         }
     }

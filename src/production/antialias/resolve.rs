@@ -41,6 +41,7 @@ impl Rasterizer for AdaptiveResolve {
             antialias: true,
             motion_blur: false,
             clip_space: false,
+            points: false,
             ..Production.capabilities()
         }
     }

@@ -1,6 +1,7 @@
 //! Production's clip-space path (SPEC.md §16): a scene whose vertices are
-//! homogeneous clip coordinates. A triangle flows through these files in
-//! order:
+//! homogeneous clip coordinates. A point is kept or discarded by its centre
+//! and drawn by `../point.rs` (§17.2); a triangle flows through these files
+//! in order:
 //!
 //! 1. [`draw_triangle`]: culling by the original triangle's D (§16.4),
 //!    whatever its pieces;
@@ -21,7 +22,7 @@
 
 pub mod clipper;
 mod homogeneous;
-mod project;
+pub(crate) mod project;
 mod shade;
 
 use dashu_ratio::RBig;
@@ -79,11 +80,18 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
             // The per-case time limit, polled every few primitives.
             crate::deadline::check();
         }
-        let Primitive::Triangle(triangle) = primitive else {
-            return Err(RasterError::Unsupported(format!(
-                "a clip-space case draws triangles only (SPEC.md §16.1), primitive {index} is a {}",
-                primitive.kind()
-            )));
+        let triangle = match primitive {
+            Primitive::Triangle(triangle) => triangle,
+            Primitive::Point(point) => {
+                super::point::draw_clip(point, scene, &mapping, plan, index, &mut frame);
+                continue;
+            }
+            _ => {
+                return Err(RasterError::Unsupported(format!(
+                    "a clip-space case draws triangles and points only (SPEC.md §16.1), primitive {index} is a {}",
+                    primitive.kind()
+                )))
+            }
         };
         let draw = Draw {
             scene,

@@ -51,6 +51,7 @@ impl Rasterizer for AnyCoverage {
             motion_blur: false,
             clip_space: false,
             depth_attachment: false,
+            points: false,
         }
     }
 

@@ -27,6 +27,7 @@ macro_rules! foil {
                     antialias: false,
                     motion_blur: false,
                     clip_space: false,
+                    points: false,
                     ..Production.capabilities()
                 }
             }

@@ -216,6 +216,7 @@ impl Rasterizer for PolygonMethod {
             antialias: false,
             motion_blur: false,
             clip_space: false,
+            points: false,
             ..Capabilities::everything()
         }
     }

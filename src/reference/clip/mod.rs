@@ -1,4 +1,5 @@
-//! Clip space (SPEC.md §16): each triangle is culled by its winding,
+//! Clip space (SPEC.md §16): a point is kept or discarded by its centre
+//! and drawn by `../point.rs` (§17.2); each triangle is culled by its winding,
 //! clipped against the planes the case clips (`clipper.rs`), fanned, and
 //! each piece rasterized by homogeneous edge functions (`homogeneous.rs`),
 //! with the planes the case does not clip tested at each sample.
@@ -20,6 +21,7 @@ use clipper::ClipVertex;
 use homogeneous::Homogeneous;
 
 /// The exact depth and attributes at a covered sample.
+#[derive(Clone, Debug)]
 pub struct Values {
     /// z_f: z_ndc through the viewport's depth range (clamped under
     /// `depth: clamp`).
@@ -56,6 +58,16 @@ where
     }
     for (index, primitive) in scene.primitives.iter().enumerate() {
         crate::deadline::check();
+        if let Primitive::Point(point) = primitive {
+            // Kept or discarded whole by its centre (SPEC.md §17.2); its
+            // square is limited by the canvas only.
+            if let Some((square, values)) = super::point::clip_square(point, viewport, clip, bits) {
+                super::point::visit(&square, rule, canvas, |pixel| {
+                    visit(index, pixel, with_values.then(|| values.clone()))
+                });
+            }
+            continue;
+        }
         let Primitive::Triangle(triangle) = primitive else {
             unreachable!("the reader refuses other primitives in clip space")
         };

@@ -1,12 +1,14 @@
 //! Reading clip space (SPEC.md §16): a vertex's `clip` coordinates, the
 //! `viewport`, the clip-space rules, and the checks that keep a case in
 //! one space: every vertex in clip space or none, and only what this
-//! version defines for clip space (triangles; no antialiasing, motion or
-//! `linear` interpolation).
+//! version defines for clip space (triangles and points; no antialiasing,
+//! motion or `linear` interpolation).
 
 use serde_json::Value;
 
-use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
+use crate::scene::clip::{
+    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport,
+};
 use crate::scene::number::Number;
 use crate::scene::rules::{limits, Interpolation};
 use crate::scene::{Canvas, Primitive, Scene, Vertex};
@@ -16,11 +18,17 @@ use super::schema::Reader;
 use super::validate::within;
 
 /// The rules that only a clip-space case may give.
-const CLIP_RULES: [&str; 4] = ["clip_xy", "clip_z", "depth", "interpolate_from"];
+const CLIP_RULES: [&str; 5] = [
+    "clip_xy",
+    "clip_z",
+    "depth",
+    "interpolate_from",
+    "clip_points",
+];
 
 impl Reader<'_> {
-    /// `rules.clip_xy`, `rules.clip_z`, `rules.depth` and
-    /// `rules.interpolate_from`.
+    /// `rules.clip_xy`, `rules.clip_z`, `rules.depth`,
+    /// `rules.interpolate_from` and `rules.clip_points`.
     pub(super) fn clip_rules(&self, fields: &Fields, clip: &mut ClipRules) -> Result<()> {
         if let Some((v, p)) = fields.get("clip_xy") {
             clip.xy = named(v, &p, ClipXy::from_name, &ClipXy::NAMES)?;
@@ -33,6 +41,9 @@ impl Reader<'_> {
         }
         if let Some((v, p)) = fields.get("interpolate_from") {
             clip.values = named(v, &p, InterpolateFrom::from_name, &InterpolateFrom::NAMES)?;
+        }
+        if let Some((v, p)) = fields.get("clip_points") {
+            clip.points = named(v, &p, PointClip::from_name, &PointClip::NAMES)?;
         }
         if let (DepthMode::Clamp, Some((_, p))) = (clip.depth, fields.get("clip_z")) {
             return fail(
@@ -176,12 +187,12 @@ impl Reader<'_> {
                         "linear (screen-space) interpolation is not defined for clip-space triangles in this version (SPEC.md §16.6); use perspective or flat",
                     )
                 }
-                Primitive::Triangle(_) => {}
+                Primitive::Triangle(_) | Primitive::Point(_) => {}
                 other => {
                     return fail(
                         &primitives.index(i),
                         format!(
-                            "a clip-space case draws triangles; clip-space {}s are not defined in this version (SPEC.md §16)",
+                            "a clip-space case draws triangles and points; clip-space {}s are not defined in this version (SPEC.md §16)",
                             other.kind()
                         ),
                     )
@@ -205,13 +216,19 @@ impl Reader<'_> {
     }
 }
 
-/// The path of the first triangle or line vertex given in clip space
-/// (`clip == true`) or in screen space (`clip == false`); a polygon's
-/// vertices are screen-space positions.
+/// The path of the first triangle, line or point vertex given in clip
+/// space (`clip == true`) or in screen space (`clip == false`); a
+/// polygon's vertices are screen-space positions.
 fn first_vertex(root: &Fields, clip: bool) -> Option<Path> {
     let primitives = root.map.get("primitives")?.as_array()?;
     let base = Path::root().key("primitives");
     for (i, primitive) in primitives.iter().enumerate() {
+        if let Some(vertex) = primitive.get("point") {
+            if vertex.get("clip").is_some() == clip {
+                return Some(base.index(i).key("point"));
+            }
+            continue;
+        }
         for kind in ["triangle", "line", "polygon", "contours"] {
             let Some(vertices) = primitive.get(kind).and_then(Value::as_array) else {
                 continue;

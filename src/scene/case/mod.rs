@@ -8,7 +8,7 @@
 //! numbers exactly.
 
 //!
-//! The reader is in three rooms:
+//! The reader is in these rooms:
 //!
 //! - `json.rs`: the JSON access layer (paths, fields with "did you mean",
 //!   typed getters), which knows nothing of the format;
@@ -16,8 +16,8 @@
 //!   scene model;
 //! - `validate.rs`: documented ranges, and the checks across fields on the
 //!   whole scene;
-//! - `clip.rs` and `depth.rs`: the clip-space (§16) and depth (§18)
-//!   fields and their checks.
+//! - `clip.rs`, `point.rs` and `depth.rs`: the clip-space (§16), point
+//!   (§17) and depth (§18) fields and their checks.
 //!
 //! This file holds the entry point, [`parse_case`], the run's [`Limits`]
 //! and the error it returns, [`CaseError`].
@@ -32,6 +32,7 @@ use super::Scene;
 mod clip;
 mod depth;
 mod json;
+mod point;
 mod schema;
 mod validate;
 

@@ -20,7 +20,7 @@ use crate::scene::{
 };
 
 use super::json::{array, boolean, count, fail, kind, named, number, string, Fields, Path, Result};
-use super::validate::within;
+use super::validate::{positive_length, within};
 use super::Limits;
 
 /// The walk over one case file's JSON, under the run's limits.
@@ -95,6 +95,7 @@ impl Reader<'_> {
         self.check_attribute_counts(&scene, &primitives_path)?;
         self.check_clip_space(&scene, &fields)?;
         self.check_depth_rules(&scene)?;
+        self.check_points(&scene)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
         Ok(scene)
@@ -148,6 +149,7 @@ impl Reader<'_> {
                 "interpolate_from",
                 "depth_format",
                 "depth_bias",
+                "clip_points",
             ],
         )?;
         let mut rules = Rules::default();
@@ -217,6 +219,9 @@ impl Reader<'_> {
         if value.get("polygon").is_some() || value.get("contours").is_some() {
             return self.polygon(value, path);
         }
+        if value.get("point").is_some() {
+            return self.point(value, path);
+        }
         let fields = Fields::new(value, path, &["triangle", "interpolation"])?;
         let (vertices, vertices_path) = fields.require("triangle")?;
         let list = array(vertices, &vertices_path)?;
@@ -281,16 +286,7 @@ impl Reader<'_> {
                     );
                 }
                 let w = number(v, &p)?;
-                if !w.is_positive() {
-                    return fail(&p, format!("a line width must be positive, found {w}"));
-                }
-                within(
-                    &w,
-                    &p,
-                    &Number::ZERO,
-                    &Number::from_int(limits::MAX_LINE_WIDTH),
-                    "width",
-                )?;
+                positive_length(&w, &p, limits::MAX_LINE_WIDTH, "a line width", "width")?;
                 w
             }
             None => Number::ONE,
@@ -397,7 +393,7 @@ impl Reader<'_> {
         }))
     }
 
-    fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
+    pub(super) fn vertex(&self, value: &Value, path: &Path) -> Result<Vertex> {
         match value {
             Value::Array(_) => {
                 let (x, y) = self.position(value, path)?;
@@ -772,6 +768,9 @@ fn seed(fields: &Fields) -> Result<u64> {
 
 /// Whether a primitive's JSON gives `z` on any vertex.
 fn mentions_depth(primitive: &Value) -> bool {
+    if let Some(vertex) = primitive.get("point") {
+        return vertex.get("z").is_some();
+    }
     ["triangle", "line"].iter().any(|kind| {
         primitive
             .get(kind)

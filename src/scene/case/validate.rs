@@ -34,6 +34,22 @@ pub(super) fn within(
     Ok(())
 }
 
+/// A length that must be positive and at most `high` pixels: a line's
+/// width, a point's size. `what` names it in the error ("a line width"),
+/// `short` in the range error ("width").
+pub(super) fn positive_length(
+    n: &Number,
+    path: &Path,
+    high: i64,
+    what: &str,
+    short: &str,
+) -> Result<()> {
+    if !n.is_positive() {
+        return fail(path, format!("{what} must be positive, found {n}"));
+    }
+    within(n, path, &Number::ZERO, &Number::from_int(high), short)
+}
+
 impl Reader<'_> {
     /// Every vertex of a case carries the same number of attributes, so that
     /// every pixel of the frame has the same channels.
@@ -171,6 +187,7 @@ impl Reader<'_> {
                     continue;
                 }
                 let why = match primitive {
+                    Primitive::Point(_) => "a moving point is not defined in this version (SPEC.md §17); move triangles or parallelogram lines",
                     Primitive::Polygon(_) => "a polygon cannot move in this version of rastercheck; move triangles or parallelogram lines",
                     Primitive::Line(line) if line.rule != LineRule::Parallelogram => "only parallelogram lines can move in this version of rastercheck (a midpoint or diamond-exit line chooses whole pixels at each instant, and a rectangle's corners are irrational)",
                     _ => continue,

@@ -1,14 +1,17 @@
 //! The `clip` family (SPEC.md §16): one to four triangles in clip space,
-//! some sharing an edge, with vertices behind the eye, on the w = 0 plane,
+//! and in a third of the scenes one to three points after them (§17), the
+//! triangles some sharing an edge, with vertices behind the eye, on the w = 0 plane,
 //! across the near and far planes, at extreme ratios of w; a viewport that
 //! is the canvas, smaller, offset or fractional; every clip convention,
 //! depth clip or clamp, either provoking vertex.
 
 use super::common::{any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
-use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, Viewport};
+use crate::scene::clip::{
+    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport,
+};
 use crate::scene::rules::{limits::CLIP_LIMIT, ProvokingVertex};
-use crate::scene::{Canvas, Interpolation, Number, Primitive, Scene, Triangle, Vertex};
+use crate::scene::{Canvas, Interpolation, Number, Point, Primitive, Scene, Triangle, Vertex};
 
 pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
     let side = |rng: &mut Rng| rng.range(4, 33) as u32;
@@ -44,6 +47,7 @@ pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
         z: *rng.pick(&ClipZ::ALL),
         depth: *rng.pick(&[DepthMode::Clip, DepthMode::Clip, DepthMode::Clamp]),
         values: *rng.pick(&InterpolateFrom::ALL),
+        points: PointClip::Pop,
     };
     if rules.clip.depth == DepthMode::Clamp {
         rules.clip.z = ClipZ::ClipThenSnap;
@@ -51,6 +55,20 @@ pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
     rules.provoking_vertex = *rng.pick(&ProvokingVertex::ALL);
     let mut scene = scene_of(canvas, rules, primitives, &values);
     scene.viewport = Some(viewport(rng, canvas));
+    // Points (SPEC.md §17) in a third of the scenes, drawn after the
+    // triangles, under either rule for the side planes. Drawn from the
+    // generator last, so that a seed's triangles are those it drew before
+    // points were added.
+    if rng.chance(1, 3) {
+        for _ in 0..rng.range(1, 4) {
+            let size = *rng.pick(&[(1, 1), (2, 1), (3, 1), (1, 2), (19, 4), (1, 3), (8, 1)]);
+            scene.primitives.push(Primitive::Point(Point {
+                vertices: [clip_vertex(rng, &values)],
+                size: Number::ratio(size.0, size.1),
+            }));
+        }
+        scene.rules.clip.points = *rng.pick(&PointClip::ALL);
+    }
     scene
 }
 
