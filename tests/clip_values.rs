@@ -67,6 +67,7 @@ fn unsnapped_values_are_those_of_the_scene_drawn_unsnapped() {
             z: ClipZ::ALL[(round / 2) % 2],
             depth: [DepthMode::Clip, DepthMode::Clamp][(round / 4) % 2],
             values: InterpolateFrom::Unsnapped,
+            ..ClipRules::default()
         };
         let scene = random_scene(&mut rng, clip);
         let unsnapped = render(&scene);
@@ -114,6 +115,7 @@ fn production_follows_interpolate_from() {
             z: ClipZ::ALL[(round / 2) % 2],
             depth: DepthMode::Clip,
             values: InterpolateFrom::ALL[(round / 4) % 2],
+            ..ClipRules::default()
         };
         let scene = random_scene(&mut rng, clip);
         let (_, run) = common::run(&scene, &rastercheck::production::Production);
