@@ -295,15 +295,16 @@ pub fn render_judged(
                     }
                 }
                 (Exact::Values(values), _) => {
-                    if let Some(rules) = &depth_rules {
-                        let [lo, hi] = &values.depth_interval;
-                        store(&mut frame, allowed.as_mut(), slot, rules.store([lo, hi]));
-                    }
                     if let Some(depth) = frame.depth.as_mut() {
                         depth[slot] = exact::to_f64_round_odd(&values.depth);
                     }
                     for (channel, value) in frame.attributes.iter_mut().zip(&values.attributes) {
                         channel[slot] = exact::to_f64_round_odd(value);
+                    }
+                    // The stored depth replaces the exact one (SPEC.md §18).
+                    if let Some(rules) = &depth_rules {
+                        let [lo, hi] = &values.depth_interval;
+                        store(&mut frame, allowed.as_mut(), slot, rules.store([lo, hi]));
                     }
                 }
                 (Exact::Line(t), Primitive::Line(line)) => {
