@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, Primitive, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -28,6 +28,8 @@ pub struct Capabilities {
     /// Scenes whose vertices are in clip space (SPEC.md §16): clipped,
     /// divided and put through a viewport before they are rasterized.
     pub clip_space: bool,
+    /// `point` primitives (SPEC.md §17).
+    pub points: bool,
 }
 
 impl Capabilities {
@@ -41,6 +43,7 @@ impl Capabilities {
             antialias: true,
             motion_blur: true,
             clip_space: true,
+            points: true,
         }
     }
 
@@ -49,6 +52,14 @@ impl Capabilities {
     pub fn refuses(&self, scene: &Scene) -> Option<String> {
         if !self.polygons && scene.has_polygons() {
             return Some("this rasterizer does not draw polygons".to_owned());
+        }
+        if !self.points
+            && scene
+                .primitives
+                .iter()
+                .any(|p| matches!(p, Primitive::Point(_)))
+        {
+            return Some("this rasterizer does not draw points".to_owned());
         }
         if !self.antialias && scene.effects.antialias.is_some() {
             return Some("this rasterizer does not antialias".to_owned());

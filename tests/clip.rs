@@ -54,12 +54,14 @@ fn conventions() -> Vec<ClipRules> {
                 xy,
                 z,
                 depth: DepthMode::Clip,
+                ..ClipRules::default()
             });
         }
         all.push(ClipRules {
             xy,
             z: ClipZ::ClipThenSnap,
             depth: DepthMode::Clamp,
+            ..ClipRules::default()
         });
     }
     all
@@ -179,6 +181,7 @@ fn a_triangle_cut_in_two_covers_what_it_covers_whole() {
             xy: ClipXy::GuardBand,
             z: ClipZ::PerSample,
             depth: DepthMode::Clip,
+            ..ClipRules::default()
         };
         let clamp = ClipRules {
             depth: DepthMode::Clamp,
@@ -379,6 +382,7 @@ fn a_rasterizers_own_clipping_is_judged_and_named() {
         xy: ClipXy::GuardBand,
         z: ClipZ::PerSample,
         depth: DepthMode::Clip,
+        ..ClipRules::default()
     };
     let scene = common::case("clip/spec_near_clip_then_snap");
     assert_eq!(scene.rules.clip.z, ClipZ::ClipThenSnap);

@@ -678,12 +678,14 @@ fn production_draws_clip_space_as_the_reference_does() {
                     xy,
                     z,
                     depth: DepthMode::Clip,
+                    ..ClipRules::default()
                 });
             }
             conventions.push(ClipRules {
                 xy,
                 z: ClipZ::ClipThenSnap,
                 depth: DepthMode::Clamp,
+                ..ClipRules::default()
             });
         }
         for clip in conventions {

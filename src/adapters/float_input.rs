@@ -187,6 +187,7 @@ pub(crate) fn fill_paths(
                 even_odd: polygon.fill == PolygonFill::EvenOdd,
             }),
             Primitive::Line(_) => unreachable!("refused by triangles_only"),
+            Primitive::Point(_) => unreachable!("refused by Capabilities::refuses"),
         })
         .collect())
 }

@@ -20,6 +20,7 @@ fn coverage_only(triangles: bool) -> Capabilities {
         antialias: false,
         motion_blur: false,
         clip_space: false,
+        points: false,
     }
 }
 

@@ -327,7 +327,7 @@ fn longest_line(outcome: &CaseOutcome) -> f64 {
                     let dy = b.y.to_f64_lossy() - a.y.to_f64_lossy();
                     Some(dx.hypot(dy))
                 }
-                Primitive::Triangle(_) | Primitive::Polygon(_) => None,
+                Primitive::Triangle(_) | Primitive::Polygon(_) | Primitive::Point(_) => None,
             })
             .fold(0.0, f64::max)
     })

@@ -244,6 +244,11 @@ pub(crate) fn draw_primitive<E: EdgeInt>(
             );
             polygon::draw::<E>(scene, plan, format, index, polygon, frame)?;
         }
+        Primitive::Point(_) => {
+            return Err(RasterError::Unsupported(
+                "production draws no points".to_owned(),
+            ))
+        }
     }
     Ok(())
 }

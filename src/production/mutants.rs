@@ -206,7 +206,7 @@ impl Mutation {
                     let interpolation = match primitive {
                         Primitive::Triangle(t) => &mut t.interpolation,
                         Primitive::Line(l) => &mut l.interpolation,
-                        Primitive::Polygon(_) => continue,
+                        Primitive::Polygon(_) | Primitive::Point(_) => continue,
                     };
                     if *interpolation == Interpolation::Perspective {
                         *interpolation = Interpolation::Linear;

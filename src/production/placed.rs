@@ -90,7 +90,7 @@ impl<'a> Placed<'a> {
                             let [a, b] = l.vertices.each_ref().map(at);
                             [a, b, b]
                         }
-                        Primitive::Polygon(_) => [[Fixed(0); 2]; 3],
+                        Primitive::Polygon(_) | Primitive::Point(_) => [[Fixed(0); 2]; 3],
                     };
                     (index, points)
                 })

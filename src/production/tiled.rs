@@ -147,6 +147,7 @@ fn placed<'a>(
                     [a, b, b]
                 }
                 Primitive::Polygon(_) => unreachable!("polygons are drawn by production"),
+                Primitive::Point(_) => unreachable!("production refuses points"),
             }
         })
         .collect();

@@ -191,7 +191,7 @@ fn outline(scene: &Scene, index: usize) -> Option<Outline> {
                 simple: true,
             })
         }
-        Primitive::Line(_) => None,
+        Primitive::Line(_) | Primitive::Point(_) => None,
         Primitive::Polygon(polygon) => Some(Outline {
             edges: super::polygon::edges(polygon, &points)
                 .into_iter()

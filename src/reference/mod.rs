@@ -170,6 +170,9 @@ fn visit_scene<F>(
                 })
             }
             Primitive::Line(line) if antialiased && line.rule != LineRule::Parallelogram => {}
+            Primitive::Point(_) => {
+                unimplemented!("points are drawn on the points branch (SPEC.md §17)")
+            }
             Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, |p, t| {
                 visit(
                     index,

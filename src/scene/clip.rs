@@ -83,12 +83,29 @@ case_names!(DepthMode {
     Clamp => "clamp",
 });
 
+/// What the planes x = ±w and y = ±w do to a point (SPEC.md §17.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointClip {
+    /// A point whose centre lies outside them is discarded whole
+    /// ("popping"), as the Vulkan and OpenGL specifications clip points.
+    Pop,
+    /// They discard nothing: the square is drawn whatever its centre.
+    GuardBand,
+}
+
+case_names!(PointClip {
+    Pop => "pop",
+    GuardBand => "guard-band",
+});
+
 /// The clip-space conventions of a case, with their defaults.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ClipRules {
     pub xy: ClipXy,
     pub z: ClipZ,
     pub depth: DepthMode,
+    /// What the side planes do to a point.
+    pub points: PointClip,
 }
 
 impl Default for ClipRules {
@@ -97,6 +114,7 @@ impl Default for ClipRules {
             xy: ClipXy::GuardBand,
             z: ClipZ::ClipThenSnap,
             depth: DepthMode::Clip,
+            points: PointClip::Pop,
         }
     }
 }

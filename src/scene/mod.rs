@@ -38,7 +38,7 @@ pub mod samples;
 pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
-pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, Viewport};
+pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, PointClip, Viewport};
 pub use number::Number;
 pub use rules::{
     Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
@@ -86,6 +86,7 @@ pub enum Primitive {
     Triangle(Triangle),
     Line(Line),
     Polygon(Polygon),
+    Point(Point),
 }
 
 impl Primitive {
@@ -94,6 +95,7 @@ impl Primitive {
             Primitive::Triangle(t) => &t.vertices,
             Primitive::Line(l) => &l.vertices,
             Primitive::Polygon(p) => &p.vertices,
+            Primitive::Point(p) => &p.vertices,
         }
     }
 
@@ -102,6 +104,7 @@ impl Primitive {
             Primitive::Triangle(t) => &mut t.vertices,
             Primitive::Line(l) => &mut l.vertices,
             Primitive::Polygon(p) => &mut p.vertices,
+            Primitive::Point(p) => &mut p.vertices,
         }
     }
 
@@ -110,6 +113,7 @@ impl Primitive {
             Primitive::Triangle(t) => t.interpolation,
             Primitive::Line(l) => l.interpolation,
             Primitive::Polygon(_) => Interpolation::Linear,
+            Primitive::Point(_) => Interpolation::Flat,
         }
     }
 
@@ -124,6 +128,7 @@ impl Primitive {
             Primitive::Triangle(_) => "triangle",
             Primitive::Line(_) => "line",
             Primitive::Polygon(_) => "polygon",
+            Primitive::Point(_) => "point",
         }
     }
 }
@@ -175,6 +180,15 @@ impl Polygon {
 pub struct Triangle {
     pub vertices: [Vertex; 3],
     pub interpolation: Interpolation,
+}
+
+/// A point: the square of side `size` centred on its snapped position,
+/// with the vertex's depth and attributes everywhere (SPEC.md §17).
+#[derive(Clone, Debug)]
+pub struct Point {
+    pub vertices: [Vertex; 1],
+    /// The square's side in pixels, exact, in (0, 1024].
+    pub size: Number,
 }
 
 /// A vertex as written in the case, before any snapping. In a clip-space
@@ -371,7 +385,7 @@ impl Scene {
             && self.primitives.iter().any(|p| match p {
                 Primitive::Triangle(t) => t.interpolation == Interpolation::Flat,
                 Primitive::Line(l) => l.interpolation == Interpolation::Flat,
-                Primitive::Polygon(_) => false,
+                Primitive::Polygon(_) | Primitive::Point(_) => false,
             })
     }
 

@@ -223,6 +223,7 @@ pub fn departures(
         xy,
         z,
         depth: DepthMode::Clip,
+        ..ClipRules::default()
     };
     let plan = Plan::for_scene(&scene);
     let reference = rastercheck::reference::render(&scene, &plan);

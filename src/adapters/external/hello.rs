@@ -214,6 +214,7 @@ impl Hello {
                 Primitive::Triangle(_) => "triangles",
                 Primitive::Line(_) => "lines",
                 Primitive::Polygon(_) => "polygons",
+                Primitive::Point(_) => "points",
             };
             if lacks(&self.primitives, kind) {
                 return Some(format!(

@@ -89,6 +89,9 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
                     .collect::<Vec<_>>(),
                 "fill": polygon.fill.name(),
             }),
+            Primitive::Point(p) => {
+                json!({ "point": vertex(&p.vertices[0]), "size": float(&p.size) })
+            }
         })
         .collect();
     let mut plan_out = plan_json(plan);

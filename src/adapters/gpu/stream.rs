@@ -160,6 +160,7 @@ impl Stream {
                     stream.close(draw, 2);
                 }
                 Primitive::Polygon(p) => stream.polygon(p, id, place),
+                Primitive::Point(_) => unreachable!("refused by Capabilities::refuses"),
             }
         }
         stream

@@ -122,6 +122,11 @@ fn primitive_json(scene: &Scene, p: &Primitive) -> String {
     let vertices: Vec<String> = p.vertices().iter().map(|v| vertex_json(scene, v)).collect();
     let mut fields = match p {
         Primitive::Triangle(_) => vec![format!("\"triangle\": [{}]", vertices.join(", "))],
+        Primitive::Point(p) => vec![format!(
+            "\"point\": {}, \"size\": {}",
+            vertices[0],
+            json_number(&p.size)
+        )],
         Primitive::Polygon(polygon) => {
             let contours: Vec<String> = polygon
                 .contours()

@@ -16,7 +16,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference;
-use crate::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, Scene};
+use crate::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, PointClip, Scene};
 
 /// How many separating scenes the probe draws, and how many it looks
 /// through to find them.
@@ -50,6 +50,7 @@ fn combinations() -> [ClipRules; 4] {
         xy,
         z,
         depth: DepthMode::Clip,
+        points: PointClip::Pop,
     };
     [
         c(ClipXy::GuardBand, ClipZ::ClipThenSnap),

@@ -154,6 +154,11 @@ fn shapes(scene: &Scene) -> Result<Vec<Shape>, RasterError> {
                 fill: polygon.fill,
                 index,
             }),
+            Primitive::Point(_) => {
+                return Err(RasterError::Unsupported(
+                    "area-f32 draws no points".to_owned(),
+                ))
+            }
         }
     }
     Ok(shapes)

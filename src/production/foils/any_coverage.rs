@@ -50,6 +50,7 @@ impl Rasterizer for AnyCoverage {
             antialias: false,
             motion_blur: false,
             clip_space: false,
+            points: false,
         }
     }
 

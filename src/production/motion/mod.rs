@@ -181,6 +181,9 @@ impl Mover {
                     "polygons cannot move (SPEC.md §15.1)".to_owned(),
                 ))
             }
+            Primitive::Point(_) => {
+                return Err(RasterError::Unsupported("points cannot move".to_owned()))
+            }
         };
         // The box of every vertex at the shutter's two ends.
         let [open, close] =

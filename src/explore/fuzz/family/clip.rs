@@ -6,7 +6,7 @@
 
 use super::common::{any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
-use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, Viewport};
+use crate::scene::clip::{ClipRules, ClipXy, ClipZ, DepthMode, PointClip, Viewport};
 use crate::scene::rules::{limits::CLIP_LIMIT, ProvokingVertex};
 use crate::scene::{Canvas, Interpolation, Number, Primitive, Scene, Triangle, Vertex};
 
@@ -43,6 +43,7 @@ pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
         xy: *rng.pick(&ClipXy::ALL),
         z: *rng.pick(&ClipZ::ALL),
         depth: *rng.pick(&[DepthMode::Clip, DepthMode::Clip, DepthMode::Clamp]),
+        points: PointClip::Pop,
     };
     if rules.clip.depth == DepthMode::Clamp {
         rules.clip.z = ClipZ::ClipThenSnap;

@@ -195,7 +195,7 @@ mod tests {
                             }
                         }
                         Primitive::Line(l) => lines |= l.rule == LineRule::Parallelogram,
-                        Primitive::Triangle(_) => {}
+                        Primitive::Triangle(_) | Primitive::Point(_) => {}
                     }
                 }
                 if let Some(a) = &scene.effects.antialias {

@@ -55,7 +55,7 @@ impl Shrinker<'_> {
                 match p {
                     Primitive::Triangle(t) => t.interpolation = Interpolation::Perspective,
                     Primitive::Line(l) => l.interpolation = Interpolation::Perspective,
-                    Primitive::Polygon(_) => {}
+                    Primitive::Polygon(_) | Primitive::Point(_) => {}
                 }
                 changed
             }));
@@ -67,7 +67,7 @@ impl Shrinker<'_> {
                     l.parameter = LineParameter::Major;
                     before != (l.width.clone(), l.last_pixel, l.parameter)
                 }
-                Primitive::Triangle(_) | Primitive::Polygon(_) => false,
+                Primitive::Triangle(_) | Primitive::Polygon(_) | Primitive::Point(_) => false,
             }));
             for option in 0..3 {
                 edits.push(Box::new(move |s| match &mut s.primitives[i] {
@@ -82,7 +82,7 @@ impl Shrinker<'_> {
                                 != LineParameter::Major
                         }
                     },
-                    Primitive::Triangle(_) | Primitive::Polygon(_) => false,
+                    Primitive::Triangle(_) | Primitive::Polygon(_) | Primitive::Point(_) => false,
                 }));
             }
         }
