@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, Primitive, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, PointClip, Primitive, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -155,6 +155,16 @@ pub trait Rasterizer: Send + Sync {
     /// for [`Rasterizer::fixed_fill_rule`]. `None` for a rasterizer that
     /// follows each case's.
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        None
+    }
+
+    /// What the side planes do to points (`clip_points`, SPEC.md §17) in
+    /// this rasterizer whatever a case states, when it cannot follow the
+    /// case's: a clip-space case with points under another is judged
+    /// under this, and reported as such, as for
+    /// [`Rasterizer::fixed_clip_rules`]. `None` for a rasterizer that
+    /// follows each case's.
+    fn fixed_point_clip(&self) -> Option<PointClip> {
         None
     }
 

@@ -108,11 +108,13 @@ pub(crate) fn print_outcome(
         if let (Some(clip), Some(scene)) = (result.judged_clip, &outcome.scene) {
             let stated = scene.rules.clip;
             method.push_str(&format!(
-                " (judged under its own clipping, {} and {}; the case states {} and {})",
+                " (judged under its own clipping, {}, {} and points {}; the case states {}, {} and points {})",
                 clip.xy.name(),
                 clip.z.name(),
+                clip.points.name(),
                 stated.xy.name(),
-                stated.z.name()
+                stated.z.name(),
+                stated.points.name()
             ));
         }
         outln!(

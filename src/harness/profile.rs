@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipRules, DepthMode, FillRule, Scene};
+use crate::scene::{ClipRules, DepthMode, FillRule, Primitive, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -180,7 +180,8 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
 /// case states another, and for a clip-space case under depth clip its
 /// fixed `clip_xy` and `clip_z` where the case states others (under
-/// depth clamp `clip_z` means nothing; `clip_xy` still does).
+/// depth clamp `clip_z` means nothing; `clip_xy` still does), and for a
+/// clip-space case with points its fixed `clip_points`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
@@ -194,19 +195,24 @@ impl OwnConventions {
         let fill_rule = candidate
             .fixed_fill_rule()
             .filter(|&rule| rule != scene.rules.fill_rule);
-        let clip = candidate
-            .fixed_clip_rules()
-            .filter(|_| scene.in_clip_space())
-            .map(|(xy, z)| ClipRules {
-                xy,
-                z: if scene.rules.clip.depth == DepthMode::Clip {
-                    z
-                } else {
-                    scene.rules.clip.z
-                },
-                ..scene.rules.clip
-            })
-            .filter(|&clip| clip != scene.rules.clip);
+        let stated = scene.rules.clip;
+        let mut clip = stated;
+        if scene.in_clip_space() {
+            if let Some((xy, z)) = candidate.fixed_clip_rules() {
+                clip.xy = xy;
+                if stated.depth == DepthMode::Clip {
+                    clip.z = z;
+                }
+            }
+            let has_points = scene
+                .primitives
+                .iter()
+                .any(|p| matches!(p, Primitive::Point(_)));
+            if let Some(points) = candidate.fixed_point_clip().filter(|_| has_points) {
+                clip.points = points;
+            }
+        }
+        let clip = (clip != stated).then_some(clip);
         OwnConventions { fill_rule, clip }
     }
 
@@ -236,9 +242,10 @@ impl OwnConventions {
         }
         if let Some(clip) = self.clip {
             words.push(format!(
-                "clip_xy {} and clip_z {}",
+                "clip_xy {}, clip_z {} and clip_points {}",
                 clip.xy.name(),
-                clip.z.name()
+                clip.z.name(),
+                clip.points.name()
             ));
         }
         words.join(" and ")

@@ -135,6 +135,8 @@ pub struct ClipInfo {
     pub clip_xy: &'static str,
     pub clip_z: &'static str,
     pub depth: &'static str,
+    /// What the side planes do to points (SPEC.md §17).
+    pub clip_points: &'static str,
 }
 
 impl ClipInfo {
@@ -143,6 +145,7 @@ impl ClipInfo {
             clip_xy: clip.xy.name(),
             clip_z: clip.z.name(),
             depth: clip.depth.name(),
+            clip_points: clip.points.name(),
         }
     }
 }

@@ -219,7 +219,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, PointClip, Scene};
 
 use super::gpu;
 use context::{ask_for_softpipe, context, with_context};
@@ -265,6 +265,14 @@ impl Rasterizer for Gl {
         Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
     }
 
+    /// GL lets the driver choose. llvmpipe pops no point: it draws one
+    /// whose centre is outside the side planes (measured, `tests/gl/`),
+    /// but limits its square to the viewport rectangle, so the adapter
+    /// refuses a square reaching outside it (`gpu::points`).
+    fn fixed_point_clip(&self) -> Option<PointClip> {
+        Some(PointClip::GuardBand)
+    }
+
     fn declared(&self) -> Option<String> {
         declared()
     }
@@ -283,11 +291,13 @@ impl Rasterizer for Softpipe {
         SOFTPIPE
     }
 
-    /// llvmpipe's, but clip space: softpipe's clipping conventions have not
-    /// been measured (`tests/gl/` measures llvmpipe's), so it claims none.
+    /// llvmpipe's, but clip space and points: softpipe's clipping and
+    /// point conventions have not been measured (`tests/gl/` measures
+    /// llvmpipe's), so it claims neither.
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
+            points: false,
             ..capabilities()
         }
     }
@@ -324,6 +334,7 @@ fn capabilities() -> Capabilities {
         polygons: true,
         motion_blur: true,
         clip_space: true,
+        points: true,
         ..gpu::capabilities(true)
     }
 }
@@ -394,7 +405,32 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32
     if softpipe {
         ask_for_softpipe();
     }
+    if let Some(why) = point_refusal(scene) {
+        return Err(RasterError::Unsupported(why));
+    }
     Ok(bits)
+}
+
+/// Why Mesa's GL cannot draw a point of the scene as the rule's square
+/// (`gpu::points`), if it cannot: the context's point sizes, on llvmpipe's
+/// grid of 8 subpixel bits.
+fn point_refusal(scene: &Scene) -> Option<String> {
+    let mut points = gpu::points::points(scene).peekable();
+    points.peek()?;
+    let gl = match context() {
+        Ok(gl) => gl,
+        Err(why) => return Some(format!("no context to ask for point sizes: {why}")),
+    };
+    let offers = {
+        let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        gpu::points::PointOffers {
+            large: true,
+            range: gl.point_range,
+            granularity: gl.point_granularity,
+            subpixel_bits: 8,
+        }
+    };
+    points.find_map(|p| gpu::points::refusal(scene, p, &offers))
 }
 
 /// Sets the scene up, clears, draws and reads back, with the context held

@@ -14,6 +14,8 @@
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod clip;
 mod passes;
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+pub(crate) mod points;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod time;
@@ -51,6 +53,7 @@ pub(crate) fn capabilities(antialias: bool) -> Capabilities {
         antialias,
         motion_blur: false,
         clip_space: false,
+        points: false,
         ..Capabilities::everything()
     }
 }

@@ -1,0 +1,110 @@
+//! Which points a driver draws exactly as SPEC.md §17's square, and why it
+//! does not draw the others (the `vulkan` and `gl` adapters'; measured on
+//! Mesa's llvmpipe and lavapipe, `notes_points_drivers.md`):
+//!
+//! - the size must be one the driver draws: in its range, on its
+//!   granularity from the range's low end, an f32, and 1 without large
+//!   points;
+//! - at least one pixel: Mesa draws a smaller point one pixel wide (its
+//!   rasterizer takes the size as at least 1), where the rule's square
+//!   may cover no sample;
+//! - half the size on the driver's subpixel grid, so that the corners
+//!   X ± size/2 of a snapped centre are on it and nothing is rounded;
+//! - in clip space, the square within the viewport rectangle: Mesa draws
+//!   a point whose centre is outside the side planes (no popping) but
+//!   limits its square to the viewport rectangle, which the rule does not
+//!   (a point's square may reach outside the viewport, §17). Inside it the
+//!   two agree, whatever the case's `clip_points`: a centre outside the
+//!   planes puts the square outside the rectangle.
+
+use dashu_ratio::RBig;
+
+use super::super::float_input::{f32_of, snapped};
+use crate::scene::{Number, Point, Scene};
+
+/// What a driver offers for points.
+pub(crate) struct PointOffers {
+    /// Sizes other than 1 (Vulkan's `largePoints`; GL always).
+    pub large: bool,
+    /// The sizes it draws, and their step from the low end.
+    pub range: [f32; 2],
+    pub granularity: f32,
+    /// The subpixel grid its rasterizer snaps to.
+    pub subpixel_bits: u32,
+}
+
+/// Why the driver cannot draw `point` of `scene` as the rule's square,
+/// if it cannot.
+pub(crate) fn refusal(scene: &Scene, point: &Point, offers: &PointOffers) -> Option<String> {
+    let size = &point.size;
+    let shown = size.to_exact_string();
+    let s = f32_of(size);
+    let exact = RBig::try_from(s).is_ok_and(|back| &back == size.as_rbig());
+    let [lo, hi] = offers.range;
+    let steps = (s - lo) / offers.granularity.max(f32::MIN_POSITIVE);
+    if !exact || s < lo || s > hi || steps.fract() != 0.0 || (s != 1.0 && !offers.large) {
+        return Some(format!(
+            "point size {shown}: the driver draws sizes {lo} to {hi} in steps of {}{}",
+            offers.granularity,
+            if offers.large {
+                ""
+            } else {
+                " (no largePoints: 1 only)"
+            }
+        ));
+    }
+    if s < 1.0 {
+        return Some(format!(
+            "point size {shown}: Mesa draws a point under one pixel one pixel wide, where \
+             the square may cover no sample"
+        ));
+    }
+    let half = size.as_rbig() / RBig::from(2);
+    let grid = RBig::from(1u64 << offers.subpixel_bits);
+    if !(&half * &grid).is_int() {
+        return Some(format!(
+            "point size {shown}: its half is off the driver's grid of 2^-{} px, so the \
+             square's corners would be rounded",
+            offers.subpixel_bits
+        ));
+    }
+    outside_viewport(scene, point, &half)
+}
+
+/// Why a clip-space point's square reaches outside the viewport rectangle,
+/// which Mesa limits it to, if it does (a point with w ≤ 0 is discarded by
+/// both and never refused).
+fn outside_viewport(scene: &Scene, point: &Point, half: &RBig) -> Option<String> {
+    let view = scene.viewport.as_ref()?;
+    let v = &point.vertices[0];
+    if !v.w.is_positive() {
+        return None;
+    }
+    let bits = scene.rules.subpixel_bits;
+    // x_f = v.x + v.width · (x/w + 1)/2, snapped (SPEC.md §16.1).
+    let place = |c: &Number, origin: &Number, extent: &Number| {
+        let ratio = c.as_rbig() / v.w.as_rbig();
+        let f = origin.as_rbig() + extent.as_rbig() * (ratio + RBig::ONE) / RBig::from(2);
+        snapped(&Number::from_rbig(f), bits)
+    };
+    let x = place(&v.x, &view.x, &view.width);
+    let y = place(&v.y, &view.y, &view.height);
+    let inside = |c: &RBig, origin: &Number, extent: &Number| {
+        c - half >= *origin.as_rbig() && c + half <= origin.as_rbig() + extent.as_rbig()
+    };
+    (!(inside(&x, &view.x, &view.width) && inside(&y, &view.y, &view.height))).then(|| {
+        format!(
+            "a point of size {} whose square reaches outside the viewport rectangle: \
+             Mesa limits a point's square to the viewport, the rule does not (SPEC.md §17)",
+            point.size.to_exact_string()
+        )
+    })
+}
+
+/// Every point of the scene.
+pub(crate) fn points(scene: &Scene) -> impl Iterator<Item = &Point> {
+    scene.primitives.iter().filter_map(|p| match p {
+        crate::scene::Primitive::Point(point) => Some(point),
+        _ => None,
+    })
+}
