@@ -396,6 +396,29 @@ pub fn assert_screen_points(candidate: &dyn Rasterizer) {
             assert_follows_the_rule(candidate, &scene, &format!("size {size} at ({x}, {y})"));
         }
     }
+    // Centres outside the canvas (and the target's viewport): the rule
+    // draws the part of the square on the canvas; a driver that pops
+    // points by their centre draws nothing, and its adapter must refuse.
+    let pops = candidate.fixed_point_clip() == Some(PointClip::Pop);
+    for (x, y) in [
+        (17.0, 8.0),
+        (-1.5, 8.25),
+        (8.5, 17.25),
+        (-1.0, -1.0),
+        (0.25, 8.0),
+    ] {
+        let scene = scene(16, &[spot(x, y, 4.0)], "", None, None);
+        let what = format!("size 4 at ({x}, {y}), off the canvas");
+        if pops {
+            assert_refused(
+                candidate,
+                &scene,
+                "less than half a pixel inside the canvas",
+            );
+        } else {
+            assert_follows_the_rule(candidate, &scene, &what);
+        }
+    }
     let spots: Vec<Spot> = SIZES
         .iter()
         .zip(CENTRES.iter().cycle())
@@ -564,20 +587,23 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
         ),
     ];
     for (scene, why) in cases {
-        match candidate.rasterize(&scene, &Plan::for_scene(&scene)) {
-            Err(rastercheck::rasterizer::RasterError::Unsupported(reason)) => {
-                assert!(
-                    reason.contains(why),
-                    "{}: refused for {reason:?}, want {why:?}",
-                    candidate.name()
-                )
-            }
-            other => panic!(
-                "{}: want unsupported ({why}), got {:?}",
-                candidate.name(),
-                other.map(|f| picture(&f))
-            ),
-        }
+        assert_refused(candidate, &scene, why);
+    }
+}
+
+/// Asserts `candidate` refuses `scene` with a reason containing `why`.
+fn assert_refused(candidate: &dyn Rasterizer, scene: &Scene, why: &str) {
+    match candidate.rasterize(scene, &Plan::for_scene(scene)) {
+        Err(rastercheck::rasterizer::RasterError::Unsupported(reason)) => assert!(
+            reason.contains(why),
+            "{}: refused for {reason:?}, want {why:?}",
+            candidate.name()
+        ),
+        other => panic!(
+            "{}: want unsupported ({why}), got {:?}",
+            candidate.name(),
+            other.map(|f| picture(&f))
+        ),
     }
 }
 

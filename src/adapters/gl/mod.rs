@@ -265,12 +265,12 @@ impl Rasterizer for Gl {
         Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
     }
 
-    /// GL lets the driver choose. llvmpipe pops no point: it draws one
-    /// whose centre is outside the side planes (measured, `tests/gl/`),
-    /// but limits its square to the viewport rectangle, so the adapter
-    /// refuses a square reaching outside it (`gpu::points`).
+    /// GL's own rule: llvmpipe pops a point whose centre is outside the
+    /// side planes (measured in screen space, `tests/gl/`: a size-4 point
+    /// centred at x = 17 of a 16-pixel target draws nothing), so the
+    /// adapter refuses the points where that shows (`gpu::points`).
     fn fixed_point_clip(&self) -> Option<PointClip> {
-        Some(PointClip::GuardBand)
+        Some(PointClip::Pop)
     }
 
     fn declared(&self) -> Option<String> {
@@ -428,6 +428,7 @@ fn point_refusal(scene: &Scene) -> Option<String> {
             range: gl.point_range,
             granularity: gl.point_granularity,
             subpixel_bits: 8,
+            pops: true,
         }
     };
     points.find_map(|p| gpu::points::refusal(scene, p, &offers))

@@ -10,12 +10,19 @@
 //!   may cover no sample;
 //! - half the size on the driver's subpixel grid, so that the corners
 //!   X ± size/2 of a snapped centre are on it and nothing is rounded;
-//! - in clip space, the square within the viewport rectangle: Mesa draws
-//!   a point whose centre is outside the side planes (no popping) but
-//!   limits its square to the viewport rectangle, which the rule does not
-//!   (a point's square may reach outside the viewport, §17). Inside it the
-//!   two agree, whatever the case's `clip_points`: a centre outside the
-//!   planes puts the square outside the rectangle.
+//! - in clip space, the square within the viewport rectangle: lavapipe
+//!   draws a point whose centre is outside the side planes (no popping)
+//!   but limits its square to the viewport rectangle, which the rule does
+//!   not (a point's square may reach outside the viewport, §17); llvmpipe's
+//!   GL pops it. Inside the rectangle they and the rule agree, whatever
+//!   the case's `clip_points`: a centre outside the planes puts the square
+//!   outside the rectangle;
+//! - in screen space, on a driver that pops (GL), the centre at least half
+//!   a pixel inside the canvas: the target's viewport covers the canvas,
+//!   and a shifted pass moves the centre by less than half a pixel, so no
+//!   centre the driver is handed leaves the viewport, where the rule
+//!   (clipped by the canvas only) would still draw the square's part on
+//!   the canvas.
 
 use dashu_ratio::RBig;
 
@@ -31,6 +38,9 @@ pub(crate) struct PointOffers {
     pub granularity: f32,
     /// The subpixel grid its rasterizer snaps to.
     pub subpixel_bits: u32,
+    /// Whether it discards a point whose centre is outside the viewport
+    /// (GL's llvmpipe, measured), rather than drawing its square.
+    pub pops: bool,
 }
 
 /// Why the driver cannot draw `point` of `scene` as the rule's square,
@@ -68,7 +78,33 @@ pub(crate) fn refusal(scene: &Scene, point: &Point, offers: &PointOffers) -> Opt
             offers.subpixel_bits
         ));
     }
+    if offers.pops && scene.viewport.is_none() {
+        if let Some(why) = near_the_edge(scene, point) {
+            return Some(why);
+        }
+    }
     outside_viewport(scene, point, &half)
+}
+
+/// Why a screen-space point's centre is less than half a pixel inside
+/// the canvas, on a driver that pops, if it is.
+fn near_the_edge(scene: &Scene, point: &Point) -> Option<String> {
+    let v = &point.vertices[0];
+    let bits = scene.rules.subpixel_bits;
+    let half = RBig::ONE / RBig::from(2);
+    let inside = |c: &Number, extent: u32| {
+        let c = snapped(c, bits);
+        c >= half && c <= RBig::from(extent) - &half
+    };
+    (!(inside(&v.x, scene.canvas.width) && inside(&v.y, scene.canvas.height))).then(|| {
+        format!(
+            "a point centred at ({}, {}), less than half a pixel inside the canvas: the \
+             driver discards a point whose centre leaves its viewport (measured on \
+             llvmpipe's GL), where the rule draws the square's part on the canvas",
+            v.x.to_exact_string(),
+            v.y.to_exact_string()
+        )
+    })
 }
 
 /// Why a clip-space point's square reaches outside the viewport rectangle,

@@ -343,6 +343,7 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
         range: offers.point_size_range,
         granularity: offers.point_size_granularity,
         subpixel_bits: offers.subpixel_bits,
+        pops: false,
     };
     for point in gpu::points::points(scene) {
         if let Some(why) = gpu::points::refusal(scene, point, &point_offers) {
