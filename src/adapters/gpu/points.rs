@@ -144,3 +144,108 @@ pub(crate) fn points(scene: &Scene) -> impl Iterator<Item = &Point> {
         _ => None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{parse_case, Limits, Primitive, Vertex};
+
+    /// A 16×16 scene (a 16×16 viewport at (4, 4) of a 24×24 canvas when
+    /// `clip`) of one point at `at` (x, y, w) of side `size`.
+    fn scene(clip: bool, at: [i64; 3], size: Number) -> Scene {
+        let (canvas, view, v) = if clip {
+            (
+                24,
+                r#""viewport": {"x": 4, "y": 4, "width": 16, "height": 16},"#,
+                r#"{"clip": [0, 0, 0, 1]}"#,
+            )
+        } else {
+            (16, "", "[0, 0]")
+        };
+        let text = format!(
+            r#"{{"name": "p", "canvas": {{"width": {canvas}, "height": {canvas}}}, {view}
+                "primitives": [{{"triangle": [{v}, {v}, {v}]}}]}}"#
+        );
+        let mut scene = parse_case(&text, "p.json", &Limits::default()).unwrap();
+        let mut vertex = Vertex::at(Number::from_int(at[0]), Number::from_int(at[1]));
+        vertex.w = Number::from_int(at[2]);
+        scene.primitives = vec![Primitive::Point(Point {
+            vertices: [vertex],
+            size,
+        })];
+        scene
+    }
+
+    fn why(scene: &Scene, pops: bool) -> Option<String> {
+        let offers = PointOffers {
+            large: true,
+            range: [1.0, 255.0],
+            granularity: 0.125,
+            subpixel_bits: 8,
+            pops,
+        };
+        let Primitive::Point(p) = &scene.primitives[0] else {
+            unreachable!()
+        };
+        refusal(scene, p, &offers)
+    }
+
+    #[test]
+    fn sizes_the_driver_draws_exactly_pass_and_others_are_refused() {
+        for (num, den, refused) in [
+            (5, 2, None),
+            (1, 1, None),
+            (1, 2, Some("the driver draws sizes")),
+            (257, 256, Some("steps of 0.125")),
+            (1000, 1, Some("the driver draws sizes")),
+            (1, 10, Some("the driver draws sizes")),
+        ] {
+            let scene = scene(false, [8, 8, 1], Number::ratio(num, den));
+            let got = why(&scene, false);
+            match refused {
+                None => assert_eq!(got, None, "{num}/{den}"),
+                Some(words) => assert!(got.unwrap().contains(words), "{num}/{den}"),
+            }
+        }
+        // On a finer granularity, a half off the 8-bit grid is refused.
+        let scene = scene(false, [8, 8, 1], Number::ratio(257, 256));
+        let offers = PointOffers {
+            large: true,
+            range: [1.0, 255.0],
+            granularity: 1.0 / 1024.0,
+            subpixel_bits: 8,
+            pops: false,
+        };
+        let Primitive::Point(p) = &scene.primitives[0] else {
+            unreachable!()
+        };
+        assert!(refusal(&scene, p, &offers)
+            .unwrap()
+            .contains("off the driver's grid"));
+    }
+
+    #[test]
+    fn clip_squares_outside_the_viewport_and_popped_edges_are_refused() {
+        // x = 0 is the viewport's centre, X = 12: a size-16 square fills it
+        // exactly; size 17 reaches out.
+        assert_eq!(
+            why(&scene(true, [0, 0, 1], Number::from_int(16)), false),
+            None
+        );
+        let out = why(&scene(true, [0, 0, 1], Number::from_int(17)), false);
+        assert!(out.unwrap().contains("outside the viewport rectangle"));
+        // w ≤ 0 is discarded by driver and rule alike.
+        assert_eq!(
+            why(&scene(true, [0, 0, -1], Number::from_int(17)), false),
+            None
+        );
+        // Screen space: the edge matters only to a driver that pops.
+        let edge = scene(false, [0, 8, 1], Number::from_int(4));
+        assert_eq!(why(&edge, false), None);
+        assert!(why(&edge, true).unwrap().contains("half a pixel inside"));
+        assert_eq!(
+            why(&scene(false, [8, 8, 1], Number::from_int(4)), true),
+            None
+        );
+    }
+}
