@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointClip, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -169,6 +169,16 @@ pub trait Rasterizer: Send + Sync {
     /// whatever a case states (SPEC.md §16.5): a driver sets its planes up
     /// as its pipeline does. Judged as [`Rasterizer::fixed_clip_rules`].
     fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
+        None
+    }
+
+    /// What the side planes do to points (`clip_points`, SPEC.md §17) in
+    /// this rasterizer whatever a case states, when it cannot follow the
+    /// case's: a clip-space case with points under another is judged
+    /// under this, and reported as such, as for
+    /// [`Rasterizer::fixed_clip_rules`]. `None` for a rasterizer that
+    /// follows each case's.
+    fn fixed_point_clip(&self) -> Option<PointClip> {
         None
     }
 

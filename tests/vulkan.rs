@@ -419,3 +419,71 @@ fn clip_space_values_come_from_the_declared_positions() {
     let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&VULKAN);
     eprintln!("vulkan: values depart {own:e} from its own positions', {other:e} from the others'");
 }
+
+/// What the device does with points (a measurement that checks
+/// nothing: `--ignored --nocapture`; SPEC.md §17.4).
+#[test]
+#[ignore]
+fn measure_points() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::measure(&VULKAN);
+}
+
+/// Points follow the point rule under the device's own fill rule in screen
+/// space: every size at every subpixel centre, and overlapping points
+/// with their flat values and depth.
+#[test]
+fn points_follow_the_rule_in_screen_space() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_screen_points(&VULKAN);
+}
+
+/// Clip-space points: placed by the viewport, touching its edges, the
+/// depth planes under clip and clamp, w ≤ 0.
+#[test]
+fn points_follow_the_rule_in_clip_space() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_clip_points(&VULKAN);
+}
+
+#[test]
+fn multisampled_points_follow_the_rule() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_multisampled_points(&VULKAN);
+}
+
+/// Sub-pixel sizes, sizes off the grid or out of range, and clip-space
+/// squares reaching outside the viewport are refused with the reason.
+#[test]
+fn points_the_driver_cannot_draw_exactly_are_refused() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_point_refusals(&VULKAN);
+}
+
+/// The point checks catch the opposite ties, snapped sizes and an
+/// unsnapped centre.
+#[test]
+fn wrong_point_rules_are_caught() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_wrong_rules_are_caught(&VULKAN);
+}
+
+/// A clip-space case with points is judged under the driver's own
+/// `clip_points` (guard band), and says so; one without points keeps the
+/// case's.
+#[test]
+fn clip_points_are_judged_under_the_drivers_own() {
+    common::point_drivers::assert_judged_under_own_point_clip(&VULKAN);
+}

@@ -180,7 +180,8 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
 /// case states another, and for a clip-space case under depth clip its
 /// fixed `clip_xy` and `clip_z` where the case states others (under
-/// depth clamp `clip_z` means nothing; `clip_xy` still does).
+/// depth clamp `clip_z` means nothing; `clip_xy` still does), and for a
+/// clip-space case with points its fixed `clip_points`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
@@ -195,17 +196,22 @@ impl OwnConventions {
             .fixed_fill_rule()
             .filter(|&rule| rule != scene.rules.fill_rule);
         let stated = scene.rules.clip;
-        let mut own = stated;
-        if let Some((xy, z)) = candidate.fixed_clip_rules() {
-            own.xy = xy;
-            if stated.depth == DepthMode::Clip {
-                own.z = z;
+        let mut clip = stated;
+        if scene.in_clip_space() {
+            if let Some((xy, z)) = candidate.fixed_clip_rules() {
+                clip.xy = xy;
+                if stated.depth == DepthMode::Clip {
+                    clip.z = z;
+                }
+            }
+            if let Some(values) = candidate.fixed_interpolate_from() {
+                clip.values = values;
+            }
+            if let Some(points) = candidate.fixed_point_clip().filter(|_| scene.has_points()) {
+                clip.points = points;
             }
         }
-        if let Some(values) = candidate.fixed_interpolate_from() {
-            own.values = values;
-        }
-        let clip = Some(own).filter(|&own| scene.in_clip_space() && own != stated);
+        let clip = (clip != stated).then_some(clip);
         OwnConventions { fill_rule, clip }
     }
 

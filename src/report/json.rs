@@ -136,6 +136,8 @@ pub struct ClipInfo {
     pub clip_z: &'static str,
     pub depth: &'static str,
     pub interpolate_from: &'static str,
+    /// What the side planes do to points (SPEC.md §17).
+    pub clip_points: &'static str,
 }
 
 impl ClipInfo {
@@ -145,6 +147,7 @@ impl ClipInfo {
             clip_z: clip.z.name(),
             depth: clip.depth.name(),
             interpolate_from: clip.values.name(),
+            clip_points: clip.points.name(),
         }
     }
 }

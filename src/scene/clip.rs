@@ -142,13 +142,15 @@ impl Default for ClipRules {
 
 impl ClipRules {
     /// The conventions a clipping stage fixes, in words: `clip_xy`,
-    /// `clip_z` and `interpolate_from` (`depth` is always the case's).
+    /// `clip_z`, `interpolate_from` and `clip_points` (`depth` is always
+    /// the case's).
     pub fn words(&self) -> String {
         format!(
-            "clip_xy {}, clip_z {}, interpolate_from {}",
+            "clip_xy {}, clip_z {}, interpolate_from {}, clip_points {}",
             self.xy.name(),
             self.z.name(),
-            self.values.name()
+            self.values.name(),
+            self.points.name()
         )
     }
 

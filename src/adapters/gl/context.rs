@@ -90,6 +90,9 @@ pub(super) struct GlContext {
     pub(super) provoking: ProvokingFn,
     /// What the context offers for clip space (`clip.rs`).
     pub(super) clip: clip::Offers,
+    /// `GL_POINT_SIZE_RANGE` and `GL_POINT_SIZE_GRANULARITY`.
+    pub(super) point_range: [f32; 2],
+    pub(super) point_granularity: f32,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -164,9 +167,12 @@ impl GlContext {
         let clip_control = egl.get_proc_address("glClipControl");
         let multisample = egl.get_proc_address("glGetMultisamplefv");
         // SAFETY: plain queries and object creation on the current context.
-        let (renderer, version, made) = unsafe {
+        let (renderer, version, point_range, point_granularity, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
+            let mut point_range = [0f32; 2];
+            gl.get_parameter_f32_slice(glow::POINT_SIZE_RANGE, &mut point_range);
+            let point_granularity = gl.get_parameter_f32(glow::POINT_SIZE_GRANULARITY);
             let made =
                 set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
                     let fetch = msaa::fetch(&gl)?;
@@ -179,7 +185,7 @@ impl GlContext {
                     let clip = clip::Offers::set_up(&gl, clip_control);
                     Ok((max_side, programs, fetch, offered, provoking, clip))
                 });
-            (renderer, version, made)
+            (renderer, version, point_range, point_granularity, made)
         };
         let _ = egl.make_current(display, None, None, None);
         let (max_side, programs, fetch, (max_samples, offered), provoking, clip) =
@@ -198,6 +204,8 @@ impl GlContext {
             offered,
             provoking,
             clip,
+            point_range,
+            point_granularity,
         })
     }
 

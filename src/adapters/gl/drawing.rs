@@ -19,7 +19,7 @@ use glow::HasContext;
 use super::clip::Stage;
 use super::context::{gl_error, GlContext};
 use super::passes::{self, Pass, Reading};
-use super::{lines, msaa, samples, time};
+use super::{lines, msaa, samples, shaders, time};
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -289,6 +289,19 @@ impl GlContext {
                 gl.line_width(width);
                 gl.use_program(Some(program(interpolation)));
                 glow::LINES
+            }
+            gpu::Draw::Points { size } => {
+                gl.color_mask(true, true, true, true);
+                gl.disable(glow::STENCIL_TEST);
+                gl.disable(glow::CULL_FACE);
+                // The vertex shader's `gl_PointSize`, from the run's size
+                // (`POINT_SIZE_UNIFORM`); glow has no `glPointSize`.
+                gl.enable(glow::PROGRAM_POINT_SIZE);
+                let flat = program(Interpolation::Flat);
+                gl.use_program(Some(flat));
+                let at = gl.get_uniform_location(flat, shaders::POINT_SIZE_UNIFORM);
+                gl.uniform_1_f32(at.as_ref(), size);
+                glow::POINTS
             }
             gpu::Draw::Stencil(fill) => {
                 gl.color_mask(false, false, false, false);

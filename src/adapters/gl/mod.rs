@@ -219,7 +219,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointClip, Scene};
 
 use super::gpu;
 use context::{ask_for_softpipe, context, with_context};
@@ -274,6 +274,14 @@ impl Rasterizer for Gl {
         Some(InterpolateFrom::Unsnapped)
     }
 
+    /// GL's own rule: llvmpipe pops a point whose centre is outside the
+    /// side planes (measured in screen space, `tests/gl/`: a size-4 point
+    /// centred at x = 17 of a 16-pixel target draws nothing), so the
+    /// adapter refuses the points where that shows (`gpu::points`).
+    fn fixed_point_clip(&self) -> Option<PointClip> {
+        Some(PointClip::Pop)
+    }
+
     fn declared(&self) -> Option<String> {
         declared()
     }
@@ -292,8 +300,9 @@ impl Rasterizer for Softpipe {
         SOFTPIPE
     }
 
-    /// llvmpipe's, but clip space: softpipe's clipping conventions have not
-    /// been measured (`tests/gl/` measures llvmpipe's), so it claims none.
+    /// llvmpipe's, but clip space and points: softpipe's clipping and
+    /// point conventions have not been measured (`tests/gl/` measures
+    /// llvmpipe's), so it claims neither.
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             clip_space: false,
@@ -334,7 +343,7 @@ fn capabilities() -> Capabilities {
         polygons: true,
         motion_blur: true,
         clip_space: true,
-        points: false,
+        points: true,
         ..gpu::capabilities(true)
     }
 }
@@ -405,7 +414,33 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32
     if softpipe {
         ask_for_softpipe();
     }
+    if let Some(why) = point_refusal(scene) {
+        return Err(RasterError::Unsupported(why));
+    }
     Ok(bits)
+}
+
+/// Why Mesa's GL cannot draw a point of the scene as the rule's square
+/// (`gpu::points`), if it cannot: the context's point sizes, on llvmpipe's
+/// grid of 8 subpixel bits.
+fn point_refusal(scene: &Scene) -> Option<String> {
+    let mut points = gpu::points::points(scene).peekable();
+    points.peek()?;
+    let gl = match context() {
+        Ok(gl) => gl,
+        Err(why) => return Some(format!("no context to ask for point sizes: {why}")),
+    };
+    let offers = {
+        let gl = gl.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        gpu::points::PointOffers {
+            large: true,
+            range: gl.point_range,
+            granularity: gl.point_granularity,
+            subpixel_bits: 8,
+            pops: true,
+        }
+    };
+    points.find_map(|p| gpu::points::refusal(scene, p, &offers))
 }
 
 /// Sets the scene up, clears, draws and reads back, with the context held

@@ -5,6 +5,10 @@ use glow::HasContext;
 
 use crate::scene::Interpolation;
 
+/// The vertex shaders' uniform written to `gl_PointSize`: the size of the
+/// points a run draws (`GL_PROGRAM_POINT_SIZE` on for points only).
+pub(super) const POINT_SIZE_UNIFORM: &str = "point_size";
+
 /// Compiles and links the program for one interpolation mode.
 pub(super) unsafe fn program(
     gl: &glow::Context,
@@ -68,6 +72,7 @@ layout(location = 2) in vec4 a0;
 layout(location = 3) in vec4 a1;
 layout(location = 4) in vec4 a2;
 layout(location = 5) in vec4 a3;
+uniform float {POINT_SIZE_UNIFORM};
 flat out float prim;
 noperspective out float depth;
 flat out vec2 range;
@@ -77,6 +82,7 @@ flat out vec2 range;
 {qualifier} out vec4 v3;
 void main() {{
     gl_Position = position;
+    gl_PointSize = {POINT_SIZE_UNIFORM};
     prim = info.x;
     depth = info.y;
     range = info.zw;

@@ -14,6 +14,8 @@
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod clip;
 mod passes;
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+pub(crate) mod points;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod time;

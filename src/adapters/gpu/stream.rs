@@ -6,6 +6,7 @@
 //!   interpolation mode share a run.
 //! - A line is two vertices; consecutive lines of one rule, width and
 //!   interpolation share a run.
+//! - A point is one vertex; consecutive points of one size share a run.
 //! - A polygon is drawn by **stencil then cover**, as GPU vector renderers
 //!   draw paths: a [`Draw::Stencil`] run of fan triangles (each contour's
 //!   first vertex joined to each of its edges) that counts every sample's
@@ -56,6 +57,9 @@ pub(crate) enum Draw {
         width: f32,
         interpolation: Interpolation,
     },
+    /// Points of one size (in pixels), their squares drawn by the driver
+    /// (`PointSize`, `gl_PointSize`).
+    Points { size: f32 },
     /// A polygon's fan triangles, counted into the stencil buffer only.
     Stencil(PolygonFill),
     /// Two triangles over a stencilled polygon's box, drawn where the
@@ -160,7 +164,15 @@ impl Stream {
                     stream.close(draw, 2);
                 }
                 Primitive::Polygon(p) => stream.polygon(p, id, place),
-                Primitive::Point(_) => unreachable!("GPU adapters refuse points first"),
+                Primitive::Point(p) => {
+                    stream.vertex(&p.vertices[0], id, place);
+                    stream.close(
+                        Draw::Points {
+                            size: f32_of(&p.size),
+                        },
+                        1,
+                    );
+                }
             }
         }
         stream

@@ -23,6 +23,11 @@ pub(super) struct Offers {
     pub wide_lines: bool,
     pub line_width_range: [f32; 2],
     pub line_width_granularity: f32,
+    /// `largePoints` (enabled), `pointSizeRange`, `pointSizeGranularity`:
+    /// the point sizes the device draws (1 only without large points).
+    pub large_points: bool,
+    pub point_size_range: [f32; 2],
+    pub point_size_granularity: f32,
     /// A depth-stencil format with stencil that can be an attachment.
     pub stencil_format: vk::Format,
     /// Sample counts a float colour target can be drawn with and then
@@ -145,6 +150,7 @@ impl Device {
             && depth_clip_ext
             && depth_clip.depth_clip_enable == vk::TRUE;
         let wide_lines = base.wide_lines == vk::TRUE;
+        let large_points = base.large_points == vk::TRUE;
         let sample_rate_shading = base.sample_rate_shading == vk::TRUE;
         let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
 
@@ -159,6 +165,7 @@ impl Device {
             .queue_priorities(&priorities)];
         let enabled = vk::PhysicalDeviceFeatures::default()
             .wide_lines(wide_lines)
+            .large_points(large_points)
             .sample_rate_shading(sample_rate_shading)
             .depth_clamp(depth_clamp);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
@@ -220,6 +227,9 @@ impl Device {
             wide_lines,
             line_width_range: limits.line_width_range,
             line_width_granularity: limits.line_width_granularity,
+            large_points,
+            point_size_range: limits.point_size_range,
+            point_size_granularity: limits.point_size_granularity,
             stencil_format,
             msaa_counts: limits.framebuffer_color_sample_counts
                 & limits.sampled_image_color_sample_counts

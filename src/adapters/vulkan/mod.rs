@@ -121,8 +121,8 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{
-    Antialias, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, LineRule, Pattern, Primitive,
-    Scene,
+    Antialias, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, LineRule, Pattern, PointClip,
+    Primitive, Scene,
 };
 
 use super::gpu::{self, Placement};
@@ -225,6 +225,15 @@ impl Rasterizer for Vulkan {
     /// unsnapped positions' by at most 2.3e-6).
     fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
         Some(InterpolateFrom::Unsnapped)
+    }
+
+    /// Vulkan lets the device choose. lavapipe pops no point: it draws one
+    /// whose centre is outside the side planes (measured,
+    /// `tests/vulkan.rs`), but limits its square to the viewport rectangle,
+    /// so the adapter refuses a square reaching outside it
+    /// (`gpu::points`), and only a guard band is left to see.
+    fn fixed_point_clip(&self) -> Option<PointClip> {
+        Some(PointClip::GuardBand)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -342,6 +351,18 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
                 return unsupported("points: not drawn by this adapter yet".into())
             }
             _ => {}
+        }
+    }
+    let point_offers = gpu::points::PointOffers {
+        large: offers.large_points,
+        range: offers.point_size_range,
+        granularity: offers.point_size_granularity,
+        subpixel_bits: offers.subpixel_bits,
+        pops: false,
+    };
+    for point in gpu::points::points(scene) {
+        if let Some(why) = gpu::points::refusal(scene, point, &point_offers) {
+            return unsupported(why);
         }
     }
     if let Some(why) = clip_space_refusal(scene, offers) {

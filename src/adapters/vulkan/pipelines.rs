@@ -63,6 +63,8 @@ impl Stage {
 enum DrawKey {
     Triangles(Interpolation),
     Lines(LineRule, u32, Interpolation),
+    /// Points of a size (its f32 bits).
+    Points(u32),
     Stencil(PolygonFill),
     Cover(PolygonFill),
 }
@@ -72,7 +74,8 @@ pub(super) struct Pipelines {
     device: ash::Device,
     layout: vk::PipelineLayout,
     passes: HashMap<(usize, u32), vk::RenderPass>,
-    modules: HashMap<(Interpolation, usize, bool), vk::ShaderModule>,
+    /// By interpolation, groups, per-sample, and point size (f32 bits).
+    modules: HashMap<(Interpolation, usize, bool, Option<u32>), vk::ShaderModule>,
     pipelines: HashMap<Key, vk::Pipeline>,
     stencil_format: vk::Format,
 }
@@ -205,6 +208,7 @@ impl Pipelines {
                     width,
                     interpolation,
                 } => DrawKey::Lines(rule, width.to_bits(), interpolation),
+                Draw::Points { size } => DrawKey::Points(size.to_bits()),
                 Draw::Stencil(fill) => DrawKey::Stencil(fill),
                 Draw::Cover(fill) => DrawKey::Cover(fill),
             },
@@ -229,12 +233,15 @@ impl Pipelines {
         mode: Interpolation,
         groups: usize,
         per_sample: bool,
+        point_size: Option<u32>,
     ) -> Result<vk::ShaderModule, String> {
-        let key = (mode, groups, per_sample);
+        let key = (mode, groups, per_sample, point_size);
         if let Some(&module) = self.modules.get(&key) {
             return Ok(module);
         }
-        let module = shader_module(&self.device, &shaders::spirv(mode, groups, per_sample)?)?;
+        let size = point_size.map(f32::from_bits);
+        let words = shaders::spirv(mode, groups, per_sample, size)?;
+        let module = shader_module(&self.device, &words)?;
         self.modules.insert(key, module);
         Ok(module)
     }
@@ -242,9 +249,15 @@ impl Pipelines {
     fn make(&mut self, key: Key) -> Result<vk::Pipeline, String> {
         let mode = match key.draw {
             DrawKey::Triangles(mode) | DrawKey::Lines(_, _, mode) => mode,
+            // A point's one vertex gives every sample its values.
+            DrawKey::Points(_) => Interpolation::Flat,
             DrawKey::Stencil(_) | DrawKey::Cover(_) => Interpolation::Linear,
         };
-        let module = self.module(mode, key.groups, key.samples > 1)?;
+        let point_size = match key.draw {
+            DrawKey::Points(size) => Some(size),
+            _ => None,
+        };
+        let module = self.module(mode, key.groups, key.samples > 1, point_size)?;
         let render_pass = self.render_pass(key.groups, key.samples)?;
         let bindings = [vk::VertexInputBindingDescription {
             binding: 0,
@@ -262,12 +275,12 @@ impl Pipelines {
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
             .vertex_binding_descriptions(&bindings)
             .vertex_attribute_descriptions(&attributes);
-        let lines = matches!(key.draw, DrawKey::Lines(..));
-        let assembly = vk::PipelineInputAssemblyStateCreateInfo::default().topology(if lines {
-            vk::PrimitiveTopology::LINE_LIST
-        } else {
-            vk::PrimitiveTopology::TRIANGLE_LIST
-        });
+        let assembly =
+            vk::PipelineInputAssemblyStateCreateInfo::default().topology(match key.draw {
+                DrawKey::Lines(..) => vk::PrimitiveTopology::LINE_LIST,
+                DrawKey::Points(_) => vk::PrimitiveTopology::POINT_LIST,
+                _ => vk::PrimitiveTopology::TRIANGLE_LIST,
+            });
         let cull_mode = match key.cull {
             Cull::None => vk::CullModeFlags::NONE,
             Cull::Clockwise => vk::CullModeFlags::BACK,

@@ -14,11 +14,13 @@ use super::super::gpu::wgsl;
 
 /// The SPIR-V of the module with entry points `vs` and `fs`; `per_sample`
 /// interpolates at each sample of a multisampled target
-/// (`wgsl::interface`).
+/// (`wgsl::interface`); `point_size` makes `vs` write that `PointSize`
+/// (`point_vertex`), for point lists.
 pub(super) fn spirv(
     mode: Interpolation,
     groups: usize,
     per_sample: bool,
+    point_size: Option<f32>,
 ) -> Result<Vec<u32>, String> {
     let channels = wgsl::channels();
     let fields: String = (0..groups)
@@ -29,6 +31,9 @@ pub(super) fn spirv(
         .map(|c| format!(", vec4<f32>({}, {}, {}, {})", c[0], c[1], c[2], c[3]))
         .collect();
     let mut source = wgsl::interface(mode, per_sample);
+    if let Some(size) = point_size {
+        source = point_vertex(&source, size)?;
+    }
     source.push_str(&format!(
         "
 struct Out {{
@@ -50,9 +55,65 @@ pub(super) fn unpack_spirv(n: u32) -> Result<Vec<u32>, String> {
     compile(&wgsl::unpack(n))
 }
 
+/// Where `point_vertex` puts the point size before `compile` makes it the
+/// `PointSize` built-in.
+const SIZE_LOCATION: u32 = 15;
+
+/// The shared interface with `vs` returning `PointVaryings`: `Varyings`
+/// (every varying as it is, so `fs` still matches) plus `size` at
+/// `SIZE_LOCATION`, the constant `size` in pixels. WGSL has no point size
+/// built-in; `compile` rebinds that member to SPIR-V's `PointSize` in
+/// naga's IR, which the SPIR-V writer emits as any built-in. (naga's
+/// `FORCE_POINT_SIZE` writes 1.0 only; patching the SPIR-V words, or the
+/// GLSL front end, would be more fragile or a second shading language.)
+fn point_vertex(source: &str, size: f32) -> Result<String, String> {
+    let missing = |what: &str| format!("the shared WGSL has no {what}");
+    let start = source
+        .find("struct Varyings {")
+        .ok_or_else(|| missing("Varyings"))?;
+    let end = start
+        + source[start..]
+            .find("\n}\n")
+            .ok_or_else(|| missing("Varyings' end"))?;
+    let members = &source[start + "struct Varyings {".len()..end];
+    let returns = "-> Varyings {\n    return Varyings(";
+    let ends = "v.info.zw);";
+    if !source.contains(returns) || !source.contains(ends) {
+        return Err(missing("`vs` returning Varyings"));
+    }
+    let vs = source
+        .replace(returns, "-> PointVaryings {\n    return PointVaryings(")
+        .replace(ends, &format!("v.info.zw, {size:?});"));
+    Ok(format!(
+        "struct PointVaryings {{{members}\n    @location({SIZE_LOCATION}) size: f32,\n}}\n\n{vs}"
+    ))
+}
+
+/// Rebinds `PointVaryings.size` (`point_vertex`) to the `PointSize`
+/// built-in; a module without the struct is left as it is.
+fn bind_point_size(module: &mut naga::Module) {
+    let found = module.types.iter().find_map(|(handle, ty)| {
+        (ty.name.as_deref() == Some("PointVaryings")).then(|| (handle, ty.clone()))
+    });
+    let Some((handle, mut ty)) = found else {
+        return;
+    };
+    if let naga::TypeInner::Struct { members, .. } = &mut ty.inner {
+        for member in members {
+            if matches!(member.binding, Some(naga::Binding::Location { location, .. })
+                if location == SIZE_LOCATION)
+            {
+                member.binding = Some(naga::Binding::BuiltIn(naga::BuiltIn::PointSize));
+            }
+        }
+    }
+    module.types.replace(handle, ty);
+}
+
 fn compile(source: &str) -> Result<Vec<u32>, String> {
-    let module =
+    let mut module =
         naga::front::wgsl::parse_str(source).map_err(|e| format!("WGSL: {}", e.message()))?;
+    bind_point_size(&mut module);
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
         // `@interpolate(…, sample)`: the adapter enables sampleRateShading.
@@ -80,8 +141,8 @@ mod tests {
             Interpolation::Flat,
         ] {
             for groups in 1..=5 {
-                for per_sample in [false, true] {
-                    let words = spirv(mode, groups, per_sample).unwrap();
+                for (per_sample, size) in [(false, None), (true, None), (false, Some(2.5))] {
+                    let words = spirv(mode, groups, per_sample, size).unwrap();
                     assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
                 }
             }

@@ -184,7 +184,9 @@ impl Draw<'_> {
         };
         let values = values_of(&piece, h, self.mapping);
         let unsnapped = exact.and_then(|h| {
-            let mapping = self.unsnapped.expect("exact positions come with their mapping");
+            let mapping = self
+                .unsnapped
+                .expect("exact positions come with their mapping");
             Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h, mapping), p))
         });
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
