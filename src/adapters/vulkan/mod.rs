@@ -197,7 +197,6 @@ impl Rasterizer for Vulkan {
         Capabilities {
             ideal_geometry: false,
             depth_attachment: false,
-            points: false,
             ..Capabilities::everything()
         }
     }
@@ -346,9 +345,6 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
             }
             Primitive::Polygon(_) if offers.stencil_format == ash::vk::Format::UNDEFINED => {
                 return unsupported("polygons: the device has no stencil attachment format".into());
-            }
-            Primitive::Point(_) => {
-                return unsupported("points: not drawn by this adapter yet".into())
             }
             _ => {}
         }
