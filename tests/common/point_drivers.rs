@@ -242,27 +242,7 @@ pub fn measure(candidate: &dyn Rasterizer) {
     for size in sizes {
         for (x, y) in positions {
             let scene = scene(16, &[spot(x, y, size)], "", None, None);
-            match candidate.rasterize(&scene, &Plan::for_scene(&scene)) {
-                Ok(frame) => {
-                    let rules: Vec<&str> = FillRule::ALL
-                        .into_iter()
-                        .filter(|&r| departures(&frame, &expected(&scene, r)) == 0)
-                        .map(|r| r.name())
-                        .collect();
-                    let n = frame.coverage.iter().filter(|&&c| c > 0).count();
-                    eprintln!(
-                        "MEASURE {} size {size} at ({x}, {y}): {n} samples, rules {rules:?}",
-                        candidate.name()
-                    );
-                    if rules.is_empty() {
-                        eprintln!("{}", picture(&frame));
-                    }
-                }
-                Err(e) => eprintln!(
-                    "MEASURE {} size {size} at ({x}, {y}): {e}",
-                    candidate.name()
-                ),
-            }
+            measure_rules(candidate, &scene, &format!("size {size} at ({x}, {y})"));
         }
     }
     // Clip space: 16×16 viewport at (4, 4) in a 24×24 canvas; w = 2.
@@ -319,27 +299,11 @@ pub fn measure(candidate: &dyn Rasterizer) {
                 Some(r#"{"samples": 4, "pattern": "standard"}"#),
                 None,
             );
-            match candidate.rasterize(&scene, &Plan::for_scene(&scene)) {
-                Ok(frame) => {
-                    let rules: Vec<&str> = FillRule::ALL
-                        .into_iter()
-                        .filter(|&r| departures(&frame, &expected(&scene, r)) == 0)
-                        .map(|r| r.name())
-                        .collect();
-                    let n = frame.coverage.iter().filter(|&&c| c > 0).count();
-                    eprintln!(
-                        "MEASURE {} msaa4 size {size} at ({x}, {y}): {n} samples, rules {rules:?}",
-                        candidate.name()
-                    );
-                    if rules.is_empty() {
-                        eprintln!("{}", picture(&frame));
-                    }
-                }
-                Err(e) => eprintln!(
-                    "MEASURE {} msaa4 size {size} at ({x}, {y}): {e}",
-                    candidate.name()
-                ),
-            }
+            measure_rules(
+                candidate,
+                &scene,
+                &format!("msaa4 size {size} at ({x}, {y})"),
+            );
         }
     }
 }
@@ -711,4 +675,27 @@ pub fn assert_judged_under_own_point_clip(candidate: &dyn Rasterizer) {
         PointClip::Pop,
         "a case without points keeps its clip_points"
     );
+}
+
+/// Prints the fill rules under which the driver's frame of `scene` follows
+/// the point rule, or why it drew nothing (part of `measure`).
+fn measure_rules(candidate: &dyn Rasterizer, scene: &Scene, label: &str) {
+    match candidate.rasterize(scene, &Plan::for_scene(scene)) {
+        Ok(frame) => {
+            let rules: Vec<&str> = FillRule::ALL
+                .into_iter()
+                .filter(|&r| departures(&frame, &expected(scene, r)) == 0)
+                .map(|r| r.name())
+                .collect();
+            let n = frame.coverage.iter().filter(|&&c| c > 0).count();
+            eprintln!(
+                "MEASURE {} {label}: {n} samples, rules {rules:?}",
+                candidate.name()
+            );
+            if rules.is_empty() {
+                eprintln!("{}", picture(&frame));
+            }
+        }
+        Err(e) => eprintln!("MEASURE {} {label}: {e}", candidate.name()),
+    }
 }
