@@ -180,8 +180,9 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
 /// case states another, and for a clip-space case under depth clip its
 /// fixed `clip_xy` and `clip_z` where the case states others (under
-/// depth clamp `clip_z` means nothing; `clip_xy` still does), and for a
-/// clip-space case with points its fixed `clip_points`.
+/// depth clamp `clip_z` means nothing; `clip_xy` still does), its fixed
+/// `interpolate_from`, and for a clip-space case with points its fixed
+/// `clip_points`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,

@@ -59,7 +59,11 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
     let from_unsnapped = scene.rules.clip.values == InterpolateFrom::Unsnapped;
     let clamp = scene.rules.clip.depth == DepthMode::Clamp || from_unsnapped;
     let mapping = Mapping::new(viewport, scene.rules.subpixel_bits, clamp);
-    let unsnapped = (from_unsnapped && scene.rules.subpixel_bits.is_some())
+    // Only where something reads a value: coverage alone is the snapped
+    // piece's.
+    let reads_values = plan.interpolates()
+        || (scene.rules.clip.depth == DepthMode::Clip && scene.rules.clip.z == ClipZ::PerSample);
+    let unsnapped = (from_unsnapped && reads_values && scene.rules.subpixel_bits.is_some())
         .then(|| Mapping::new(viewport, None, clamp));
     let canvas = [
         [0, i64::from(scene.canvas.width)],

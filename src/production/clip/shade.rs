@@ -36,8 +36,9 @@ pub struct Values {
     depth_over: IBig,
     /// `depth: clamp`: the depth range, exact and as f64.
     clamp: Option<[RBig; 2]>,
-    /// Σ E_i·weight[i] is positive where the piece's plane lies in front
-    /// of the eye.
+    /// Σ E_i·weight[i] (K_i times a common denominator): positive where
+    /// the piece's plane lies in front of the eye, and the denominator of
+    /// the exact path's perspective values.
     weight: [IBig; 3],
     /// The piece's polygon offset (SPEC.md §18.2), added before the clamp.
     offset: f64,
@@ -49,11 +50,7 @@ enum How {
     /// The screen-space path's shading (all w > 0, i128 edge values).
     Screen(Shading),
     /// Exact quotients of integers.
-    Exact {
-        /// Σ E_i·weight[i] (K_i times a common denominator).
-        weight: [IBig; 3],
-        attributes: Vec<Attribute>,
-    },
+    Exact { attributes: Vec<Attribute> },
     /// Coverage only.
     None,
 }
@@ -84,6 +81,7 @@ impl Values {
         let weights: [RBig; 3] = [0, 1, 2].map(|i| &piece.scale[i] * &h[i].k);
         let (depth, q) = integers(&[0, 1, 2].map(|i| &weights[i] * &vertices[i].clip[2]));
         let clamp = mapping.clamp.then(|| mapping.depth_range());
+        let (weight, q_weight) = integers(&weights);
         let how = if !plan.interpolates() {
             How::None
         } else if piece.in_front && matches!(piece.edges, super::homogeneous::Edges::Small(_)) {
@@ -96,7 +94,6 @@ impl Values {
                 mapping,
             ))
         } else {
-            let (weight, q_weight) = integers(&weights);
             let attributes = (0..plan.attributes)
                 .map(|j| match interpolation {
                     Interpolation::Perspective => {
@@ -110,13 +107,13 @@ impl Values {
                     _ => Attribute::Flat(flat[j].to_f64().value()),
                 })
                 .collect();
-            How::Exact { weight, attributes }
+            How::Exact { attributes }
         };
         Values {
             depth,
             depth_over: IBig::from(q) * &piece.det,
             clamp,
-            weight: integers(&weights).0,
+            weight,
             offset: 0.0,
             how,
         }
@@ -179,13 +176,13 @@ impl Values {
             (How::Screen(_), EdgeValues::Big(_)) => {
                 unreachable!("the screen path is chosen for i128 edges only")
             }
-            (How::Exact { weight, attributes }, e) => {
+            (How::Exact { attributes }, e) => {
                 let e = e.big();
                 if let Some(out) = frame.depth.as_mut() {
                     let z_ndc = quotient(dot(&e, &self.depth), self.depth_over.clone());
                     out[i] = mapping.depth(&z_ndc).to_f64().value();
                 }
-                let over = dot(&e, weight);
+                let over = dot(&e, &self.weight);
                 for (channel, a) in frame.attributes.iter_mut().zip(attributes) {
                     channel[i] = match a {
                         Attribute::Flat(v) => *v,

@@ -88,10 +88,12 @@ where
             };
             // The triangle values are interpolated over (SPEC.md §16.5):
             // the snapped one, or the exact one before snapping, unless
-            // that one has no area.
-            let unsnapped = (clip.values == InterpolateFrom::Unsnapped && bits.is_some())
-                .then(|| Homogeneous::new(&piece, viewport, None, rule))
-                .flatten();
+            // that one has no area; built only where a value is read
+            // (coverage alone is the snapped piece's).
+            let unsnapped =
+                (needs_depth && clip.values == InterpolateFrom::Unsnapped && bits.is_some())
+                    .then(|| Homogeneous::new(&piece, viewport, None, rule))
+                    .flatten();
             // The piece's offset (SPEC.md §18.2), its slope read from the
             // plane its depth is interpolated over: the reader keeps every
             // w > 0 under depth_bias, so the piece is a screen triangle
