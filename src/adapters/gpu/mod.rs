@@ -1,6 +1,7 @@
 //! What the GPU-API adapters (`vulkan`, `lavapipe`, `gl`) share: the
 //! vertex stream they upload (`stream.rs`), the shifts of shifted passes
-//! (`passes.rs`), the draws of time passes (`time.rs`), the WGSL of the two
+//! (`passes.rs`), the draws of time passes (`time.rs`), a real depth
+//! attachment's state and read-back (`depth.rs`), the WGSL of the two
 //! Vulkan adapters (`wgsl.rs`), what a driver cannot be handed of a
 //! clip-space scene (`clip.rs`), and the size of the target they draw into.
 //!
@@ -13,6 +14,8 @@
 
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod clip;
+#[cfg(any(feature = "vulkan", feature = "gl"))]
+pub(crate) mod depth;
 mod passes;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 pub(crate) mod points;

@@ -84,6 +84,10 @@ pub(crate) struct Stream {
     /// (the adapter sets it from `Scene::viewport`), and the placement's
     /// snapping, shift and instant do not apply.
     clip_depth: Option<[f32; 2]>,
+    /// A screen-space scene drawn into a depth attachment (`depth.rs`):
+    /// the position's z is the case's `z` (w = 1: z_ndc is the depth the
+    /// driver interpolates, offsets and stores), not the constant ½.
+    screen_z: bool,
 }
 
 /// How a stream places the scene on the target.
@@ -142,6 +146,7 @@ impl Stream {
                 let [a, b] = [&v.min_depth, &v.max_depth].map(f32_of);
                 [a.min(b), a.max(b)]
             }),
+            screen_z: scene.depth_rules_need_attachment(),
         };
         for (i, primitive) in scene.primitives.iter().enumerate() {
             let id = (i + 1) as f32;
@@ -195,7 +200,8 @@ impl Stream {
         } else {
             let [x, y] = self.position(v, place);
             let w = f32_of(&v.w);
-            self.vertices.extend([x * w, y * w, 0.5 * w, w]);
+            let z = if self.screen_z { f32_of(&v.z) } else { 0.5 };
+            self.vertices.extend([x * w, y * w, z * w, w]);
             self.vertices
                 .extend([id, f32_of(&v.z), SCREEN_DEPTH[0], SCREEN_DEPTH[1]]);
         }
