@@ -7,6 +7,8 @@ use std::ffi::CStr;
 
 use ash::vk;
 
+use crate::scene::DepthFormat;
+
 /// What the device offers that decides what it can draw.
 #[derive(Clone)]
 pub(super) struct Offers {
@@ -45,9 +47,34 @@ pub(super) struct Offers {
     /// `depthClamp` with VK_EXT_depth_clip_enable's `depthClipEnable`,
     /// both enabled: depth clamped and not clipped (SPEC.md §16.2).
     pub depth_clamp: bool,
+    /// The depth formats of SPEC.md §18 the device can attach and copy
+    /// out (`D16_UNORM`, `X8_D24_UNORM_PACK32`, `D32_SFLOAT`), as
+    /// `[unorm16, unorm24, float32]`.
+    pub depth_formats: [bool; 3],
+    /// `depthBiasClamp`, enabled: a polygon offset may be clamped.
+    pub depth_bias_clamp: bool,
     /// `viewportBoundsRange` and `maxViewportDimensions`.
     pub viewport_bounds: [f32; 2],
     pub max_viewport: [u32; 2],
+}
+
+/// The attachment formats of `unorm16`, `unorm24` and `float32`.
+pub(super) const DEPTH_FORMATS: [vk::Format; 3] = [
+    vk::Format::D16_UNORM,
+    vk::Format::X8_D24_UNORM_PACK32,
+    vk::Format::D32_SFLOAT,
+];
+
+/// The attachment format of a depth format of SPEC.md §18, and its index
+/// in [`DEPTH_FORMATS`] and `Offers::depth_formats`; `None` for `exact`.
+pub(super) fn depth_attachment(format: DepthFormat) -> Option<(vk::Format, usize)> {
+    let i = match format {
+        DepthFormat::Unorm16 => 0,
+        DepthFormat::Unorm24 => 1,
+        DepthFormat::Float32 => 2,
+        DepthFormat::Exact => return None,
+    };
+    Some((DEPTH_FORMATS[i], i))
 }
 
 /// The device this adapter draws with, created once.
@@ -152,6 +179,7 @@ impl Device {
         let wide_lines = base.wide_lines == vk::TRUE;
         let large_points = base.large_points == vk::TRUE;
         let sample_rate_shading = base.sample_rate_shading == vk::TRUE;
+        let depth_bias_clamp = base.depth_bias_clamp == vk::TRUE;
         let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
 
         let family = instance
@@ -167,7 +195,8 @@ impl Device {
             .wide_lines(wide_lines)
             .large_points(large_points)
             .sample_rate_shading(sample_rate_shading)
-            .depth_clamp(depth_clamp);
+            .depth_clamp(depth_clamp)
+            .depth_bias_clamp(depth_bias_clamp);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
             .bresenham_lines(bresenham == vk::TRUE)
             .rectangular_lines(rectangular == vk::TRUE);
@@ -215,6 +244,15 @@ impl Device {
                 .contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT)
         })
         .unwrap_or(vk::Format::UNDEFINED);
+        let depth_formats = DEPTH_FORMATS.map(|f| {
+            instance
+                .get_physical_device_format_properties(physical, f)
+                .optimal_tiling_features
+                .contains(
+                    vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT
+                        | vk::FormatFeatureFlags::TRANSFER_SRC,
+                )
+        });
         let offers = Offers {
             subpixel_bits: limits.sub_pixel_precision_bits,
             max_side: limits
@@ -238,6 +276,8 @@ impl Device {
             sample_rate_shading,
             provoking_last,
             depth_clamp,
+            depth_formats,
+            depth_bias_clamp,
             viewport_bounds: limits.viewport_bounds_range,
             max_viewport: limits.max_viewport_dimensions,
         };

@@ -11,7 +11,7 @@ use ash::vk;
 
 use super::super::float_input::f32_of;
 use super::super::gpu::{self, Placement, Stream, VERTEX_FLOATS};
-use super::device::Device;
+use super::device::{depth_attachment, Device};
 use super::pipelines::{Pipelines, Stage, COUNT_FORMAT, VALUE_FORMAT};
 use super::unpack::Unpack;
 use crate::frame::Frame;
@@ -104,6 +104,11 @@ pub(super) fn render(
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let target = gpu::target_size(scene, gpu.offers.max_side, "this Vulkan device")?;
     let groups = gpu::groups(plan);
+    let depth = Stage::of(scene).depth;
+    debug_assert!(
+        depth.is_none() || job.samples == 1,
+        "depth is read back single-sample"
+    );
     let mut drawing = Drawing {
         gpu,
         images: Vec::new(),
@@ -131,14 +136,14 @@ pub(super) fn render(
     // n times wider: n "pixels" a pixel, in slot order.
     let n = job.samples;
     let pixels = u64::from(w) * u64::from(h) * u64::from(n);
-    let (count_bytes, pass_bytes) = layout(pixels as usize, groups);
+    let (count_bytes, pass_bytes) = layout(pixels as usize, groups, depth.is_some());
     let (count_bytes, pass_bytes) = (count_bytes as u64, pass_bytes as u64);
     let read_bytes = pass_bytes * job.passes.len() as u64;
     let (read_buffer, read_memory) = drawing
         .buffer(read_bytes, vk::BufferUsageFlags::TRANSFER_DST)
         .map_err(failed)?;
 
-    let render_pass = pipelines.render_pass(groups, n).map_err(failed)?;
+    let render_pass = pipelines.render_pass(groups, n, depth).map_err(failed)?;
     let read_from = if n == 1 {
         vk::ImageUsageFlags::TRANSFER_SRC
     } else {
@@ -152,11 +157,15 @@ pub(super) fn render(
     for &format in &formats {
         views.push(drawing.image(format, target, colour, n).map_err(failed)?);
     }
-    let stencil = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
-    let stencil_format = gpu.offers.stencil_format;
+    // The stencil, or the depth attachment, copied out after each pass.
+    let (last_format, last_usage) = match depth.and_then(depth_attachment) {
+        Some((format, _)) => (format, vk::ImageUsageFlags::TRANSFER_SRC),
+        None => (gpu.offers.stencil_format, vk::ImageUsageFlags::empty()),
+    };
+    let usage = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT | last_usage;
     views.push(
         drawing
-            .image(stencil_format, target, stencil, n)
+            .image(last_format, target, usage, n)
             .map_err(failed)?,
     );
     let framebuffer = drawing
@@ -253,13 +262,13 @@ pub(super) fn render(
             }
             d.cmd_end_render_pass(cb);
             let mut at = pass_bytes * s as u64;
-            let copy = |image, width, at| {
+            let copy_aspect = |image, width, at, aspect_mask| {
                 let region = vk::BufferImageCopy {
                     buffer_offset: at,
                     buffer_row_length: 0,
                     buffer_image_height: 0,
                     image_subresource: vk::ImageSubresourceLayers {
-                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        aspect_mask,
                         mip_level: 0,
                         base_array_layer: 0,
                         layer_count: 1,
@@ -274,10 +283,16 @@ pub(super) fn render(
                 let layout = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
                 d.cmd_copy_image_to_buffer(cb, image, layout, read_buffer, &[region]);
             };
+            let copy =
+                |image, width, at| copy_aspect(image, width, at, vk::ImageAspectFlags::COLOR);
             if n == 1 {
                 for (i, &(image, _, _)) in drawing.images[..=groups].iter().enumerate() {
                     copy(image, w, at);
                     at += if i == 0 { count_bytes } else { pixels * 16 };
+                }
+                if depth.is_some() {
+                    let image = drawing.images[groups + 1].0;
+                    copy_aspect(image, w, at, vk::ImageAspectFlags::DEPTH);
                 }
                 continue;
             }
@@ -343,16 +358,30 @@ pub(super) fn render(
 }
 
 /// The bytes of one pass's counts, and of the whole pass (counts, then
-/// each channel group), in the read-back buffer: every copy starts on a
-/// multiple of 16 bytes, the largest texel.
-fn layout(pixels: usize, groups: usize) -> (usize, usize) {
+/// each channel group, then the depth attachment's texels, 2 or 4 bytes
+/// each, when there is one), in the read-back buffer: every copy starts on
+/// a multiple of 16 bytes, the largest texel.
+fn layout(pixels: usize, groups: usize, depth: bool) -> (usize, usize) {
     let count = (pixels * 4).next_multiple_of(16);
-    (count, count + pixels * 16 * groups)
+    let depth = if depth { count } else { 0 };
+    (count, count + pixels * 16 * groups + depth)
 }
 
 /// The f32 at byte `at`.
 fn float(bytes: &[u8], at: usize) -> f32 {
     f32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
+}
+
+/// Pixel p's stored depth in a depth copy at byte `at`: a `D16_UNORM`
+/// texel's 2 bytes, or an `X8_D24_UNORM_PACK32` or `D32_SFLOAT` texel's 4.
+fn stored(bytes: &[u8], at: usize, p: usize, format: crate::scene::DepthFormat) -> u32 {
+    if format.unorm_bits() == Some(16) {
+        let at = at + p * 2;
+        u32::from(u16::from_le_bytes([bytes[at], bytes[at + 1]]))
+    } else {
+        let at = at + p * 4;
+        u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
+    }
 }
 
 /// A count read back, checked: a whole number of covers, at most `limit`.
@@ -379,7 +408,10 @@ pub(super) fn slots(
     let mut frame = Frame::for_plan(w, h, plan);
     let slots = frame.samples as usize;
     let pixels = w as usize * h as usize * job.samples as usize;
-    let (count_bytes, pass_bytes) = layout(pixels, gpu::groups(plan));
+    let groups = gpu::groups(plan);
+    let depth = Stage::of(scene).depth;
+    let (count_bytes, pass_bytes) = layout(pixels, groups, depth.is_some());
+    let depth_at = count_bytes + pixels * 16 * groups;
     let float = |at: usize| float(bytes, at);
     for s in 0..job.passes.len() {
         let base = s * pass_bytes;
@@ -393,8 +425,14 @@ pub(super) fn slots(
             frame.coverage[slot] = count as u16;
             frame.last[slot] = channel(0) as u32;
             if count > 0.0 {
-                if let Some(depth) = &mut frame.depth {
-                    depth[slot] = f64::from(channel(1));
+                if let Some(values) = &mut frame.depth {
+                    values[slot] = match depth {
+                        Some(format) => gpu::depth::stored_value(
+                            format,
+                            stored(bytes, base + depth_at, p, format),
+                        ),
+                        None => f64::from(channel(1)),
+                    };
                 }
                 for (k, a) in frame.attributes.iter_mut().enumerate() {
                     a[slot] = f64::from(channel(2 + k));
@@ -482,10 +520,12 @@ impl Drawing<'_> {
             .usage(usage)
             .initial_layout(vk::ImageLayout::UNDEFINED);
         let aspect = if usage.contains(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT) {
-            if format == vk::Format::S8_UINT {
-                vk::ImageAspectFlags::STENCIL
-            } else {
-                vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
+            match format {
+                vk::Format::S8_UINT => vk::ImageAspectFlags::STENCIL,
+                vk::Format::D16_UNORM
+                | vk::Format::X8_D24_UNORM_PACK32
+                | vk::Format::D32_SFLOAT => vk::ImageAspectFlags::DEPTH,
+                _ => vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
             }
         } else {
             vk::ImageAspectFlags::COLOR

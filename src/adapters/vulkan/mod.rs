@@ -41,6 +41,21 @@
 //! viewport and snaps, and that is what is judged. Depth is the device's
 //! fragment depth, clamped to the depth range. `depth: clamp` is
 //! depthClampEnable with VK_EXT_depth_clip_enable's depthClipEnable off.
+//!
+//! # Depth formats and polygon offset (SPEC.md §18)
+//!
+//! A scene with a `depth_format` or a `depth_bias` is drawn with a real
+//! depth attachment (`gpu/depth.rs`): `D16_UNORM`, `X8_D24_UNORM_PACK32`
+//! or `D32_SFLOAT`, the depth test always passing with writes on (the last
+//! primitive's depth stays, as its channels do), the offset as the
+//! pipeline's depth bias (constant, slope and clamp factors, the clamp
+//! needing `depthBiasClamp`). A screen-space scene's z is the position's z
+//! under depth clamp without depth clip, so the device clamps to [0, 1]
+//! after the offset and never clips. After each pass the attachment's
+//! depth aspect is copied out and its stored integers (or f32s) decoded:
+//! the frame's depth is the device's stored depth, judged on the format's
+//! grid. Such a scene is never multisampled natively (the copy is
+//! single-sample): an antialiased one is drawn by shifted passes.
 //! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
 //! §16.10). Refused: what `gpu::clip_space_refusal` says, and a viewport
 //! outside the device's bounds.
@@ -173,6 +188,8 @@ fn native_samples(scene: &Scene, plan: &Plan, offers: &Offers, passes_only: bool
         .primitives
         .iter()
         .any(|p| matches!(p, Primitive::Line(_)));
+    // A depth attachment is copied out single-sample: such a scene is
+    // drawn by shifted passes.
     (!passes_only
         && matches!(n, 2 | 4 | 8 | 16)
         && native_offered(offers, n)
@@ -180,6 +197,7 @@ fn native_samples(scene: &Scene, plan: &Plan, offers: &Offers, passes_only: bool
         && !lines
         && (offers.sample_rate_shading || !plan.interpolates())
         && plan.motion.is_none()
+        && !scene.depth_rules_need_attachment()
         && fits)
         .then_some(n)
 }
@@ -196,7 +214,6 @@ impl Rasterizer for Vulkan {
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             ideal_geometry: false,
-            depth_attachment: false,
             ..Capabilities::everything()
         }
     }
@@ -364,6 +381,9 @@ fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterEr
     if let Some(why) = clip_space_refusal(scene, offers) {
         return unsupported(why);
     }
+    if let Some(why) = depth_refusal(scene, offers) {
+        return unsupported(why);
+    }
     if scene.needs_last_provoking_vertex() && !offers.provoking_last {
         return unsupported(
             "provoking_vertex: last on a flat primitive with attributes: the device has no \
@@ -418,6 +438,29 @@ fn clip_space_refusal(scene: &Scene, offers: &Offers) -> Option<String> {
             offers.max_viewport[0], offers.max_viewport[1]
         )
     })
+}
+
+/// Why the device cannot set up the depth attachment the scene needs
+/// (`gpu::depth`), if it cannot: what `gpu::depth::target` refuses, a
+/// format it cannot attach and copy out, a clamped offset without
+/// `depthBiasClamp`.
+fn depth_refusal(scene: &Scene, offers: &Offers) -> Option<String> {
+    let target = match gpu::depth::target(scene, offers.depth_clamp, "the Vulkan device") {
+        Ok(target) => target?,
+        Err(why) => return Some(why),
+    };
+    let (_, i) = device::depth_attachment(target.format)?;
+    if !offers.depth_formats[i] {
+        let format = ["D16_UNORM", "X8_D24_UNORM_PACK32", "D32_SFLOAT"][i];
+        return Some(format!(
+            "depth_format {}: the device cannot attach {format} and copy it out",
+            target.format.name()
+        ));
+    }
+    if target.bias.is_some_and(|[_, _, clamp]| clamp != 0.0) && !offers.depth_bias_clamp {
+        return Some("depth_bias.clamp: the device lacks depthBiasClamp".into());
+    }
+    None
 }
 
 /// Why the device has no line mode for this rule and width, if it has none.

@@ -20,10 +20,13 @@ use std::collections::HashMap;
 
 use ash::vk;
 
+use super::super::float_input::f32_of;
 use super::super::gpu::{Draw, VERTEX_FLOATS};
-use super::device::Device;
+use super::device::{depth_attachment, Device};
 use super::shaders;
-use crate::scene::{Cull, DepthMode, Interpolation, LineRule, PolygonFill, ProvokingVertex, Scene};
+use crate::scene::{
+    Cull, DepthFormat, DepthMode, Interpolation, LineRule, PolygonFill, ProvokingVertex, Scene,
+};
 
 /// The count's format and the channel groups'.
 pub(super) const COUNT_FORMAT: vk::Format = vk::Format::R32_SFLOAT;
@@ -39,22 +42,42 @@ struct Key {
     samples: u32,
 }
 
-/// The vertex post-processing state a scene asks for (SPEC.md §16), kept
-/// in the pipeline: which vertex provokes, and whether depth is clamped
-/// rather than clipped. `vulkan/mod.rs` refuses what the device lacks.
+/// The vertex post-processing and depth state a scene asks for (SPEC.md
+/// §16, §18), kept in the pipeline: which vertex provokes, whether depth
+/// is clamped rather than clipped, and the depth attachment and polygon
+/// offset. `vulkan/mod.rs` refuses what the device lacks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub(super) struct Stage {
     /// `provoking_vertex: last`: VK_EXT_provoking_vertex's LAST_VERTEX.
     pub provoking_last: bool,
-    /// `depth: clamp`: depthClampEnable, and depthClipEnable false.
+    /// `depth: clamp`, or a screen-space scene with a depth attachment
+    /// (whose depth is the position's z, never clipped):
+    /// depthClampEnable, and depthClipEnable false.
     pub depth_clamp: bool,
+    /// A depth attachment of this format (`gpu/depth.rs`): the depth test
+    /// always passes and writes, so the last primitive's depth stays.
+    pub depth: Option<DepthFormat>,
+    /// Polygon offset `[constant, slope, clamp]`, their f32 bits.
+    pub bias: Option<[u32; 3]>,
 }
 
 impl Stage {
     pub(super) fn of(scene: &Scene) -> Stage {
+        let depth = scene
+            .depth_rules_need_attachment()
+            .then_some(scene.rules.depth_format);
+        let clamp = scene.rules.clip.depth == DepthMode::Clamp;
         Stage {
             provoking_last: scene.rules.provoking_vertex == ProvokingVertex::Last,
-            depth_clamp: scene.in_clip_space() && scene.rules.clip.depth == DepthMode::Clamp,
+            depth_clamp: if scene.in_clip_space() {
+                clamp
+            } else {
+                depth.is_some()
+            },
+            depth,
+            bias: depth
+                .and(scene.rules.depth_bias.as_ref())
+                .map(|b| [&b.constant, &b.slope, &b.clamp].map(|n| f32_of(n).to_bits())),
         }
     }
 }
@@ -73,7 +96,8 @@ enum DrawKey {
 pub(super) struct Pipelines {
     device: ash::Device,
     layout: vk::PipelineLayout,
-    passes: HashMap<(usize, u32), vk::RenderPass>,
+    /// By groups, samples and depth attachment.
+    passes: HashMap<(usize, u32, Option<DepthFormat>), vk::RenderPass>,
     /// By interpolation, groups, per-sample, and point size (f32 bits).
     modules: HashMap<(Interpolation, usize, bool, Option<u32>), vk::ShaderModule>,
     pipelines: HashMap<Key, vk::Pipeline>,
@@ -98,13 +122,16 @@ impl Pipelines {
 
     /// The render pass of `groups` channel groups at `samples` samples
     /// per pixel: single-sample targets are left for copying out,
-    /// multisampled ones for the read-back pass to sample.
+    /// multisampled ones for the read-back pass to sample. Its last
+    /// attachment is the stencil, or the `depth` attachment (single-sample
+    /// only), stored and left for copying out.
     pub(super) fn render_pass(
         &mut self,
         groups: usize,
         samples: u32,
+        depth: Option<DepthFormat>,
     ) -> Result<vk::RenderPass, String> {
-        if let Some(&pass) = self.passes.get(&(groups, samples)) {
+        if let Some(&pass) = self.passes.get(&(groups, samples, depth)) {
             return Ok(pass);
         }
         let count = vk::SampleCountFlags::from_raw(samples);
@@ -124,8 +151,15 @@ impl Pipelines {
         };
         let mut attachments = vec![colour(COUNT_FORMAT)];
         attachments.extend((0..groups).map(|_| colour(VALUE_FORMAT)));
-        attachments.push(
-            vk::AttachmentDescription::default()
+        let last = match depth.and_then(depth_attachment) {
+            Some((format, _)) => vk::AttachmentDescription::default()
+                .format(format)
+                .samples(count)
+                .load_op(vk::AttachmentLoadOp::CLEAR)
+                .store_op(vk::AttachmentStoreOp::STORE)
+                .initial_layout(vk::ImageLayout::UNDEFINED)
+                .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL),
+            None => vk::AttachmentDescription::default()
                 .format(self.stencil_format)
                 .samples(count)
                 .load_op(vk::AttachmentLoadOp::CLEAR)
@@ -134,7 +168,8 @@ impl Pipelines {
                 .stencil_store_op(vk::AttachmentStoreOp::DONT_CARE)
                 .initial_layout(vk::ImageLayout::UNDEFINED)
                 .final_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
-        );
+        };
+        attachments.push(last);
         let colour_refs: Vec<vk::AttachmentReference> = (0..=groups as u32)
             .map(|i| vk::AttachmentReference {
                 attachment: i,
@@ -186,7 +221,7 @@ impl Pipelines {
         // SAFETY: a valid device and create info.
         let pass = unsafe { self.device.create_render_pass(&info, None) }
             .map_err(|e| format!("creating a render pass: {e}"))?;
-        self.passes.insert((groups, samples), pass);
+        self.passes.insert((groups, samples, depth), pass);
         Ok(pass)
     }
 
@@ -258,7 +293,7 @@ impl Pipelines {
             _ => None,
         };
         let module = self.module(mode, key.groups, key.samples > 1, point_size)?;
-        let render_pass = self.render_pass(key.groups, key.samples)?;
+        let render_pass = self.render_pass(key.groups, key.samples, key.stage.depth)?;
         let bindings = [vk::VertexInputBindingDescription {
             binding: 0,
             stride: (VERTEX_FLOATS * 4) as u32,
@@ -310,6 +345,13 @@ impl Pipelines {
         if key.stage.depth_clamp {
             raster = raster.depth_clamp_enable(true).push_next(&mut depth_clip);
         }
+        if let Some([constant, slope, clamp]) = key.stage.bias {
+            raster = raster
+                .depth_bias_enable(true)
+                .depth_bias_constant_factor(f32::from_bits(constant))
+                .depth_bias_slope_factor(f32::from_bits(slope))
+                .depth_bias_clamp(f32::from_bits(clamp));
+        }
         let multisample = vk::PipelineMultisampleStateCreateInfo::default()
             .rasterization_samples(vk::SampleCountFlags::from_raw(key.samples));
         let always = vk::StencilOpState {
@@ -355,7 +397,12 @@ impl Pipelines {
             }
             _ => (always, always, false),
         };
+        // A depth attachment: every fragment passes and writes (a write
+        // needs the test enabled), so the last primitive's depth stays.
         let depth_stencil = vk::PipelineDepthStencilStateCreateInfo::default()
+            .depth_test_enable(key.stage.depth.is_some())
+            .depth_write_enable(key.stage.depth.is_some())
+            .depth_compare_op(vk::CompareOp::ALWAYS)
             .stencil_test_enable(stencil_test)
             .front(front)
             .back(back);
