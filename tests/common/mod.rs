@@ -8,6 +8,7 @@
 pub mod adapters;
 pub mod cli;
 pub mod clip_drivers;
+pub mod depth_drivers;
 pub mod point_drivers;
 
 #[allow(unused_imports)] // not every binary runs the binary
