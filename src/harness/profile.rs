@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipRules, DepthMode, FillRule, Scene};
+use crate::scene::{ClipRules, DepthMode, FillRule, Primitive, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -182,7 +182,10 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// fixed `clip_xy` and `clip_z` where the case states others (under
 /// depth clamp `clip_z` means nothing; `clip_xy` still does), its fixed
 /// `interpolate_from`, and for a clip-space case with points its fixed
-/// `clip_points`.
+/// `clip_points`. `clip_xy`, `clip_z` and `interpolate_from` shape
+/// triangles only (a point is kept or popped by its centre, and its
+/// values are its one vertex's, SPEC.md §17.2): a case of points alone is
+/// judged under the driver's own `clip_points` and nothing else.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
@@ -198,7 +201,11 @@ impl OwnConventions {
             .filter(|&rule| rule != scene.rules.fill_rule);
         let stated = scene.rules.clip;
         let mut clip = stated;
-        if scene.in_clip_space() {
+        let triangles = scene
+            .primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Triangle(_)));
+        if scene.in_clip_space() && triangles {
             if let Some((xy, z)) = candidate.fixed_clip_rules() {
                 clip.xy = xy;
                 if stated.depth == DepthMode::Clip {
@@ -208,6 +215,8 @@ impl OwnConventions {
             if let Some(values) = candidate.fixed_interpolate_from() {
                 clip.values = values;
             }
+        }
+        if scene.in_clip_space() {
             if let Some(points) = candidate.fixed_point_clip().filter(|_| scene.has_points()) {
                 clip.points = points;
             }
