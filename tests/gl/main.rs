@@ -2,7 +2,8 @@
 //! exact reference, on the cases it can express (triangles, polygons by
 //! stencil then cover, diamond-exit lines, antialiasing by shifted passes,
 //! motion by time passes: `motion.rs`, native MSAA: `msaa.rs`, rectangle
-//! lines: `rectangles.rs`); and softpipe, in a process of its
+//! lines: `rectangles.rs`, depth formats and offsets into a depth
+//! attachment: `depth.rs`); and softpipe, in a process of its
 //! own (Mesa picks one gallium driver per process). Needs the `gl` feature
 //! and the system packages `libegl1 libegl-mesa0 libgl1-mesa-dri`; without
 //! a display each test says it skipped (under `CI=true` it fails instead),
@@ -43,6 +44,7 @@ fn available() -> bool {
 
 #[path = "../common/mod.rs"]
 mod common;
+mod depth;
 mod motion;
 mod msaa;
 mod rectangles;

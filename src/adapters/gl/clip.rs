@@ -8,7 +8,9 @@
 //! GL_ZERO_TO_ONE)` (GL 4.5, ARB_clip_control) makes it 0 ≤ z ≤ w, the
 //! case's, and a context without it refuses clip-space cases (remapping z
 //! in the shader would change the clipping the driver is judged on). It is
-//! set once for the context: screen-space draws put z = w/2, inside both.
+//! set once for the context: screen-space draws put z = w/2, inside both
+//! (or, into a depth attachment, the case's z, clamped rather than
+//! clipped: `depth.rs`).
 //!
 //! Rather than `GL_UPPER_LEFT`, the y axis is flipped as the screen-space
 //! path flips it, so that the driver draws both kinds of case under one
@@ -137,6 +139,10 @@ impl Offers {
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Stage {
     pub provoking_last: bool,
+    /// A screen-space scene drawn into a depth attachment (`depth.rs`):
+    /// `GL_DEPTH_CLAMP` on, so that its z (the position's) is clamped to
+    /// the depth range [0, 1], not clipped.
+    pub screen_clamp: bool,
     /// A clip-space scene's viewport `[x, y, width, height]` in pixels of
     /// the canvas (y down, §16.1), depth range and clamp.
     pub clip: Option<([f32; 4], [f64; 2], bool)>,
@@ -146,6 +152,7 @@ impl Stage {
     pub(super) fn of(scene: &Scene) -> Stage {
         Stage {
             provoking_last: scene.rules.provoking_vertex == ProvokingVertex::Last,
+            screen_clamp: scene.viewport.is_none() && scene.depth_rules_need_attachment(),
             clip: scene.viewport.as_ref().map(|v| {
                 let rect = [&v.x, &v.y, &v.width, &v.height].map(f32_of);
                 let depth = [&v.min_depth, &v.max_depth].map(|n| f64::from(f32_of(n)));
@@ -154,7 +161,9 @@ impl Stage {
         }
     }
 
-    /// Sets the provoking vertex, depth range and clamp, and the viewport
+    /// Sets the provoking vertex, depth range and clamp (a screen-space
+    /// scene's: [0, 1], clamped where it has a depth attachment), and the
+    /// viewport
     /// of a pass whose tile (`P × Q`, `tile`) has its lower-left window
     /// corner at `origin`: the tile for screen space, the case's viewport
     /// (the module's notes) for clip space.
@@ -174,7 +183,11 @@ impl Stage {
         let Some(([x, y, w, h], [near, far], clamp)) = self.clip else {
             gl.viewport(ox as i32, oy as i32, tile.0 as i32, tile.1 as i32);
             gl.depth_range_f64(0.0, 1.0);
-            gl.disable(glow::DEPTH_CLAMP);
+            if self.screen_clamp {
+                gl.enable(glow::DEPTH_CLAMP);
+            } else {
+                gl.disable(glow::DEPTH_CLAMP);
+            }
             return;
         };
         // Exact: `Offers::refusal` kept viewports whose window y is an f32

@@ -9,6 +9,7 @@ use glow::HasContext;
 use khronos_egl as egl;
 
 use super::clip::{self, ProvokingFn};
+use super::depth;
 use super::msaa::{self, Fetch};
 use super::samples::{self, DriverSamples};
 use super::shaders::program;
@@ -93,6 +94,10 @@ pub(super) struct GlContext {
     /// `GL_POINT_SIZE_RANGE` and `GL_POINT_SIZE_GRANULARITY`.
     pub(super) point_range: [f32; 2],
     pub(super) point_granularity: f32,
+    /// `glPolygonOffsetClamp` (GL 4.6, ARB_polygon_offset_clamp) or
+    /// `glPolygonOffsetClampEXT`, where the context offers one: a depth
+    /// bias with a clamp needs it (`depth.rs`).
+    pub(super) offset_clamp: Option<depth::OffsetClampFn>,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -170,6 +175,7 @@ impl GlContext {
         let (renderer, version, point_range, point_granularity, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
+            let offset_clamp = depth::offset_clamp(&gl, |name| egl.get_proc_address(name));
             let mut point_range = [0f32; 2];
             gl.get_parameter_f32_slice(glow::POINT_SIZE_RANGE, &mut point_range);
             let point_granularity = gl.get_parameter_f32(glow::POINT_SIZE_GRANULARITY);
@@ -183,12 +189,15 @@ impl GlContext {
                         std::mem::transmute::<extern "system" fn(), clip::ClipControlFn>(f)
                     });
                     let clip = clip::Offers::set_up(&gl, clip_control);
-                    Ok((max_side, programs, fetch, offered, provoking, clip))
+                    Ok((
+                        (max_side, programs, fetch, offered),
+                        (provoking, clip, offset_clamp),
+                    ))
                 });
             (renderer, version, point_range, point_granularity, made)
         };
         let _ = egl.make_current(display, None, None, None);
-        let (max_side, programs, fetch, (max_samples, offered), provoking, clip) =
+        let ((max_side, programs, fetch, (max_samples, offered)), (provoking, clip, offset_clamp)) =
             made.map_err(|e| format!("OpenGL ({renderer}, {version}): {e}"))?;
         Ok(GlContext {
             egl,
@@ -206,6 +215,7 @@ impl GlContext {
             clip,
             point_range,
             point_granularity,
+            offset_clamp,
         })
     }
 

@@ -20,6 +20,7 @@ use super::clip::Stage;
 use super::context::{gl_error, GlContext};
 use super::passes::{self, Pass, Reading};
 use super::{lines, msaa, samples, shaders, time};
+use crate::adapters::gpu::depth::DepthTarget;
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -29,19 +30,24 @@ impl GlContext {
     /// Sets a scene up: uploads its passes' vertex streams into a vertex
     /// array and buffer of its own, and makes a framebuffer of float
     /// attachments (the count, then the channel groups) holding a `P × Q`
-    /// tile per pass.
+    /// tile per pass, and the depth attachment `depth` asks for
+    /// (`depth.rs`).
     pub(super) unsafe fn set_up<'a>(
         &self,
         scene: &Scene,
         plan: &'a Plan,
         bits: u32,
+        depth: Option<DepthTarget>,
     ) -> Result<Drawing<'a>, RasterError> {
         if let Some(why) = self.clip.refusal(scene) {
             return Err(RasterError::Unsupported(why));
         }
+        if let Some(why) = depth.and_then(|t| self.depth_refusal(scene, &t)) {
+            return Err(RasterError::Unsupported(why));
+        }
         let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
         let groups = gpu::groups(plan);
-        let layout = self.layout(scene, plan, bits, tile)?;
+        let layout = self.layout(scene, plan, bits, tile, depth.is_some())?;
         let stencils = layout.stencils();
         let passes::Layout {
             vertices,
@@ -71,6 +77,8 @@ impl GlContext {
             renderbuffers: Vec::with_capacity(1 + groups),
             textures: Vec::new(),
             stencil: None,
+            depth,
+            depth_buffer: None,
             copy: None,
         };
         if let Err(e) = self.make(&mut drawing, &vertices, groups, stencils) {
@@ -81,24 +89,35 @@ impl GlContext {
     }
 
     /// How `scene` is drawn: by time passes if it moves; into a
-    /// multisampled target, one sample read, if it has rectangle lines; by
-    /// native MSAA if its sample pattern is exactly the driver's and it has
-    /// no line (llvmpipe draws every line of a multisampled target as a
-    /// rectangle); else by shifted passes (one, without antialiasing).
+    /// multisampled target, one sample read, if it has rectangle lines
+    /// (refused with a depth attachment, which is single-sample:
+    /// `depth.rs`); by native MSAA if its sample pattern is exactly the
+    /// driver's, it has no line (llvmpipe draws every line of a
+    /// multisampled target as a rectangle) and no depth attachment; else
+    /// by shifted passes (one, without antialiasing).
     unsafe fn layout(
         &self,
         scene: &Scene,
         plan: &Plan,
         bits: u32,
         tile: (u32, u32),
+        depth: bool,
     ) -> Result<passes::Layout, RasterError> {
         if let Some(motion) = &plan.motion {
             return time::layout(scene, plan, motion, bits, tile);
         }
         if lines::has_rectangles(scene) {
+            if depth {
+                return Err(RasterError::Unsupported(
+                    "rectangle lines with a depth attachment: they are drawn into a \
+                     multisampled target, whose depth cannot be read back sample by \
+                     sample without a conversion to float"
+                        .to_owned(),
+                ));
+            }
             return msaa::at_one_sample(scene, plan, bits, tile, &self.offered);
         }
-        if let Some(aa) = &plan.antialias {
+        if let Some(aa) = plan.antialias.as_ref().filter(|_| !depth) {
             if let Some((count, slots)) = samples::native(aa, &self.offered) {
                 if !lines::has_lines(scene) {
                     return Ok(msaa::native(scene, bits, tile, count, &slots));
@@ -145,6 +164,7 @@ impl GlContext {
             self.make_multisampled(drawing, groups, stencils)?;
         } else {
             self.make_single_sampled(drawing, groups, stencils);
+            self.make_depth(drawing)?;
         }
         let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
         if status != glow::FRAMEBUFFER_COMPLETE {
@@ -212,7 +232,8 @@ impl GlContext {
         self.gl.bind_framebuffer(glow::FRAMEBUFFER, drawing.fbo);
     }
 
-    /// Clears every attachment of `drawing`, the stencil to 0.
+    /// Clears every attachment of `drawing`, the stencil to 0, the depth
+    /// to 1.
     pub(super) unsafe fn clear(&self, drawing: &Drawing) {
         let gl = &self.gl;
         self.bind_framebuffer(drawing);
@@ -225,14 +246,18 @@ impl GlContext {
             gl.stencil_mask(0xFF);
             gl.clear_buffer_depth_stencil(glow::DEPTH_STENCIL, 0, 1.0, 0);
         }
+        if drawing.depth.is_some() {
+            gl.depth_mask(true);
+            gl.clear_buffer_f32_slice(glow::DEPTH, 0, &[1.0]);
+        }
     }
 
     /// Issues `drawing`'s draw calls into its attachments as they stand:
     /// per pass, its tile's viewport and the canvas's scissor in it (or its
     /// one pixel's, for a time pass), then one `glDrawArrays` per run of its
     /// stream, with the state the run needs (the
-    /// context's state is every case's, so it is set each time). Returns
-    /// without waiting.
+    /// context's state is every case's, so it is set each time, and the
+    /// depth state put back after). Returns without waiting.
     pub(super) unsafe fn draw(&self, drawing: &Drawing) {
         let gl = &self.gl;
         let ((w, h), (tw, th)) = (drawing.canvas, drawing.target);
@@ -241,6 +266,7 @@ impl GlContext {
         gl.disable(glow::BLEND);
         gl.enable_draw_buffer(glow::BLEND, 0);
         gl.stencil_mask(0xFF);
+        self.set_depth_state(drawing);
         gl.bind_vertex_array(Some(drawing.vao));
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
@@ -258,6 +284,7 @@ impl GlContext {
         }
         gl.color_mask(true, true, true, true);
         gl.disable(glow::STENCIL_TEST);
+        self.reset_depth_state();
         gl.bind_vertex_array(None);
     }
 
@@ -349,7 +376,12 @@ impl GlContext {
         if let Some(copy) = drawing.copy {
             gl.delete_framebuffer(copy);
         }
-        for &rb in drawing.renderbuffers.iter().chain(&drawing.stencil) {
+        for &rb in drawing
+            .renderbuffers
+            .iter()
+            .chain(&drawing.stencil)
+            .chain(&drawing.depth_buffer)
+        {
             gl.delete_renderbuffer(rb);
         }
         for &texture in &drawing.textures {
@@ -413,6 +445,11 @@ pub(super) struct Drawing<'a> {
     pub(super) textures: Vec<glow::Texture>,
     /// Depth and stencil, for scenes with polygons.
     pub(super) stencil: Option<glow::Renderbuffer>,
+    /// The depth attachment's format and offset, for scenes that need one
+    /// (`depth.rs`; never with polygons).
+    pub(super) depth: Option<DepthTarget>,
+    /// The depth attachment (single-sample).
+    pub(super) depth_buffer: Option<glow::Renderbuffer>,
     /// The single-sample framebuffer a multisampled drawing's samples
     /// are fetched into, one at a time, to be read.
     pub(super) copy: Option<glow::Framebuffer>,

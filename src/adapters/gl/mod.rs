@@ -7,8 +7,9 @@
 //!
 //! The structure is the `lavapipe` adapter's. A case's primitives
 //! (triangles, `diamond-exit` and `rectangle` lines, polygons) are drawn
-//! in scene order, with no depth test, into the float colour attachments
-//! of one framebuffer object, and read back into a [`Frame`]:
+//! in scene order, with no depth test unless the case needs a depth
+//! attachment (below), into the float colour attachments of one
+//! framebuffer object, and read back into a [`Frame`]:
 //!
 //! - **count** (`R32F`, additive blending `1 + dst`, enabled on this draw
 //!   buffer only): how many primitives cover each sample;
@@ -21,7 +22,15 @@
 //! The primitive index (+ 1, exact in f32 up to 2^24) is a `flat` varying and
 //! doubles as the coverage marker of the last writer. Depth is the case's `z`
 //! as a `noperspective` varying, not the depth buffer (in clip space the
-//! driver's `gl_FragCoord.z`, clamped: `clip.rs`). Attributes are
+//! driver's `gl_FragCoord.z`, clamped: `clip.rs`), unless the case gives a
+//! depth format or a polygon offset (SPEC.md §18): then it is drawn into a
+//! real depth attachment of that format (`depth.rs`: `GL_DEPTH_COMPONENT16`,
+//! `24` or `32F`, the test always passing with writes on, so the last
+//! primitive keeps its depth; `glPolygonOffset(Clamp)` on fill only; in
+//! screen space the case's z as the position's z under `GL_ZERO_TO_ONE`
+//! and `GL_DEPTH_CLAMP`), and a covered sample's depth is the stored value
+//! read back as integers (unorm) or float bits (float32), never through a
+//! float conversion. Attributes are
 //! varyings with the case's interpolation: `smooth` (perspective),
 //! `noperspective` (linear) or `flat`. GL's default provoking vertex is the
 //! last; the adapter sets `glProvokingVertex` (core since GL 3.2) to the
@@ -106,7 +115,9 @@
 //! one of its sample counts (`glGetMultisamplefv`, y up, flipped to the
 //! case's y down) are the plan's offsets, as a set, and the scene has no
 //! line (llvmpipe draws every line of a multisampled target as a
-//! rectangle). Then one pass into float multisample textures (fixed
+//! rectangle) and no depth attachment (a multisampled one cannot be read
+//! back exactly, `depth.rs`; such scenes are drawn by shifted passes).
+//! Then one pass into float multisample textures (fixed
 //! sample locations) is read back sample by sample (a `texelFetch` pass
 //! per sample into a single-sample copy), driver sample i into the slot
 //! at its offset. llvmpipe (Mesa 22.3) reports `GL_MAX_SAMPLES` 4 and one
@@ -127,7 +138,8 @@
 //! above), which brings each pixel's centre onto the pixel's sample j;
 //! sample j alone is read, into the pixel's slot. Triangles and polygons
 //! beside the lines are drawn the same way, exactly; `diamond-exit` lines
-//! beside them are refused (the target would draw them as rectangles).
+//! beside them are refused (the target would draw them as rectangles), as
+//! is a depth attachment (`depth.rs`).
 //! Found: llvmpipe's rectangles match SPEC §4.3 wherever no sample lies
 //! on a border (the bundled wide ones pass), and a sample exactly on a
 //! border goes either way, by where llvmpipe's corners, computed in float
@@ -199,6 +211,8 @@
 //! - `drawing.rs`: one scene set up in the context (vertex buffer,
 //!   framebuffer, stencil), cleared, drawn run by run with each run's
 //!   state, and deleted;
+//! - `depth.rs`: the depth attachment of a scene with a depth format or a
+//!   polygon offset, its state, and its stored values read back;
 //! - `readback.rs`: the attachments read back into a [`Frame`] (slots, or
 //!   time coverage);
 //! - `prepared.rs`: the same scene cleared, drawn and read back one phase
@@ -206,6 +220,7 @@
 
 mod clip;
 mod context;
+mod depth;
 mod drawing;
 mod lines;
 mod msaa;
@@ -222,6 +237,7 @@ use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointClip, Scene};
 
 use super::gpu;
+use super::gpu::depth::DepthTarget;
 use context::{ask_for_softpipe, context, with_context};
 use prepared::prepare;
 
@@ -337,13 +353,15 @@ impl Rasterizer for Softpipe {
 /// lines (`lines.rs` refuses the other rules) and polygons by stencil then
 /// cover, snapped to the case's grid; antialiased scenes by shifted passes
 /// (`passes.rs`) or native MSAA (`msaa.rs`); moving scenes by time passes
-/// (`time.rs`); clip-space scenes, clipped by the driver (`clip.rs`).
+/// (`time.rs`); clip-space scenes, clipped by the driver (`clip.rs`); depth
+/// formats and polygon offsets into a real depth attachment (`depth.rs`).
 fn capabilities() -> Capabilities {
     Capabilities {
         polygons: true,
         motion_blur: true,
         clip_space: true,
         points: true,
+        depth_attachment: true,
         ..gpu::capabilities(true)
     }
 }
@@ -351,8 +369,8 @@ fn capabilities() -> Capabilities {
 /// What the reports show beside the adapter's name, once the context
 /// exists: the renderer, when antialiased cases are drawn by the driver's
 /// multisampling (its positions listed) and when by shifted passes, how
-/// rectangle lines are drawn, and that moving scenes are drawn by time
-/// passes.
+/// rectangle lines are drawn, that moving scenes are drawn by time
+/// passes, and that depth formats and offsets use a depth attachment.
 fn declared() -> Option<String> {
     let description = context::existing_description()?;
     let offered = context::existing(|gl| {
@@ -365,8 +383,10 @@ fn declared() -> Option<String> {
     Some(format!(
         "{description}; antialiasing by the driver's MSAA where a case's sample positions \
          are exactly the driver's ({offered}; y down), by shifted passes (one single-sample \
-         pass per sample slot) otherwise; rectangle lines in a multisampled target, one \
-         sample read; motion by time passes (one scissored draw per pixel and time test)"
+         pass per sample slot) otherwise and with a depth attachment; rectangle lines in a \
+         multisampled target, one sample read; motion by time passes (one scissored draw per \
+         pixel and time test); depth formats and polygon offsets into a real depth attachment, \
+         its stored values read back"
     ))
 }
 
@@ -396,11 +416,17 @@ pub fn driver_multisampling() -> Result<DriverMultisampling, String> {
     })
 }
 
-/// The subpixel bits Mesa's GL snaps the scene to, or why it cannot draw
-/// it: several samples per pixel, a line rule GL does not draw
-/// (`lines.rs`), unsnapped geometry or too many attributes. For
-/// `softpipe`, asks for it if no display exists yet.
-pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32, RasterError> {
+/// The subpixel bits Mesa's GL snaps the scene to and the depth
+/// attachment it needs (`depth.rs`), or why it cannot draw it: several
+/// samples per pixel, a line rule GL does not draw (`lines.rs`),
+/// unsnapped geometry, too many attributes, or a depth attachment
+/// `gpu::depth::target` refuses. For `softpipe`, asks for it if no display
+/// exists yet.
+pub(super) fn accepted(
+    scene: &Scene,
+    plan: &Plan,
+    softpipe: bool,
+) -> Result<(u32, Option<DepthTarget>), RasterError> {
     if plan.antialias.is_none() && plan.samples_per_pixel != 1 {
         return Err(RasterError::Unsupported(format!(
             "{} samples per pixel without a sample pattern",
@@ -417,7 +443,9 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<u32
     if let Some(why) = point_refusal(scene) {
         return Err(RasterError::Unsupported(why));
     }
-    Ok(bits)
+    // GL_DEPTH_CLAMP (core since 3.2) clamps depth without clipping it.
+    let depth = gpu::depth::target(scene, true, "Mesa's GL").map_err(RasterError::Unsupported)?;
+    Ok((bits, depth))
 }
 
 /// Why Mesa's GL cannot draw a point of the scene as the rule's square
@@ -446,13 +474,13 @@ fn point_refusal(scene: &Scene) -> Option<String> {
 /// Sets the scene up, clears, draws and reads back, with the context held
 /// throughout, and deletes what it set up.
 fn rasterize(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
-    let bits = accepted(scene, plan, softpipe)?;
+    let (bits, depth) = accepted(scene, plan, softpipe)?;
     with_context(|gl| {
         gl.insist_on_softpipe(softpipe)?;
         // SAFETY: GL calls on the context current on this thread, with
         // buffers sized to what is read and written.
         unsafe {
-            let drawing = gl.set_up(scene, plan, bits)?;
+            let drawing = gl.set_up(scene, plan, bits, depth)?;
             gl.clear(&drawing);
             gl.draw(&drawing);
             let frame = gl.read_back(&drawing);

@@ -27,12 +27,12 @@ pub(super) fn prepare<'a>(
     plan: &'a Plan,
     softpipe: bool,
 ) -> Result<Box<dyn Prepared + 'a>, RasterError> {
-    let bits = accepted(scene, plan, softpipe)?;
+    let (bits, depth) = accepted(scene, plan, softpipe)?;
     let drawing = with_context(|gl| {
         gl.insist_on_softpipe(softpipe)?;
         // SAFETY: GL calls on the context current on this thread.
         unsafe {
-            let drawing = gl.set_up(scene, plan, bits)?;
+            let drawing = gl.set_up(scene, plan, bits, depth)?;
             gl.gl.finish();
             Ok(drawing)
         }

@@ -10,6 +10,7 @@ use glow::HasContext;
 use super::context::GlContext;
 use super::drawing::Drawing;
 use super::passes::Reading;
+use crate::adapters::gpu::depth::stored_value;
 use crate::frame::Frame;
 use crate::rasterizer::RasterError;
 
@@ -135,7 +136,9 @@ impl GlContext {
 
     /// Reads the canvas whose lower-left window corner is `corner` (of a
     /// multisampled drawing, its sample given) into slot `slot` of each of
-    /// `frame`'s pixels (`samples` per pixel).
+    /// `frame`'s pixels (`samples` per pixel). With a depth attachment
+    /// (single-sample only, `depth.rs`) a covered sample's depth is the
+    /// attachment's stored value, not the depth channel.
     unsafe fn read_pass(
         &self,
         drawing: &Drawing,
@@ -149,6 +152,19 @@ impl GlContext {
         let values: Vec<Vec<f32>> = (1..=groups)
             .map(|k| self.read_canvas(drawing, corner, k, 4, sample))
             .collect();
+        let stored = match (&drawing.depth, &frame.depth) {
+            (Some(target), Some(_)) => {
+                debug_assert!(sample.is_none(), "a depth attachment is single-sample");
+                let words = self.read_depth(drawing, target, corner);
+                Some(
+                    words
+                        .into_iter()
+                        .map(|word| stored_value(target.format, word)),
+                )
+            }
+            _ => None,
+        }
+        .map(Iterator::collect::<Vec<f64>>);
         self.check("drawing and reading back")?;
 
         let channel = |c: usize, i: usize| values[c / 4][i * 4 + c % 4];
@@ -159,7 +175,10 @@ impl GlContext {
             frame.last[at] = channel(0, i) as u32;
             if c > 0.0 {
                 if let Some(depth) = &mut frame.depth {
-                    depth[at] = f64::from(channel(1, i));
+                    depth[at] = match &stored {
+                        Some(stored) => stored[i],
+                        None => f64::from(channel(1, i)),
+                    };
                 }
                 for (k, a) in frame.attributes.iter_mut().enumerate() {
                     a[at] = f64::from(channel(2 + k, i));
