@@ -10,7 +10,7 @@ use rastercheck::scene::depth::unorm_index;
 use rastercheck::scene::{DepthFormat, FillRule, Scene};
 
 use super::available;
-use super::common::adapters::{assert_each, assert_prepared_draws_as_rasterize, bundled_ids};
+use super::common::adapters::assert_prepared_draws_as_rasterize;
 use super::common::{case, inline, report, run};
 
 /// Every bundled depth case is drawn and judged, not refused, and passes
@@ -23,20 +23,18 @@ fn answers_every_depth_case() {
     if !available() {
         return;
     }
-    let ids = bundled_ids("depth", |_| true);
-    assert!(ids.len() >= 17, "{ids:?}");
     assert!(Gl.capabilities().depth_attachment);
-    let ids: Vec<&str> = ids.iter().map(String::as_str).collect();
-    assert_each(
-        &ids,
-        &Gl,
-        |_| {},
-        |_, run, line, failures| {
-            if run.verdict != Verdict::Pass {
-                failures.push(line.to_owned());
-            }
-        },
-    );
+    super::common::depth_drivers::assert_depth_cases_pass(&Gl);
+}
+
+/// The same driver without its offset, or storing a unorm case as f32,
+/// fails the cases that show it (`common::depth_drivers`).
+#[test]
+fn a_wrong_depth_attachment_fails() {
+    if !available() {
+        return;
+    }
+    super::common::depth_drivers::assert_wrong_depth_is_caught(&Gl);
 }
 
 /// An 8×8 screen-space triangle over the canvas's upper-left half at
