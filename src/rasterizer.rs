@@ -5,7 +5,7 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointClip, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -179,6 +179,13 @@ pub trait Rasterizer: Send + Sync {
     /// [`Rasterizer::fixed_clip_rules`]. `None` for a rasterizer that
     /// follows each case's.
     fn fixed_point_clip(&self) -> Option<PointClip> {
+        None
+    }
+
+    /// What limits a kept point's square (`point_bounds`, SPEC.md §17.2)
+    /// in this rasterizer whatever a case states: judged as
+    /// [`Rasterizer::fixed_point_clip`].
+    fn fixed_point_bounds(&self) -> Option<PointBounds> {
         None
     }
 

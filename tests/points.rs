@@ -13,7 +13,8 @@ use rastercheck::production::tiled::Tiled;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{
-    parse_case, ClipXy, DepthMode, FillRule, Limits, Number, PointClip, Primitive, Scene,
+    parse_case, ClipXy, DepthMode, FillRule, Limits, Number, PointBounds, PointClip, Primitive,
+    Scene,
 };
 
 fn scene(json: &str) -> Scene {
@@ -79,6 +80,7 @@ fn random_clip(rng: &mut Rng) -> String {
         String::new()
     };
     let points = rng.pick(&PointClip::NAMES);
+    let bounds = rng.pick(&PointBounds::NAMES);
     let xy = rng.pick(&ClipXy::NAMES);
     let mut primitives = Vec::new();
     for _ in 0..rng.range(1, 3) {
@@ -112,7 +114,7 @@ fn random_clip(rng: &mut Rng) -> String {
     format!(
         r#"{{"name": "t", "canvas": {{"width": 12, "height": 10}}, {viewport}
             "rules": {{"subpixel_bits": {bits}, "fill_rule": "{rule}", "depth": "{depth}"{clip_z},
-                       "clip_points": "{points}", "clip_xy": "{xy}"}},
+                       "clip_points": "{points}", "point_bounds": "{bounds}", "clip_xy": "{xy}"}},
             "primitives": [{}]}}"#,
         primitives.join(", ")
     )
@@ -224,9 +226,23 @@ fn by_formula(s: &Scene) -> (Vec<u16>, Vec<u32>) {
             }
         };
         let half = point.size.as_rbig() / RBig::from(2);
+        // Under `point_bounds: viewport`, pixel centres in [x, x + width)
+        // × [y, y + height) only.
+        let in_view = |px: i64, py: i64| match &s.viewport {
+            Some(vp) if s.rules.clip.bounds == PointBounds::Viewport => {
+                let c = |i: i64| RBig::from(2 * i + 1) / RBig::from(2);
+                let (cx, cy) = (c(px), c(py));
+                cx >= *vp.x.as_rbig()
+                    && cx < vp.x.as_rbig() + vp.width.as_rbig()
+                    && cy >= *vp.y.as_rbig()
+                    && cy < vp.y.as_rbig() + vp.height.as_rbig()
+            }
+            _ => true,
+        };
         for py in 0..h {
             for px in 0..w {
-                if in_interval(px, &centre[0], &half, left, right)
+                if in_view(px, py)
+                    && in_interval(px, &centre[0], &half, left, right)
                     && in_interval(py, &centre[1], &half, top, bottom)
                 {
                     let i = (py * w + px) as usize;
@@ -337,6 +353,24 @@ fn wrong_point_rasterizers_are_caught_by_the_cases() {
         never_pops.contains(&"spec_clip_pop".to_owned()),
         "{never_pops:?}"
     );
+    // `point_bounds: viewport` ignored, and applied where the case says
+    // canvas.
+    let bounded = |bounds: PointBounds| {
+        caught_by(move |s| {
+            let mut s = s.clone();
+            s.rules.clip.bounds = bounds;
+            draw(&Production, &s)
+        })
+    };
+    let unbounded = bounded(PointBounds::Canvas);
+    for name in ["spec_bounds_viewport", "clip_bounds_guard_band_outside"] {
+        assert!(unbounded.contains(&name.to_owned()), "{unbounded:?}");
+    }
+    let always_bounded = bounded(PointBounds::Viewport);
+    assert!(
+        always_bounded.contains(&"clip_viewport_not_a_scissor".to_owned()),
+        "{always_bounded:?}"
+    );
     // The square scissored to the viewport rectangle.
     let scissored = caught_by(|s| {
         let mut frame = draw(&Production, s);
@@ -421,7 +455,12 @@ fn the_worked_examples_spec_section_17_names_exist() {
         assert!(root.join(path).is_file(), "SPEC §17 names {path}");
         named.push(path);
     }
-    for example in ["spec_square", "spec_clip_on_plane", "spec_clip_pop"] {
+    for example in [
+        "spec_square",
+        "spec_clip_on_plane",
+        "spec_clip_pop",
+        "spec_bounds_viewport",
+    ] {
         assert!(
             named.iter().any(|p| p.contains(example)),
             "SPEC §17 cites {example}: {named:?}"

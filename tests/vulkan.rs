@@ -461,13 +461,25 @@ fn multisampled_points_follow_the_rule() {
 }
 
 /// Sub-pixel sizes, sizes off the grid or out of range, and clip-space
-/// squares reaching outside the viewport are refused with the reason.
+/// squares reaching across a viewport edge off the pixel grid are refused
+/// with the reason.
 #[test]
 fn points_the_driver_cannot_draw_exactly_are_refused() {
     if !available() {
         return;
     }
     common::point_drivers::assert_point_refusals(&VULKAN);
+}
+
+/// Clip-space squares reaching outside the viewport are cut at its side
+/// (`point_bounds: viewport`, SPEC.md §17.4), and the canvas-bounded rule
+/// is told apart.
+#[test]
+fn point_squares_are_cut_at_the_viewport() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_squares_cut_at_the_viewport(&VULKAN);
 }
 
 /// The point checks catch the opposite ties, snapped sizes and an

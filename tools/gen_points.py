@@ -10,7 +10,9 @@ centre (i + 1/2) inside it when it lies between the two sides, each side
 closed when the fill rule owns it (left and top for top-left, ...);
 clip-space points discarded whole by their centre (w <= 0; z outside
 [0, w] under depth clip; x or y outside [-w, w] under clip_points: pop);
-and a kept square limited by the canvas only. A case that mixes in a
+and a kept square limited by the canvas, and under point_bounds: viewport
+by the viewport rectangle too (pixel centres in [x, x + width) x
+[y, y + height)). A case that mixes in a
 triangle places it so that no pixel centre lies on its edges (the model
 asserts so), so the triangle needs no tie rule here.
 
@@ -19,8 +21,9 @@ Usage: python3 tools/gen_points.py [-v] [--check]
   --check  write nothing: compare the generated cases with the files in
            cases/points; exit 1 naming each file that differs, is missing,
            or is in cases/points but not generated
-Before writing, the model is checked against two wrong models (the square
-not snapped; popping under guard-band): each must change some case's pin.
+Before writing, the model is checked against three wrong models (the
+square not snapped; popping under guard-band; point_bounds: viewport
+ignored): each must change some case's pin.
 """
 
 import math
@@ -128,9 +131,16 @@ def coverage(case, wrong=None):
         if centre is None:
             continue
         h = F(p.get("size", 1)) / 2
+        bounded = case.clip is not None and wrong != "unbounded" and \
+            case.clip.get("point_bounds", "canvas") == "viewport"
+        vp = {"x": 0, "y": 0, "width": case.width, "height": case.height}
+        vp.update(case.viewport or {})
+        vx, vy, vw, vh = (F(vp[k]) for k in ("x", "y", "width", "height"))
         for py in range(case.height):
             for px in range(case.width):
                 cx, cy = F(px) + F(1, 2), F(py) + F(1, 2)
+                if bounded and not (vx <= cx < vx + vw and vy <= cy < vy + vh):
+                    continue
                 if inside(cx, centre[0] - h, centre[0] + h, owns[0], owns[1]) and \
                         inside(cy, centre[1] - h, centre[1] + h, owns[2], owns[3]):
                     counts[py][px] += 1
@@ -250,6 +260,12 @@ def cases():
              [cpt("0.5", "-0.5", "0.5", 2, 2, attributes=[4, 8])], clip=CLIP),
         Case("clip_viewport_not_a_scissor", "Viewport (4, 4, 8, 8); a centre on x = w lands on its right side x_f = 12, y_f = 8; size 6 gives [9, 15] x [5, 11]: the square reaches 3 columns outside the viewport and is drawn whole: 36 samples.",
              [cpt(1, 0, "0.5", 1, 6)], clip=CLIP, viewport={"x": 4, "y": 4, "width": 8, "height": 8}),
+        Case("spec_bounds_viewport", "SPEC.md section 17.2's worked example of point_bounds: clip_viewport_not_a_scissor under point_bounds: viewport. The square [9, 15] x [5, 11] is limited to the viewport rectangle [4, 12) x [4, 12): columns 9 to 11, rows 5 to 10: 18 samples (36 under canvas).",
+             [cpt(1, 0, "0.5", 1, 6)], clip=dict(CLIP, point_bounds="viewport"), viewport={"x": 4, "y": 4, "width": 8, "height": 8}),
+        Case("clip_bounds_guard_band_outside", "clip_points: guard-band with point_bounds: viewport, as Mesa's lavapipe draws: viewport (4, 4, 8, 8), a centre outside x = w (x = 1.25 w) is kept at x_f = 13, y_f = 8; size 6 gives [10, 16] x [5, 11], limited to the viewport's columns 10 and 11, rows 5 to 10: 12 samples (36 under canvas; none under pop).",
+             [cpt("1.25", 0, "0.5", 1, 6)], clip=dict(GB, point_bounds="viewport"), viewport={"x": 4, "y": 4, "width": 8, "height": 8}),
+        Case("clip_bounds_fractional_viewport", "point_bounds: viewport with a viewport edge through pixel centres: viewport (4.5, 4, 8, 8), a centre on x = -w lands on its left side x_f = 4.5, y_f = 8; size 4 gives [2.5, 6.5] x [6, 10]. The rectangle [4.5, 12.5) holds the centre 4.5 of column 4 (closed at its left) and not 12.5: columns 4 and 5, rows 6 to 9: 8 samples.",
+             [cpt(-1, 0, "0.5", 1, 4)], clip=dict(CLIP, point_bounds="viewport"), viewport={"x": "4.5", "y": 4, "width": 8, "height": 8}),
         Case("clip_with_triangle", "A clip-space triangle wholly inside the clip volume, and a point over it: x_f = 8 (1 + x), so the triangle lands at (1.6, 2.4), (14.4, 3.2), (4, 13.6); the point at (12, 12), size 4.",
              [{"triangle": [{"clip": ["-0.8", "-0.7", "0.5", 1]}, {"clip": ["0.8", "-0.6", "0.5", 1]}, {"clip": ["-0.5", "0.7", "0.5", 1]}]},
               cpt("0.5", "0.5", "0.25", 1, 4)], clip=CLIP),
@@ -325,7 +341,7 @@ def main():
     args = sys.argv[1:]
     all_cases = cases()
     # Each wrong model must change some pin, or the cases do not tell it.
-    for wrong in ["unsnapped", "pops"]:
+    for wrong in ["unsnapped", "pops", "unbounded"]:
         changed = [c.name for c in all_cases if covered(c, wrong) != covered(c)]
         assert changed, "no case tells the %s model from the right one" % wrong
         if "-v" in args:

@@ -182,10 +182,11 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// fixed `clip_xy` and `clip_z` where the case states others (under
 /// depth clamp `clip_z` means nothing; `clip_xy` still does), its fixed
 /// `interpolate_from`, and for a clip-space case with points its fixed
-/// `clip_points`. `clip_xy`, `clip_z` and `interpolate_from` shape
+/// `clip_points` and `point_bounds`. `clip_xy`, `clip_z` and `interpolate_from` shape
 /// triangles only (a point is kept or popped by its centre, and its
 /// values are its one vertex's, SPEC.md §17.2): a case of points alone is
-/// judged under the driver's own `clip_points` and nothing else.
+/// judged under the driver's own `clip_points` and `point_bounds` and
+/// nothing else.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
@@ -219,6 +220,12 @@ impl OwnConventions {
         if scene.in_clip_space() {
             if let Some(points) = candidate.fixed_point_clip().filter(|_| scene.has_points()) {
                 clip.points = points;
+            }
+            if let Some(bounds) = candidate
+                .fixed_point_bounds()
+                .filter(|_| scene.has_points())
+            {
+                clip.bounds = bounds;
             }
         }
         let clip = (clip != stated).then_some(clip);

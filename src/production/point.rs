@@ -28,7 +28,9 @@ use super::fixed::{Fixed, Format, MAX_FRAC_BITS};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_POINT_SIZE};
-use crate::scene::{Canvas, DepthMode, FillRule, Number, Point, PointClip, Scene, Vertex};
+use crate::scene::{
+    Canvas, DepthMode, FillRule, Number, Point, PointBounds, PointClip, Scene, Vertex, Viewport,
+};
 
 // The bounds the module doc states: a centre plus or minus half the side,
 // in units, fits in i64 with room to spare.
@@ -202,7 +204,8 @@ pub(crate) fn draw(
 /// Draws a clip-space point (SPEC.md §17.2): discarded whole when w ≤ 0,
 /// when depth clips and its centre's z is outside [0, w], or under
 /// `clip_points: pop` when its centre is outside −w ≤ x, y ≤ w; otherwise
-/// its whole square within the canvas (not the viewport).
+/// its whole square within the canvas, and within the viewport rectangle
+/// under `point_bounds: viewport`.
 pub(crate) fn draw_clip(
     point: &Point,
     scene: &Scene,
@@ -226,8 +229,29 @@ pub(crate) fn draw_clip(
     }
     let projected = mapping.project(&super::clip::clipper::ClipVertex::of(vertex));
     let half = point.size.as_rbig() / RBig::from(2u8);
-    let columns = exact_span(&projected.h[0], &half, Ends::of(rule, 0), canvas.width);
-    let rows = exact_span(&projected.h[1], &half, Ends::of(rule, 1), canvas.height);
+    let mut columns = exact_span(&projected.h[0], &half, Ends::of(rule, 0), canvas.width);
+    let mut rows = exact_span(&projected.h[1], &half, Ends::of(rule, 1), canvas.height);
+    if clip.bounds == PointBounds::Viewport {
+        // The viewport rectangle as a span of its own: centre o + e/2,
+        // half e/2, its left and top closed, its right and bottom open.
+        let view = scene
+            .viewport
+            .clone()
+            .unwrap_or_else(|| Viewport::canvas(canvas.width, canvas.height));
+        let two = RBig::from(2u8);
+        let bound = |origin: &Number, extent: &Number, side| {
+            let half = extent.as_rbig() / &two;
+            let ends = Ends {
+                low: true,
+                high: false,
+            };
+            exact_span(&(origin.as_rbig() + &half), &half, ends, side)
+        };
+        let x = bound(&view.x, &view.width, canvas.width);
+        let y = bound(&view.y, &view.height, canvas.height);
+        columns = columns.start.max(x.start)..columns.end.min(x.end);
+        rows = rows.start.max(y.start)..rows.end.min(y.end);
+    }
     if columns.is_empty() || rows.is_empty() {
         return;
     }

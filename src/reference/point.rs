@@ -9,8 +9,9 @@
 //!
 //! Clip space (§17.2) goes through `clip/`'s projection, viewport and snap
 //! (`homogeneous::screen_point`), never its clipper: a point is kept or
-//! discarded whole by its centre, and a kept square is limited only by the
-//! canvas, not by the viewport.
+//! discarded whole by its centre, and a kept square is limited by the
+//! canvas, and by the viewport rectangle only under `point_bounds:
+//! viewport` (`clip/mod.rs` applies that bound).
 //!
 //! Not here: antialiasing and motion, which the reader refuses for points.
 

@@ -138,6 +138,8 @@ pub struct ClipInfo {
     pub interpolate_from: &'static str,
     /// What the side planes do to points (SPEC.md §17).
     pub clip_points: &'static str,
+    /// What limits a kept point's square (SPEC.md §17.2).
+    pub point_bounds: &'static str,
 }
 
 impl ClipInfo {
@@ -148,6 +150,7 @@ impl ClipInfo {
             depth: clip.depth.name(),
             interpolate_from: clip.values.name(),
             clip_points: clip.points.name(),
+            point_bounds: clip.bounds.name(),
         }
     }
 }

@@ -116,6 +116,23 @@ case_names!(PointClip {
     GuardBand => "guard-band",
 });
 
+/// What limits a kept point's square in clip space (SPEC.md §17.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PointBounds {
+    /// The canvas only: a square near the viewport's side reaches
+    /// outside the viewport rectangle, as the specifications draw it.
+    Canvas,
+    /// The viewport rectangle too: only pixels whose centre lies in it
+    /// (closed at its left and top, open at its right and bottom) are
+    /// covered, as Mesa's llvmpipe and lavapipe draw (measured).
+    Viewport,
+}
+
+case_names!(PointBounds {
+    Canvas => "canvas",
+    Viewport => "viewport",
+});
+
 /// The clip-space conventions of a case, with their defaults.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ClipRules {
@@ -126,6 +143,8 @@ pub struct ClipRules {
     pub values: InterpolateFrom,
     /// What the side planes do to a point.
     pub points: PointClip,
+    /// What limits a kept point's square.
+    pub bounds: PointBounds,
 }
 
 impl Default for ClipRules {
@@ -136,21 +155,23 @@ impl Default for ClipRules {
             depth: DepthMode::Clip,
             values: InterpolateFrom::Snapped,
             points: PointClip::Pop,
+            bounds: PointBounds::Canvas,
         }
     }
 }
 
 impl ClipRules {
     /// The conventions a clipping stage fixes, in words: `clip_xy`,
-    /// `clip_z`, `interpolate_from` and `clip_points` (`depth` is always
-    /// the case's).
+    /// `clip_z`, `interpolate_from`, `clip_points` and `point_bounds`
+    /// (`depth` is always the case's).
     pub fn words(&self) -> String {
         format!(
-            "clip_xy {}, clip_z {}, interpolate_from {}, clip_points {}",
+            "clip_xy {}, clip_z {}, interpolate_from {}, clip_points {}, point_bounds {}",
             self.xy.name(),
             self.z.name(),
             self.values.name(),
-            self.points.name()
+            self.points.name(),
+            self.bounds.name()
         )
     }
 

@@ -39,7 +39,9 @@ pub mod samples;
 pub mod time;
 
 pub use case::{parse_case, CaseError, Limits};
-pub use clip::{ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport};
+pub use clip::{
+    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
+};
 pub use depth::{DepthBias, DepthFormat};
 pub use number::Number;
 pub use rules::{

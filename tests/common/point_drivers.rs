@@ -507,7 +507,8 @@ pub fn assert_multisampled_points(candidate: &dyn Rasterizer) {
 /// Points the driver cannot draw as the rule's square are refused, each
 /// with its reason.
 pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
-    let viewport = r#"{"x": 4, "y": 4, "width": 16, "height": 16}"#;
+    // A viewport whose left side runs through pixel centres.
+    let viewport = r#"{"x": 4.5, "y": 4, "width": 16, "height": 16}"#;
     let cases = [
         // Under one pixel (below the range, or drawn one pixel wide), off
         // the 8-bit grid by half a step, beyond the range.
@@ -534,24 +535,60 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
                 None,
                 Some(viewport),
             ),
-            "outside the viewport rectangle",
+            "edge off the pixel grid",
         ),
         (
             scene(
                 24,
                 &[Spot {
-                    at: [2.0625, 0.0, 1.0, 2.0],
+                    at: [-2.0, 0.0, 1.0, 2.0],
                     size: 4.0,
                 }],
                 "",
                 None,
                 Some(viewport),
             ),
-            "outside the viewport rectangle",
+            "edge off the pixel grid",
         ),
     ];
     for (scene, why) in cases {
         assert_refused(candidate, &scene, why);
+    }
+}
+
+/// Squares reaching outside a viewport rectangle on whole pixels are drawn
+/// and pass under the driver's own `point_bounds` (the viewport, as Mesa
+/// draws them), and the frame departs from the canvas-bounded rule: the
+/// square is cut at the viewport's side, not drawn whole.
+pub fn assert_squares_cut_at_the_viewport(candidate: &dyn Rasterizer) {
+    use rastercheck::harness::suite::Verdict;
+    use rastercheck::scene::PointBounds;
+    assert_eq!(candidate.fixed_point_bounds(), Some(PointBounds::Viewport));
+    let viewport = r#"{"x": 4, "y": 4, "width": 16, "height": 16}"#;
+    // Inside near x = w (X = 19, [16, 22]), on x = w (X = 20, [18, 22]).
+    for (x, size, cut) in [(1.75, 6.0, 24), (2.0, 4.0, 8)] {
+        let scene = scene(
+            24,
+            &[Spot {
+                at: [x, 0.0, 1.0, 2.0],
+                size,
+            }],
+            "",
+            None,
+            Some(viewport),
+        );
+        let (_, run) = super::run(&scene, candidate);
+        assert_eq!(run.verdict, Verdict::Pass, "x = {x}: {:?}", run.verdict);
+        let frame = run.frame.expect("a frame");
+        let drawn = frame.coverage.iter().filter(|&&c| c > 0).count();
+        assert_eq!(drawn, cut, "x = {x}:\n{}", picture(&frame));
+        let mut whole = scene.clone();
+        whole.rules.clip.bounds = PointBounds::Canvas;
+        let canvas_bounded = rastercheck::reference::render(&whole, &Plan::for_scene(&whole));
+        assert!(
+            frame.coverage != canvas_bounded.coverage,
+            "x = {x}: the canvas-bounded square is told apart"
+        );
     }
 }
 
@@ -659,6 +696,17 @@ pub fn assert_judged_under_own_point_clip(candidate: &dyn Rasterizer) {
                 .describe()
                 .contains(&format!("clip_points {}", own.name())));
         }
+    }
+    // Its `point_bounds` too: a case stating canvas is judged under the
+    // driver's viewport bound, and says so.
+    if let Some(bounds) = candidate.fixed_point_bounds() {
+        scene.rules.clip.points = own;
+        scene.rules.clip.bounds = rastercheck::scene::PointBounds::Canvas;
+        let conventions = OwnConventions::of(candidate, &scene);
+        assert_eq!(conventions.clip.map(|c| c.bounds), Some(bounds));
+        assert!(conventions
+            .describe()
+            .contains(&format!("point_bounds {}", bounds.name())));
     }
     let mut triangles = scene.clone();
     triangles.primitives = inline(&format!(

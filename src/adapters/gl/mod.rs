@@ -234,7 +234,7 @@ mod time;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointClip, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
 
 use super::gpu;
 use super::gpu::depth::DepthTarget;
@@ -296,6 +296,12 @@ impl Rasterizer for Gl {
     /// adapter refuses the points where that shows (`gpu::points`).
     fn fixed_point_clip(&self) -> Option<PointClip> {
         Some(PointClip::Pop)
+    }
+
+    /// Mesa limits a point's square to the viewport rectangle (measured on
+    /// the bundled point cases, SPEC.md §17.4).
+    fn fixed_point_bounds(&self) -> Option<PointBounds> {
+        Some(PointBounds::Viewport)
     }
 
     fn declared(&self) -> Option<String> {

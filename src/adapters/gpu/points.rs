@@ -10,13 +10,12 @@
 //!   may cover no sample;
 //! - half the size on the driver's subpixel grid, so that the corners
 //!   X ± size/2 of a snapped centre are on it and nothing is rounded;
-//! - in clip space, the square within the viewport rectangle: lavapipe
-//!   draws a point whose centre is outside the side planes (no popping)
-//!   but limits its square to the viewport rectangle, which the rule does
-//!   not (a point's square may reach outside the viewport, §17); llvmpipe's
-//!   GL pops it. Inside the rectangle they and the rule agree, whatever
-//!   the case's `clip_points`: a centre outside the planes puts the square
-//!   outside the rectangle;
+//! - in clip space, a square reaching outside the viewport rectangle
+//!   only across the rectangle's edges on whole pixels: lavapipe and
+//!   llvmpipe limit a point's square to the viewport rectangle (judged
+//!   under `point_bounds: viewport`, their `fixed_point_bounds`), and
+//!   where an edge lies off the pixel grid how they round it is
+//!   unmeasured;
 //! - in screen space, on a driver that pops (GL), the centre at least half
 //!   a pixel inside the canvas: the target's viewport covers the canvas,
 //!   and a shifted pass moves the centre by less than half a pixel, so no
@@ -107,9 +106,10 @@ fn near_the_edge(scene: &Scene, point: &Point) -> Option<String> {
     })
 }
 
-/// Why a clip-space point's square reaches outside the viewport rectangle,
-/// which Mesa limits it to, if it does (a point with w ≤ 0 is discarded by
-/// both and never refused).
+/// Why a clip-space point's square cannot be judged where it reaches
+/// outside the viewport rectangle, which Mesa limits it to: an edge of the
+/// rectangle off the pixel grid (a point with w ≤ 0 is discarded by both
+/// and never refused).
 fn outside_viewport(scene: &Scene, point: &Point, half: &RBig) -> Option<String> {
     let view = scene.viewport.as_ref()?;
     let v = &point.vertices[0];
@@ -128,10 +128,15 @@ fn outside_viewport(scene: &Scene, point: &Point, half: &RBig) -> Option<String>
     let inside = |c: &RBig, origin: &Number, extent: &Number| {
         c - half >= *origin.as_rbig() && c + half <= origin.as_rbig() + extent.as_rbig()
     };
-    (!(inside(&x, &view.x, &view.width) && inside(&y, &view.y, &view.height))).then(|| {
+    let whole = [&view.x, &view.y, &view.width, &view.height]
+        .iter()
+        .all(|n| n.as_rbig().is_int());
+    let reaches = !(inside(&x, &view.x, &view.width) && inside(&y, &view.y, &view.height));
+    (reaches && !whole).then(|| {
         format!(
-            "a point of size {} whose square reaches outside the viewport rectangle: \
-             Mesa limits a point's square to the viewport, the rule does not (SPEC.md §17)",
+            "a point of size {} whose square reaches outside a viewport rectangle with an \
+             edge off the pixel grid: where Mesa cuts the square there is unmeasured \
+             (SPEC.md §17.4)",
             point.size.to_exact_string()
         )
     })
@@ -225,15 +230,23 @@ mod tests {
     }
 
     #[test]
-    fn clip_squares_outside_the_viewport_and_popped_edges_are_refused() {
+    fn clip_squares_across_fractional_viewport_edges_and_popped_edges_are_refused() {
         // x = 0 is the viewport's centre, X = 12: a size-16 square fills it
         // exactly; size 17 reaches out.
         assert_eq!(
             why(&scene(true, [0, 0, 1], Number::from_int(16)), false),
             None
         );
-        let out = why(&scene(true, [0, 0, 1], Number::from_int(17)), false);
-        assert!(out.unwrap().contains("outside the viewport rectangle"));
+        // Reaching out across whole-pixel edges is judged (under
+        // `point_bounds: viewport`); across an edge off the grid, refused.
+        assert_eq!(
+            why(&scene(true, [0, 0, 1], Number::from_int(17)), false),
+            None
+        );
+        let mut fractional = scene(true, [0, 0, 1], Number::from_int(17));
+        fractional.viewport.as_mut().unwrap().x = Number::ratio(9, 2);
+        let out = why(&fractional, false);
+        assert!(out.unwrap().contains("edge off the pixel grid"));
         // w ≤ 0 is discarded by driver and rule alike.
         assert_eq!(
             why(&scene(true, [0, 0, -1], Number::from_int(17)), false),

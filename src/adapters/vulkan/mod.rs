@@ -136,8 +136,8 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{
-    Antialias, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, LineRule, Pattern, PointClip,
-    Primitive, Scene,
+    Antialias, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, LineRule, Pattern, PointBounds,
+    PointClip, Primitive, Scene,
 };
 
 use super::gpu::{self, Placement};
@@ -245,11 +245,16 @@ impl Rasterizer for Vulkan {
 
     /// Vulkan lets the device choose. lavapipe pops no point: it draws one
     /// whose centre is outside the side planes (measured,
-    /// `tests/vulkan.rs`), but limits its square to the viewport rectangle,
-    /// so the adapter refuses a square reaching outside it
-    /// (`gpu::points`), and only a guard band is left to see.
+    /// `tests/vulkan.rs`), and limits its square to the viewport rectangle
+    /// ([`Rasterizer::fixed_point_bounds`]).
     fn fixed_point_clip(&self) -> Option<PointClip> {
         Some(PointClip::GuardBand)
+    }
+
+    /// Mesa limits a point's square to the viewport rectangle (measured on
+    /// the bundled point cases, SPEC.md §17.4).
+    fn fixed_point_bounds(&self) -> Option<PointBounds> {
+        Some(PointBounds::Viewport)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -7,7 +7,7 @@ use crate::scene::rules::limits::{CLIP_LIMIT, COORD_LIMIT, W_LIMIT};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{
     parse_case, DepthMode, InterpolateFrom, Interpolation, LastPixel, Limits, LineParameter,
-    LineRule, Number, PointClip, Primitive, ProvokingVertex, Scene, Vertex,
+    LineRule, Number, PointBounds, PointClip, Primitive, ProvokingVertex, Scene, Vertex,
 };
 
 /// Whether a scene is within SPEC.md's limits (§8), as a case file must be.
@@ -283,6 +283,9 @@ pub fn case_json(scene: &Scene) -> String {
         }
         if clip.points != PointClip::Pop {
             rules.push(format!("\"clip_points\": \"{}\"", clip.points.name()));
+        }
+        if clip.bounds != PointBounds::Canvas {
+            rules.push(format!("\"point_bounds\": \"{}\"", clip.bounds.name()));
         }
         viewport = format!(
             "  \"viewport\": {{ \"x\": {}, \"y\": {}, \"width\": {}, \"height\": {}, \"min_depth\": {}, \"max_depth\": {} }},\n",

@@ -17,7 +17,7 @@ use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference;
 use crate::scene::{
-    ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, PointClip, Scene,
+    ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, PointBounds, PointClip, Scene,
 };
 
 /// How many separating scenes the probe draws, and how many it looks
@@ -54,6 +54,7 @@ fn combinations() -> [ClipRules; 4] {
         depth: DepthMode::Clip,
         values: InterpolateFrom::Snapped,
         points: PointClip::Pop,
+        bounds: PointBounds::Canvas,
     };
     [
         c(ClipXy::GuardBand, ClipZ::ClipThenSnap),

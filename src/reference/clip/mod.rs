@@ -15,7 +15,8 @@ use dashu_int::IBig;
 use dashu_ratio::RBig;
 
 use crate::scene::{
-    ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Interpolation, Primitive, Scene,
+    ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Interpolation, PointBounds, Primitive,
+    Scene,
 };
 use clipper::ClipVertex;
 use homogeneous::Homogeneous;
@@ -56,14 +57,37 @@ where
         columns = within(&columns, viewport.x.as_rbig(), viewport.width.as_rbig());
         rows = within(&rows, viewport.y.as_rbig(), viewport.height.as_rbig());
     }
+    // Pixels a kept point's square may reach: the canvas's, or under
+    // `point_bounds: viewport` those whose centre lies in the viewport
+    // rectangle, as for the guard band.
+    let point_pixels = match clip.bounds {
+        PointBounds::Canvas => [0..i64::from(canvas.width), 0..i64::from(canvas.height)],
+        PointBounds::Viewport => [
+            within(
+                &(0..i64::from(canvas.width)),
+                viewport.x.as_rbig(),
+                viewport.width.as_rbig(),
+            ),
+            within(
+                &(0..i64::from(canvas.height)),
+                viewport.y.as_rbig(),
+                viewport.height.as_rbig(),
+            ),
+        ],
+    };
+    let width = i64::from(canvas.width);
     for (index, primitive) in scene.primitives.iter().enumerate() {
         crate::deadline::check();
         if let Primitive::Point(point) = primitive {
             // Kept or discarded whole by its centre (SPEC.md §17.2); its
-            // square is limited by the canvas only.
+            // square is limited by the canvas, and by the viewport
+            // rectangle under `point_bounds: viewport`.
             if let Some((square, values)) = super::point::clip_square(point, viewport, clip, bits) {
                 super::point::visit(&square, rule, canvas, |pixel| {
-                    visit(index, pixel, with_values.then(|| values.clone()))
+                    let (px, py) = (pixel as i64 % width, pixel as i64 / width);
+                    if point_pixels[0].contains(&px) && point_pixels[1].contains(&py) {
+                        visit(index, pixel, with_values.then(|| values.clone()))
+                    }
                 });
             }
             continue;

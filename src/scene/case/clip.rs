@@ -7,7 +7,7 @@
 use serde_json::Value;
 
 use crate::scene::clip::{
-    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport,
+    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
 };
 use crate::scene::number::Number;
 use crate::scene::rules::{limits, Interpolation};
@@ -18,17 +18,19 @@ use super::schema::Reader;
 use super::validate::within;
 
 /// The rules that only a clip-space case may give.
-const CLIP_RULES: [&str; 5] = [
+const CLIP_RULES: [&str; 6] = [
     "clip_xy",
     "clip_z",
     "depth",
     "interpolate_from",
     "clip_points",
+    "point_bounds",
 ];
 
 impl Reader<'_> {
     /// `rules.clip_xy`, `rules.clip_z`, `rules.depth`,
-    /// `rules.interpolate_from` and `rules.clip_points`.
+    /// `rules.interpolate_from`, `rules.clip_points` and
+    /// `rules.point_bounds`.
     pub(super) fn clip_rules(&self, fields: &Fields, clip: &mut ClipRules) -> Result<()> {
         if let Some((v, p)) = fields.get("clip_xy") {
             clip.xy = named(v, &p, ClipXy::from_name, &ClipXy::NAMES)?;
@@ -44,6 +46,9 @@ impl Reader<'_> {
         }
         if let Some((v, p)) = fields.get("clip_points") {
             clip.points = named(v, &p, PointClip::from_name, &PointClip::NAMES)?;
+        }
+        if let Some((v, p)) = fields.get("point_bounds") {
+            clip.bounds = named(v, &p, PointBounds::from_name, &PointBounds::NAMES)?;
         }
         if let (DepthMode::Clamp, Some((_, p))) = (clip.depth, fields.get("clip_z")) {
             return fail(

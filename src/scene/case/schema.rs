@@ -150,6 +150,7 @@ impl Reader<'_> {
                 "depth_format",
                 "depth_bias",
                 "clip_points",
+                "point_bounds",
             ],
         )?;
         let mut rules = Rules::default();

@@ -8,7 +8,7 @@
 use super::common::{any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::clip::{
-    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointClip, Viewport,
+    ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
 };
 use crate::scene::rules::{limits::CLIP_LIMIT, ProvokingVertex};
 use crate::scene::{Canvas, Interpolation, Number, Point, Primitive, Scene, Triangle, Vertex};
@@ -48,6 +48,7 @@ pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
         depth: *rng.pick(&[DepthMode::Clip, DepthMode::Clip, DepthMode::Clamp]),
         values: *rng.pick(&InterpolateFrom::ALL),
         points: PointClip::Pop,
+        bounds: PointBounds::Canvas,
     };
     if rules.clip.depth == DepthMode::Clamp {
         rules.clip.z = ClipZ::ClipThenSnap;
@@ -68,6 +69,7 @@ pub(super) fn clip_scene(rng: &mut Rng) -> Scene {
             }));
         }
         scene.rules.clip.points = *rng.pick(&PointClip::ALL);
+        scene.rules.clip.bounds = *rng.pick(&PointBounds::ALL);
     }
     scene
 }
