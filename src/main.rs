@@ -89,5 +89,27 @@ fn main() -> ExitCode {
         Command::Diff(args) => commands::diff::diff(args),
         Command::Rasterizers => commands::list_rasterizers(),
     };
-    ExitCode::from(exit.code())
+    leave(exit.code())
+}
+
+/// Ends the process with `code` once everything is written, without the
+/// C library's exit handlers. The driver adapters load Mesa's lavapipe
+/// and llvmpipe GL into this process, each with LLVM, and their exit-time
+/// destructors can crash when both were used ("double free or corruption"
+/// after a complete `run -r vulkan -r gl`, seen on Mesa 22.3): that would
+/// turn a finished run's exit code into 134. Every report file is closed
+/// by now (the commands return after writing them); stdout and stderr are
+/// flushed here.
+fn leave(code: u8) -> ExitCode {
+    use std::io::Write;
+    let flushed = std::io::stdout().flush().is_ok() & std::io::stderr().flush().is_ok();
+    #[cfg(unix)]
+    if flushed {
+        // SAFETY: _exit ends the process at once; nothing after it runs,
+        // and nothing this process still holds needs a destructor (the OS
+        // closes descriptors; the commands waited for their children).
+        unsafe { libc::_exit(i32::from(code)) }
+    }
+    let _ = flushed;
+    ExitCode::from(code)
 }

@@ -110,6 +110,52 @@ case("spec_clip_then_snap",
      [Tri(*SIDE)], viewport=SIDE_VP, conv="cts_cts", subpixel_bits=4)
 
 # ---------------------------------------------------------------------------
+# The worked examples of SPEC 16.2 and 16.3 again at 8 subpixel bits, the
+# drivers' grid (they cannot be handed the 4-bit ones): the near plane and
+# the viewport's right side sit 1/1024 px right of a sample column, so that
+# clipping then snapping moves the new vertices onto the column, as 4 bits
+# did above, while a per-sample test or the guard band sees the column on
+# the other side of the plane.
+
+X8 = F(11, 2) + F(1, 1024)
+NEAR8 = [at(2, 2, (2 - X8) / 16, 1, [1, 0]), at(14, 2, (14 - X8) / 16, 1, [0, 1]),
+         at(2, 14, (2 - X8) / 16, 1, [0, 0])]
+
+case("near8_clip_then_snap",
+     "spec_near_clip_then_snap at 8 subpixel bits: the near plane z = 0 crosses this triangle "
+     "(w = 1, z = (x - 5.5009765625)/16) on x = 5.5 + 1/1024; its new vertices snap (8 bits) to "
+     "x = 5.5, so the new left edge runs through the sample column x = 5.5 and owns it "
+     "(top-left): {N} samples; near8_per_sample covers {near8_per_sample}.",
+     [Tri(*NEAR8)], conv="gb_cts",
+     checks=[differ("near8_clip_then_snap", "near8_per_sample")])
+
+case("near8_per_sample",
+     "spec_near_per_sample at 8 subpixel bits: the triangle of near8_clip_then_snap, not clipped; "
+     "the column x = 5.5 has z_ndc = -1/16384 < 0 and is not covered: {N} samples against "
+     "{near8_clip_then_snap} clipped then snapped.",
+     [Tri(*NEAR8)], conv="gb_ps")
+
+SIDE8_VP = {"x": 1.25, "y": 0.5, "width": "11.2509765625", "height": 14}
+SIDE8 = [CV("-0.75", "-0.875", "0.25", 1, [1]), CV("0.75", "-0.125", "0.25", "0.5", [2]),
+         CV(0, "0.75", "0.75", 1, [3])]
+
+case("side8_guard_band",
+     "spec_guard_band at 8 subpixel bits: the viewport [1.25, 12.5009765625) x [0.5, 14.5) cuts "
+     "this triangle (one vertex at x/w = 1.5) on its right side, 1/1024 px right of the sample "
+     "column x = 12.5. Under the guard band nothing is clipped and the column, inside the "
+     "rectangle, is covered where the triangle reaches it: {N} samples; side8_clip_then_snap "
+     "covers {side8_clip_then_snap}.",
+     [Tri(*SIDE8)], viewport=SIDE8_VP, conv="gb_cts",
+     checks=[differ("side8_guard_band", "side8_clip_then_snap")])
+
+case("side8_clip_then_snap",
+     "spec_clip_then_snap at 8 subpixel bits: the triangle of side8_guard_band clipped against "
+     "x = w; the new vertices land on x_f = 12.5009765625 and snap (8 bits) to 12.5, so the "
+     "clipped polygon's right edge runs through the sample column x = 12.5, which a right edge "
+     "does not own (top-left): {N} samples against {side8_guard_band}.",
+     [Tri(*SIDE8)], viewport=SIDE8_VP, conv="cts_cts")
+
+# ---------------------------------------------------------------------------
 # SPEC 16.4: a vertex behind the eye.
 
 W_CROSS = [at(4, 4, "0.5", 2, [0]), at(12, 4, "0.5", 1, [1]), CV(0, "-0.5", "-0.5", -1, [2])]
