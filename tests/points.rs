@@ -497,3 +497,46 @@ fn the_fuzz_clip_family_draws_points_that_round_trip() {
     assert!(with_points > 20, "{with_points} scenes with points");
     assert_eq!(rules.len(), 2, "{rules:?}");
 }
+
+/// Production, popping and bounding points one way whatever a case states:
+/// what a driver does (SPEC.md §17.4).
+struct FixedPoints(PointClip, PointBounds);
+
+impl Rasterizer for FixedPoints {
+    fn name(&self) -> &str {
+        "fixed-points"
+    }
+    fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
+        Production.capabilities()
+    }
+    fn rasterize(
+        &self,
+        scene: &Scene,
+        plan: &Plan,
+    ) -> Result<Frame, rastercheck::rasterizer::RasterError> {
+        let mut s = scene.clone();
+        s.rules.clip.points = self.0;
+        s.rules.clip.bounds = self.1;
+        Production.rasterize(&s, plan)
+    }
+}
+
+/// (e) probe finds each of the four combinations of `clip_points` and
+/// `point_bounds` a rasterizer may fix, and production following each
+/// case's; a rasterizer without points is not probed.
+#[test]
+fn probe_finds_a_rasterizers_own_point_clipping() {
+    use rastercheck::explore::probe::probe_points;
+    let found = probe_points(&Production).expect("draws clip-space points");
+    assert!(found.follows_case && found.consistent, "{found:?}");
+    assert_eq!(found.scenes, 5, "{found:?}");
+    for points in PointClip::ALL {
+        for bounds in PointBounds::ALL {
+            let found = probe_points(&FixedPoints(points, bounds)).expect("draws points");
+            assert!(!found.follows_case && found.consistent, "{found:?}");
+            assert_eq!(found.clip_points, Some(points.name()), "{found:?}");
+            assert_eq!(found.point_bounds, Some(bounds.name()), "{found:?}");
+        }
+    }
+    assert!(probe_points(&rastercheck::production::foils::FloatF32).is_none());
+}

@@ -592,6 +592,19 @@ pub fn assert_squares_cut_at_the_viewport(candidate: &dyn Rasterizer) {
     }
 }
 
+/// probe, which knows nothing of the driver's declarations, finds the
+/// point clipping and bounds the driver declares (`fixed_point_clip`,
+/// `fixed_point_bounds`) as its own, consistently.
+pub fn assert_probe_finds_declared_point_clipping(candidate: &dyn Rasterizer) {
+    let found = rastercheck::explore::probe::probe_points(candidate).expect("draws points");
+    assert!(found.consistent && !found.follows_case, "{found:?}");
+    assert_eq!(found.scenes, 5, "every probe point drawn: {found:?}");
+    let declared = candidate.fixed_point_clip().expect("declared").name();
+    assert_eq!(found.clip_points, Some(declared), "{found:?}");
+    let bounds = candidate.fixed_point_bounds().expect("declared").name();
+    assert_eq!(found.point_bounds, Some(bounds), "{found:?}");
+}
+
 /// Asserts `candidate` refuses `scene` with a reason containing `why`.
 fn assert_refused(candidate: &dyn Rasterizer, scene: &Scene, why: &str) {
     match candidate.rasterize(scene, &Plan::for_scene(scene)) {

@@ -712,6 +712,15 @@ fn point_squares_are_cut_at_the_viewport() {
     common::point_drivers::assert_squares_cut_at_the_viewport(&Gl);
 }
 
+/// probe finds the point clipping the adapter declares.
+#[test]
+fn probe_finds_the_declared_point_clipping() {
+    if !available() {
+        return;
+    }
+    common::point_drivers::assert_probe_finds_declared_point_clipping(&Gl);
+}
+
 /// The point checks catch the opposite ties, snapped sizes and an
 /// unsnapped centre.
 #[test]

@@ -212,6 +212,12 @@ impl Profile {
                 clip.finding, clip.scenes
             );
         }
+        if let Some(points) = &self.points {
+            s += &format!(
+                "  points:             {} ({} scenes)\n",
+                points.finding, points.scenes
+            );
+        }
         for probe in &self.interpolation {
             match probe.status.as_str() {
                 "measured" => {

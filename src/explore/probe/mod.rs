@@ -57,6 +57,10 @@
 //! - **Clipping** (`clip.rs`), for a rasterizer that takes clip space:
 //!   which `clip_xy` and `clip_z` it follows, or whether it follows each
 //!   case's (SPEC §16.9).
+//! - **Points** (`points.rs`), for one that also draws points: whether a
+//!   point whose centre leaves the side planes pops, and whether its
+//!   square is cut at the viewport (`clip_points`, `point_bounds`, SPEC
+//!   §17.2).
 //!
 //! `run --profile FILE` overrides each case's `rules.fill_rule` with the
 //! profile's rule for the rasterizer the profile names (and drops the
@@ -73,6 +77,7 @@
 mod clip;
 mod describe;
 mod infer;
+mod points;
 mod sampler;
 mod scenes;
 
@@ -85,6 +90,7 @@ use describe::departures;
 use infer::{
     nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
 };
+pub use points::{probe_points, PointProbe};
 
 pub use crate::harness::diagnosis::{Diagnosis, Sampler, SamplerKind};
 
@@ -134,6 +140,10 @@ pub struct Profile {
     /// Its clipping (SPEC.md §16.9), when it takes clip space.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clip: Option<ClipProbe>,
+    /// What it does with clip-space points at the sides (SPEC.md §17.2),
+    /// when it draws them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub points: Option<PointProbe>,
     /// Departures from D3D11 and Vulkan, as sentences.
     pub departures: Vec<String>,
 }
@@ -311,6 +321,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
         interpolation,
         clip: probe_clip(candidate),
+        points: probe_points(candidate),
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);

@@ -1,0 +1,212 @@
+//! What a rasterizer does with clip-space points at the clip volume's
+//! sides (SPEC.md §17.2): whether a point whose centre leaves the side
+//! planes is discarded (`clip_points: pop`) or drawn (`guard-band`), and
+//! whether a kept square is cut at the viewport rectangle (`point_bounds:
+//! viewport`) or only at the canvas. Five points around a 16×16 viewport
+//! inside a 24×24 canvas, each with its square crossing a side of the
+//! viewport, separate the four combinations; each is stated once under the
+//! defaults (pop, canvas) and once under the opposite (guard-band,
+//! viewport), drawn by the candidate, and compared sample by sample
+//! (count and owner) with the reference under each combination, as the
+//! clipping probe does for triangles (`clip.rs`).
+
+use serde::Serialize;
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::Rasterizer;
+use crate::reference;
+use crate::scene::{parse_case, FillRule, Limits, PointBounds, PointClip, Scene};
+
+/// What the point probe found.
+#[derive(Clone, Debug, Serialize)]
+pub struct PointProbe {
+    /// "follows each case's clip_points and point_bounds", "its own:
+    /// clip_points guard-band, point_bounds viewport", or the nearest
+    /// combination and why it is not certain.
+    pub finding: String,
+    pub follows_case: bool,
+    /// Its own `clip_points` and `point_bounds`, when they are fixed.
+    pub clip_points: Option<&'static str>,
+    pub point_bounds: Option<&'static str>,
+    /// Whether one answer explains every sample of every scene.
+    pub consistent: bool,
+    /// Samples that differ from the reference under each combination,
+    /// per statement: `[stated][combination]`, combinations in the order
+    /// of [`combinations`].
+    pub mismatches: Vec<Vec<usize>>,
+    /// Scenes drawn (a refused one is skipped).
+    pub scenes: usize,
+}
+
+/// The four combinations of `clip_points` and `point_bounds`.
+fn combinations() -> [(PointClip, PointBounds); 4] {
+    [
+        (PointClip::Pop, PointBounds::Canvas),
+        (PointClip::Pop, PointBounds::Viewport),
+        (PointClip::GuardBand, PointBounds::Canvas),
+        (PointClip::GuardBand, PointBounds::Viewport),
+    ]
+}
+
+fn describe((points, bounds): (PointClip, PointBounds)) -> String {
+    format!(
+        "clip_points {}, point_bounds {}",
+        points.name(),
+        bounds.name()
+    )
+}
+
+/// The probe's points, as clip coordinates (x, y, w) and sizes: with
+/// w = 2 the viewport (4, 4) 16×16 puts x/w = ±1 on x_f = 20 and 4. Two
+/// centres outside a side plane (the square reaching back across it), two
+/// inside near a side (the square reaching out), one outside the bottom.
+const POINTS: [(&str, &str, &str, &str); 5] = [
+    ("2.25", "0", "2", "4"),
+    ("1.75", "0", "2", "6"),
+    ("0", "-2.25", "2", "4"),
+    ("-1.75", "0.5", "2", "6"),
+    ("0", "2.5", "2", "6"),
+];
+
+/// One probe scene of point `i` under `rule`, stating `clip`.
+fn scene(i: usize, rule: FillRule, (points, bounds): (PointClip, PointBounds)) -> Scene {
+    let (x, y, w, size) = POINTS[i];
+    let text = format!(
+        r#"{{"name": "probe_point_{i}", "canvas": {{"width": 24, "height": 24}},
+            "viewport": {{"x": 4, "y": 4, "width": 16, "height": 16}},
+            "rules": {{"subpixel_bits": 8, "fill_rule": "{}", "clip_points": "{}",
+                       "point_bounds": "{}"}},
+            "primitives": [{{"point": {{"clip": ["{x}", "{y}", "1", "{w}"]}}, "size": "{size}"}}]}}"#,
+        rule.name(),
+        points.name(),
+        bounds.name()
+    );
+    parse_case(&text, "probe_point.json", &Limits::default()).expect("a valid probe scene")
+}
+
+/// Samples whose coverage count or owner differ.
+fn differing(a: &Frame, b: &Frame) -> usize {
+    (0..a.coverage.len())
+        .filter(|&i| a.coverage[i] != b.coverage[i] || a.last[i] != b.last[i])
+        .count()
+}
+
+/// Probes a rasterizer that draws clip-space points; `None` for one that
+/// does not.
+pub fn probe_points(candidate: &dyn Rasterizer) -> Option<PointProbe> {
+    let capabilities = candidate.capabilities();
+    if !capabilities.clip_space || !capabilities.points {
+        return None;
+    }
+    let rule = candidate.fixed_fill_rule().unwrap_or(FillRule::TopLeft);
+    let all = combinations();
+    let statements = [all[0], all[3]];
+    let mut mismatches = vec![vec![0usize; all.len()]; statements.len()];
+    let mut scenes = 0;
+    for i in 0..POINTS.len() {
+        let frames: Vec<Frame> = all
+            .iter()
+            .map(|&c| reference::render(&scene(i, rule, c), &Plan::coverage_only()))
+            .collect();
+        let drawn: Vec<Frame> = statements
+            .iter()
+            .filter_map(|&stated| {
+                let s = scene(i, rule, stated);
+                candidate
+                    .rasterize(&s, &Plan::for_scene(&s))
+                    .ok()
+                    .filter(|f| f.coverage.len() == frames[0].coverage.len())
+            })
+            .collect();
+        if drawn.len() != statements.len() {
+            continue;
+        }
+        scenes += 1;
+        for (k, frame) in drawn.iter().enumerate() {
+            for (c, reference) in frames.iter().enumerate() {
+                mismatches[k][c] += differing(frame, reference);
+            }
+        }
+    }
+    if scenes == 0 {
+        return Some(PointProbe {
+            finding: "unknown: it drew none of the point scenes".to_owned(),
+            follows_case: false,
+            clip_points: None,
+            point_bounds: None,
+            consistent: false,
+            mismatches,
+            scenes,
+        });
+    }
+    let best = |k: usize| {
+        (0..all.len())
+            .min_by_key(|&c| mismatches[k][c])
+            .expect("four")
+    };
+    let (b0, b1) = (best(0), best(1));
+    let exact = mismatches[0][b0] == 0 && mismatches[1][b1] == 0;
+    let follows = exact && all[b0] == statements[0] && all[b1] == statements[1];
+    let fixed = exact && b0 == b1;
+    let nearest = (0..all.len())
+        .min_by_key(|&c| mismatches[0][c] + mismatches[1][c])
+        .expect("four");
+    let (finding, own) = if follows {
+        (
+            "follows each case's clip_points and point_bounds".to_owned(),
+            None,
+        )
+    } else if fixed {
+        (format!("its own: {}", describe(all[b0])), Some(all[b0]))
+    } else {
+        (
+            format!(
+                "nearest {} ({} samples differ over {scenes} scenes stated twice); inconsistent",
+                describe(all[nearest]),
+                mismatches[0][nearest] + mismatches[1][nearest],
+            ),
+            Some(all[nearest]),
+        )
+    };
+    Some(PointProbe {
+        finding,
+        follows_case: follows,
+        clip_points: own.map(|(p, _)| p.name()),
+        point_bounds: own.map(|(_, b)| b.name()),
+        consistent: follows || fixed,
+        mismatches,
+        scenes,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every probe point separates the four combinations from each other
+    /// in at least one pair, and together they separate every pair.
+    #[test]
+    fn the_points_separate_every_combination() {
+        let all = combinations();
+        let mut separated = [[false; 4]; 4];
+        for i in 0..POINTS.len() {
+            let frames: Vec<Frame> = all
+                .iter()
+                .map(|&c| {
+                    reference::render(&scene(i, FillRule::TopLeft, c), &Plan::coverage_only())
+                })
+                .collect();
+            for a in 0..4 {
+                for b in 0..4 {
+                    separated[a][b] |= differing(&frames[a], &frames[b]) > 0;
+                }
+            }
+        }
+        for a in 0..4 {
+            for b in 0..4 {
+                assert_eq!(separated[a][b], a != b, "{a} {b}");
+            }
+        }
+    }
+}
