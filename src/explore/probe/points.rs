@@ -197,15 +197,15 @@ mod tests {
                     reference::render(&scene(i, FillRule::TopLeft, c), &Plan::coverage_only())
                 })
                 .collect();
-            for a in 0..4 {
-                for b in 0..4 {
-                    separated[a][b] |= differing(&frames[a], &frames[b]) > 0;
+            for (a, row) in separated.iter_mut().enumerate() {
+                for (b, cell) in row.iter_mut().enumerate() {
+                    *cell |= differing(&frames[a], &frames[b]) > 0;
                 }
             }
         }
-        for a in 0..4 {
-            for b in 0..4 {
-                assert_eq!(separated[a][b], a != b, "{a} {b}");
+        for (a, row) in separated.iter().enumerate() {
+            for (b, &cell) in row.iter().enumerate() {
+                assert_eq!(cell, a != b, "{a} {b}");
             }
         }
     }
