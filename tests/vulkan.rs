@@ -529,3 +529,27 @@ fn a_wrong_depth_attachment_fails() {
     }
     common::depth_drivers::assert_wrong_depth_is_caught(&VULKAN);
 }
+
+/// unorm16 and float32 depth under a standard pattern the device
+/// multisamples is drawn into its own multisampled depth attachment and
+/// read back sample by sample (`native MSAA`), unorm24 by shifted passes
+/// (its values near 1 cannot be read through a float); both pass, and the
+/// native read-back is what `a_wrong_depth_attachment_fails` catches
+/// without its offset.
+#[test]
+fn multisampled_depth_is_read_back_sample_by_sample() {
+    if !available() {
+        return;
+    }
+    for (id, method) in [
+        ("depth/offset_constant_standard4", "native MSAA"),
+        ("depth/offset_negative_standard4", "native MSAA"),
+        ("depth/unorm24_half_way_standard4", "shifted passes"),
+    ] {
+        let (reference, run) = run(&case(id));
+        eprintln!("{}", report(id, &reference, &run));
+        assert_eq!(run.verdict, Verdict::Pass, "{id}");
+        let frame = run.frame.expect("a frame");
+        assert_eq!(frame.method, Some(method), "{id}");
+    }
+}

@@ -94,6 +94,8 @@ pub fn assert_wrong_depth_is_caught(candidate: &dyn Rasterizer) {
                 "depth/offset_negative",
                 "depth/spec_offset_clip",
                 "depth/offset_beyond_one",
+                "depth/offset_constant_standard4",
+                "depth/offset_negative_standard4",
             ],
         ),
         (
@@ -102,6 +104,7 @@ pub fn assert_wrong_depth_is_caught(candidate: &dyn Rasterizer) {
                 "depth/spec_depth_unorm16_half_way",
                 "depth/unorm16_plane",
                 "depth/spec_offset_constant",
+                "depth/offset_constant_standard4",
             ],
         ),
     ];

@@ -12,7 +12,9 @@
 //! as the colour channels keep its values. The adapter reads the stored
 //! integers (unorm) or floats (float32) back, never a conversion of them
 //! to float: a unorm24 value near 1 is within an f32 ulp of its
-//! neighbours.
+//! neighbours. The one exception, a multisampled attachment, which no
+//! copy reads, is loaded by a shader as floats: unorm16 and float32 only,
+//! the stored value recovered exactly ([`sampled_value`]).
 
 use dashu_ratio::RBig;
 
@@ -100,6 +102,25 @@ pub(crate) fn stored_value(format: DepthFormat, word: u32) -> f64 {
     }
 }
 
+/// The depth a multisampled attachment's sample reads back as, from the
+/// float a shader loaded it as: a unorm16 sample as the f32 nearest
+/// k/(2^16 − 1), k the integer nearest f·(2^16 − 1) (the load is off by far
+/// less than half a step, so k is the stored one); a float32 sample as
+/// itself. Not for unorm24 (its neighbours near 1 are within an f32 ulp:
+/// the adapters copy it out instead).
+#[cfg_attr(not(feature = "vulkan"), allow(dead_code))] // the gl adapter copies only
+pub(crate) fn sampled_value(format: DepthFormat, f: f32) -> f64 {
+    match format.unorm_bits() {
+        Some(bits) => {
+            debug_assert_eq!(bits, 16, "unorm24 is copied out, never sampled");
+            let n = f64::from((1u32 << bits) - 1);
+            let k = (f64::from(f) * n).round().clamp(0.0, n) as u32;
+            f64::from(unorm_value(k, bits))
+        }
+        None => f64::from(f),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -117,5 +138,19 @@ mod tests {
         let half = stored_value(DepthFormat::Unorm16, 32768);
         assert_eq!(half, f64::from((32768.0f64 / 65535.0) as f32));
         assert_eq!(stored_value(DepthFormat::Float32, 0.25f32.to_bits()), 0.25);
+    }
+
+    #[test]
+    fn sampled_values_recover_the_stored_integer() {
+        // A load a few ulps off k/65535 still gives k's grid value.
+        for k in [0u32, 1, 32767, 32768, 65534, 65535] {
+            let exact = k as f32 / 65535.0;
+            for off in [-3i32, 0, 3] {
+                let f = f32::from_bits((exact.to_bits() as i32 + off).max(0) as u32);
+                let want = f64::from(unorm_value(k, 16));
+                assert_eq!(sampled_value(DepthFormat::Unorm16, f), want, "{k} {off}");
+            }
+        }
+        assert_eq!(sampled_value(DepthFormat::Float32, 0.3), f64::from(0.3f32));
     }
 }

@@ -70,10 +70,24 @@ pub(crate) fn channels() -> Vec<String> {
 
 /// The read-back pass of an `n`-sample target: texel (n·x + s, y) of a
 /// single-sample target n times wider gets sample s of pixel (x, y)
-/// (`textureLoad` with sample index s, which is standard location s).
-pub(crate) fn unpack(n: u32) -> String {
+/// (`textureLoad` with sample index s, which is standard location s). A
+/// `depth` target is read as a depth texture, its value in the red
+/// channel.
+pub(crate) fn unpack(n: u32, depth: bool) -> String {
+    let (source, load) = if depth {
+        (
+            "texture_depth_multisampled_2d",
+            "vec4<f32>(textureLoad(source, at, texel.x % {n}), 0.0, 0.0, 0.0)",
+        )
+    } else {
+        (
+            "texture_multisampled_2d<f32>",
+            "textureLoad(source, at, texel.x % {n})",
+        )
+    };
+    let load = load.replace("{n}", &n.to_string());
     format!(
-        "@group(0) @binding(0) var source: texture_multisampled_2d<f32>;
+        "@group(0) @binding(0) var source: {source};
 
 @vertex
 fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {{
@@ -84,7 +98,8 @@ fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {{
 @fragment
 fn fs(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {{
     let texel = vec2<i32>(floor(p.xy));
-    return textureLoad(source, vec2<i32>(texel.x / {n}, texel.y), texel.x % {n});
+    let at = vec2<i32>(texel.x / {n}, texel.y);
+    return {load};
 }}
 "
     )

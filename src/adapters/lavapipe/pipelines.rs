@@ -150,7 +150,7 @@ impl Gpu {
             });
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some("rastercheck lavapipe unpack"),
-                source: wgpu::ShaderSource::Wgsl(wgsl::unpack(super::draw::MSAA).into()),
+                source: wgpu::ShaderSource::Wgsl(wgsl::unpack(super::draw::MSAA, false).into()),
             });
             let pipeline = |format: wgpu::TextureFormat| {
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

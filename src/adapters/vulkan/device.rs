@@ -51,6 +51,12 @@ pub(super) struct Offers {
     /// out (`D16_UNORM`, `X8_D24_UNORM_PACK32`, `D32_SFLOAT`), as
     /// `[unorm16, unorm24, float32]`.
     pub depth_formats: [bool; 3],
+    /// Those the device can also sample in a shader (`SAMPLED_IMAGE`), for
+    /// the per-sample read-back of a multisampled depth attachment.
+    pub depth_sampled: [bool; 3],
+    /// Sample counts a depth attachment can be drawn with and then sampled
+    /// (`framebufferDepthSampleCounts` and `sampledImageDepthSampleCounts`).
+    pub depth_msaa_counts: vk::SampleCountFlags,
     /// `depthBiasClamp`, enabled: a polygon offset may be clamped.
     pub depth_bias_clamp: bool,
     /// `viewportBoundsRange` and `maxViewportDimensions`.
@@ -244,15 +250,16 @@ impl Device {
                 .contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT)
         })
         .unwrap_or(vk::Format::UNDEFINED);
-        let depth_formats = DEPTH_FORMATS.map(|f| {
-            instance
-                .get_physical_device_format_properties(physical, f)
-                .optimal_tiling_features
-                .contains(
-                    vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT
-                        | vk::FormatFeatureFlags::TRANSFER_SRC,
-                )
-        });
+        let depth_features = |needs: vk::FormatFeatureFlags| {
+            DEPTH_FORMATS.map(|f| {
+                instance
+                    .get_physical_device_format_properties(physical, f)
+                    .optimal_tiling_features
+                    .contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT | needs)
+            })
+        };
+        let depth_formats = depth_features(vk::FormatFeatureFlags::TRANSFER_SRC);
+        let depth_sampled = depth_features(vk::FormatFeatureFlags::SAMPLED_IMAGE);
         let offers = Offers {
             subpixel_bits: limits.sub_pixel_precision_bits,
             max_side: limits
@@ -277,6 +284,9 @@ impl Device {
             provoking_last,
             depth_clamp,
             depth_formats,
+            depth_sampled,
+            depth_msaa_counts: limits.framebuffer_depth_sample_counts
+                & limits.sampled_image_depth_sample_counts,
             depth_bias_clamp,
             viewport_bounds: limits.viewport_bounds_range,
             max_viewport: limits.max_viewport_dimensions,

@@ -105,10 +105,6 @@ pub(super) fn render(
     let target = gpu::target_size(scene, gpu.offers.max_side, "this Vulkan device")?;
     let groups = gpu::groups(plan);
     let depth = Stage::of(scene).depth;
-    debug_assert!(
-        depth.is_none() || job.samples == 1,
-        "depth is read back single-sample"
-    );
     let mut drawing = Drawing {
         gpu,
         images: Vec::new(),
@@ -157,9 +153,10 @@ pub(super) fn render(
     for &format in &formats {
         views.push(drawing.image(format, target, colour, n).map_err(failed)?);
     }
-    // The stencil, or the depth attachment, copied out after each pass.
+    // The stencil, or the depth attachment, read back as the colour
+    // targets are (copied out, or sampled by the read-back pass).
     let (last_format, last_usage) = match depth.and_then(depth_attachment) {
-        Some((format, _)) => (format, vk::ImageUsageFlags::TRANSFER_SRC),
+        Some((format, _)) => (format, read_from),
         None => (gpu.offers.stencil_format, vk::ImageUsageFlags::empty()),
     };
     let usage = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT | last_usage;
@@ -177,15 +174,23 @@ pub(super) fn render(
     let mut spreads = Vec::new();
     if n > 1 {
         let wide = (w * n, h);
-        let sets = drawing
-            .descriptor_sets(unpack, &views[..=groups])
-            .map_err(failed)?;
-        for (i, &format) in formats.iter().enumerate() {
+        // The depth attachment, read as a depth texture into an R32 target.
+        let read = if depth.is_some() {
+            &views[..]
+        } else {
+            &views[..=groups]
+        };
+        let sets = drawing.descriptor_sets(unpack, read).map_err(failed)?;
+        let sources = formats
+            .iter()
+            .map(|&f| (f, false))
+            .chain(depth.map(|_| (COUNT_FORMAT, true)));
+        for (i, (format, is_depth)) in sources.enumerate() {
             let usage = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
             let view = drawing.image(format, wide, usage, 1).map_err(failed)?;
             let image = drawing.images.last().map(|i| i.0).unwrap_or_default();
             let pass = unpack.render_pass(format).map_err(failed)?;
-            let pipeline = unpack.pipeline(format, n).map_err(failed)?;
+            let pipeline = unpack.pipeline(format, n, is_depth).map_err(failed)?;
             let framebuffer = drawing.framebuffer(pass, &[view], wide).map_err(failed)?;
             spreads.push((pass, pipeline, framebuffer, sets[i], image));
         }
@@ -427,6 +432,10 @@ pub(super) fn slots(
             if count > 0.0 {
                 if let Some(values) = &mut frame.depth {
                     values[slot] = match depth {
+                        // Sampled by the read-back pass: a float.
+                        Some(format) if job.samples > 1 => {
+                            gpu::depth::sampled_value(format, float(base + depth_at + p * 4))
+                        }
                         Some(format) => gpu::depth::stored_value(
                             format,
                             stored(bytes, base + depth_at, p, format),

@@ -41,6 +41,9 @@
 //! viewport and snaps, and that is what is judged. Depth is the device's
 //! fragment depth, clamped to the depth range. `depth: clamp` is
 //! depthClampEnable with VK_EXT_depth_clip_enable's depthClipEnable off.
+//! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
+//! §16.10). Refused: what `gpu::clip_space_refusal` says, and a viewport
+//! outside the device's bounds.
 //!
 //! # Depth formats and polygon offset (SPEC.md §18)
 //!
@@ -54,11 +57,11 @@
 //! after the offset and never clips. After each pass the attachment's
 //! depth aspect is copied out and its stored integers (or f32s) decoded:
 //! the frame's depth is the device's stored depth, judged on the format's
-//! grid. Such a scene is never multisampled natively (the copy is
-//! single-sample): an antialiased one is drawn by shifted passes.
-//! lavapipe clips then snaps on all six planes (`fixed_clip_rules`, SPEC
-//! §16.10). Refused: what `gpu::clip_space_refusal` says, and a viewport
-//! outside the device's bounds.
+//! grid. An antialiased one is multisampled natively (below) only in
+//! `unorm16` or `float32`, its depth loaded by the read-back pass as a
+//! depth texture, sample by sample, and the stored value recovered from
+//! the float (`gpu::depth::sampled_value`); `unorm24` cannot be recovered
+//! from a float near 1 and goes by shifted passes, each copied out.
 //!
 //! # Rules
 //!
@@ -188,8 +191,6 @@ fn native_samples(scene: &Scene, plan: &Plan, offers: &Offers, passes_only: bool
         .primitives
         .iter()
         .any(|p| matches!(p, Primitive::Line(_)));
-    // A depth attachment is copied out single-sample: such a scene is
-    // drawn by shifted passes.
     (!passes_only
         && matches!(n, 2 | 4 | 8 | 16)
         && native_offered(offers, n)
@@ -197,9 +198,32 @@ fn native_samples(scene: &Scene, plan: &Plan, offers: &Offers, passes_only: bool
         && !lines
         && (offers.sample_rate_shading || !plan.interpolates())
         && plan.motion.is_none()
-        && !scene.depth_rules_need_attachment()
+        && depth_natively(scene, offers, n)
         && fits)
         .then_some(n)
+}
+
+/// Whether the scene's depth attachment, if it needs one, can be drawn
+/// with `n` samples and read back sample by sample: `unorm16` and
+/// `float32`, read by a shader as floats from which the stored value is
+/// recovered exactly (the integer nearest f·(2^16 − 1): the read is off by
+/// far less than half a step; the f32 itself). Not `unorm24`, whose values
+/// near 1 lie within an f32 ulp of each other: such a scene is drawn by
+/// shifted passes, each copied out.
+fn depth_natively(scene: &Scene, offers: &Offers, n: u32) -> bool {
+    if !scene.depth_rules_need_attachment() {
+        return true;
+    }
+    match device::depth_attachment(scene.rules.depth_format) {
+        Some((_, i)) => {
+            scene.rules.depth_format != crate::scene::DepthFormat::Unorm24
+                && offers.depth_sampled[i]
+                && offers
+                    .depth_msaa_counts
+                    .contains(ash::vk::SampleCountFlags::from_raw(n))
+        }
+        None => false,
+    }
 }
 
 impl Rasterizer for Vulkan {

@@ -123,8 +123,8 @@ impl Pipelines {
     /// The render pass of `groups` channel groups at `samples` samples
     /// per pixel: single-sample targets are left for copying out,
     /// multisampled ones for the read-back pass to sample. Its last
-    /// attachment is the stencil, or the `depth` attachment (single-sample
-    /// only), stored and left for copying out.
+    /// attachment is the stencil, or the `depth` attachment, stored and
+    /// left as the colour targets are.
     pub(super) fn render_pass(
         &mut self,
         groups: usize,
@@ -158,7 +158,7 @@ impl Pipelines {
                 .load_op(vk::AttachmentLoadOp::CLEAR)
                 .store_op(vk::AttachmentStoreOp::STORE)
                 .initial_layout(vk::ImageLayout::UNDEFINED)
-                .final_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL),
+                .final_layout(left),
             None => vk::AttachmentDescription::default()
                 .format(self.stencil_format)
                 .samples(count)

@@ -51,8 +51,8 @@ fn fs(v: Varyings) -> Out {{
 
 /// The SPIR-V of the read-back pass of an `n`-sample target
 /// (`wgsl::unpack`).
-pub(super) fn unpack_spirv(n: u32) -> Result<Vec<u32>, String> {
-    compile(&wgsl::unpack(n))
+pub(super) fn unpack_spirv(n: u32, depth: bool) -> Result<Vec<u32>, String> {
+    compile(&wgsl::unpack(n, depth))
 }
 
 /// Where `point_vertex` puts the point size before `compile` makes it the
@@ -152,7 +152,9 @@ mod tests {
     #[test]
     fn the_unpack_pass_compiles() {
         for n in [2, 4, 8, 16] {
-            assert_eq!(unpack_spirv(n).unwrap()[0], 0x0723_0203);
+            for depth in [false, true] {
+                assert_eq!(unpack_spirv(n, depth).unwrap()[0], 0x0723_0203);
+            }
         }
     }
 }

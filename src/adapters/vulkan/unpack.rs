@@ -20,8 +20,9 @@ pub(super) struct Unpack {
     pub set_layout: vk::DescriptorSetLayout,
     pub layout: vk::PipelineLayout,
     passes: HashMap<vk::Format, vk::RenderPass>,
-    modules: HashMap<u32, vk::ShaderModule>,
-    pipelines: HashMap<(vk::Format, u32), vk::Pipeline>,
+    /// By sample count, and whether the source is a depth attachment.
+    modules: HashMap<(u32, bool), vk::ShaderModule>,
+    pipelines: HashMap<(vk::Format, u32, bool), vk::Pipeline>,
 }
 
 impl Unpack {
@@ -97,17 +98,23 @@ impl Unpack {
         Ok(pass)
     }
 
-    /// The pipeline that spreads an `n`-sample target into `format`.
-    pub(super) fn pipeline(&mut self, format: vk::Format, n: u32) -> Result<vk::Pipeline, String> {
-        if let Some(&pipeline) = self.pipelines.get(&(format, n)) {
+    /// The pipeline that spreads an `n`-sample target (a depth attachment
+    /// when `depth`, read as a depth texture) into `format`.
+    pub(super) fn pipeline(
+        &mut self,
+        format: vk::Format,
+        n: u32,
+        depth: bool,
+    ) -> Result<vk::Pipeline, String> {
+        if let Some(&pipeline) = self.pipelines.get(&(format, n, depth)) {
             return Ok(pipeline);
         }
         let render_pass = self.render_pass(format)?;
-        let module = match self.modules.get(&n) {
+        let module = match self.modules.get(&(n, depth)) {
             Some(&module) => module,
             None => {
-                let module = shader_module(&self.device, &shaders::unpack_spirv(n)?)?;
-                self.modules.insert(n, module);
+                let module = shader_module(&self.device, &shaders::unpack_spirv(n, depth)?)?;
+                self.modules.insert((n, depth), module);
                 module
             }
         };
@@ -133,7 +140,7 @@ impl Unpack {
             .render_pass(render_pass);
         let pipeline = graphics_pipeline(&self.device, module, info)
             .map_err(|e| format!("creating the read-back pipeline: {e}"))?;
-        self.pipelines.insert((format, n), pipeline);
+        self.pipelines.insert((format, n, depth), pipeline);
         Ok(pipeline)
     }
 }
