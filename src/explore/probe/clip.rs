@@ -118,7 +118,7 @@ pub fn probe_clip(candidate: &dyn Rasterizer) -> Option<ClipProbe> {
     let rule = candidate.fixed_fill_rule().unwrap_or(FillRule::TopLeft);
     let scenes = separating_scenes(rule);
     let all = combinations();
-    // The default conventions, and their opposite.
+    // The default conventions, and their opposite (combinations 0 and 3).
     let statements = [all[0], all[3]];
     let mut mismatches = vec![vec![0usize; all.len()]; statements.len()];
     let mut drawn = 0;
@@ -149,22 +149,19 @@ pub fn probe_clip(candidate: &dyn Rasterizer) -> Option<ClipProbe> {
             scenes: scenes.len(),
         });
     }
-    let best = |k: usize| {
-        (0..all.len())
-            .min_by_key(|&c| mismatches[k][c])
-            .expect("four")
-    };
-    let (b0, b1) = (best(0), best(1));
-    let exact = mismatches[0][b0] == 0 && mismatches[1][b1] == 0;
-    let follows = exact && all[b0] == statements[0] && all[b1] == statements[1];
-    let fixed = exact && b0 == b1;
-    let nearest = (0..all.len())
-        .min_by_key(|&c| mismatches[0][c] + mismatches[1][c])
-        .expect("four");
+    let super::verdict::Verdict {
+        follows,
+        fixed,
+        best,
+        nearest,
+    } = super::verdict::verdict(&mismatches, [0, 3]);
     let (finding, own) = if follows {
         ("follows each case's clip_xy and clip_z".to_owned(), None)
     } else if fixed {
-        (format!("its own: {}", describe(&all[b0])), Some(all[b0]))
+        (
+            format!("its own: {}", describe(&all[best])),
+            Some(all[best]),
+        )
     } else {
         (
             format!(

@@ -80,6 +80,7 @@ mod infer;
 mod points;
 mod sampler;
 mod scenes;
+mod verdict;
 
 use serde::Serialize;
 

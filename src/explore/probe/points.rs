@@ -101,6 +101,7 @@ pub fn probe_points(candidate: &dyn Rasterizer) -> Option<PointProbe> {
     }
     let rule = candidate.fixed_fill_rule().unwrap_or(FillRule::TopLeft);
     let all = combinations();
+    // The defaults, and their opposite (combinations 0 and 3).
     let statements = [all[0], all[3]];
     let mut mismatches = vec![vec![0usize; all.len()]; statements.len()];
     let mut scenes = 0;
@@ -140,25 +141,19 @@ pub fn probe_points(candidate: &dyn Rasterizer) -> Option<PointProbe> {
             scenes,
         });
     }
-    let best = |k: usize| {
-        (0..all.len())
-            .min_by_key(|&c| mismatches[k][c])
-            .expect("four")
-    };
-    let (b0, b1) = (best(0), best(1));
-    let exact = mismatches[0][b0] == 0 && mismatches[1][b1] == 0;
-    let follows = exact && all[b0] == statements[0] && all[b1] == statements[1];
-    let fixed = exact && b0 == b1;
-    let nearest = (0..all.len())
-        .min_by_key(|&c| mismatches[0][c] + mismatches[1][c])
-        .expect("four");
+    let super::verdict::Verdict {
+        follows,
+        fixed,
+        best,
+        nearest,
+    } = super::verdict::verdict(&mismatches, [0, 3]);
     let (finding, own) = if follows {
         (
             "follows each case's clip_points and point_bounds".to_owned(),
             None,
         )
     } else if fixed {
-        (format!("its own: {}", describe(all[b0])), Some(all[b0]))
+        (format!("its own: {}", describe(all[best])), Some(all[best]))
     } else {
         (
             format!(
