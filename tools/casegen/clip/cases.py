@@ -584,3 +584,27 @@ for conv in ("gb_cts", "gb_ps"):
          [Tri(*PERSP)], conv=conv, interpolate_from="unsnapped",
          checks=[lambda f, n, conv=conv: n["interp_unsnapped_clipped_" + conv]
                  == n["interp_perspective_clipped_" + conv]])
+
+# ---------------------------------------------------------------------------
+# Polygon offset on steep slopes in clip space (SPEC 18.2): the offset is
+# read off each piece's plane of z_f on the screen; coverage, pinned here,
+# is the offset-free triangle's (an offset moves depth, never coverage).
+
+STEEP = [at(2, 2, 0, 1, [0]), at(6, 2, "0.75", 1, [1]), at(2, 14, 0, 1, [2])]
+case("offset_steep_slope",
+     "Polygon offset on a steep depth plane in clip space: z_ndc = 3(x - 2)/16 rises by 3/16 a "
+     "pixel (|dz/dx| = 3/16, dz/dy = 0, so the maximum slope m is 3/16 whichever way it is "
+     "measured), float32 with slope factor 1/2 and constant 16: every sample is pushed back by "
+     "m/2 = 3/32 plus 16 r (r from the largest depth 3/4's exponent, 2^-24 or 2^-23), the "
+     "largest depth 3/4 + 3/32 staying inside [0, 1]. {N} samples, as without the offset.",
+     [Tri(*STEEP)], conv="gb_cts", depth_format="float32",
+     depth_bias={"constant": 16, "slope": "1/2"}, checks=[drawn])
+
+STEEP_W = [at(2, 2, "0.1", 1, [0]), at(8, 2, "0.9", 4, [1]), at(2, 12, "0.1", 2, [2])]
+case("offset_steep_perspective",
+     "Polygon offset on a steep plane under perspective, unorm16: w from 1 to 4, z_ndc from 0.1 "
+     "to 0.9 over 6 pixels (dz/dx = 2/15 on the screen, z_ndc being linear there whatever w "
+     "is), slope factor 1 and constant 2: near the far vertex the offset depth 0.9 + 2/15 + 2r "
+     "passes 1 and the format clamps it to 1 (k = 65535). {N} samples, as without the offset.",
+     [Tri(*STEEP_W)], conv="gb_cts", depth_format="unorm16",
+     depth_bias={"constant": 2, "slope": 1}, checks=[drawn])
