@@ -111,7 +111,8 @@ impl CaseWriter {
                     .join("exr")
                     .join(id)
                     .join(exr::file_name(&run.rasterizer));
-                let path = exr::write(&reference.frame, frame, &path)?;
+                let allowed = reference.depth_allowed.as_deref();
+                let path = exr::write(&reference.frame, frame, allowed, &path)?;
                 files.push(relative(&self.dir, &path));
                 self.files.fetch_add(1, Ordering::Relaxed);
             }

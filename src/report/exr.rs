@@ -7,7 +7,10 @@
 //! - `owner.error`: 1 where the last primitive differs, else 0;
 //! - `depth.error`, `attribute.K.error`: interpolated value minus the exact
 //!   value, where both drew the same primitive last; 0 where nothing is
-//!   covered or the last primitives differ (not compared).
+//!   covered or the last primitives differ (not compared). Under a depth
+//!   format (SPEC.md §18) `depth.error` is the signed distance from the
+//!   interval the reference allows at the sample (0 inside it), as the
+//!   metrics measure it.
 //!
 //! With antialiasing (SPEC.md §14) the `error` layer holds one value per
 //! sample: it is N times wider than the canvas, sample s of pixel (x, y) at
@@ -41,10 +44,13 @@ pub fn compared(reference: &Frame, candidate: &Frame, i: usize) -> bool {
 
 /// Signed interpolation errors per channel, named as in the EXR file
 /// (`depth.error`, `attribute.K.error`), in the order of `Metrics::channels`
-/// (depth first). `None` where the sample is not compared.
+/// (depth first). `None` where the sample is not compared. With
+/// `depth_allowed` (a depth format's set, one [lo, hi] per sample) the
+/// depth's error is its signed distance from the interval.
 pub fn interpolation_errors(
     reference: &Frame,
     candidate: &Frame,
+    depth_allowed: Option<&[[f64; 2]]>,
 ) -> Vec<(String, Vec<Option<f64>>)> {
     if !coverage::comparable(reference, candidate) {
         return Vec::new();
@@ -56,7 +62,24 @@ pub fn interpolation_errors(
     };
     let mut out = Vec::new();
     if let (Some(exact), Some(values)) = (&reference.depth, &candidate.depth) {
-        out.push(("depth.error".to_owned(), errors(exact, values)));
+        let depth = match depth_allowed {
+            Some(allowed) => (0..reference.sample_count())
+                .map(|i| {
+                    let (c, [lo, hi]) = (values[i], allowed[i]);
+                    compared(reference, candidate, i).then(|| {
+                        if c.is_nan() || c < lo {
+                            c - lo
+                        } else if c > hi {
+                            c - hi
+                        } else {
+                            0.0
+                        }
+                    })
+                })
+                .collect(),
+            None => errors(exact, values),
+        };
+        out.push(("depth.error".to_owned(), depth));
     }
     for (k, (exact, values)) in reference
         .attributes
@@ -108,7 +131,11 @@ pub fn time_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<f
 
 /// Every per-sample channel of the error map, named as stored; empty when
 /// the candidate's samples do not line up with the reference's.
-pub fn error_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<f32>)> {
+pub fn error_channels(
+    reference: &Frame,
+    candidate: &Frame,
+    depth_allowed: Option<&[[f64; 2]]>,
+) -> Vec<(String, Vec<f32>)> {
     if !coverage::comparable(reference, candidate) {
         return Vec::new();
     }
@@ -127,7 +154,7 @@ pub fn error_channels(reference: &Frame, candidate: &Frame) -> Vec<(String, Vec<
                 .collect(),
         ),
     ];
-    for (name, errors) in interpolation_errors(reference, candidate) {
+    for (name, errors) in interpolation_errors(reference, candidate, depth_allowed) {
         out.push((
             name,
             errors.iter().map(|e| e.unwrap_or(0.0) as f32).collect(),
@@ -142,8 +169,14 @@ pub fn file_name(rasterizer: &str) -> String {
     format!("{}.exr", rasterizer.replace([':', '/'], "-"))
 }
 
-/// Writes the error map of `candidate` against `reference` to `path`.
-pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBuf, String> {
+/// Writes the error map of `candidate` against `reference` (and the depth
+/// set a depth format allows, if any) to `path`.
+pub fn write(
+    reference: &Frame,
+    candidate: &Frame,
+    depth_allowed: Option<&[[f64; 2]]>,
+    path: &Path,
+) -> Result<PathBuf, String> {
     if let Some(parent) = path.parent() {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
@@ -161,7 +194,7 @@ pub fn write(reference: &Frame, candidate: &Frame, path: &Path) -> Result<PathBu
         )
     };
     let mut layers = Vec::new();
-    let samples = error_channels(reference, candidate);
+    let samples = error_channels(reference, candidate, depth_allowed);
     if !samples.is_empty() {
         let wide = (canvas.0 * reference.samples as usize, canvas.1);
         layers.push(layer("error", wide, samples));

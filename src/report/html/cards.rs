@@ -200,6 +200,8 @@ pub(super) struct ResultView<'a> {
     pub(super) result: &'a ResultEntry,
     pub(super) scene: Option<&'a Scene>,
     pub(super) reference: Option<&'a Frame>,
+    /// The depth set a depth format allows per sample (SPEC.md §18), if any.
+    pub(super) depth_allowed: Option<&'a [[f64; 2]]>,
     pub(super) candidate: Option<&'a Frame>,
 }
 
@@ -275,7 +277,7 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         html.push_str("<h4>metrics</h4>");
         html.push_str(&metrics_tables(m));
         if let (Some(r), Some(c)) = (v.reference, v.candidate) {
-            html.push_str(&heat_maps(r, c, m));
+            html.push_str(&heat_maps(r, c, v.depth_allowed, m));
         }
     }
 

@@ -190,6 +190,10 @@ pub fn page(dir: &Path, case: &CaseEntry, shown: &[Card], outcome: &CaseOutcome)
                     result: &case.results[r],
                     scene: outcome.scene.as_ref(),
                     reference,
+                    depth_allowed: outcome
+                        .reference
+                        .as_ref()
+                        .and_then(|r| r.depth_allowed.as_deref()),
                     candidate: outcome
                         .candidates
                         .get(r)

@@ -308,11 +308,16 @@ pub(super) fn first_differences(reference: &Frame, candidate: &Frame) -> String 
 }
 
 /// One heat map per interpolated channel with a nonzero error.
-pub(super) fn heat_maps(reference: &Frame, candidate: &Frame, m: &MetricsEntry) -> String {
+pub(super) fn heat_maps(
+    reference: &Frame,
+    candidate: &Frame,
+    depth_allowed: Option<&[[f64; 2]]>,
+    m: &MetricsEntry,
+) -> String {
     if m.channels.is_empty() {
         return String::new();
     }
-    let errors = interpolation_errors(reference, candidate);
+    let errors = interpolation_errors(reference, candidate, depth_allowed);
     let scale = display_scale(reference, 256);
     let mut figures = String::new();
     let mut exact = Vec::new();
