@@ -35,8 +35,22 @@ pub(crate) struct DepthTarget {
     pub bias: Option<[f32; 3]>,
 }
 
-/// The attachment the scene needs (`None`: it needs none: its depth is
-/// the fragment's, judged by SPEC.md §6.3), or why the adapter cannot
+/// The attachment the scene asks for, as the API takes it (`None`: it
+/// needs none: its depth is the fragment's, judged by SPEC.md §6.3): its
+/// format, and its offset numbers rounded to f32 ([`target`] refuses them
+/// where that rounds).
+pub(crate) fn requested(scene: &Scene) -> Option<DepthTarget> {
+    scene.depth_rules_need_attachment().then(|| DepthTarget {
+        format: scene.rules.depth_format,
+        bias: scene
+            .rules
+            .depth_bias
+            .as_ref()
+            .map(|b| [&b.constant, &b.slope, &b.clamp].map(f32_of)),
+    })
+}
+
+/// The attachment the scene needs ([`requested`]), or why the adapter cannot
 /// set it up: a polygon (§14 polygons carry no depth, and the adapters'
 /// stencil attachment is theirs), an offset number that is not an f32
 /// (the APIs take f32), or, in screen space, a depth outside [0, 1] when
@@ -48,9 +62,9 @@ pub(crate) fn target(
     clamps: bool,
     driver: &str,
 ) -> Result<Option<DepthTarget>, String> {
-    if !scene.depth_rules_need_attachment() {
+    let Some(requested) = requested(scene) else {
         return Ok(None);
-    }
+    };
     if scene.has_polygons() {
         return Err(format!(
             "depth_format {} with polygons: polygons carry no depth, and {driver}'s \
@@ -59,24 +73,20 @@ pub(crate) fn target(
         ));
     }
     let exact = |n: &Number| RBig::try_from(f32_of(n)).is_ok_and(|back| &back == n.as_rbig());
-    let bias = match &scene.rules.depth_bias {
-        None => None,
-        Some(b) => {
-            for (name, n) in [
-                ("constant", &b.constant),
-                ("slope", &b.slope),
-                ("clamp", &b.clamp),
-            ] {
-                if !exact(n) {
-                    return Err(format!(
-                        "depth_bias.{name} {} is not an f32, as {driver} takes it",
-                        n.to_exact_string()
-                    ));
-                }
+    if let Some(b) = &scene.rules.depth_bias {
+        for (name, n) in [
+            ("constant", &b.constant),
+            ("slope", &b.slope),
+            ("clamp", &b.clamp),
+        ] {
+            if !exact(n) {
+                return Err(format!(
+                    "depth_bias.{name} {} is not an f32, as {driver} takes it",
+                    n.to_exact_string()
+                ));
             }
-            Some([&b.constant, &b.slope, &b.clamp].map(f32_of))
         }
-    };
+    }
     if scene.viewport.is_none() && !clamps {
         let unit = |z: &Number| *z.as_rbig() >= RBig::ZERO && *z.as_rbig() <= RBig::ONE;
         if !scene.vertices().all(|v| unit(&v.z)) {
@@ -86,10 +96,7 @@ pub(crate) fn target(
             ));
         }
     }
-    Ok(Some(DepthTarget {
-        format: scene.rules.depth_format,
-        bias,
-    }))
+    Ok(Some(requested))
 }
 
 /// The depth a stored value reads back as: a unorm integer `k` (the

@@ -20,8 +20,7 @@ use std::collections::HashMap;
 
 use ash::vk;
 
-use super::super::float_input::f32_of;
-use super::super::gpu::{Draw, VERTEX_FLOATS};
+use super::super::gpu::{self, Draw, VERTEX_FLOATS};
 use super::device::{depth_attachment, Device};
 use super::shaders;
 use crate::scene::{
@@ -63,9 +62,8 @@ pub(super) struct Stage {
 
 impl Stage {
     pub(super) fn of(scene: &Scene) -> Stage {
-        let depth = scene
-            .depth_rules_need_attachment()
-            .then_some(scene.rules.depth_format);
+        let requested = gpu::depth::requested(scene);
+        let depth = requested.map(|t| t.format);
         let clamp = scene.rules.clip.depth == DepthMode::Clamp;
         Stage {
             provoking_last: scene.rules.provoking_vertex == ProvokingVertex::Last,
@@ -75,9 +73,7 @@ impl Stage {
                 depth.is_some()
             },
             depth,
-            bias: depth
-                .and(scene.rules.depth_bias.as_ref())
-                .map(|b| [&b.constant, &b.slope, &b.clamp].map(|n| f32_of(n).to_bits())),
+            bias: requested.and_then(|t| t.bias).map(|b| b.map(f32::to_bits)),
         }
     }
 }
