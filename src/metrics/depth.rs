@@ -11,6 +11,18 @@ use super::interpolation::{f32_ulp, ChannelError, DepthSetMiss};
 use crate::frame::Frame;
 use crate::scene::depth::{unorm_index, DepthFormat};
 
+/// A depth's signed distance from its allowed interval [lo, hi]: below
+/// it negative, above it positive, inside it 0; NaN for a NaN depth.
+pub fn signed_distance(c: f64, [lo, hi]: [f64; 2]) -> f64 {
+    if c.is_nan() || c < lo {
+        c - lo
+    } else if c > hi {
+        c - hi
+    } else {
+        0.0
+    }
+}
+
 /// The depth channel's error against the allowed set `allowed` (one
 /// [lo, hi] per slot), over the samples where the candidate and the
 /// reference agree on the last primitive. The distance reported is from
@@ -35,12 +47,8 @@ pub fn measure(
         let (c, [lo, hi]) = (values[i], allowed[i]);
         let distance = if c.is_nan() {
             f64::INFINITY
-        } else if c < lo {
-            lo - c
-        } else if c > hi {
-            c - hi
         } else {
-            0.0
+            signed_distance(c, [lo, hi]).abs()
         };
         if distance > 0.0 {
             miss.outside += 1;

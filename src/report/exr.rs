@@ -33,7 +33,7 @@ use ::exr::prelude::{
 };
 
 use crate::frame::Frame;
-use crate::metrics::{antialias, coverage, time, Metrics};
+use crate::metrics::{antialias, coverage, depth, time, Metrics};
 
 /// Whether sample `i` has comparable interpolated values: the reference
 /// covers it and both frames drew the same primitive last (the metrics'
@@ -65,16 +65,8 @@ pub fn interpolation_errors(
         let depth = match depth_allowed {
             Some(allowed) => (0..reference.sample_count())
                 .map(|i| {
-                    let (c, [lo, hi]) = (values[i], allowed[i]);
-                    compared(reference, candidate, i).then(|| {
-                        if c.is_nan() || c < lo {
-                            c - lo
-                        } else if c > hi {
-                            c - hi
-                        } else {
-                            0.0
-                        }
-                    })
+                    compared(reference, candidate, i)
+                        .then(|| depth::signed_distance(values[i], allowed[i]))
                 })
                 .collect(),
             None => errors(exact, values),
