@@ -152,19 +152,19 @@ impl GlContext {
         let values: Vec<Vec<f32>> = (1..=groups)
             .map(|k| self.read_canvas(drawing, corner, k, 4, sample))
             .collect();
-        let stored = match (&drawing.depth, &frame.depth) {
+        let stored: Option<Vec<f64>> = match (&drawing.depth, &frame.depth) {
             (Some(target), Some(_)) => {
                 debug_assert!(sample.is_none(), "a depth attachment is single-sample");
                 let words = self.read_depth(drawing, target, corner);
                 Some(
                     words
                         .into_iter()
-                        .map(|word| stored_value(target.format, word)),
+                        .map(|w| stored_value(target.format, w))
+                        .collect(),
                 )
             }
             _ => None,
-        }
-        .map(Iterator::collect::<Vec<f64>>);
+        };
         self.check("drawing and reading back")?;
 
         let channel = |c: usize, i: usize| values[c / 4][i * 4 + c % 4];
