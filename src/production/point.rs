@@ -29,7 +29,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_POINT_SIZE};
 use crate::scene::{
-    Canvas, DepthMode, FillRule, Number, Point, PointBounds, PointClip, Scene, Vertex, Viewport,
+    Canvas, DepthMode, FillRule, Number, Point, PointBounds, PointClip, Scene, Vertex,
 };
 
 // The bounds the module doc states: a centre plus or minus half the side,
@@ -232,23 +232,20 @@ pub(crate) fn draw_clip(
     let mut columns = exact_span(&projected.h[0], &half, Ends::of(rule, 0), canvas.width);
     let mut rows = exact_span(&projected.h[1], &half, Ends::of(rule, 1), canvas.height);
     if clip.bounds == PointBounds::Viewport {
-        // The viewport rectangle as a span of its own: centre o + e/2,
-        // half e/2, its left and top closed, its right and bottom open.
-        let view = scene
-            .viewport
-            .clone()
-            .unwrap_or_else(|| Viewport::canvas(canvas.width, canvas.height));
+        // The viewport rectangle (the mapping's) as a span of its own:
+        // centre o + e/2, half e/2, left and top closed, right and bottom
+        // open.
         let two = RBig::from(2u8);
-        let bound = |origin: &Number, extent: &Number, side| {
-            let half = extent.as_rbig() / &two;
+        let bound = |origin: &RBig, extent: &RBig, side| {
+            let half = extent / &two;
             let ends = Ends {
                 low: true,
                 high: false,
             };
-            exact_span(&(origin.as_rbig() + &half), &half, ends, side)
+            exact_span(&(origin + &half), &half, ends, side)
         };
-        let x = bound(&view.x, &view.width, canvas.width);
-        let y = bound(&view.y, &view.height, canvas.height);
+        let x = bound(&mapping.x, &mapping.width, canvas.width);
+        let y = bound(&mapping.y, &mapping.height, canvas.height);
         columns = columns.start.max(x.start)..columns.end.min(x.end);
         rows = rows.start.max(y.start)..rows.end.min(y.end);
     }

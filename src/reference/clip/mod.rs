@@ -50,30 +50,21 @@ where
     let depth_high = min_d.max(max_d).clone();
     let per_sample_z = clip.depth == DepthMode::Clip && clip.z == ClipZ::PerSample;
     let needs_depth = with_values || per_sample_z;
-    // Pixel centres the guard band lets through: x + ½ in [vx, vx + vw).
-    let mut columns = 0..i64::from(canvas.width);
-    let mut rows = 0..i64::from(canvas.height);
-    if clip.xy == ClipXy::GuardBand {
-        columns = within(&columns, viewport.x.as_rbig(), viewport.width.as_rbig());
-        rows = within(&rows, viewport.y.as_rbig(), viewport.height.as_rbig());
-    }
-    // Pixels a kept point's square may reach: the canvas's, or under
-    // `point_bounds: viewport` those whose centre lies in the viewport
-    // rectangle, as for the guard band.
+    // The canvas's pixels, and those whose centre lies in the viewport
+    // rectangle: x + ½ in [vx, vx + vw). The guard band lets the latter
+    // through, as `point_bounds: viewport` does a kept point's square.
+    let whole = [0..i64::from(canvas.width), 0..i64::from(canvas.height)];
+    let in_viewport = [
+        within(&whole[0], viewport.x.as_rbig(), viewport.width.as_rbig()),
+        within(&whole[1], viewport.y.as_rbig(), viewport.height.as_rbig()),
+    ];
+    let [columns, rows] = match clip.xy {
+        ClipXy::GuardBand => in_viewport.clone(),
+        ClipXy::ClipThenSnap => whole.clone(),
+    };
     let point_pixels = match clip.bounds {
-        PointBounds::Canvas => [0..i64::from(canvas.width), 0..i64::from(canvas.height)],
-        PointBounds::Viewport => [
-            within(
-                &(0..i64::from(canvas.width)),
-                viewport.x.as_rbig(),
-                viewport.width.as_rbig(),
-            ),
-            within(
-                &(0..i64::from(canvas.height)),
-                viewport.y.as_rbig(),
-                viewport.height.as_rbig(),
-            ),
-        ],
+        PointBounds::Canvas => whole,
+        PointBounds::Viewport => in_viewport,
     };
     let width = i64::from(canvas.width);
     for (index, primitive) in scene.primitives.iter().enumerate() {
