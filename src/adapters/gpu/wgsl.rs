@@ -74,18 +74,15 @@ pub(crate) fn channels() -> Vec<String> {
 /// `depth` target is read as a depth texture, its value in the red
 /// channel.
 pub(crate) fn unpack(n: u32, depth: bool) -> String {
+    let sample = format!("textureLoad(source, at, texel.x % {n})");
     let (source, load) = if depth {
         (
             "texture_depth_multisampled_2d",
-            "vec4<f32>(textureLoad(source, at, texel.x % {n}), 0.0, 0.0, 0.0)",
+            format!("vec4<f32>({sample}, 0.0, 0.0, 0.0)"),
         )
     } else {
-        (
-            "texture_multisampled_2d<f32>",
-            "textureLoad(source, at, texel.x % {n})",
-        )
+        ("texture_multisampled_2d<f32>", sample)
     };
-    let load = load.replace("{n}", &n.to_string());
     format!(
         "@group(0) @binding(0) var source: {source};
 
