@@ -59,6 +59,10 @@ pub(super) struct Offers {
     pub depth_msaa_counts: vk::SampleCountFlags,
     /// `depthBiasClamp`, enabled: a polygon offset may be clamped.
     pub depth_bias_clamp: bool,
+    /// `independentBlend` (enabled): the coverage count blends additively
+    /// while the value attachments beside it are written as they come, so
+    /// a pipeline with value attachments needs it (VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605).
+    pub independent_blend: bool,
     /// `viewportBoundsRange` and `maxViewportDimensions`.
     pub viewport_bounds: [f32; 2],
     pub max_viewport: [u32; 2],
@@ -186,6 +190,7 @@ impl Device {
         let large_points = base.large_points == vk::TRUE;
         let sample_rate_shading = base.sample_rate_shading == vk::TRUE;
         let depth_bias_clamp = base.depth_bias_clamp == vk::TRUE;
+        let independent_blend = base.independent_blend == vk::TRUE;
         let (bresenham, rectangular) = (lines.bresenham_lines, lines.rectangular_lines);
 
         let family = instance
@@ -202,7 +207,8 @@ impl Device {
             .large_points(large_points)
             .sample_rate_shading(sample_rate_shading)
             .depth_clamp(depth_clamp)
-            .depth_bias_clamp(depth_bias_clamp);
+            .depth_bias_clamp(depth_bias_clamp)
+            .independent_blend(independent_blend);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesKHR::default()
             .bresenham_lines(bresenham == vk::TRUE)
             .rectangular_lines(rectangular == vk::TRUE);
@@ -288,6 +294,7 @@ impl Device {
             depth_msaa_counts: limits.framebuffer_depth_sample_counts
                 & limits.sampled_image_depth_sample_counts,
             depth_bias_clamp,
+            independent_blend,
             viewport_bounds: limits.viewport_bounds_range,
             max_viewport: limits.max_viewport_dimensions,
         };

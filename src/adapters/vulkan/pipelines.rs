@@ -98,6 +98,7 @@ pub(super) struct Pipelines {
     modules: HashMap<(Interpolation, usize, bool, Option<u32>), vk::ShaderModule>,
     pipelines: HashMap<Key, vk::Pipeline>,
     stencil_format: vk::Format,
+    independent_blend: bool,
 }
 
 impl Pipelines {
@@ -113,6 +114,7 @@ impl Pipelines {
             modules: HashMap::new(),
             pipelines: HashMap::new(),
             stencil_format: gpu.offers.stencil_format,
+            independent_blend: gpu.offers.independent_blend,
         })
     }
 
@@ -407,6 +409,14 @@ impl Pipelines {
         } else {
             vk::ColorComponentFlags::RGBA
         };
+        // The count blends, the values beside it do not: two blend states
+        // in one pipeline, which only `independentBlend` allows.
+        if key.groups > 0 && !self.independent_blend {
+            return Err(
+                "the device lacks independentBlend, needed to count coverage while writing values beside it"
+                    .to_owned(),
+            );
+        }
         let mut blends = vec![vk::PipelineColorBlendAttachmentState::default()
             .blend_enable(true)
             .src_color_blend_factor(vk::BlendFactor::ONE)
