@@ -274,3 +274,77 @@ fn fuzz_with_a_profile_judges_under_its_rule_and_writes_cases_stating_it() {
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     assert!(text(&out).contains("is a profile of mutant:flipped-ties, not of production"));
 }
+
+/// Production drawing every case under one fill rule and declaring it, as
+/// a driver does: a case restated under its rule is drawn exactly.
+struct OwnRule(rastercheck::scene::FillRule);
+
+impl rastercheck::rasterizer::Rasterizer for OwnRule {
+    fn name(&self) -> &str {
+        "own-rule"
+    }
+    fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
+        rastercheck::production::Production.capabilities()
+    }
+    fn rasterize(
+        &self,
+        scene: &rastercheck::scene::Scene,
+        plan: &rastercheck::plan::Plan,
+    ) -> Result<rastercheck::frame::Frame, rastercheck::rasterizer::RasterError> {
+        rastercheck::production::Production.rasterize(&scene.with_fill_rule(self.0), plan)
+    }
+    fn fixed_fill_rule(&self) -> Option<rastercheck::scene::FillRule> {
+        Some(self.0)
+    }
+}
+
+/// `expect.time_coverage` pins, like `samples_covered`, describe the
+/// case's own rule: a moving case judged under a rasterizer's own rule is
+/// held to the reference under that rule, not to pins the rule breaks.
+/// (Before, every driver failed one of `motion/ride_top_edge_*` on the
+/// pins alone: "the case pins 0".) A rasterizer that does not follow the
+/// rule it declares still fails.
+#[test]
+fn time_coverage_pins_follow_the_case_not_a_declared_rule() {
+    use rastercheck::harness::suite::{self, Verdict};
+    use rastercheck::rasterizer::Rasterizer;
+    use rastercheck::scene::{FillRule, Limits};
+    for (id, own) in [
+        ("motion/ride_top_edge_bottom_right", FillRule::TopLeft),
+        ("motion/ride_top_edge_top_left", FillRule::BottomRight),
+    ] {
+        let file = suite::case_file(&root().join("cases").join(format!("{id}.json")));
+        let scene = suite::load(&file, &Limits::default()).unwrap();
+        let reference = suite::run_reference(&scene);
+        let run = suite::run_candidate(&scene, &reference, &OwnRule(own));
+        assert_eq!(run.verdict, Verdict::Pass, "{id} under its own {own}");
+        assert_eq!(run.judged_rule, Some(own));
+        // Declaring the rule without following it is caught.
+        struct Liar(FillRule);
+        impl Rasterizer for Liar {
+            fn name(&self) -> &str {
+                "liar"
+            }
+            fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
+                rastercheck::production::Production.capabilities()
+            }
+            fn rasterize(
+                &self,
+                scene: &rastercheck::scene::Scene,
+                plan: &rastercheck::plan::Plan,
+            ) -> Result<rastercheck::frame::Frame, rastercheck::rasterizer::RasterError>
+            {
+                rastercheck::production::Production.rasterize(scene, plan)
+            }
+            fn fixed_fill_rule(&self) -> Option<FillRule> {
+                Some(self.0)
+            }
+        }
+        let run = suite::run_candidate(&scene, &reference, &Liar(own));
+        assert!(
+            matches!(run.verdict, Verdict::Fail(_)),
+            "{id}: drawn under the case's rule while declaring {own}: {:?}",
+            run.verdict
+        );
+    }
+}

@@ -171,8 +171,9 @@ pub fn cannot_judge_under(scene: &Scene, rule: FillRule) -> Option<String> {
 /// A case with its fill rule replaced by a declared one.
 pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
     let mut s = scene.with_fill_rule(rule);
-    // The pin describes the case's own rule, not the declared one.
+    // The pins describe the case's own rule, not the declared one.
     s.expect.samples_covered = None;
+    s.expect.time_coverage.clear();
     s
 }
 
@@ -236,8 +237,9 @@ impl OwnConventions {
         self.fill_rule.is_some() || self.clip.is_some()
     }
 
-    /// The case restated under these conventions. The pin
-    /// `samples_covered` describes the case's own, so it is dropped.
+    /// The case restated under these conventions. The pins
+    /// `samples_covered` and `time_coverage` (whose riding samples fall by
+    /// the tie rule) describe the case's own, so they are dropped.
     pub fn restate(&self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
         if let Some(rule) = self.fill_rule {
@@ -247,6 +249,7 @@ impl OwnConventions {
             s.rules.clip = clip;
         }
         s.expect.samples_covered = None;
+        s.expect.time_coverage.clear();
         s
     }
 
