@@ -14,7 +14,7 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::Production;
+use crate::production::dispatch::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Number, Scene};
 

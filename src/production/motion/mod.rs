@@ -51,9 +51,10 @@ use rayon::prelude::*;
 use exact::{edge_owned, sub, triangle_covers, Point, TIME_BITS};
 use fast::{Fast, Quadratic, FAST_MAX_FRAC_BITS};
 
-use super::antialias::{Samples, Sampling};
+use super::antialias::sampling::{Samples, Sampling};
 use super::fixed::{Format, MAX_FRAC_BITS};
-use super::{draw_frame, format_for, place};
+use super::placed::draw_frame;
+use super::scene_format::{format_for, place};
 use crate::frame::{Frame, SampleTests};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;

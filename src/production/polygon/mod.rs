@@ -15,7 +15,7 @@ pub mod tessellate;
 use scanline::{Nudge, Point, Samples};
 
 use super::fixed::{self, EdgeInt, Format};
-use super::Method;
+use super::method::Method;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
