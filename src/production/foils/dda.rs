@@ -14,6 +14,7 @@
 
 use std::ops::{Add, Div, Mul, Sub};
 
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::dispatch::Production;

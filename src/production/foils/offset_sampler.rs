@@ -12,6 +12,7 @@
 //! is the case's; the moved scene is drawn unsnapped (its coordinates are
 //! dyadic, production holds them exactly).
 
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::dispatch::Production;
