@@ -400,7 +400,9 @@ pub fn notes(report: &Report) -> Vec<String> {
 pub fn write(dir: &Path, report: &Report) -> Result<Vec<PathBuf>, String> {
     plots(report)
         .iter()
-        .map(|p| super::write_file(&dir.join(FOLDER).join(&p.file), p.svg.as_bytes()))
+        .map(|p| {
+            crate::report::files::write_file(&dir.join(FOLDER).join(&p.file), p.svg.as_bytes())
+        })
         .collect()
 }
 

@@ -329,7 +329,7 @@ fn names_are_escaped() {
 }
 
 fn escape_title(t: &str) -> String {
-    crate::report::escape(t)
+    crate::report::escape::escape(t)
 }
 
 #[test]
