@@ -27,12 +27,13 @@
 //!
 //! The methods measured on their own (`method.rs`, listed by
 //! `catalog.rs`) reuse that path: `tiled.rs` (bands drawn in parallel
-//! through `primitive.rs`), `antialias/` (`adaptive-refine`,
-//! `adaptive-resolve`, `area-f32`), `polygon/`'s other fills, `foils/`
+//! through `primitive.rs`), `adaptive/` (`adaptive-refine`,
+//! `adaptive-resolve`), `antialias/area.rs` (`area-f32`), `polygon/`'s other fills, `foils/`
 //! (float DDA, float edge functions, and three that do not sample at the
 //! centre: at (1, 1), by area, by any coverage) and `mutants.rs` (one
 //! deliberate bug each).
 
+pub mod adaptive;
 pub mod antialias;
 pub mod catalog;
 pub mod clip;

@@ -37,7 +37,7 @@ pub const BLOCK: i64 = 8;
 
 /// Where one pixel stands against one edge, judged from its closed square.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Class {
+pub(crate) enum Class {
     /// Every sample covered.
     Inside,
     /// No sample covered.
@@ -48,7 +48,7 @@ pub(super) enum Class {
 
 /// `|v|` for an edge integer.
 #[inline]
-pub(super) fn abs<E: EdgeInt>(v: E) -> E {
+pub(crate) fn abs<E: EdgeInt>(v: E) -> E {
     v.max(E::default() - v)
 }
 
@@ -219,7 +219,7 @@ pub fn cover<E: EdgeInt, S: SampleSink<E>>(
 /// [raw + low, raw + high]. `strict` is the correct test; the non-strict
 /// one exists to be caught by the tests.
 #[inline]
-pub(super) fn classify<E: EdgeInt>(
+pub(crate) fn classify<E: EdgeInt>(
     centre: &[E; 3],
     bias: &[E; 3],
     low: [E; 3],

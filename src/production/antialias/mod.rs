@@ -4,21 +4,16 @@
 //!
 //! A triangle's samples: `sampling.rs` (how they are decided), `cover.rs`
 //! (which the triangle covers, pixels and blocks settled from their corners
-//! when adaptive), `writer.rs` (into the frame). The methods measured on
-//! their own (`methods.rs`): `refine.rs`, `area.rs` (`area-f32`) and
-//! `resolve.rs` (`adaptive-resolve`).
+//! when adaptive), `writer.rs` (into the frame). `area.rs` is `area-f32`, a
+//! method measured on its own; `../adaptive/` holds the two built on this
+//! sampling.
 
 pub mod area;
 pub mod cover;
-pub mod methods;
-pub mod refine;
-pub mod resolve;
 pub mod sampling;
 pub mod writer;
 
 pub use cover::{cover, At, SampleSink, BLOCK};
-pub use methods::methods;
-pub use refine::AdaptiveRefine;
 pub use sampling::{Samples, Sampling};
 pub use writer::write_triangle;
 

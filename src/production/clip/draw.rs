@@ -6,6 +6,7 @@ use dashu_ratio::RBig;
 
 use super::clipper::{self, ClipVertex, NewVertex};
 use super::homogeneous::{self, Piece};
+use super::point;
 use super::project::{Mapping, Projected};
 use super::shade::Values;
 use crate::frame::Frame;
@@ -63,7 +64,7 @@ pub fn rasterize_with(scene: &Scene, plan: &Plan, new: NewVertex) -> Result<Fram
         let triangle = match primitive {
             Primitive::Triangle(triangle) => triangle,
             Primitive::Point(point) => {
-                crate::production::point::draw_clip(point, scene, &mapping, plan, index, &mut frame);
+                point::draw_clip(point, scene, &mapping, plan, index, &mut frame);
                 continue;
             }
             _ => {

@@ -1,7 +1,7 @@
 //! Production's clip-space path (SPEC.md §16): a scene whose vertices are
-//! homogeneous clip coordinates. A point is kept or discarded by its centre
-//! and drawn by `../point.rs` (§17.2); a triangle flows through these files
-//! in order:
+//! homogeneous clip coordinates. A point is kept or discarded by its
+//! centre (`point.rs`) and drawn as `../point.rs` draws one (§17.2); a
+//! triangle flows through these files in order:
 //!
 //! 1. `draw.rs`: culling by the original triangle's D (§16.4),
 //!    whatever its pieces;
@@ -23,6 +23,7 @@
 pub mod clipper;
 pub mod draw;
 mod homogeneous;
+mod point;
 pub(crate) mod project;
 mod shade;
 

@@ -4,7 +4,7 @@
 
 use std::fmt::Write;
 
-use super::{CaseOnly, Change, Diff, MetricDelta};
+use super::model::{CaseOnly, Change, Diff, MetricDelta};
 use crate::report::escape::escape;
 
 /// Rows per table in `diff.md`; the rest is counted ("and N more").

@@ -15,10 +15,10 @@
 //! What this module does not do: depth, attributes, lines or polygons
 //! (production draws those; this method says it cannot).
 
-use super::cover::{abs, classify, At, Class, SampleSink, BLOCK};
-use super::sampling::{Samples, Sampling};
 use crate::frame::Frame;
 use crate::plan::Plan;
+use crate::production::antialias::cover::{abs, classify, At, Class, SampleSink, BLOCK};
+use crate::production::antialias::sampling::{Samples, Sampling};
 use crate::production::dispatch::Production;
 use crate::production::fixed::{EdgeInt, Fixed};
 use crate::production::scene_format::{format_for, place};
@@ -212,7 +212,7 @@ fn count<E: EdgeInt>(
 /// would hand them to (the test `counting_is_cover_counted` compares the
 /// two).
 ///
-/// [`cover`]: super::cover
+/// [`cover`]: crate::production::antialias::cover::cover
 struct Counts<'a> {
     counts: &'a mut [f64],
     width: usize,

@@ -1,9 +1,9 @@
 //! `adaptive-refine`: an inexact antialiasing method measured beside
 //! production's, a pixel decided from a quarter of its samples.
 
-use super::sampling::Sampling;
 use crate::frame::Frame;
 use crate::plan::Plan;
+use crate::production::antialias::sampling::Sampling;
 use crate::production::dispatch::{rasterize_with, Production};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
