@@ -4,7 +4,7 @@
 
 use rastercheck::explore::fuzz::Rng;
 use rastercheck::plan::Plan;
-use rastercheck::production::antialias::resolve::AdaptiveResolve;
+use rastercheck::production::adaptive::resolve::AdaptiveResolve;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{

@@ -1,5 +1,5 @@
 //! `rastercheck bench --quick`: writes BENCH.md and bench.svg with every
-//! section and method. Never asserts on timing, only that numbers are there
+//! section and method, under `out/bench/` (the committed files untouched). Never asserts on timing, only that numbers are there
 //! (peak heap too), that exact methods have no errors and that seeded errors
 //! (motion blur's) fall as they should; the bench's exact time coverage
 //! under translation against the reference; and the peak-heap probe against
@@ -43,14 +43,20 @@ fn row<'a>(md: &'a str, section: &str, method: &str) -> &'a str {
         .unwrap_or_else(|| panic!("no row for {method} in {section:?}:\n{md}"))
 }
 
+/// Run in a folder holding a committed BENCH.md and bench.svg, with no
+/// `--out`: the quick run writes under `out/bench/`, says so, and leaves
+/// the committed files as they were.
 #[test]
 fn quick_bench_writes_the_report_and_the_chart() {
     let dir = std::env::temp_dir().join(format!("rastercheck-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let out_file: PathBuf = dir.join("BENCH.md");
+    let committed = "committed, not to be overwritten\n";
+    for file in ["BENCH.md", "bench.svg"] {
+        std::fs::write(dir.join(file), committed).unwrap();
+    }
     let out = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(["bench", "--quick", "--out"])
-        .arg(&out_file)
+        .args(["bench", "--quick"])
+        .current_dir(&dir)
         .output()
         .expect("the binary runs");
     let shown = format!(
@@ -59,8 +65,20 @@ fn quick_bench_writes_the_report_and_the_chart() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert_eq!(out.status.code(), Some(0), "{shown}");
-    let md = std::fs::read_to_string(&out_file).expect("BENCH.md written");
-    let svg = std::fs::read_to_string(dir.join("bench.svg")).expect("bench.svg written");
+    for file in ["BENCH.md", "bench.svg"] {
+        assert_eq!(
+            std::fs::read_to_string(dir.join(file)).unwrap(),
+            committed,
+            "bench --quick overwrote {file}"
+        );
+    }
+    let written: PathBuf = dir.join("out/bench");
+    assert!(
+        shown.contains("wrote out/bench/BENCH.md and out/bench/bench.svg"),
+        "{shown}"
+    );
+    let md = std::fs::read_to_string(written.join("BENCH.md")).expect("BENCH.md written");
+    let svg = std::fs::read_to_string(written.join("bench.svg")).expect("bench.svg written");
 
     for heading in [
         "# rastercheck bench",

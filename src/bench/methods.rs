@@ -102,7 +102,7 @@ pub(super) fn aa_methods(counts: &[u32]) -> Vec<AaMethod> {
     out.push(AaMethod {
         name: "adaptive-resolve 16× standard".to_owned(),
         antialias: Some(with(16, Pattern::Standard, true)),
-        rasterizer: Box::new(crate::production::antialias::resolve::AdaptiveResolve),
+        rasterizer: Box::new(crate::production::adaptive::resolve::AdaptiveResolve),
     });
     for name in ["adaptive-refine", "area-f32", "tiny-skia", "vello-cpu"] {
         if let Some(r) = crate::harness::suite::rasterizer(name) {

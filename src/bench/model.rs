@@ -99,7 +99,7 @@ pub struct Workload {
     pub methods: Vec<Measured>,
     /// Triangle workloads: the machine's parallel ceiling measured in the
     /// same rounds
-    /// ([`ParallelCeiling::ratio`](super::ParallelCeiling::ratio)).
+    /// ([`ParallelCeiling::ratio`](super::timing::ParallelCeiling::ratio)).
     pub parallel_ceiling: Option<f64>,
 }
 

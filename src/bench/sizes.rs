@@ -2,7 +2,11 @@
 //! canvas and few items. Only numbers; the scenes themselves are built in
 //! `workloads.rs`.
 
-use super::Options;
+/// How big a run is: the full bench, or `--quick`'s.
+#[derive(Clone, Copy, Debug)]
+pub struct Options {
+    pub quick: bool,
+}
 
 /// Sizes of the workloads for one run.
 #[derive(Clone, Copy, Debug)]
@@ -26,7 +30,7 @@ pub(super) struct Sizes {
     pub(super) motion: (u32, usize, f64),
     pub(super) repetitions: usize,
     /// Steps of the parallel-ceiling loop
-    /// ([`ParallelCeiling`](super::ParallelCeiling)).
+    /// ([`ParallelCeiling`](super::timing::ParallelCeiling)).
     pub(super) ceiling_steps: u64,
 }
 

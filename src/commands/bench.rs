@@ -1,5 +1,6 @@
 //! `rastercheck bench`: every method timed on the same seeded workloads and
-//! scored against the reference; writes BENCH.md and bench.svg beside it.
+//! scored against the reference; writes BENCH.md and bench.svg beside it
+//! (`--quick`: under out/bench/ unless `--out` says where).
 
 use super::console::outln;
 use std::path::PathBuf;
@@ -15,15 +16,23 @@ pub struct BenchArgs {
     /// Small workloads that run in a few seconds.
     #[arg(long)]
     pub quick: bool,
-    /// The report to write; the chart goes beside it as bench.svg.
-    #[arg(long, value_name = "FILE", default_value = "BENCH.md")]
-    pub out: PathBuf,
+    /// The report to write; the chart goes beside it as bench.svg. Default:
+    /// BENCH.md here, or out/bench/BENCH.md with --quick.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
 /// `rastercheck bench`: time and error of every method; BENCH.md and the
 /// chart.
 pub fn bench(args: BenchArgs) -> Exit {
     let BenchArgs { quick, out } = args;
+    let out = match bench::prepare_report_path(quick, out) {
+        Ok(out) => out,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+    };
     if let Err(e) = bench::check_out_path(&out) {
         eprintln!("error: {}: {e}", out.display());
         return Exit::BadInput;

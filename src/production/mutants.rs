@@ -13,7 +13,7 @@
 
 use crate::frame::Frame;
 use crate::plan::{MotionPlan, Plan};
-use crate::production::Production;
+use crate::production::dispatch::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, Interpolation, LastPixel, LineRule, Number, Primitive, Scene};
 

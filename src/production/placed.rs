@@ -2,19 +2,35 @@
 //! format, every kept primitive's vertices in it, and the samples' offsets.
 //! Placing (snapping exact rationals onto the grid) is production's
 //! conversion of its input, as building paths is a path filler's; drawing
-//! is everything after. [`draw_frame`](super::draw_frame) does both at once;
+//! is everything after. [`draw_frame`] does both at once;
 //! [`PreparedFrame`] places once and draws again and again into one frame,
 //! which is how `rastercheck bench` times production's own draw.
 
-use super::antialias::{Samples, Sampling};
+use super::antialias::sampling::{Samples, Sampling};
 use super::fixed::{EdgeInt, Fixed, Format};
 use super::line::{self, Geometry};
+use super::primitive::{draw_primitive, Target};
+use super::scene_format::{format_for, place};
 use super::sweep::{Rows, Swept};
-use super::{draw_primitive, format_for, place, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Prepared, RasterError};
 use crate::scene::{LastPixel, LineRule, Primitive, Scene};
+
+/// Production's frame of the primitives `keep` selects (by index in the
+/// scene), drawn as a plan without motion says: the whole scene, or the
+/// static primitives of a moving one, drawn once ([`motion`](super::motion)).
+pub(crate) fn draw_frame(
+    scene: &Scene,
+    plan: &Plan,
+    sampling: Sampling,
+    keep: impl Fn(usize) -> bool,
+) -> Result<Frame, RasterError> {
+    let placed = Placed::new(scene, plan, sampling, keep)?;
+    let mut frame = placed.empty_frame();
+    placed.draw(&mut frame)?;
+    Ok(frame)
+}
 
 /// A static scene (or the static primitives of a moving one) in fixed
 /// point.

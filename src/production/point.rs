@@ -11,10 +11,10 @@
 //!   of 2^-f pixel, |X| ≤ 2^(15+f) ≤ 2^32), half the side rounded down and
 //!   up to units (h·2^f ≤ 512·2^17 = 2^26), and a pixel centre
 //!   c = i·2^f + 2^(f−1). Everything stays below 2^34: i64.
-//! - Clip space has its centre from the clip path's projection
-//!   (`clip/project.rs`: divide, viewport, snap), an exact rational, and
-//!   finds its spans from the exact sides once per point, as the clip
-//!   path's set-up does for a triangle.
+//! - Clip space (`clip/point.rs`) has its centre from the clip path's
+//!   projection (`clip/project.rs`: divide, viewport, snap), an exact
+//!   rational, and finds its spans from the exact sides once per point
+//!   ([`exact_span`]), as the clip path's set-up does for a triangle.
 //!
 //! Not here: antialiasing and motion, which the reader refuses for points.
 
@@ -23,14 +23,11 @@ use std::ops::Range;
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-use super::clip::project::Mapping;
 use super::fixed::{Fixed, Format, MAX_FRAC_BITS};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_POINT_SIZE};
-use crate::scene::{
-    Canvas, DepthMode, FillRule, Number, Point, PointBounds, PointClip, Scene, Vertex,
-};
+use crate::scene::{Canvas, FillRule, Number, Point, Vertex};
 
 // The bounds the module doc states: a centre plus or minus half the side,
 // in units, fits in i64 with room to spare.
@@ -38,14 +35,14 @@ const _: () = assert!((COORD_LIMIT << MAX_FRAC_BITS) + (MAX_POINT_SIZE << MAX_FR
 
 /// Which ends of a square's interval own their samples on one axis.
 #[derive(Clone, Copy, Debug)]
-struct Ends {
-    low: bool,
-    high: bool,
+pub(super) struct Ends {
+    pub(super) low: bool,
+    pub(super) high: bool,
 }
 
 impl Ends {
     /// Left and right edges on x (axis 0), top and bottom edges on y.
-    fn of(rule: FillRule, axis: usize) -> Ends {
+    pub(super) fn of(rule: FillRule, axis: usize) -> Ends {
         if axis == 0 {
             Ends {
                 low: rule.owns_left(),
@@ -103,7 +100,7 @@ fn span(x: Fixed, half: Half, ends: Ends, format: Format, side: u32) -> Range<i6
 /// The pixels of `0..side` whose centre i + ½ lies in [x − h, x + h] with
 /// exact rational ends: i ≥ ⌈x − h − ½⌉ (closed) or ⌊x − h − ½⌋ + 1
 /// (open), and i ≤ ⌊x + h − ½⌋ (closed) or ⌈x + h − ½⌉ − 1 (open).
-fn exact_span(x: &RBig, half: &RBig, ends: Ends, side: u32) -> Range<i64> {
+pub(super) fn exact_span(x: &RBig, half: &RBig, ends: Ends, side: u32) -> Range<i64> {
     let pixel_half = RBig::from_parts(IBig::ONE, 2u8.into());
     let low = x - half - &pixel_half;
     let high = x + half - &pixel_half;
@@ -135,9 +132,9 @@ fn clamped(first: i64, last: i64, side: u32) -> Range<i64> {
 
 /// What a covered pixel gets: depth and attributes in f32, or nothing
 /// when the plan interpolates nothing.
-struct Values {
-    depth: Option<f32>,
-    attributes: Vec<f32>,
+pub(super) struct Values {
+    pub(super) depth: Option<f32>,
+    pub(super) attributes: Vec<f32>,
 }
 
 impl Values {
@@ -151,14 +148,14 @@ impl Values {
     }
 }
 
-fn attributes(vertex: &Vertex, plan: &Plan) -> Vec<f32> {
+pub(super) fn attributes(vertex: &Vertex, plan: &Plan) -> Vec<f32> {
     (0..plan.attributes)
         .map(|k| vertex.attributes[k].to_f64_lossy() as f32)
         .collect()
 }
 
 /// Fills the rectangle `columns` × `rows` of `frame` (of `canvas`'s size).
-fn fill(
+pub(super) fn fill(
     frame: &mut Frame,
     canvas: Canvas,
     columns: Range<i64>,
@@ -196,72 +193,6 @@ pub(crate) fn draw(
     let vertex = &point.vertices[0];
     let values = Values {
         depth: plan.depth.then(|| vertex.z.to_f64_lossy() as f32),
-        attributes: attributes(vertex, plan),
-    };
-    fill(frame, canvas, columns, rows, index, &values);
-}
-
-/// Draws a clip-space point (SPEC.md §17.2): discarded whole when w ≤ 0,
-/// when depth clips and its centre's z is outside [0, w], or under
-/// `clip_points: pop` when its centre is outside −w ≤ x, y ≤ w; otherwise
-/// its whole square within the canvas, and within the viewport rectangle
-/// under `point_bounds: viewport`.
-pub(crate) fn draw_clip(
-    point: &Point,
-    scene: &Scene,
-    mapping: &Mapping,
-    plan: &Plan,
-    index: usize,
-    frame: &mut Frame,
-) {
-    let (clip, rule, canvas) = (scene.rules.clip, scene.rules.fill_rule, scene.canvas);
-    let vertex = &point.vertices[0];
-    let [x, y, z, w] = [&vertex.x, &vertex.y, &vertex.z, &vertex.w].map(Number::as_rbig);
-    if *w <= RBig::ZERO {
-        return;
-    }
-    if clip.depth == DepthMode::Clip && (*z < RBig::ZERO || z > w) {
-        return;
-    }
-    let inside = |c: &RBig| -w <= *c && c <= w;
-    if clip.points == PointClip::Pop && !(inside(x) && inside(y)) {
-        return;
-    }
-    let projected = mapping.project(&super::clip::clipper::ClipVertex::of(vertex));
-    let half = point.size.as_rbig() / RBig::from(2u8);
-    let mut columns = exact_span(&projected.h[0], &half, Ends::of(rule, 0), canvas.width);
-    let mut rows = exact_span(&projected.h[1], &half, Ends::of(rule, 1), canvas.height);
-    if clip.bounds == PointBounds::Viewport {
-        // The viewport rectangle (the mapping's) as a span of its own:
-        // centre o + e/2, half e/2, left and top closed, right and bottom
-        // open.
-        let two = RBig::from(2u8);
-        let bound = |origin: &RBig, extent: &RBig, side| {
-            let half = extent / &two;
-            let ends = Ends {
-                low: true,
-                high: false,
-            };
-            exact_span(&(origin + &half), &half, ends, side)
-        };
-        let x = bound(&mapping.x, &mapping.width, canvas.width);
-        let y = bound(&mapping.y, &mapping.height, canvas.height);
-        columns = columns.start.max(x.start)..columns.end.min(x.end);
-        rows = rows.start.max(y.start)..rows.end.min(y.end);
-    }
-    if columns.is_empty() || rows.is_empty() {
-        return;
-    }
-    let depth = plan.depth.then(|| {
-        let mut z_f = mapping.depth(&(z / w));
-        if mapping.clamp {
-            let [lo, hi] = mapping.depth_range();
-            z_f = z_f.clamp(lo, hi);
-        }
-        z_f.to_f64().value() as f32
-    });
-    let values = Values {
-        depth,
         attributes: attributes(vertex, plan),
     };
     fill(frame, canvas, columns, rows, index, &values);

@@ -25,10 +25,12 @@
 
 use rayon::prelude::*;
 
-use super::antialias::{Samples, Sampling};
+use super::antialias::sampling::{Samples, Sampling};
+use super::dispatch::Production;
 use super::fixed::{EdgeInt, Fixed, Format};
+use super::primitive::{draw_primitive, Target};
+use super::scene_format::{format_for, place};
 use super::sweep::{band_rows, Rows, Swept};
-use super::{draw_primitive, format_for, place, Production, Target};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};

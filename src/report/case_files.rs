@@ -13,8 +13,10 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
+use super::files::{relative, write_file};
 use super::json::CaseEntry;
-use super::{exr, html, png, relative, MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
+use super::limits::{MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
+use super::{exr, html, png};
 use crate::harness::runner::CaseOutcome;
 use crate::harness::suite::Verdict;
 
@@ -64,7 +66,7 @@ impl CaseWriter {
         if !cards.is_empty() && take(counter.0, counter.1) {
             let file = html::page_file(&entry.id);
             let text = html::page(&self.dir, &entry, &cards, outcome);
-            match super::write_file(&self.dir.join(&file), text.as_bytes()) {
+            match write_file(&self.dir.join(&file), text.as_bytes()) {
                 Ok(_) => {
                     self.files.fetch_add(1, Ordering::Relaxed);
                     entry.page = Some(file);

@@ -219,5 +219,5 @@ pub fn write(
         .to_buffered(buffer),
     };
     written.map_err(|e| format!("{}: {e}", path.display()))?;
-    super::write_file(path, &bytes)
+    super::files::write_file(path, &bytes)
 }

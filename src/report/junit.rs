@@ -4,7 +4,7 @@
 //! are reported as passing testcases with the departure in `system-out`,
 //! since they are expected.
 
-use super::escape;
+use super::escape::escape;
 use super::json::Report;
 
 pub fn render(report: &Report) -> String {

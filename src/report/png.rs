@@ -371,7 +371,7 @@ fn save_all(
             image::ImageFormat::Png,
         )
         .map_err(|e| format!("{}: {e}", path.display()))?;
-        written.push(super::write_file(&path, &bytes)?);
+        written.push(super::files::write_file(&path, &bytes)?);
     }
     Ok(written)
 }

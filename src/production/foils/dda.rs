@@ -14,11 +14,13 @@
 
 use std::ops::{Add, Div, Mul, Sub};
 
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::fixed::{self, Format};
+use crate::production::dispatch::Production;
+use crate::production::fixed::Format;
 use crate::production::line::{self, Geometry, LineShading};
-use crate::production::Production;
+use crate::production::scene_format::{format_for, place};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Canvas, LastPixel, LineRule, Primitive, Scene};
 
@@ -83,23 +85,8 @@ fn rasterize<F: Float>(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>
     }
     let mut frame = Production.rasterize(&others, plan)?;
 
-    let format = match scene.rules.subpixel_bits {
-        Some(bits) => Format::snapped(bits),
-        None => {
-            Format::for_exact(scene.vertices().flat_map(|v| [&v.x, &v.y])).ok_or_else(|| {
-                RasterError::Unsupported(format!(
-                    "unsnapped coordinates must be multiples of 2^-{} to be held in fixed point",
-                    fixed::MAX_FRAC_BITS - 1
-                ))
-            })?
-        }
-    };
-    let place = |n: &crate::scene::Number| match scene.rules.subpixel_bits {
-        Some(bits) => format.snap(n, bits),
-        None => format
-            .exact(n)
-            .expect("Format::for_exact checked every coordinate"),
-    };
+    // Production's own format (the foil has no samples) and placing.
+    let format = format_for(scene, None)?;
     // The frame's last primitive is the largest index covering a sample, so
     // the midpoint lines can be merged in afterwards: each takes a sample
     // (and writes its values) only from earlier primitives.
@@ -110,7 +97,11 @@ fn rasterize<F: Float>(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError>
         if l.rule != LineRule::Midpoint {
             continue;
         }
-        let g = Geometry::new(l.vertices.each_ref().map(|v| [place(&v.x), place(&v.y)]));
+        let g = Geometry::new(
+            l.vertices
+                .each_ref()
+                .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]),
+        );
         if g.is_point() {
             continue;
         }

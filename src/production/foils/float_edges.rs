@@ -45,9 +45,10 @@
 
 use std::ops::{Add, Div, Mul, Sub};
 
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::Production;
+use crate::production::dispatch::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Cull, FillRule, Interpolation, Primitive, Scene, Triangle};
 

@@ -12,9 +12,10 @@
 //! is the case's; the moved scene is drawn unsnapped (its coordinates are
 //! dyadic, production holds them exactly).
 
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::Production;
+use crate::production::dispatch::Production;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Number, Scene};
 

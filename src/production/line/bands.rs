@@ -236,7 +236,7 @@ impl Walker {
 /// stopped. In a band the lines draw in scene order, so every pixel (in
 /// one band) is written in scene order: `last` ends as the line-by-line
 /// loop leaves it, and `coverage` is a count. The frame equals
-/// [`draw`](super::draw)'s line by line, coverage only.
+/// [`draw`](super::draw::draw)'s line by line, coverage only.
 ///
 /// A frame of at most [`BANDED_FROM_BYTES`] is drawn line by line.
 pub(crate) fn midpoint_lines(
@@ -385,7 +385,7 @@ fn band_stride(width: u32) -> i64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::draw;
+    use super::super::draw::draw;
     use super::super::test_support::*;
     use super::*;
     use crate::plan::Plan;

@@ -1,8 +1,8 @@
 //! What the line tests share: a deterministic generator, a small canvas,
-//! random segments, and one line drawn through [`super::draw`] into a
+//! random segments, and one line drawn through [`draw`] into a
 //! frame of its own.
 
-use super::draw;
+use super::draw::draw;
 use super::step::Geometry;
 use crate::frame::Frame;
 use crate::plan::Plan;

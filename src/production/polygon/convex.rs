@@ -9,8 +9,8 @@
 //! way (or straight, never back), and one revolution in all. Anything else,
 //! and polygons of several contours, is unsupported.
 
+use super::contour::{nudge, single_contour, turn};
 use super::scanline::{write_span, Point, Samples, Walk};
-use super::{nudge, single_contour, turn};
 use crate::frame::Frame;
 use crate::production::fixed::Format;
 use crate::rasterizer::RasterError;

@@ -11,8 +11,8 @@
 //! the fill departs from the exact rule, and that is what it is kept to
 //! show. It is reported, never counted as a failure.
 
+use super::contour::snapped;
 use super::scanline::Point;
-use super::snapped;
 use crate::frame::Frame;
 use crate::production::fixed::Format;
 use crate::rasterizer::RasterError;

@@ -13,8 +13,8 @@
 //! vertex (on the segment of its neighbours) is dropped, which changes no
 //! region.
 
+use super::contour::{single_contour, turn};
 use super::scanline::Point;
-use super::{single_contour, turn};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::fixed::{EdgeInt, Fixed, Format};

@@ -4,8 +4,8 @@
 
 use std::fmt::Write;
 
-use super::{CaseOnly, Change, Diff, MetricDelta};
-use crate::report::escape;
+use super::model::{CaseOnly, Change, Diff, MetricDelta};
+use crate::report::escape::escape;
 
 /// Rows per table in `diff.md`; the rest is counted ("and N more").
 pub const MD_ROWS: usize = 50;

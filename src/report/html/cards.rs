@@ -16,7 +16,7 @@ use super::pictures::{
 };
 use super::tables::{badge, metrics_tables};
 use crate::frame::Frame;
-use crate::report::escape;
+use crate::report::escape::escape;
 use crate::report::json::{CaseEntry, MetricsEntry, ResultEntry};
 use crate::report::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
 use crate::scene::Scene;

@@ -12,7 +12,7 @@ use image::{Rgb, RgbImage};
 
 use crate::frame::Frame;
 use crate::metrics::{coverage::comparable, SampleDiff};
-use crate::report::escape;
+use crate::report::escape::escape;
 use crate::report::exr::interpolation_errors;
 use crate::report::json::{CaseEntry, MetricsEntry};
 use crate::report::png::{self, EXTRA, MISSING, WRONG_OWNER};

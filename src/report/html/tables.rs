@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use crate::metrics::time::TimeMetrics;
-use crate::report::escape;
+use crate::report::escape::escape;
 use crate::report::json::{ChannelEntry, MetricsEntry, ResultEntry};
 
 pub(super) fn badge(class: &str, text: &str) -> String {

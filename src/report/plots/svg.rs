@@ -5,7 +5,7 @@
 
 use std::fmt::Write;
 
-use crate::report::escape;
+use crate::report::escape::escape;
 
 /// Okabe and Ito's colour-blind-safe palette, darkest first (yellow last:
 /// it is faint on white).

@@ -1,13 +1,17 @@
 //! Tests of the plots: well-formed SVG, series per pattern, points at
 //! their pixels, notes instead of empty charts, escaping, the summary.
 
-use super::*;
+use super::all::{notes, plots};
+use super::plot::Plot;
+use super::svg;
 use crate::metrics::antialias::AntialiasMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::report::json::{
     AntialiasRules, ChannelEntry, CoverageEntry, LimitsInfo, MotionBlurRules, RasterizerInfo,
     RulesInfo,
 };
+use crate::report::json::{CaseEntry, MetricsEntry, Report, ResultEntry};
+use crate::scene::samples::Pattern;
 
 /// Checks that `svg` is well-formed XML of the kind the charts write:
 /// balanced tags, quoted attributes without repeats, entities only
@@ -329,7 +333,7 @@ fn names_are_escaped() {
 }
 
 fn escape_title(t: &str) -> String {
-    crate::report::escape(t)
+    crate::report::escape::escape(t)
 }
 
 #[test]

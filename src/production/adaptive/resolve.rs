@@ -15,12 +15,14 @@
 //! What this module does not do: depth, attributes, lines or polygons
 //! (production draws those; this method says it cannot).
 
-use super::{abs, classify, At, Class, SampleSink, Samples, Sampling, BLOCK};
 use crate::frame::Frame;
 use crate::plan::Plan;
+use crate::production::antialias::cover::{abs, classify, At, Class, SampleSink, BLOCK};
+use crate::production::antialias::sampling::{Samples, Sampling};
+use crate::production::dispatch::Production;
 use crate::production::fixed::{EdgeInt, Fixed};
+use crate::production::scene_format::{format_for, place};
 use crate::production::setup::{self, Footprint};
-use crate::production::{format_for, place, Production};
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Primitive, Scene};
 
@@ -210,7 +212,7 @@ fn count<E: EdgeInt>(
 /// would hand them to (the test `counting_is_cover_counted` compares the
 /// two).
 ///
-/// [`cover`]: super::cover
+/// [`cover`]: crate::production::antialias::cover::cover
 struct Counts<'a> {
     counts: &'a mut [f64],
     width: usize,
@@ -231,7 +233,7 @@ impl<E: EdgeInt> SampleSink<E> for Counts<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::production::antialias::cover;
+    use crate::production::antialias::cover::cover;
 
     #[test]
     fn counting_is_cover_counted() {
