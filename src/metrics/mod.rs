@@ -77,13 +77,14 @@ pub struct Known<'a> {
     /// that gives its coverage per primitive (`reference::primitive_pixel_areas`).
     pub part_areas: Option<&'a [Vec<(u32, dashu_ratio::RBig)>]>,
     /// The depths a candidate may read back at each slot, for a scene with
-    /// a depth format (`reference::render_judged`); computed here when not
-    /// given.
+    /// a depth format (`reference::render_judged`): required for such a
+    /// scene (the metrics never draw the reference themselves).
     pub depth_allowed: Option<&'a [[f64; 2]]>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
-/// mesh cases (`expect.watertight`).
+/// mesh cases (`expect.watertight`). A scene with a depth format
+/// (SPEC.md §18) goes through [`measure_known`] with the depths it allows.
 pub fn measure(
     scene: &Scene,
     reference: &Frame,
@@ -112,6 +113,10 @@ pub fn measure_with_areas(
 }
 
 /// [`measure`], with what the oracle knows exactly ([`Known`]).
+///
+/// # Panics
+/// For a scene with a depth format whose reference has depth, when
+/// `known.depth_allowed` is not given.
 pub fn measure_known(
     scene: &Scene,
     reference: &Frame,
@@ -169,16 +174,9 @@ pub fn measure_known(
     match (&reference.depth, &candidate.depth) {
         (Some(_), Some(values)) if format != DepthFormat::Exact => {
             // Judged against the set the format allows (SPEC.md §18.1).
-            let computed;
-            let allowed = match known.depth_allowed {
-                Some(allowed) => allowed,
-                None => {
-                    let plan = crate::plan::Plan::for_scene(scene);
-                    computed = crate::reference::depth_allowed(scene, &plan)
-                        .expect("a scene with a depth format");
-                    &computed
-                }
-            };
+            let allowed = known
+                .depth_allowed
+                .expect("Known::depth_allowed for a scene with a depth format");
             channels.push(depth::measure(
                 format, reference, candidate, allowed, values,
             ));

@@ -304,6 +304,8 @@ fn pixel_range(lo: &IBig, hi: &IBig, unit: &IBig) -> [i64; 2] {
 /// How many of each pixel's samples the static primitives cover, summed
 /// over them: the static reference on the scene without its moving
 /// primitives, each covering a sample for the whole shutter or not at all.
+/// Taking the moving primitives and the blur away changes no sample, so
+/// the scene's own plan serves.
 ///
 /// # Panics
 /// When the plan's samples are not the scene's own.
@@ -311,9 +313,13 @@ fn static_coverage(scene: &Scene, plan: &Plan) -> Vec<u64> {
     let mut still = scene.clone();
     still.primitives.retain(|p| !p.moves());
     still.effects.motion_blur = None;
-    let own = Plan::for_scene(&still);
+    let own = still.effects.antialias.as_ref();
     assert!(
-        own.antialias == plan.antialias,
+        own.map(|aa| (aa.offsets(), aa.position_bits, aa.adaptive))
+            == plan
+                .antialias
+                .as_ref()
+                .map(|s| (s.offsets.clone(), s.position_bits, s.adaptive)),
         "the plan's samples are the scene's own"
     );
     let m = plan.antialias.as_ref().map_or(1, |s| s.offsets.len());
@@ -321,7 +327,7 @@ fn static_coverage(scene: &Scene, plan: &Plan) -> Vec<u64> {
     if still.primitives.is_empty() {
         return vec![0; pixels];
     }
-    let counts = super::coverage_under(&still, scene.rules.fill_rule);
+    let counts = super::coverage_under(&still, plan, scene.rules.fill_rule);
     (0..pixels)
         .map(|p| {
             counts[p * m..(p + 1) * m]
