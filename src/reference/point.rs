@@ -11,7 +11,7 @@
 //! (`homogeneous::screen_point`), never its clipper: a point is kept or
 //! discarded whole by its centre, and a kept square is limited by the
 //! canvas, and by the viewport rectangle only under `point_bounds:
-//! viewport` (`clip/mod.rs` applies that bound).
+//! viewport` (`clip/visit.rs` applies that bound).
 //!
 //! Not here: antialiasing and motion, which the reader refuses for points.
 
@@ -20,7 +20,7 @@ use dashu_ratio::RBig;
 
 use super::clip::clipper::ClipVertex;
 use super::clip::homogeneous::screen_point;
-use super::clip::Values;
+use super::clip::values::Values;
 use super::exact::snap;
 use crate::scene::{Canvas, ClipRules, DepthMode, FillRule, Point, PointClip, Scene, Viewport};
 
