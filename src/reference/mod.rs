@@ -30,6 +30,7 @@ pub mod polygon;
 pub mod rasterizer;
 pub mod render;
 pub mod triangle;
+pub mod values;
 mod visit;
 
 pub use area::{exact_areas, primitive_area, primitive_pixel_areas};

@@ -13,6 +13,7 @@ use super::line;
 use super::point;
 use super::polygon;
 use super::triangle;
+use super::values::Values;
 use crate::plan::SamplePlan;
 use crate::scene::{FillRule, LineRule, Primitive, Scene};
 
@@ -37,7 +38,7 @@ pub(super) enum Exact {
     Line(RBig),
     /// Exact depth and attributes at the sample: a clip-space triangle's
     /// (SPEC.md §16.5), or a point's, the same at every sample (§17).
-    Values(Box<clip::Values>),
+    Values(Box<Values>),
 }
 
 /// Visits every covered sample of every primitive under `rule`, in scene

@@ -8,13 +8,13 @@
 //! model's, and every sample decision the sign of a big integer. Speed is
 //! not the point; clip-space cases are small.
 //!
-//! `visit.rs` walks the scene in that order; `values.rs` holds what a
-//! covered sample's exact values are.
+//! `visit.rs` walks the scene in that order; `point.rs` places a point.
+//! The exact values at a covered sample are `../values.rs`'s.
 
 pub mod clipper;
 pub mod homogeneous;
-pub mod values;
+pub mod point;
 mod visit;
 
-pub use values::Values;
+pub use super::values::Values;
 pub use visit::visit;

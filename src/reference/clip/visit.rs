@@ -1,5 +1,5 @@
 //! Visiting a clip-space scene (SPEC.md §16): each point kept or discarded
-//! by its centre and drawn by `../point.rs`; each triangle culled, clipped
+//! by its centre (`point.rs`) and drawn by `../point.rs`; each triangle culled, clipped
 //! (`clipper.rs`), fanned, and each piece's samples decided by homogeneous
 //! edge functions (`homogeneous.rs`), with the viewport's pixel ranges.
 
@@ -8,8 +8,9 @@ use dashu_ratio::RBig;
 
 use super::clipper::{self, ClipVertex};
 use super::homogeneous::{self, Homogeneous};
-use super::values::Values;
+use super::point::clip_square;
 use crate::reference::point;
+use crate::reference::values::Values;
 use crate::scene::{
     ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Interpolation, PointBounds, Primitive,
     Scene,
@@ -54,7 +55,7 @@ where
             // Kept or discarded whole by its centre (SPEC.md §17.2); its
             // square is limited by the canvas, and by the viewport
             // rectangle under `point_bounds: viewport`.
-            if let Some((square, values)) = point::clip_square(point, viewport, clip, bits) {
+            if let Some((square, values)) = clip_square(point, viewport, clip, bits) {
                 point::visit(&square, rule, canvas, |pixel| {
                     let (px, py) = (pixel as i64 % width, pixel as i64 / width);
                     if point_pixels[0].contains(&px) && point_pixels[1].contains(&py) {

@@ -1,5 +1,6 @@
-//! The exact values at a covered sample of a clip-space primitive: depth,
-//! the depth interval an offset allows (SPEC.md §18), attributes.
+//! The exact values at a covered sample of a clip-space triangle or a
+//! point: depth, the depth interval an offset allows (SPEC.md §18),
+//! attributes.
 
 use dashu_ratio::RBig;
 
