@@ -20,7 +20,8 @@ use crate::scene::Scene;
 ///
 /// # Panics
 /// When the plan has no `motion`, when its samples are not the scene's
-/// own, or when a primitive's bound exceeds [`max_bound`].
+/// own, or when a primitive's bound exceeds
+/// [`max_bound`](super::certified::max_bound).
 pub fn time_coverage(scene: &Scene, plan: &Plan) -> Vec<Certified> {
     time_coverage_with(scene, plan, Mutation::None)
 }

@@ -18,7 +18,7 @@ use crate::scene::Scene;
 /// # Panics
 /// When the primitive is neither a triangle nor a `parallelogram` line,
 /// when the scene has no `subpixel_bits`, when open ≥ close, or when the
-/// bound exceeds [`max_bound`].
+/// bound exceeds [`max_bound`](super::certified::max_bound).
 pub fn point_coverage(
     scene: &Scene,
     primitive: usize,
