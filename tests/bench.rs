@@ -346,7 +346,11 @@ fn riemann_disagreements(scene: &Scene, exact: &[f64]) -> usize {
         // open + (close − open)·(j + ½)/K, in units of 2^-16 / 2K.
         let tau = Number::ratio(open * 2 * K + (close - open) * (2 * j + 1), (2 * K) << 16);
         let at = scene.at_instant(&tau);
-        let counts = rastercheck::reference::coverage_under(&at, scene.rules.fill_rule);
+        let counts = rastercheck::reference::coverage_under(
+            &at,
+            &rastercheck::plan::Plan::for_scene(&at),
+            scene.rules.fill_rule,
+        );
         for (sum, c) in sums.iter_mut().zip(counts) {
             *sum += u32::from(c);
         }

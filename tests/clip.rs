@@ -153,7 +153,7 @@ fn halves(t: &[[Number; 5]; 3], along_b: &Number, along_c: &Number) -> Vec<[[Num
 
 /// Coverage counts summed over a scene's primitives, per pixel.
 fn total(scene: &Scene, rule: FillRule) -> Vec<u16> {
-    coverage_under(scene, rule)
+    coverage_under(scene, &Plan::for_scene(scene), rule)
 }
 
 #[test]
@@ -282,9 +282,9 @@ fn a_mesh_across_the_near_plane_stays_watertight() {
         for clip in conventions() {
             let mut scene = clip_scene(triangles.clone(), Some([0, 4, 8][round % 3]), clip);
             scene.expect.watertight = true;
-            let interior = mesh_interior(&scene);
+            let interior = mesh_interior(&scene, &Plan::for_scene(&scene));
             for rule in FillRule::CONSISTENT {
-                let counts = coverage_under(&scene, rule);
+                let counts = coverage_under(&scene, &Plan::for_scene(&scene), rule);
                 for (i, (&count, &inside)) in counts.iter().zip(&interior).enumerate() {
                     assert!(
                         count <= 1,

@@ -283,7 +283,7 @@ fn maybe_moving_scene(rng: &mut Rng) -> Scene {
 /// spatial sample (sample s of pixel p at p·M + s).
 fn oracle_at(scene: &Scene, t: u64) -> Vec<u16> {
     let at = scene.at_instant(&Number::ratio(t as i64, 1 << 32));
-    reference::coverage_under(&at, scene.rules.fill_rule)
+    reference::coverage_under(&at, &Plan::for_scene(&at), scene.rules.fill_rule)
 }
 
 fn sampler(scene: &Scene) -> Sampler {

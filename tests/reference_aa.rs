@@ -460,7 +460,7 @@ fn random_self_intersecting_polygons_pass_the_self_check() {
 /// Coverage of the scene under `rule`, one entry per sample.
 fn coverage(size: u32, r: FillRule, prims: &[String], effects: &str) -> Vec<u16> {
     let s = scene(size, &rule(r.name(), "8"), prims, effects);
-    reference::coverage_under(&s, r)
+    reference::coverage_under(&s, &Plan::for_scene(&s), r)
 }
 
 #[test]
@@ -513,7 +513,8 @@ fn polygons_cover_what_their_triangulations_cover() {
                         &effects,
                     );
                     for (k, wrong) in FillRule::CONSISTENT.into_iter().enumerate() {
-                        caught[i][k] |= reference::coverage_under(&s, wrong) != parts;
+                        caught[i][k] |=
+                            reference::coverage_under(&s, &Plan::for_scene(&s), wrong) != parts;
                     }
                 }
             }
@@ -608,10 +609,13 @@ fn antialiased_frames_hold_n_slots_and_the_rounded_exact_area() {
     assert_eq!(frame.samples, 8);
     assert_eq!(frame.coverage.len(), 36 * 8);
     assert_eq!(
-        reference::coverage_under(&s, FillRule::TopLeft),
+        reference::coverage_under(&s, &Plan::for_scene(&s), FillRule::TopLeft),
         frame.coverage
     );
-    assert_eq!(reference::mesh_interior(&s).len(), 36 * 8);
+    assert_eq!(
+        reference::mesh_interior(&s, &Plan::for_scene(&s)).len(),
+        36 * 8
+    );
     let areas = reference::exact_areas(&s);
     let resolved = frame.resolved.as_ref().unwrap();
     for (area, &r) in areas.iter().zip(resolved) {

@@ -34,20 +34,22 @@ pub fn bless(args: BlessArgs) -> Exit {
                 continue;
             }
         };
-        if let Some(over) = crate::harness::runner::over_memory(&scene, &limits, 0) {
+        let plan = crate::plan::Plan::for_scene(&scene);
+        if let Some(over) = crate::harness::runner::over_memory(&scene, &plan, &limits, 0) {
             eprintln!("error: {}: {over}", file.path.display());
             bad_input = true;
             continue;
         }
-        let reference =
-            match crate::deadline::within(limits.case_timeout, || suite::run_reference(&scene)) {
-                Ok(reference) => reference,
-                Err(exceeded) => {
-                    eprintln!("error: {}: the reference {exceeded}", file.path.display());
-                    bad_input = true;
-                    continue;
-                }
-            };
+        let reference = match crate::deadline::within(limits.case_timeout, || {
+            suite::run_reference_planned(&scene, plan)
+        }) {
+            Ok(reference) => reference,
+            Err(exceeded) => {
+                eprintln!("error: {}: the reference {exceeded}", file.path.display());
+                bad_input = true;
+                continue;
+            }
+        };
         let path = golden::path_for(&suite::golden_root(&file.path, &root), &file.id);
         match golden::write(&reference.frame, &path) {
             Ok(()) => written += 1,

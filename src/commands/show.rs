@@ -63,11 +63,12 @@ pub fn show(args: ShowArgs) -> Exit {
         );
         return Exit::BadInput;
     };
-    if let Some(over) = crate::harness::runner::over_memory(&scene, &limits, 1) {
+    let plan = crate::plan::Plan::for_scene(&scene);
+    if let Some(over) = crate::harness::runner::over_memory(&scene, &plan, &limits, 1) {
         eprintln!("error: {}: {over}", case.display());
         return Exit::BadInput;
     }
-    let reference = suite::run_reference(&scene);
+    let reference = suite::run_reference_planned(&scene, plan);
     let result = suite::run_candidate(&scene, &reference, candidate.as_ref());
     let (Some(frame), Some(metrics)) = (&result.frame, &result.metrics) else {
         eprintln!("{}: {}", candidate.name(), suite::describe(&result));

@@ -33,7 +33,7 @@ use exr::prelude::{
     ImageAttributes, IntegerBounds, Layer, LayerAttributes, WritableImage,
 };
 
-use super::Frame;
+use super::model::Frame;
 
 /// The layer of the sample channels.
 pub(crate) const SAMPLES_LAYER: &str = "reference";

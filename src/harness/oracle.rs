@@ -39,8 +39,18 @@ pub struct ReferenceRun {
     pub elapsed: Duration,
 }
 
+/// The reference's answer for a scene, its plan made here: for callers
+/// that start from a scene (tests, probe, the fuzzer). A case on the
+/// judging path is planned once when it is loaded and comes through
+/// [`run_reference_planned`].
 pub fn run_reference(scene: &Scene) -> ReferenceRun {
     run_reference_with(scene, reference::motion::time_coverage)
+}
+
+/// [`run_reference`] for a scene whose plan is made already
+/// (`Plan::for_scene`), which the answer keeps in [`ReferenceRun::plan`].
+pub fn run_reference_planned(scene: &Scene, plan: Plan) -> ReferenceRun {
+    run_planned_with(scene, plan, reference::motion::time_coverage)
 }
 
 /// [`run_reference`] with the time-coverage oracle given, so that tests
@@ -52,8 +62,16 @@ pub fn run_reference_with(
     scene: &Scene,
     time_coverage: impl FnOnce(&Scene, &Plan) -> Vec<Certified>,
 ) -> ReferenceRun {
+    run_planned_with(scene, Plan::for_scene(scene), time_coverage)
+}
+
+/// [`run_reference_with`] for a scene whose plan is made already.
+fn run_planned_with(
+    scene: &Scene,
+    plan: Plan,
+    time_coverage: impl FnOnce(&Scene, &Plan) -> Vec<Certified>,
+) -> ReferenceRun {
     let started = Instant::now();
-    let plan = Plan::for_scene(scene);
     if plan.motion.is_some() {
         let (frame, time) = time_reference(scene, &plan, time_coverage);
         return ReferenceRun {
@@ -71,7 +89,7 @@ pub fn run_reference_with(
     let interior = scene
         .expect
         .watertight
-        .then(|| reference::mesh_interior(scene));
+        .then(|| reference::mesh_interior(scene, &plan));
     let areas = area_check(scene);
     ReferenceRun {
         plan,

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::harness::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
+use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::scene::{Limits, Scene};
 
@@ -200,7 +201,9 @@ pub fn run_case(
             return outcome;
         }
     };
-    if let Some(over) = over_memory(&scene, limits, candidates.len()) {
+    // The case's plan, made once here and handed down the judging path.
+    let plan = Plan::for_scene(&scene);
+    if let Some(over) = over_memory(&scene, &plan, limits, candidates.len()) {
         outcome.problem = Some(Problem::LimitExceeded(format!(
             "{}: {over}",
             file.path.display()
@@ -210,7 +213,7 @@ pub fn run_case(
     }
     let limit = limits.case_timeout;
     let reference = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        deadline::within(limit, || suite::run_reference(&scene))
+        deadline::within(limit, || suite::run_reference_planned(&scene, plan))
     })) {
         Ok(Ok(reference)) => reference,
         Ok(Err(exceeded)) => {
@@ -265,11 +268,15 @@ pub fn run_case(
 /// allows, estimated from its scene before anything is allocated: the
 /// reference's frame, a working copy of it (metrics, pictures and error
 /// maps are computed from pairs of frames), one frame per candidate, and a
-/// byte per pixel for the mesh interior.
-pub fn over_memory(scene: &Scene, limits: &Limits, candidates: usize) -> Option<String> {
-    let plan = crate::plan::Plan::for_scene(scene);
+/// byte per pixel for the mesh interior. `plan` is the scene's.
+pub fn over_memory(
+    scene: &Scene,
+    plan: &Plan,
+    limits: &Limits,
+    candidates: usize,
+) -> Option<String> {
     let (w, h) = (scene.canvas.width, scene.canvas.height);
-    let frame = Frame::estimated_bytes(w, h, &plan);
+    let frame = Frame::estimated_bytes(w, h, plan);
     let frames = 2 + candidates as u64;
     let need = frame
         .saturating_mul(frames)

@@ -18,8 +18,8 @@ use crate::reference::Reference;
 use crate::scene::{parse_case, CaseError, ClipRules, FillRule, Limits, Scene};
 
 pub use super::oracle::{
-    area_check, check_areas, check_time, run_reference, run_reference_with, AreaCheck,
-    ReferenceRun, TimeCheck,
+    area_check, check_areas, check_time, run_reference, run_reference_planned, run_reference_with,
+    AreaCheck, ReferenceRun, TimeCheck,
 };
 use super::oracle::{catch_oracle_run, primitive_areas};
 
@@ -454,7 +454,8 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
         let under = own.restate(scene);
-        let reference = catch_oracle_run(|| run_reference(&under));
+        // Restating changes rules only, never what the plan reads.
+        let reference = catch_oracle_run(|| run_reference_planned(&under, reference.plan.clone()));
         let mut run = match reference {
             Ok(reference) => judge(&under, &reference, frame, name, elapsed),
             Err(why) => {

@@ -24,6 +24,7 @@
 
 use serde::Serialize;
 
+use super::error_bounds::{within, ErrorBounds};
 use super::parts::PartMetrics;
 use crate::frame::Frame;
 
@@ -122,11 +123,11 @@ fn is_zero(n: &u64) -> bool {
 
 impl AntialiasMetrics {
     pub fn max_error_within_bound(&self) -> bool {
-        self.allowed_error.is_none_or(|b| self.max_error <= b)
+        within(self.max_error, self.allowed_error)
     }
 
     pub fn rms_within_bound(&self) -> bool {
-        self.allowed_rms.is_none_or(|b| self.rms_edge <= b)
+        within(self.rms_edge, self.allowed_rms)
     }
 }
 
@@ -145,7 +146,10 @@ pub fn bounds(
 /// The signed coverage error per pixel, candidate − reference resolved;
 /// empty when either frame has no resolved coverage.
 pub fn signed_errors(reference: &Frame, candidate: &Frame) -> Vec<f64> {
-    super::signed_differences(reference.resolved.as_deref(), candidate.resolved.as_deref())
+    super::difference::signed_differences(
+        reference.resolved.as_deref(),
+        candidate.resolved.as_deref(),
+    )
 }
 
 /// Measures an antialiased candidate; `None` when either frame has no
@@ -273,25 +277,21 @@ pub fn measure_with_slack(
 
 /// Why the antialiasing metrics fail a case; empty when they pass.
 pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
-    let mut out = Vec::new();
-    if !m.max_error_within_bound() {
-        out.push(format!(
-            "antialias: max coverage error {:.3e} at pixel ({}, {}) exceeds {:.3e}",
-            m.max_error,
-            m.worst_pixel[0],
-            m.worst_pixel[1],
-            m.allowed_error.unwrap_or(0.0)
-        ));
+    let [x, y] = m.worst_pixel;
+    let mut out = ErrorBounds {
+        family: "antialias",
+        quantity: "coverage",
+        max_error: m.max_error,
+        worst: format!("pixel ({x}, {y})"),
+        allowed_error: m.allowed_error,
+        rms: m.rms_edge,
+        bias: m.bias_edge,
+        pixels: m.edge_pixels,
+        kind: "edge",
+        allowed_rms: m.allowed_rms,
+        worst_in_rms: false,
     }
-    if !m.rms_within_bound() {
-        out.push(format!(
-            "antialias: coverage RMS {:.3e} over {} edge pixels exceeds {:.3e} (bias {:+.3e})",
-            m.rms_edge,
-            m.edge_pixels,
-            m.allowed_rms.unwrap_or(0.0),
-            m.bias_edge
-        ));
-    }
+    .failures();
     if m.piglit_violations > 0 {
         let [x, y] = m.first_violation.unwrap_or([0, 0]);
         out.push(format!(

@@ -1,311 +1,33 @@
 //! Metrics: how a candidate's frame differs from the reference's, and the
 //! verdict against a case's expectations.
+//!
+//! `measure.rs` measures a candidate with every metric that applies
+//! (`coverage.rs`, `watertight.rs`, `line.rs`, `interpolation.rs` and
+//! `depth.rs`, `antialias.rs` and `parts.rs`, `time.rs`; the per-pixel ones
+//! start from `difference.rs`, and antialiasing and time share
+//! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
+//! candidate fails.
 
 pub mod antialias;
 pub mod coverage;
 pub mod depth;
+pub(crate) mod difference;
+pub mod error_bounds;
+pub mod failures;
 pub mod interpolation;
 pub mod line;
+pub mod measure;
 pub mod parts;
 pub mod time;
 pub mod watertight;
 
-use crate::frame::Frame;
-use crate::scene::{DepthFormat, Number, Scene};
-
 pub use antialias::{AntialiasMetrics, AreaClass};
 pub use coverage::{CoverageMetrics, SampleDiff};
+pub use failures::failures;
 pub use interpolation::ChannelError;
 pub use line::LineMetrics;
+pub use measure::{
+    measure, measure_known, measure_with_areas, Known, Metrics, DEFAULT_RELATIVE_BOUND,
+};
 pub use time::TimeMetrics;
 pub use watertight::WatertightMetrics;
-
-/// The default interpolation bound, relative to the channel's largest vertex
-/// magnitude M: |error| ≤ 2^-16 · max(1, M) (SPEC.md, "Interpolation
-/// tolerance"). That is 128 f32 ulps of M: loose enough for any f32 plane
-/// setup, tight enough to catch a wrong weight, vertex or formula.
-pub const DEFAULT_RELATIVE_BOUND: f64 = crate::scene::depth::RELATIVE_BOUND;
-
-/// candidate − exact per pixel, a NaN error counted as infinite; empty when
-/// either is missing or they differ in length.
-pub(crate) fn signed_differences(exact: Option<&[f64]>, candidate: Option<&[f64]>) -> Vec<f64> {
-    match (exact, candidate) {
-        (Some(exact), Some(candidate)) if exact.len() == candidate.len() => exact
-            .iter()
-            .zip(candidate)
-            .map(|(e, c)| {
-                let error = c - e;
-                if error.is_nan() {
-                    f64::INFINITY
-                } else {
-                    error
-                }
-            })
-            .collect(),
-        _ => Vec::new(),
-    }
-}
-
-/// Everything measured for one candidate on one case.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Metrics {
-    pub coverage: CoverageMetrics,
-    pub watertight: Option<WatertightMetrics>,
-    pub lines: Option<LineMetrics>,
-    pub channels: Vec<ChannelError>,
-    /// Antialiased cases: resolved coverage against the exact area.
-    pub antialias: Option<AntialiasMetrics>,
-    /// Scenes in which something moves: time coverage against the exact
-    /// time coverage (SPEC.md §15.4). Such frames have no samples, so this
-    /// is then the only metric with anything in it.
-    pub time: Option<TimeMetrics>,
-}
-
-/// What the oracle knows exactly beyond the reference's frame, for the
-/// metrics that read it; every part is optional.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Known<'a> {
-    /// The mesh interior, for mesh cases (`expect.watertight`).
-    pub interior: Option<&'a [bool]>,
-    /// Each pixel's exact area class, for antialiased cases (from
-    /// `reference::exact_areas`).
-    pub classes: Option<&'a [AreaClass]>,
-    /// Whether each pixel's exact time coverage is a whole number, for
-    /// moving scenes (from the oracle's certified values).
-    pub whole_time: Option<&'a [bool]>,
-    /// Each primitive's exact area of each pixel it covers, for a candidate
-    /// that gives its coverage per primitive (`reference::primitive_pixel_areas`).
-    pub part_areas: Option<&'a [Vec<(u32, dashu_ratio::RBig)>]>,
-    /// The depths a candidate may read back at each slot, for a scene with
-    /// a depth format (`reference::render_judged`); computed here when not
-    /// given.
-    pub depth_allowed: Option<&'a [[f64; 2]]>,
-}
-
-/// Measures a candidate against the reference. `interior` is given for
-/// mesh cases (`expect.watertight`).
-pub fn measure(
-    scene: &Scene,
-    reference: &Frame,
-    candidate: &Frame,
-    interior: Option<&[bool]>,
-) -> Metrics {
-    measure_with_areas(scene, reference, candidate, interior, None)
-}
-
-/// [`measure`], with each pixel's exact area class for antialiased cases
-/// (from `reference::exact_areas`; without it, the class is read from the
-/// reference's rounded area).
-pub fn measure_with_areas(
-    scene: &Scene,
-    reference: &Frame,
-    candidate: &Frame,
-    interior: Option<&[bool]>,
-    classes: Option<&[AreaClass]>,
-) -> Metrics {
-    let known = Known {
-        interior,
-        classes,
-        ..Known::default()
-    };
-    measure_known(scene, reference, candidate, &known)
-}
-
-/// [`measure`], with what the oracle knows exactly ([`Known`]).
-pub fn measure_known(
-    scene: &Scene,
-    reference: &Frame,
-    candidate: &Frame,
-    known: &Known,
-) -> Metrics {
-    let (interior, classes) = (known.interior, known.classes);
-    let coverage = coverage::compare(reference, candidate);
-    let watertight = interior.and_then(|inside| watertight::measure(inside, reference, candidate));
-    let time = time::measure(reference, candidate, known.whole_time, time::bounds(scene));
-    let parts = match (&candidate.parts, known.part_areas) {
-        (Some(given), Some(exact)) => Some(parts::measure(
-            given,
-            exact,
-            scene.canvas.width,
-            candidate.pixel_count(),
-            scene.expect.max_coverage_error,
-        )),
-        _ => None,
-    };
-    let mut antialias = antialias::measure_with_slack(
-        reference,
-        candidate,
-        classes,
-        antialias::bounds(
-            scene.expect.max_coverage_error,
-            scene.expect.max_coverage_rms,
-            candidate.samples,
-        ),
-        parts.as_ref().map(|p| p.slack.as_slice()),
-    );
-    if let (Some(aa), Some(p)) = (&mut antialias, parts) {
-        aa.primitives = Some(p.metrics);
-    }
-    let mut channels = Vec::new();
-    if !coverage.has_mask() {
-        return Metrics {
-            coverage,
-            watertight,
-            lines: None,
-            channels,
-            antialias,
-            time,
-        };
-    }
-    let expect = &scene.expect;
-    let bounds = |magnitude: f64| interpolation::Bounds {
-        allowed_abs: expect
-            .max_abs_error
-            .unwrap_or(DEFAULT_RELATIVE_BOUND * magnitude.max(1.0)),
-        allowed_ulp: expect.max_ulp_error,
-        ulp_floor: DEFAULT_RELATIVE_BOUND * magnitude.max(1.0),
-    };
-    let format = scene.rules.depth_format;
-    match (&reference.depth, &candidate.depth) {
-        (Some(_), Some(values)) if format != DepthFormat::Exact => {
-            // Judged against the set the format allows (SPEC.md §18.1).
-            let computed;
-            let allowed = match known.depth_allowed {
-                Some(allowed) => allowed,
-                None => {
-                    let plan = crate::plan::Plan::for_scene(scene);
-                    computed = crate::reference::depth_allowed(scene, &plan)
-                        .expect("a scene with a depth format");
-                    &computed
-                }
-            };
-            channels.push(depth::measure(
-                format, reference, candidate, allowed, values,
-            ));
-        }
-        (Some(exact), Some(values)) => {
-            // A clip-space scene writes depths in the viewport's range,
-            // within [0, 1] (SPEC.md §16.1), whatever its clip z.
-            channels.push(interpolation::channel_error(
-                "depth",
-                reference,
-                candidate,
-                exact,
-                values,
-                bounds(scene.depth_magnitude()),
-            ));
-        }
-        _ => {}
-    }
-    for (k, (exact, values)) in reference
-        .attributes
-        .iter()
-        .zip(&candidate.attributes)
-        .enumerate()
-    {
-        let m = largest(scene.vertices().map(|v| &v.attributes[k]));
-        channels.push(interpolation::channel_error(
-            &format!("attribute {k}"),
-            reference,
-            candidate,
-            exact,
-            values,
-            bounds(m),
-        ));
-    }
-    Metrics {
-        coverage,
-        watertight,
-        lines: line::measure(scene, candidate),
-        channels,
-        antialias,
-        time,
-    }
-}
-
-fn largest<'a>(values: impl Iterator<Item = &'a Number>) -> f64 {
-    values.map(|v| v.abs().to_f64_lossy()).fold(0.0, f64::max)
-}
-
-/// Why a candidate fails a case; empty when it passes.
-pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
-    let mut out = Vec::new();
-    let expect = &scene.expect;
-    let c = &m.coverage;
-    if c.mismatched() > expect.max_mismatched_samples {
-        out.push(format!(
-            "coverage: {} samples differ from the reference ({} missing, {} extra, {} wrong owner; {} allowed)",
-            c.mismatched(),
-            c.missing,
-            c.extra,
-            c.wrong_owner,
-            expect.max_mismatched_samples
-        ));
-    }
-    if c.has_mask() && c.reference_covered > 0 && c.candidate_covered == 0 {
-        out.push(
-            "coverage: the candidate drew nothing where the reference draws something".to_owned(),
-        );
-    }
-    if let Some(w) = &m.watertight {
-        if !w.is_watertight() {
-            out.push(format!(
-                "watertight: {} holes and {} overdrawn samples",
-                w.holes, w.overdraw
-            ));
-        }
-    }
-    if let Some(l) = &m.lines {
-        if l.crowded_steps > 0 {
-            out.push(format!(
-                "lines: {} major-axis steps hold more than one pixel of the same midpoint line",
-                l.crowded_steps
-            ));
-        }
-    }
-    for ch in &m.channels {
-        if let (Some(miss), false) = (&ch.depth_set, ch.within_bounds()) {
-            out.push(format!(
-                "{}: {} samples outside the depths {} allows (largest distance {:.3e}), {} off its grid (SPEC.md §18)",
-                ch.channel, miss.outside, miss.format, ch.max_abs, miss.off_grid
-            ));
-        } else if !ch.within_bounds() {
-            let ulp = ch
-                .allowed_ulp
-                .map(|u| format!(" or {u} ulp"))
-                .unwrap_or_default();
-            out.push(format!(
-                "{}: max error {:.3e} ({:.1} ulp) exceeds {:.3e}{ulp}",
-                ch.channel, ch.max_abs, ch.max_ulp, ch.allowed_abs
-            ));
-        }
-    }
-    if let Some(aa) = &m.antialias {
-        out.extend(antialias::failures(aa));
-    }
-    if reference.time.is_some() {
-        match &m.time {
-            Some(t) => out.extend(time::failures(t)),
-            None => out.push(
-                "time: the candidate returned no time coverage of the right size for a scene in which something moves".to_owned(),
-            ),
-        }
-        // Judged on time coverage only: the sample expectations cannot
-        // hold or fail, so a case that gives them is wrong.
-        for key in expect.sample_expectations() {
-            out.push(format!(
-                "case: expect.{key} does not apply to a scene in which something moves (it is judged on time coverage only, SPEC.md §15.1)"
-            ));
-        }
-        return out;
-    }
-    if let Some(expected) = expect.samples_covered {
-        let covered = reference.covered_samples();
-        if covered != expected {
-            out.push(format!(
-                "reference: covers {covered} samples but the case expects {expected}"
-            ));
-        }
-    }
-    out
-}

@@ -24,6 +24,7 @@
 use serde::ser::{SerializeStruct, Serializer};
 use serde::Serialize;
 
+use super::error_bounds::{within, ErrorBounds};
 use crate::frame::{Frame, SampleTests};
 use crate::scene::Scene;
 
@@ -97,11 +98,11 @@ pub struct TimeMetrics {
 
 impl TimeMetrics {
     pub fn max_error_within_bound(&self) -> bool {
-        self.allowed_error.is_none_or(|b| self.max_error <= b)
+        within(self.max_error, self.allowed_error)
     }
 
     pub fn rms_within_bound(&self) -> bool {
-        self.allowed_rms.is_none_or(|b| self.rms_moving <= b)
+        within(self.rms_moving, self.allowed_rms)
     }
 
     /// Covered sample tests over all sample tests, when the candidate
@@ -130,7 +131,7 @@ fn serialize_sample_tests<S: Serializer>(
 /// error is infinite); empty when either frame has no time coverage or
 /// they differ in size.
 pub fn signed_errors(reference: &Frame, candidate: &Frame) -> Vec<f64> {
-    super::signed_differences(reference.time.as_deref(), candidate.time.as_deref())
+    super::difference::signed_differences(reference.time.as_deref(), candidate.time.as_deref())
 }
 
 /// Measures a candidate of a moving scene; `None` when either frame has no
@@ -202,28 +203,24 @@ pub fn measure(
 /// Why the time metrics fail a case; empty when they pass. Each message
 /// names the worst pixel, so that it can be found on the pictures.
 pub fn failures(m: &TimeMetrics) -> Vec<String> {
-    let mut out = Vec::new();
     let [x, y] = m.worst_pixel;
-    let worst = format!(
-        "pixel ({x}, {y}): candidate {:.6}, exact {:.6}",
-        m.worst_candidate, m.worst_exact
-    );
-    if !m.max_error_within_bound() {
-        out.push(format!(
-            "time: max time-coverage error {:.3e} at {worst} exceeds {:.3e}",
-            m.max_error,
-            m.allowed_error.unwrap_or(0.0)
-        ));
+    let mut out = ErrorBounds {
+        family: "time",
+        quantity: "time-coverage",
+        max_error: m.max_error,
+        worst: format!(
+            "pixel ({x}, {y}): candidate {:.6}, exact {:.6}",
+            m.worst_candidate, m.worst_exact
+        ),
+        allowed_error: m.allowed_error,
+        rms: m.rms_moving,
+        bias: m.bias_moving,
+        pixels: m.moving_pixels,
+        kind: "moving",
+        allowed_rms: m.allowed_rms,
+        worst_in_rms: true,
     }
-    if !m.rms_within_bound() {
-        out.push(format!(
-            "time: time-coverage RMS {:.3e} over {} moving pixels exceeds {:.3e} (bias {:+.3e}; worst {worst})",
-            m.rms_moving,
-            m.moving_pixels,
-            m.allowed_rms.unwrap_or(0.0),
-            m.bias_moving
-        ));
-    }
+    .failures();
     if m.invalid_values > 0 {
         let [x, y] = m.first_invalid.unwrap_or([0, 0]);
         out.push(format!(

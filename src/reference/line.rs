@@ -452,7 +452,7 @@ mod tests {
             r#"{{"name": "t", "canvas": {{"width": 6, "height": 6}}, "primitives": [{line}]}}"#
         );
         let scene = parse_case(&json, "t.json", &Limits::default()).unwrap();
-        let frame = crate::reference::render(&scene, &Plan::for_scene(&scene));
+        let frame = crate::reference::render::render(&scene, &Plan::for_scene(&scene));
         (0..36)
             .filter(|&i| frame.coverage[i] > 0)
             .map(|i| (i % 6, i / 6))

@@ -7,22 +7,16 @@
 //! the product of a column interval and a row interval, so the columns and
 //! the rows are decided apart and every pixel of both is visited.
 //!
-//! Clip space (§17.2) goes through `clip/`'s projection, viewport and snap
-//! (`homogeneous::screen_point`), never its clipper: a point is kept or
-//! discarded whole by its centre, and a kept square is limited by the
-//! canvas, and by the viewport rectangle only under `point_bounds:
-//! viewport` (`clip/mod.rs` applies that bound).
+//! A clip-space point (§17.2) is placed by `clip/point.rs` and drawn here.
 //!
 //! Not here: antialiasing and motion, which the reader refuses for points.
 
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
-use super::clip::clipper::ClipVertex;
-use super::clip::homogeneous::screen_point;
-use super::clip::Values;
 use super::exact::snap;
-use crate::scene::{Canvas, ClipRules, DepthMode, FillRule, Point, PointClip, Scene, Viewport};
+use super::values::Values;
+use crate::scene::{Canvas, FillRule, Point, Scene};
 
 /// A point's square on the screen, exact.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -115,45 +109,6 @@ pub fn screen_values(point: &Point) -> Values {
         depth,
         attributes: v.attributes.iter().map(|a| a.as_rbig().clone()).collect(),
     }
-}
-
-/// A clip-space point (§17.2): `None` when it is discarded (w ≤ 0; its
-/// centre outside 0 ≤ z ≤ w under depth clip; its centre outside the side
-/// planes under `clip_points: pop`), else its square, centred on the
-/// snapped (x_f, y_f), and its values (depth z_f, clamped to the depth
-/// range under depth clamp; the vertex's attributes).
-pub fn clip_square(
-    point: &Point,
-    viewport: &Viewport,
-    clip: ClipRules,
-    bits: Option<u32>,
-) -> Option<(Square, Values)> {
-    let v = ClipVertex::of(&point.vertices[0]);
-    let [x, y, z, w] = &v.c;
-    if *w <= RBig::ZERO {
-        return None;
-    }
-    if clip.depth == DepthMode::Clip && (*z < RBig::ZERO || z > w) {
-        return None;
-    }
-    let outside = |c: &RBig| *c < -w || c > w;
-    if clip.points == PointClip::Pop && (outside(x) || outside(y)) {
-        return None;
-    }
-    let ([sx, sy, _], _) = screen_point(&v, viewport, bits);
-    let (min_d, max_d) = (viewport.min_depth.as_rbig(), viewport.max_depth.as_rbig());
-    let mut depth = min_d + (max_d - min_d) * (z / w);
-    if clip.depth == DepthMode::Clamp {
-        depth = depth.clamp(min_d.min(max_d).clone(), min_d.max(max_d).clone());
-    }
-    Some((
-        Square::new([sx, sy], &point.size),
-        Values {
-            depth_interval: [depth.clone(), depth.clone()],
-            depth,
-            attributes: v.attributes,
-        },
-    ))
 }
 
 #[cfg(test)]

@@ -273,7 +273,7 @@ proptest! {
     /// sample is covered exactly once and no sample twice (SPEC.md §3, §6.2).
     #[test]
     fn meshes_are_covered_exactly_once_under_every_consistent_rule(scene in mesh_scene()) {
-        let interior = reference::mesh_interior(&scene);
+        let interior = reference::mesh_interior(&scene, &Plan::for_scene(&scene));
         let plan = Plan::for_scene(&scene);
         for rule in FillRule::CONSISTENT {
             let mut scene = scene.clone();

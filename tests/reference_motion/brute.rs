@@ -44,7 +44,7 @@ pub fn brute_samples(scene: &Scene, instants: &[RBig]) -> Vec<Vec<u16>> {
         .iter()
         .map(|t| {
             let at = scene.at_instant(&Number::from_rbig(t.clone()));
-            reference::coverage_under(&at, scene.rules.fill_rule)
+            reference::coverage_under(&at, &Plan::for_scene(&at), scene.rules.fill_rule)
         })
         .collect()
 }

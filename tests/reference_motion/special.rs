@@ -490,7 +490,8 @@ fn static_primitives_keep_their_static_coverage() {
         prims.push(mover.clone());
         let scene = setup.scene(&prims);
         let m = offsets(&scene).len();
-        let counts = reference::coverage_under(&alone, alone.rules.fill_rule);
+        let counts =
+            reference::coverage_under(&alone, &Plan::for_scene(&alone), alone.rules.fill_rule);
         let time = coverage(&scene);
         let mut untouched = 0;
         for (pixel, c) in time.iter().enumerate() {
@@ -534,7 +535,8 @@ fn zero_velocity_agrees_with_the_static_reference() {
             triangle(&v)
         };
         let scene = setup.scene(&[prim]);
-        let counts = reference::coverage_under(&scene, scene.rules.fill_rule);
+        let counts =
+            reference::coverage_under(&scene, &Plan::for_scene(&scene), scene.rules.fill_rule);
         let offsets = offsets(&scene);
         let m = offsets.len();
         let [open, close] = setup.shutter.clone();

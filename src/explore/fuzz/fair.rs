@@ -78,7 +78,7 @@ fn sampled_time(scene: &Scene, plan: &Plan) -> Vec<f64> {
     let fixed = if still.primitives.is_empty() {
         vec![0u16; scene.canvas.pixel_count() * m]
     } else {
-        reference::coverage_under(&still, scene.rules.fill_rule)
+        reference::coverage_under(&still, plan, scene.rules.fill_rule)
     };
     let mut totals: Vec<u64> = fixed
         .chunks(m)
@@ -144,7 +144,10 @@ fn sampled_time(scene: &Scene, plan: &Plan) -> Vec<f64> {
                     v.y = Number::from_rbig(&open[1] + &tau * &d[1] + &shift[1]);
                     v.to = None;
                 }
-                totals[p] += u64::from(reference::coverage_under(&one, scene.rules.fill_rule)[0]);
+                // `one` has no effects: one sample, the pixel centre.
+                let counts =
+                    reference::coverage_under(&one, &Plan::coverage_only(), scene.rules.fill_rule);
+                totals[p] += u64::from(counts[0]);
             }
         }
     }

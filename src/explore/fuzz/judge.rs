@@ -285,7 +285,7 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
         mesh_geometry(scene)?;
         let mut interior = vec![true; scene.canvas.pixel_count()];
         for rule in FillRule::CONSISTENT {
-            let counts = reference::coverage_under(scene, rule);
+            let counts = reference::coverage_under(scene, &plan, rule);
             if counts.iter().any(|&c| c > 1) {
                 return Err(format!("mesh triangles overlap under {rule}"));
             }

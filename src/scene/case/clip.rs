@@ -9,12 +9,13 @@ use serde_json::Value;
 use crate::scene::clip::{
     ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
 };
+use crate::scene::model::{Canvas, Scene};
 use crate::scene::number::Number;
+use crate::scene::primitive::{Primitive, Vertex};
 use crate::scene::rules::{limits, Interpolation};
-use crate::scene::{Canvas, Primitive, Scene, Vertex};
 
 use super::json::{array, fail, named, number, Fields, Path, Result};
-use super::schema::Reader;
+use super::reader::Reader;
 use super::validate::within;
 
 /// The rules that only a clip-space case may give.

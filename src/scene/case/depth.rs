@@ -6,12 +6,13 @@
 use serde_json::Value;
 
 use crate::scene::depth::{DepthBias, DepthFormat};
+use crate::scene::model::Scene;
 use crate::scene::number::Number;
+use crate::scene::primitive::Primitive;
 use crate::scene::rules::{limits, Rules};
-use crate::scene::{Primitive, Scene};
 
 use super::json::{fail, named, number, Fields, Path, Result};
-use super::schema::Reader;
+use super::reader::Reader;
 use super::validate::within;
 
 impl Reader<'_> {

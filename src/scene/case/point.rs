@@ -4,12 +4,13 @@
 
 use serde_json::Value;
 
+use crate::scene::model::Scene;
 use crate::scene::number::Number;
+use crate::scene::primitive::{Point, Primitive};
 use crate::scene::rules::limits;
-use crate::scene::{Point, Primitive, Scene};
 
 use super::json::{fail, number, Fields, Path, Result};
-use super::schema::Reader;
+use super::reader::Reader;
 use super::validate::positive_length;
 
 impl Reader<'_> {

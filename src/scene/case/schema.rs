@@ -8,25 +8,20 @@
 
 use serde_json::Value;
 
+use crate::scene::expect::{Expect, TimePin};
+use crate::scene::model::{Canvas, Effects, Scene};
 use crate::scene::number::Number;
+use crate::scene::primitive::{Line, Polygon, Primitive, Triangle, Vertex};
 use crate::scene::rules::{
     limits, Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
     ProvokingVertex, Rules,
 };
 use crate::scene::samples::{Antialias, Pattern};
 use crate::scene::time::{MotionBlur, TimePattern};
-use crate::scene::{
-    Canvas, Effects, Expect, Line, Polygon, Primitive, Scene, TimePin, Triangle, Vertex,
-};
 
 use super::json::{array, boolean, count, fail, kind, named, number, string, Fields, Path, Result};
+use super::reader::Reader;
 use super::validate::{positive_length, within};
-use super::Limits;
-
-/// The walk over one case file's JSON, under the run's limits.
-pub(super) struct Reader<'a> {
-    pub(super) limits: &'a Limits,
-}
 
 impl Reader<'_> {
     pub(super) fn scene(&self, value: &Value) -> Result<Scene> {

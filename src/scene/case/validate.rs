@@ -8,12 +8,13 @@
 //! Not here: how a field is read (`schema.rs`), or the JSON access layer
 //! (`json.rs`).
 
+use crate::scene::model::Scene;
 use crate::scene::number::Number;
+use crate::scene::primitive::Primitive;
 use crate::scene::rules::{FillRule, LineRule};
-use crate::scene::{Primitive, Scene};
 
 use super::json::{fail, Fields, Path, Result};
-use super::schema::Reader;
+use super::reader::Reader;
 
 pub(super) fn within(
     n: &Number,
