@@ -281,8 +281,7 @@ fn named_paths(module: &Module) -> Vec<Vec<String>> {
         let after = &rest[at..];
         let start = after.find("use ").unwrap() + 4;
         let end = after[start..].find(';').map_or(after.len(), |e| start + e);
-        let tree: String = after[start..end].split_whitespace().collect();
-        for path in expand(&tree) {
+        for path in expand(&squeeze(&after[start..end])) {
             paths.push(path);
         }
         rest = &after[(end + 1).min(after.len())..];
@@ -353,6 +352,13 @@ fn find_use(code: &str) -> Option<usize> {
     None
 }
 
+/// A `use` tree without white space but around `as` (`a::{b as c,d}`).
+fn squeeze(tree: &str) -> String {
+    tree.split_whitespace()
+        .map(|t| if t == "as" { " as " } else { t })
+        .collect()
+}
+
 /// A `use` tree without white space (`crate::a::{b::{C,D},e}`) as paths.
 fn expand(tree: &str) -> Vec<Vec<String>> {
     fn go(prefix: &[String], tree: &str, out: &mut Vec<Vec<String>>) {
@@ -375,7 +381,6 @@ fn expand(tree: &str) -> Vec<Vec<String>> {
         } else {
             let mut p = prefix.to_vec();
             let name = tree.split(" as ").next().unwrap();
-            let name = name.split("as").next().unwrap_or(name);
             p.extend(
                 name.split("::")
                     .filter(|s| !s.is_empty())
@@ -439,8 +444,7 @@ fn reexports(module: &Module) -> BTreeMap<String, Vec<String>> {
         let at = from + at;
         let start = at + "pub use ".len();
         let end = code[start..].find(';').map_or(code.len(), |e| start + e);
-        let tree: String = code[start..end].split_whitespace().collect();
-        for path in expand(&tree) {
+        for path in expand(&squeeze(&code[start..end])) {
             let absolute_path = if matches!(path[0].as_str(), "crate" | "self" | "super") {
                 absolute(&module.path, &path)
             } else {
@@ -848,12 +852,13 @@ fn no_climbs_back_up_through_a_map() {
         ("lib.rs", "pub mod p;\npub mod q;\n"),
         (
             "p/mod.rs",
-            "mod method;\nmod triangle;\npub use method::Method;\n",
+            "mod alias;\nmod method;\nmod triangle;\npub use alias::Alias as Method2;\npub use method::Method;\n",
         ),
         ("p/method.rs", "pub struct Method;\n"),
+        ("p/alias.rs", "pub struct Alias;\n"),
         (
             "p/triangle.rs",
-            "use super::Method;\nuse super::method::Method as M;\n",
+            "use super::Method;\nuse super::method::Method as M;\nuse super::alias;\n",
         ),
         ("q/mod.rs", "mod r;\n"),
         ("q/r.rs", "use crate::p::Method;\n"),
