@@ -67,6 +67,8 @@ pub fn generate(name: &str, root: &Path, exe: &Path) -> Option<Result<String, St
         "families" => families_table(&root.join("cases")),
         "rasterizers" => Ok(rasterizers_table()),
         "sample-output" => sample_output(root, exe),
+        "baseline-output" => baseline_output(root, exe),
+        "diff-md" => diff_markdown(root, exe),
         _ => return None,
     })
 }
@@ -461,6 +463,114 @@ fn sample_output(root: &Path, exe: &Path) -> Result<String, String> {
             .code()
             .map_or("(killed)".to_owned(), |c| c.to_string())
     ));
+    Ok(block)
+}
+
+/// A scratch folder for the runs a block shows, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(tag: &str) -> Result<Scratch, String> {
+        let dir =
+            std::env::temp_dir().join(format!("rastercheck-docs-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        Ok(Scratch(dir))
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// `exe args` run in `dir`: its stdout and exit code.
+fn run_in(exe: &Path, dir: &Path, args: &[&str]) -> Result<(String, i32), String> {
+    let out = Command::new(exe)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .map_err(|e| format!("cannot run {}: {e}", exe.display()))?;
+    Ok((
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        out.status.code().unwrap_or(-1),
+    ))
+}
+
+/// A baseline of one DDA over the line cases, checked against the other:
+/// what `baseline check` prints for regressions.
+fn baseline_output(root: &Path, exe: &Path) -> Result<String, String> {
+    let scratch = Scratch::new("baseline")?;
+    let cases = root
+        .join("cases/lines")
+        .canonicalize()
+        .map_err(|e| e.to_string())?;
+    let cases = cases.to_string_lossy();
+    let save = ["baseline", "save", "lines.json", &cases, "-r", "dda-f64"];
+    let (_, code) = run_in(exe, &scratch.0, &save)?;
+    if code != 0 {
+        return Err(format!("`rastercheck {}` exited {code}", save.join(" ")));
+    }
+    let check = ["baseline", "check", "lines.json", "-r", "dda-f32=dda-f64"];
+    let (text, code) = run_in(exe, &scratch.0, &check)?;
+    let mut block = String::from(
+        "```text\n$ rastercheck baseline save out/baselines/lines.json cases/lines -r dda-f64\n",
+    );
+    block.push_str("$ rastercheck baseline check out/baselines/lines.json -r dda-f32=dda-f64\n");
+    let lines: Vec<&str> = text.lines().collect();
+    for line in lines.iter().take(3) {
+        block.push_str(&format!("{}\n", line.trim_end()));
+    }
+    if lines.len() > 4 {
+        block.push_str("...\n");
+    }
+    if let Some(last) = lines.last().filter(|_| lines.len() > 3) {
+        block.push_str(&format!("{}\n", last.trim_end()));
+    }
+    block.push_str(&format!("$ echo $?\n{code}\n```\n"));
+    Ok(block)
+}
+
+/// `diff.md` for production against `mutant:no-perspective` over the
+/// triangle cases, each table cut to its first row.
+fn diff_markdown(root: &Path, exe: &Path) -> Result<String, String> {
+    let scratch = Scratch::new("diff")?;
+    let cases = root
+        .join("cases/triangles")
+        .canonicalize()
+        .map_err(|e| e.to_string())?;
+    let cases = cases.to_string_lossy();
+    for (name, report) in [("production", "main"), ("mutant:no-perspective", "pr")] {
+        let args = ["run", &cases, "-r", name, "--report", report, "--quiet"];
+        run_in(exe, &scratch.0, &args)?;
+    }
+    run_in(exe, &scratch.0, &["diff", "main", "pr", "--out", "pr-diff"])?;
+    let path = scratch.0.join("pr-diff/diff.md");
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let mut block = String::from("```markdown\n");
+    let mut rows_left: Option<usize> = None;
+    for line in text.lines() {
+        if line.starts_with("### ") {
+            rows_left = Some(2);
+        }
+        match &mut rows_left {
+            Some(0) => continue,
+            Some(n) if line.starts_with("| ") && !line.starts_with("| case") => {
+                *n -= 1;
+                if *n == 0 {
+                    block.push_str("...\n");
+                    continue;
+                }
+            }
+            _ => {}
+        }
+        block.push_str(line.trim_end());
+        block.push('\n');
+    }
+    block.push_str("```\n");
     Ok(block)
 }
 
