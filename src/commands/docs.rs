@@ -233,7 +233,7 @@ pub fn check(root: &Path, exe: &Path, write: bool) -> Result<Vec<Stale>, String>
 /// `rastercheck docs`: check (or with `--write` rewrite) the generated
 /// blocks, from the repository in the working directory.
 pub fn docs(args: DocsArgs) -> Exit {
-    let root = PathBuf::from("");
+    let root = PathBuf::from(".");
     let exe = match std::env::current_exe() {
         Ok(exe) => exe,
         Err(e) => {
@@ -257,7 +257,7 @@ pub fn docs(args: DocsArgs) -> Exit {
             for s in &stale {
                 outln!(
                     "stale: {} block {:?}; `{WRITE_COMMAND}` rewrites it",
-                    s.file.display(),
+                    s.file.strip_prefix(&root).unwrap_or(&s.file).display(),
                     s.block
                 );
             }
