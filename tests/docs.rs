@@ -182,10 +182,11 @@ fn every_link_to_a_repository_file_points_at_one() {
                 }
                 continue;
             }
-            if !fragment.is_empty() && target.extension().is_some_and(|e| e == "md") {
-                if !anchors(&read(&target)).iter().any(|a| a == fragment) {
-                    broken.push(format!("{shown}: ({link}) has no heading #{fragment}"));
-                }
+            if !fragment.is_empty()
+                && target.extension().is_some_and(|e| e == "md")
+                && !anchors(&read(&target)).iter().any(|a| a == fragment)
+            {
+                broken.push(format!("{shown}: ({link}) has no heading #{fragment}"));
             }
         }
     }
@@ -244,8 +245,8 @@ fn sh_commands(text: &str) -> Vec<(String, String)> {
     let mut section = String::new();
     let mut in_sh = false;
     for line in text.lines() {
-        if line.starts_with("## ") {
-            section = line[3..].to_owned();
+        if let Some(heading) = line.strip_prefix("## ") {
+            heading.clone_into(&mut section);
         }
         if line.trim_start().starts_with("```") {
             in_sh = !in_sh && line.trim() == "```sh";
