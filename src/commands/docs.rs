@@ -66,6 +66,7 @@ pub fn generate(name: &str, root: &Path, exe: &Path) -> Option<Result<String, St
     Some(match name {
         "families" => families_table(&root.join("cases")),
         "rasterizers" => Ok(rasterizers_table()),
+        "limits" => Ok(limits_table()),
         "sample-output" => sample_output(root, exe),
         "baseline-output" => baseline_output(root, exe),
         "diff-md" => diff_markdown(root, exe),
@@ -418,6 +419,48 @@ fn rasterizers_table() -> String {
     out
 }
 
+/// `n` as a power of two (`2^24`) when it is one, in decimal otherwise.
+fn power_of_two(n: u64) -> String {
+    if n.is_power_of_two() && n >= 1 << 10 {
+        format!("2^{}", n.trailing_zeros())
+    } else {
+        n.to_string()
+    }
+}
+
+/// `bytes` in the largest binary unit that divides it.
+fn size(bytes: u64) -> String {
+    for (shift, unit) in [(30, "GiB"), (20, "MiB"), (10, "KiB")] {
+        if bytes >= 1 << shift && bytes % (1 << shift) == 0 {
+            return format!("{} {unit}", bytes >> shift);
+        }
+    }
+    format!("{bytes} bytes")
+}
+
+/// The resource limits (SPEC.md §8) with their defaults, from the
+/// constants the code uses.
+fn limits_table() -> String {
+    use crate::adapters::external;
+    use crate::scene::rules::limits as l;
+    let rows = [
+        ("canvas pixels".to_owned(), power_of_two(l::DEFAULT_MAX_CANVAS_PIXELS), "`--max-canvas-pixels`".to_owned()),
+        ("primitives in one case".to_owned(), l::DEFAULT_MAX_PRIMITIVES.to_string(), "`--max-primitives`".to_owned()),
+        ("sample points: pixels × samples × time samples".to_owned(), power_of_two(l::DEFAULT_MAX_SAMPLES), "`--max-samples`".to_owned()),
+        ("a case file's size, checked before it is read".to_owned(), size(l::DEFAULT_MAX_CASE_BYTES), "`--max-case-bytes`".to_owned()),
+        ("memory of one case's frames, estimated from the scene before any is allocated (a run holds the frames of the cases in flight only)".to_owned(), size(l::DEFAULT_MAX_CASE_MEMORY), "`--max-case-memory`".to_owned()),
+        ("seconds per rasterizer and case (the reference and production poll it; an external program is stopped at it)".to_owned(), l::DEFAULT_CASE_TIMEOUT.as_secs().to_string(), "`--case-timeout` (0: none)".to_owned()),
+        ("seconds an external program may take to answer one case".to_owned(), external::DEFAULT_TIMEOUT.as_secs().to_string(), format!("`{}`", external::TIMEOUT_ENV)),
+        ("bytes an external program may write to stdout for one answer (of its stderr, only the tail is kept)".to_owned(), size(external::DEFAULT_MAX_OUTPUT), format!("`{}`", external::MAX_OUTPUT_ENV)),
+        ("an EXR answer's or golden file's size, read from its header before decoding".to_owned(), "the case's canvas".to_owned(), "—".to_owned()),
+    ];
+    let mut out = String::from("| limit | default | set with |\n|---|---|---|\n");
+    for (what, default, flag) in rows {
+        out.push_str(&format!("| {what} | {default} | {flag} |\n"));
+    }
+    out
+}
+
 /// The console lines shown as sample output: the first results and the
 /// summary of a run of production and a mutant over one family.
 const SAMPLE: [&str; 6] = [
@@ -593,5 +636,14 @@ mod tests {
             "a\n<!-- generated:x:begin -->\nnew\nlines\n<!-- generated:x:end -->\nb\n"
         );
         assert!(blocks("<!-- generated:y:begin -->\n").is_err());
+    }
+
+    #[test]
+    fn limits_are_spelled_as_powers_of_two_and_binary_units() {
+        assert_eq!(power_of_two(1 << 24), "2^24");
+        assert_eq!(power_of_two(100_000), "100000");
+        assert_eq!(size(16 << 20), "16 MiB");
+        assert_eq!(size(4 << 30), "4 GiB");
+        assert_eq!(size(1000), "1000 bytes");
     }
 }
