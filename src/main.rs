@@ -10,7 +10,8 @@ use clap::{Parser, Subcommand};
 
 use rastercheck::commands::{
     self, baseline::BaselineCommand, bench::BenchArgs, bless::BlessArgs, diff::DiffArgs,
-    fuzz::FuzzArgs, matrix::MatrixArgs, probe::ProbeArgs, run::RunArgs, show::ShowArgs, Exit,
+    docs::DocsArgs, fuzz::FuzzArgs, matrix::MatrixArgs, probe::ProbeArgs, run::RunArgs,
+    show::ShowArgs, Exit,
 };
 
 /// The system allocator, counting only while `bench` measures a method's
@@ -62,6 +63,9 @@ enum Command {
     /// fixed, added and removed cases, metric deltas worst first; exit 1
     /// on a regression.
     Diff(DiffArgs),
+    /// Check (or with --write rewrite) the generated blocks of README.md
+    /// and docs/: tables and figures taken from the code and the cases.
+    Docs(DocsArgs),
 }
 
 fn main() -> ExitCode {
@@ -87,6 +91,7 @@ fn main() -> ExitCode {
         Command::Probe(args) => commands::probe::probe(args),
         Command::Bench(args) => commands::bench::bench(args),
         Command::Diff(args) => commands::diff::diff(args),
+        Command::Docs(args) => commands::docs::docs(args),
         Command::Rasterizers => commands::list_rasterizers(),
     };
     leave(exit.code())

@@ -1,11 +1,13 @@
 //! The example rasterizers in C and JavaScript (`examples/c`,
-//! `examples/js`, README "External rasterizers"), judged through the binary
+//! `examples/js`, docs/validating.md), judged through the binary
 //! over the bundled triangle, antialiasing, polygon and motion cases, in
 //! persistent mode with protocol v2 (moving scenes by SPEC §12.8): each hello is honoured (what a program declares it
 //! does not draw is UNSUPPORTED with the declaration as reason), each
 //! example gets the verdicts it was built for, and each one's planted bug
 //! (`--wrong-tie`, `--truncate`, `--swap`) is caught. A missing `cc` or
 //! `node` skips loudly, and fails under `CI=true` (`.ci/run` installs both).
+//! The counts docs/validating.md gives are checked here (its `example-c`
+//! and `example-js` blocks; `RASTERCHECK_BLESS=1` rewrites them).
 
 mod common;
 
@@ -35,7 +37,7 @@ fn available(program: &str) -> bool {
         .is_ok_and(|o| o.status.success())
 }
 
-/// The C example compiled as README says (C99, every warning an error)
+/// The C example compiled as docs/validating.md says (C99, every warning an error)
 /// into a fresh folder named by `tag`; `None` (skipped) without `cc`.
 fn c_example(tag: &str) -> Option<PathBuf> {
     if !available("cc") {
@@ -121,6 +123,47 @@ fn verdict_of<'a>(verdicts: &'a [Verdict], id: &str) -> &'a Verdict {
         .unwrap_or_else(|| panic!("no {id} in {verdicts:?}"))
 }
 
+/// Holds the figures in `docs/validating.md` to what a test measured:
+/// the block `name` there must read `line` (one list item). With
+/// `RASTERCHECK_BLESS=1` the block is rewritten instead.
+fn document(name: &str, line: String) {
+    static FILE: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _lock = FILE.lock().unwrap_or_else(|e| e.into_inner());
+    let path = root().join("docs/validating.md");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let content = format!("{line}\n");
+    let block = rastercheck::commands::docs::blocks(&text)
+        .unwrap()
+        .into_iter()
+        .find(|b| b.name == name)
+        .unwrap_or_else(|| panic!("docs/validating.md has no {name} block"));
+    if block.content == content {
+        return;
+    }
+    if std::env::var_os("RASTERCHECK_BLESS").is_some() {
+        let text = rastercheck::commands::docs::replace(&text, name, &content);
+        std::fs::write(&path, text).unwrap();
+        return;
+    }
+    panic!(
+        "docs/validating.md block {name:?} is stale:\n  in the file: {}  measured:    {content}\
+         `RASTERCHECK_BLESS=1 cargo test --release --test examples` rewrites it",
+        block.content
+    );
+}
+
+/// The counts of `v` over `families`, as the line `document` keeps.
+fn counts_line(example: &str, families: &[&str], v: &[Verdict]) -> String {
+    let families: Vec<String> = families.iter().map(|f| format!("`{f}`")).collect();
+    format!(
+        "- {example}, over {}: **{} pass, {} fail, {} unsupported**",
+        families.join(", "),
+        count(v, "pass"),
+        count(v, "fail"),
+        count(v, "unsupported")
+    )
+}
+
 /// The C example is exact: it passes every triangle, antialiasing,
 /// polygon, motion and parallelogram-line case, and its hello (no other
 /// line rules) makes the other line cases UNSUPPORTED with the declaration
@@ -149,6 +192,7 @@ fn the_c_example_passes_every_case_it_declares() {
     }
     let wide = verdict_of(&v, "antialias/line_parallelogram_w2_5_steep_standard16");
     assert_eq!(wide.verdict, "pass", "{t}");
+    document("example-c", counts_line("the C example", &cases, &v));
 }
 
 /// `--wrong-tie` gives every sample on an edge to the other side: the
@@ -215,6 +259,10 @@ fn the_js_example_passes_every_case_judged_per_primitive() {
     assert_eq!(
         verdict_of(&v, "triangles/shared_edge_diagonal").verdict,
         "pass"
+    );
+    document(
+        "example-js",
+        counts_line("the JavaScript example", &FAMILIES, &v),
     );
 }
 

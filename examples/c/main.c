@@ -5,9 +5,9 @@
 //
 // Build and run (from the repository root):
 //
-//     mkdir -p target/examples
-//     cc -std=c99 -O2 -Wall -Wextra -Werror -o target/examples/c_rasterizer examples/c/*.c -lm
-//     rastercheck run cases -r 'c=external-persistent:target/examples/c_rasterizer'
+//     mkdir -p out
+//     cc -std=c99 -O2 -Wall -Wextra -Werror -o out/c_rasterizer examples/c/*.c -lm
+//     rastercheck run cases -r 'c=external-persistent:out/c_rasterizer'
 //
 // What it is meant to show: that exact rasterization needs no big numbers.
 // Every vertex is snapped from its exact decimal or fraction spelling to

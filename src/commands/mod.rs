@@ -17,6 +17,7 @@ pub mod bench;
 pub mod bless;
 pub mod console;
 pub mod diff;
+pub mod docs;
 pub mod fuzz;
 pub mod limits;
 pub mod matrix;
