@@ -389,14 +389,14 @@ fn a_rasterizers_own_clipping_is_judged_and_named() {
     let (_, run) = common::run(&scene, &FixedClip(own));
     assert_eq!(run.judged_clip, Some(own));
     assert!(
-        matches!(run.verdict, rastercheck::harness::suite::Verdict::Pass),
+        matches!(run.verdict, rastercheck::harness::judge::Verdict::Pass),
         "{:?}",
         run.verdict
     );
     // Held to the case's clipping instead, it fails: the check can fail.
     let (_, run) = common::run(&scene, &common::AsStated(&FixedClip(own)));
     assert!(
-        matches!(run.verdict, rastercheck::harness::suite::Verdict::Fail(_)),
+        matches!(run.verdict, rastercheck::harness::judge::Verdict::Fail(_)),
         "{:?}",
         run.verdict
     );

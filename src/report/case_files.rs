@@ -15,8 +15,8 @@ use std::sync::Mutex;
 
 use super::json::CaseEntry;
 use super::{exr, html, png, relative, MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
+use crate::harness::judge::Verdict;
 use crate::harness::runner::CaseOutcome;
-use crate::harness::suite::Verdict;
 
 /// Writes each case's pictures, error maps and page (see the module
 /// comment). Errors are kept, the first one reported by [`CaseWriter::finish`].

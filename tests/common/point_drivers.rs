@@ -561,7 +561,7 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
 /// draws them), and the frame departs from the canvas-bounded rule: the
 /// square is cut at the viewport's side, not drawn whole.
 pub fn assert_squares_cut_at_the_viewport(candidate: &dyn Rasterizer) {
-    use rastercheck::harness::suite::Verdict;
+    use rastercheck::harness::judge::Verdict;
     use rastercheck::scene::PointBounds;
     assert_eq!(candidate.fixed_point_bounds(), Some(PointBounds::Viewport));
     let viewport = r#"{"x": 4, "y": 4, "width": 16, "height": 16}"#;

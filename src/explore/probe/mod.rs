@@ -68,263 +68,36 @@
 //! own rule); snapping, sample position and interpolation are still judged
 //! against the case as written.
 //!
-//! The rooms: this file holds the profile model and [`probe`], which runs
-//! every probe; `scenes.rs` builds the probe scenes, `infer.rs` decides
-//! what each probe found, `describe.rs` puts the profile into words and
-//! JSON. Reading a profile for `run --profile` is the harness's
-//! (`harness/profile.rs`).
+//! The rooms: `run.rs` holds [`probe`], which runs every probe in the
+//! order above into a [`Profile`] (`profile.rs`, with the evidence of
+//! `evidence.rs`); `diagnose.rs` is the sampler, position and tie-rule
+//! decision alone (in the words of `diagnosis.rs`); `scenes.rs` builds the
+//! probe scenes, `sampler.rs` and `infer.rs` decide what each probe found,
+//! `clip.rs` and `points.rs` probe clip-space conventions (through
+//! `convention.rs`), `describe.rs` puts the profile into words. Reading a
+//! profile for `run --profile` is the harness's (`harness/profile.rs`).
 
 mod clip;
 mod describe;
+mod diagnose;
+pub mod diagnosis;
+mod evidence;
 mod infer;
 mod points;
+mod profile;
+mod run;
 mod sampler;
 mod scenes;
 mod verdict;
 
-use serde::Serialize;
-
-use crate::rasterizer::Rasterizer;
-
 pub use clip::{probe_clip, ClipProbe};
-use describe::departures;
-use infer::{
-    nearest_rule, probe_axis, probe_fill_rule, probe_interpolation, probe_sample_position, probe_y,
+pub use diagnose::diagnose;
+pub use diagnosis::{Diagnosis, Sampler, SamplerKind};
+pub use evidence::{
+    ChannelProbe, InterpolationProbe, MeshEvidence, Resolved, RuleCount, PROBE_BITS, RULE_NAMES,
 };
 pub use points::{probe_points, PointProbe};
-
-pub use crate::harness::diagnosis::{Diagnosis, Sampler, SamplerKind};
+pub use profile::Profile;
+pub use run::probe;
 
 pub use crate::harness::profile::SCHEMA;
-
-/// The subpixel bits the probe scenes state: the most a case can.
-pub const PROBE_BITS: u32 = 16;
-
-/// What a probe found.
-#[derive(Clone, Debug, Serialize)]
-pub struct Profile {
-    pub schema: &'static str,
-    pub tool: crate::report::json::Tool,
-    pub rasterizer: String,
-    /// How it decides coverage: `point`, `area`, `any-coverage` or
-    /// `unknown`. Only for `point` are the fill rule, subpixel bits and
-    /// sample position measured; otherwise they are `null` / "not
-    /// applicable". (Optional in `rastercheck-profile/1`: a profile
-    /// without it was written for a point sampler.)
-    pub sampler: SamplerKind,
-    /// The frames that decided the sampler, in a sentence.
-    pub sampler_evidence: String,
-    /// The rule that explains the most tie samples (`top-left`, ...,
-    /// `all-edges`, or `none` for open edges); `null` when nothing was
-    /// drawn, or when it is not point-sampled.
-    pub fill_rule: Option<String>,
-    /// Whether that rule explains every tie sample.
-    pub fill_rule_consistent: bool,
-    /// One entry per probe mesh.
-    pub fill_rule_evidence: Vec<MeshEvidence>,
-    /// `true` when y points down on screen (a triangle in the top half is
-    /// drawn in the top rows), `false` when up, `null` when unclear.
-    pub y_down: Option<bool>,
-    /// Subpixel bits the rasterizer keeps; `null` when it keeps all the
-    /// case states (`exact`) or when it could not be measured.
-    pub subpixel_bits: Option<u32>,
-    /// "8 bits", "exact", or why it is unknown.
-    pub subpixel: String,
-    /// Bits resolved along x and along y.
-    pub subpixel_resolved: Resolved,
-    /// "centre", "(x, y) in the pixel", "(1, 1) of the pixel, outside it
-    /// ...", "several: ...", "none found" or "not applicable (...)".
-    pub sample_position: String,
-    /// The sample's offset in its pixel, when there is exactly one.
-    pub sample_offset: Option<[f64; 2]>,
-    pub interpolation: Vec<InterpolationProbe>,
-    /// Its clipping (SPEC.md §16.9), when it takes clip space.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub clip: Option<ClipProbe>,
-    /// What it does with clip-space points at the sides (SPEC.md §17.2),
-    /// when it draws them.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub points: Option<PointProbe>,
-    /// Departures from D3D11 and Vulkan, as sentences.
-    pub departures: Vec<String>,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct Resolved {
-    pub x: Option<u32>,
-    pub y: Option<u32>,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct MeshEvidence {
-    pub mesh: String,
-    pub tie_samples: usize,
-    /// Tie samples each rule explains, in the order top-left, bottom-right,
-    /// top-right, bottom-left, all-edges, none.
-    pub explained: Vec<RuleCount>,
-    /// Samples away from every edge that differ from the reference.
-    pub off_edge_differences: usize,
-    /// Why the rasterizer drew nothing, when it did not.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub error: Option<String>,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct RuleCount {
-    pub rule: String,
-    pub samples: usize,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct InterpolationProbe {
-    pub case: String,
-    /// `measured`, `unsupported` or `error`.
-    pub status: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub why: Option<String>,
-    pub channels: Vec<ChannelProbe>,
-}
-
-#[derive(Clone, Debug, Serialize)]
-pub struct ChannelProbe {
-    pub channel: String,
-    pub max_abs: f64,
-    pub max_ulp: f64,
-    pub allowed_abs: f64,
-    pub within_bound: bool,
-}
-
-/// The candidate rules: the five fill rules, then "none" (open edges).
-pub const RULE_NAMES: [&str; 6] = [
-    "top-left",
-    "bottom-right",
-    "top-right",
-    "bottom-left",
-    "all-edges",
-    "none",
-];
-
-/// Why the point-sampler probes were not run, or `None` when they were.
-fn not_measured(d: &Diagnosis) -> Option<String> {
-    match (d.sampler.kind, d.offset) {
-        (SamplerKind::Point, Some(_)) => None,
-        (SamplerKind::Point, None) => Some(format!(
-            "not measured: its sample position was not found ({})",
-            d.sample_position
-        )),
-        (kind, _) => Some(format!("not applicable ({})", kind.words())),
-    }
-}
-
-/// The sampler decision, then for a point sampler its sample position and
-/// tie rule (the meshes moved for its sample): what the matrix's findings
-/// say about a row. `Err` when it draws none of the probe scenes.
-pub fn diagnose(candidate: &dyn Rasterizer) -> Result<Diagnosis, String> {
-    diagnose_with_evidence(candidate).map(|(d, _)| d)
-}
-
-/// [`diagnose`], with the fill-rule evidence per mesh.
-fn diagnose_with_evidence(
-    candidate: &dyn Rasterizer,
-) -> Result<(Diagnosis, Vec<MeshEvidence>), String> {
-    let sampler = sampler::decide(candidate)
-        .map_err(|e| format!("{} could not draw the probe scenes: {e}", candidate.name()))?;
-    let mut d = Diagnosis {
-        sample_position: String::new(),
-        offset: None,
-        fill_rule: None,
-        fill_rule_consistent: false,
-        sampler,
-    };
-    if d.sampler.kind != SamplerKind::Point {
-        d.sample_position = not_measured(&d).unwrap_or_default();
-        return Ok((d, Vec::new()));
-    }
-    let position = probe_sample_position(candidate);
-    d.sample_position = position.words;
-    d.offset = position.offset;
-    let Some(o) = d.offset else {
-        return Ok((d, Vec::new()));
-    };
-    let evidence = probe_fill_rule(candidate, o);
-    if let Some(e) = evidence.iter().find_map(|e| e.error.clone()) {
-        if evidence.iter().all(|e| e.error.is_some()) {
-            return Err(format!(
-                "{} could not draw the probe meshes: {e}",
-                candidate.name()
-            ));
-        }
-    }
-    let rule = nearest_rule(&evidence);
-    d.fill_rule = rule.as_ref().map(|r| r.0.clone());
-    d.fill_rule_consistent = rule.as_ref().is_some_and(|r| r.1);
-    Ok((d, evidence))
-}
-
-/// Probes a rasterizer. `Err` when it draws none of the probe scenes.
-pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
-    let (d, evidence) = diagnose_with_evidence(candidate)?;
-    let y_down = probe_y(candidate);
-    let (x_bits, y_bits) = match (not_measured(&d), d.offset) {
-        (None, Some(o)) => (
-            probe_axis(candidate, false, o),
-            probe_axis(candidate, true, o),
-        ),
-        (why, _) => {
-            let why = why.unwrap_or_default();
-            (Err(why.clone()), Err(why))
-        }
-    };
-    let (subpixel_bits, subpixel) = match (&x_bits, &y_bits) {
-        (Ok(x), Ok(y)) => {
-            // A rasterizer cannot resolve finer than its vertex grid along
-            // any axis, but may resolve less along one where it rounds edge
-            // positions between vertices: the grid is the finer of the two.
-            let b = (*x).max(*y);
-            let axes = if x == y {
-                String::new()
-            } else {
-                format!(
-                    " (x {x}, y {y}: edges resolve fewer bits along {} than the vertex grid)",
-                    if x < y { "x" } else { "y" }
-                )
-            };
-            if b >= PROBE_BITS {
-                (None, format!("exact{axes}"))
-            } else {
-                (Some(b), format!("{b} bits{axes}"))
-            }
-        }
-        (Err(e), _) | (_, Err(e)) if e.starts_with("not ") => (None, e.clone()),
-        (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
-    };
-    let interpolation = probe_interpolation(candidate);
-    let mut profile = Profile {
-        schema: SCHEMA,
-        tool: crate::report::json::Tool {
-            name: "rastercheck",
-            version: env!("CARGO_PKG_VERSION"),
-        },
-        rasterizer: candidate.name().to_owned(),
-        sampler: d.sampler.kind,
-        sampler_evidence: d.sampler.evidence,
-        fill_rule: d.fill_rule,
-        fill_rule_consistent: d.fill_rule_consistent,
-        fill_rule_evidence: evidence,
-        y_down,
-        subpixel_bits,
-        subpixel,
-        subpixel_resolved: Resolved {
-            x: x_bits.ok(),
-            y: y_bits.ok(),
-        },
-        sample_position: d.sample_position,
-        sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
-        interpolation,
-        clip: probe_clip(candidate),
-        points: probe_points(candidate),
-        departures: Vec::new(),
-    };
-    profile.departures = departures(&profile);
-    Ok(profile)
-}

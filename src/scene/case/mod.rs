@@ -36,6 +36,7 @@ mod point;
 mod schema;
 mod validate;
 
+pub use json::closest;
 use schema::Reader;
 
 /// Resource limits that a run may tighten or relax (SPEC.md, "Limits").
