@@ -365,8 +365,8 @@ fn probe_finds_a_rasterizers_own_clipping() {
             !found.follows_case && found.consistent,
             "{clip:?}: {found:?}"
         );
-        assert_eq!(found.clip_xy, Some(clip.xy.name()), "{found:?}");
-        assert_eq!(found.clip_z, Some(clip.z.name()), "{found:?}");
+        assert_eq!(found.clip_xy(), Some(clip.xy.name()), "{found:?}");
+        assert_eq!(found.clip_z(), Some(clip.z.name()), "{found:?}");
     }
     // Production follows each case; a screen-space rasterizer is not probed.
     let found = probe_clip(&rastercheck::production::Production).expect("takes clip space");

@@ -600,9 +600,9 @@ pub fn assert_probe_finds_declared_point_clipping(candidate: &dyn Rasterizer) {
     assert!(found.consistent && !found.follows_case, "{found:?}");
     assert_eq!(found.scenes, 5, "every probe point drawn: {found:?}");
     let declared = candidate.fixed_point_clip().expect("declared").name();
-    assert_eq!(found.clip_points, Some(declared), "{found:?}");
+    assert_eq!(found.clip_points(), Some(declared), "{found:?}");
     let bounds = candidate.fixed_point_bounds().expect("declared").name();
-    assert_eq!(found.point_bounds, Some(bounds), "{found:?}");
+    assert_eq!(found.point_bounds(), Some(bounds), "{found:?}");
 }
 
 /// Asserts `candidate` refuses `scene` with a reason containing `why`.

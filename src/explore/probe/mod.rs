@@ -78,6 +78,7 @@
 //! profile for `run --profile` is the harness's (`harness/profile.rs`).
 
 mod clip;
+mod convention;
 mod describe;
 mod diagnose;
 pub mod diagnosis;
@@ -91,6 +92,7 @@ mod scenes;
 mod verdict;
 
 pub use clip::{probe_clip, ClipProbe};
+pub use convention::{Convention, ConventionProbe};
 pub use diagnose::diagnose;
 pub use diagnosis::{Diagnosis, Sampler, SamplerKind};
 pub use evidence::{
