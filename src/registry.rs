@@ -43,7 +43,7 @@ impl Kind {
     pub fn name(self) -> &'static str {
         match self {
             Kind::Exact => "exact reference",
-            Kind::Production => "production method",
+            Kind::Production => "production",
             Kind::Foil => "foil",
             Kind::Mutant => "mutant",
             Kind::Driver => "driver",
@@ -432,6 +432,44 @@ mod tests {
                 assert_eq!(r.is_foil(), e.kind == Kind::Foil, "{}", e.name);
             }
         }
+    }
+
+    /// The names the five lists held before the registry, all still rows,
+    /// and the matrix's default rows as they were.
+    #[test]
+    fn the_names_accepted_before_are_rows_and_the_matrix_rows_are_kept() {
+        let before = "reference production dda-f32 dda-f64 float-f32 float-f64 \
+            foil-offset-sampler foil-area-sampler foil-any-coverage polygon-convex \
+            polygon-tessellate flood-fill adaptive-refine area-f32 adaptive-resolve \
+            production-tiled mutant:flipped-ties mutant:closed-edges mutant:vertex-nudge \
+            mutant:shrunk mutant:no-perspective mutant:thick-lines \
+            mutant:midpoint-for-diamond mutant:shifted-samples mutant:coarse-resolve \
+            mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
+            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu";
+        let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
+        let mut before: Vec<&str> = before.split_whitespace().collect();
+        assert_eq!(before.len(), rows.len());
+        before.retain(|n| !rows.contains(n));
+        assert!(before.is_empty(), "no row for {before:?}");
+        assert_eq!(
+            matrix_default_rows(),
+            [
+                "production",
+                "dda-f32",
+                "dda-f64",
+                "float-f32",
+                "float-f64",
+                "foil-offset-sampler",
+                "foil-area-sampler",
+                "foil-any-coverage",
+                "tiny-skia",
+                "euc",
+                PYTHON_EXAMPLE,
+                "vulkan",
+                "lavapipe",
+                "gl",
+            ]
+        );
     }
 
     #[test]
