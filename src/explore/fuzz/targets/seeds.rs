@@ -4,7 +4,8 @@ use std::path::Path;
 
 use super::by_name::TARGETS;
 use super::response::{requests, selector, Form};
-use crate::explore::fuzz::{tape_of_case, Family, Rng};
+use crate::explore::fuzz::family::{tape_of_case, Family};
+use crate::explore::fuzz::rng::Rng;
 use crate::frame::Frame;
 use crate::plan::Plan;
 
