@@ -16,10 +16,11 @@
 //! - [`frame`]: what every rasterizer returns.
 //! - [`metrics`]: coverage, watertightness, interpolation, antialiasing and
 //!   time-coverage error, and the verdicts.
-//! - [`harness`]: finding and running cases, golden files, baselines, the
-//!   conformance matrix.
+//! - [`harness`]: finding and running cases, golden files, baselines.
 //! - [`report`]: report.json and everything written from it.
-//! - On top: [`explore`] (fuzz, probe) and [`bench`].
+//! - On top: [`registry`] (every rasterizer name, and how to make it),
+//!   [`commands`], [`explore`] (fuzz, probe, the conformance matrix) and
+//!   [`bench`].
 //!
 //! [`deadline`] is the per-case time limit that the long loops of every
 //! stage poll; [`stop`] is how SIGINT and SIGTERM stop a run (the runner
@@ -37,6 +38,7 @@ pub mod plan;
 pub mod production;
 pub mod rasterizer;
 pub mod reference;
+pub mod registry;
 pub mod report;
 pub mod scene;
 pub mod stop;

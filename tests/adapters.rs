@@ -8,25 +8,27 @@
 
 use std::path::{Path, PathBuf};
 
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{discover, judge, load, oracle};
 use rastercheck::rasterizer::Rasterizer;
+use rastercheck::registry;
 use rastercheck::scene::{FillRule, Limits, Scene};
 
 fn case(id: &str) -> Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("cases")
         .join(format!("{id}.json"));
-    suite::load(&suite::case_file(&path), &Limits::default())
+    load::load(&discover::case_file(&path), &Limits::default())
         .unwrap_or_else(|e| panic!("{id}: {e}"))
 }
 
 fn adapter(name: &str) -> Box<dyn Rasterizer> {
-    suite::rasterizer(name).unwrap_or_else(|| panic!("{name} is not registered"))
+    registry::by_name(name).unwrap_or_else(|| panic!("{name} is not registered"))
 }
 
 fn run(scene: &Scene, name: &str) -> CandidateRun {
-    let reference = suite::run_reference(scene);
-    suite::run_candidate(scene, &reference, adapter(name).as_ref())
+    let reference = oracle::run_reference(scene);
+    judge::run_candidate(scene, &reference, adapter(name).as_ref())
 }
 
 /// (missing, extra, wrong owner) against the reference.
@@ -58,7 +60,7 @@ fn assert_fails(scene: &Scene, name: &str) -> CandidateRun {
 /// extra, wrong owner) and (holes, overdraw).
 fn assert_shared_diagonal(name: &str, mismatched: (u64, u64, u64), holes_overdraw: (u64, u64)) {
     let r = assert_fails(&case("triangles/shared_edge_diagonal"), name);
-    assert_eq!(mismatches(&r), mismatched, "{}", suite::describe(&r));
+    assert_eq!(mismatches(&r), mismatched, "{}", judge::describe(&r));
     assert_eq!(watertight(&r), holes_overdraw);
 }
 
@@ -68,13 +70,13 @@ fn assert_pass(id: &str, scene: &Scene, name: &str) {
         r.verdict,
         Verdict::Pass,
         "{name} on {id}: {}",
-        suite::describe(&r)
+        judge::describe(&r)
     );
 }
 
 #[test]
 fn adapters_are_registered() {
-    let names = suite::rasterizer_names();
+    let names = registry::names();
     #[cfg(feature = "tiny-skia")]
     assert!(names.contains(&"tiny-skia"));
     #[cfg(feature = "euc")]
@@ -111,7 +113,7 @@ mod tiny_skia {
         let id = "triangles/fan_16_square_ring";
         let mut scene = case(id);
         let r = assert_fails(&scene, "tiny-skia");
-        assert_eq!(watertight(&r), (0, 0), "{}", suite::describe(&r));
+        assert_eq!(watertight(&r), (0, 0), "{}", judge::describe(&r));
         let (missing, extra, wrong_owner) = mismatches(&r);
         assert!(missing > 0 && extra > 0 && wrong_owner > 0);
 
@@ -131,7 +133,7 @@ mod tiny_skia {
         let mut scene = case("triangles/fan_16_center");
         scene.rules.fill_rule = FillRule::BottomRight;
         let r = assert_fails(&scene, "tiny-skia");
-        assert_eq!(watertight(&r), (0, 1), "{}", suite::describe(&r));
+        assert_eq!(watertight(&r), (0, 1), "{}", judge::describe(&r));
         let frame = r.frame.as_ref().unwrap();
         assert_eq!(frame.coverage[frame.index(8, 8)], 7);
     }
@@ -184,7 +186,7 @@ mod euc {
         // SPEC.md §2: a zero-area triangle covers nothing. euc's closed
         // inside test keeps the samples on the segment (34 over 6 triangles).
         let r = run(&case("triangles/degenerate_collinear_cull_none"), "euc");
-        assert_eq!(mismatches(&r), (0, 34, 0), "{}", suite::describe(&r));
+        assert_eq!(mismatches(&r), (0, 34, 0), "{}", judge::describe(&r));
     }
 
     #[test]
@@ -194,7 +196,7 @@ mod euc {
         for rule in FillRule::CONSISTENT {
             scene.rules.fill_rule = rule;
             let r = run(&scene, "euc");
-            assert_eq!(watertight(&r).1, 8, "{rule}: {}", suite::describe(&r));
+            assert_eq!(watertight(&r).1, 8, "{rule}: {}", judge::describe(&r));
         }
     }
 }
@@ -319,18 +321,18 @@ fn triangle_cases() -> Vec<PathBuf> {
 
 #[test]
 fn adapters_print_family_counts() {
-    let found = suite::discover(&triangle_cases());
+    let found = discover::discover(&triangle_cases());
     assert!(found.errors.is_empty(), "{:?}", found.errors);
     let names: Vec<&str> = ["tiny-skia", "euc"]
         .into_iter()
-        .filter(|n| suite::rasterizer_names().contains(n))
+        .filter(|n| registry::names().contains(n))
         .collect();
     let mut counts = vec![[0usize; 4]; names.len()];
     for file in &found.cases {
-        let scene = suite::load(file, &Limits::default()).expect("bundled cases load");
-        let reference = suite::run_reference(&scene);
+        let scene = load::load(file, &Limits::default()).expect("bundled cases load");
+        let reference = oracle::run_reference(&scene);
         for (name, count) in names.iter().zip(&mut counts) {
-            let r = suite::run_candidate(&scene, &reference, adapter(name).as_ref());
+            let r = judge::run_candidate(&scene, &reference, adapter(name).as_ref());
             let slot = match r.verdict {
                 Verdict::Pass => 0,
                 Verdict::Fail(_) => 1,

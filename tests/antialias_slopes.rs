@@ -29,7 +29,8 @@ mod common;
 
 use common::Rng;
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{discover, judge, load, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::reference;
@@ -163,8 +164,7 @@ struct Measured {
 }
 
 fn measure(regions: &[Vec<(u64, u64)>], pattern: Pattern, seeds: u64) -> Measured {
-    let production =
-        rastercheck::harness::suite::rasterizer("production").expect("production exists");
+    let production = rastercheck::registry::by_name("production").expect("production exists");
     let mut reference_rms = Vec::new();
     let mut production_rms = Some(Vec::new());
     for &n in &COUNTS {
@@ -392,13 +392,13 @@ fn bundled(folder: &str) -> Vec<(String, Scene)> {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("cases")
         .join(folder);
-    let found = suite::discover(&[dir]);
+    let found = discover::discover(&[dir]);
     assert!(found.errors.is_empty(), "{:?}", found.errors);
     found
         .cases
         .iter()
         .map(|file| {
-            let scene = suite::load(file, &Limits::default()).expect("bundled cases are valid");
+            let scene = load::load(file, &Limits::default()).expect("bundled cases are valid");
             (file.id.clone(), scene)
         })
         .collect()
@@ -431,16 +431,16 @@ fn case_bounds_pass_exact_areas_and_catch_four_sample_quality() {
             if scene.effects.antialias.is_none() {
                 continue;
             }
-            let reference = suite::run_reference(&scene);
-            let exact = suite::run_candidate(&scene, &reference, &ExactArea);
+            let reference = oracle::run_reference(&scene);
+            let exact = judge::run_candidate(&scene, &reference, &ExactArea);
             assert!(
                 matches!(exact.verdict, Verdict::Pass),
                 "{id}: exact areas fail: {}",
-                suite::describe(&exact)
+                judge::describe(&exact)
             );
             let n = scene.effects.antialias.as_ref().map_or(1, |aa| aa.samples);
             if BEYOND_FOUR_SAMPLES.contains(&id.as_str()) {
-                let coarse = suite::run_candidate(&scene, &reference, &FourSampleQuality);
+                let coarse = judge::run_candidate(&scene, &reference, &FourSampleQuality);
                 match &coarse.verdict {
                     Verdict::Fail(reasons) => assert!(
                         reasons.iter().any(|r| r.contains("coverage RMS")),
@@ -448,7 +448,7 @@ fn case_bounds_pass_exact_areas_and_catch_four_sample_quality() {
                     ),
                     _ => panic!(
                         "{id}: a 4-sample answer passes a {n}-sample case: {}",
-                        suite::describe(&coarse)
+                        judge::describe(&coarse)
                     ),
                 }
                 caught += 1;

@@ -595,3 +595,126 @@ fn bench_refuses_an_out_folder_that_does_not_exist_before_it_runs() {
     assert!(!t.contains("bench: "), "no workload ran: {t}");
     assert!(!dir.join("missing").exists());
 }
+
+/// The first line of stderr and stdout that starts with `error:`.
+fn error_line(t: &str) -> &str {
+    t.lines()
+        .find(|l| l.starts_with("error:"))
+        .unwrap_or_else(|| panic!("no error line in {t}"))
+}
+
+#[test]
+fn a_mistyped_rasterizer_gets_one_suggestion_not_the_whole_list() {
+    let dir = workspace("did-you-mean", &[("cases/a.json", SINGLE)]);
+    for (typed, meant) in [
+        ("producton", "\"production\""),
+        ("foil-any-coverag", "\"foil-any-coverage\""),
+        ("mutant:flipped-tie", "\"mutant:flipped-ties\""),
+        (
+            "mine=python3 r.py",
+            "\"mine=external-persistent:python3 r.py\"",
+        ),
+        ("externl:python3 r.py", "\"external:python3 r.py\""),
+    ] {
+        let out = rastercheck(&dir, &["run", "cases", "-r", typed]);
+        let t = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{typed}: {t}");
+        let line = error_line(&t);
+        assert!(
+            line.contains(&format!("did you mean {meant}?")),
+            "{typed}: {t}"
+        );
+        assert!(line.contains("`rastercheck rasterizers` lists them"), "{t}");
+        assert!(!line.contains("dda-f64"), "the whole list again: {t}");
+    }
+    // Nothing near: no suggestion, only where the names are.
+    let out = rastercheck(&dir, &["run", "cases", "-r", "qqqqqqqqqqqq"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(!t.contains("did you mean"), "{t}");
+    assert!(t.contains("`rastercheck rasterizers` lists them"), "{t}");
+    // The matrix reads the same names.
+    let out = rastercheck(&dir, &["matrix", "cases", "-r", "producton"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(t.contains("did you mean \"production\"?"), "{t}");
+}
+
+#[test]
+fn a_mistyped_family_gets_a_suggestion() {
+    let dir = workspace("family-typo", &[("cases/triangles/a.json", SINGLE)]);
+    let out = rastercheck(&dir, &["run", "cases", "--family", "triangls"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(3), "{t}");
+    assert!(
+        t.contains("no case is of family \"triangls\"; did you mean \"triangles\"?"),
+        "{t}"
+    );
+    let out = rastercheck(&dir, &["fuzz", "--family", "triangls", "-r", "production"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(t.contains("did you mean \"triangles\"?"), "{t}");
+}
+
+#[test]
+fn rasterizers_lists_each_name_with_its_kind_and_description() {
+    let dir = workspace("list", &[]);
+    let out = rastercheck(&dir, &["rasterizers"]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(0), "{t}");
+    for name in rastercheck::registry::names() {
+        assert!(
+            t.lines().any(|l| l.split_whitespace().next() == Some(name)),
+            "{name} missing from {t}"
+        );
+    }
+    assert!(t.contains("foil-any-coverage"), "{t}");
+    assert!(
+        t.contains("exact reference: the exact reference rasterizer"),
+        "{t}"
+    );
+    assert!(t.contains("mutant: "), "{t}");
+    for form in [
+        "external:PROGRAM",
+        "external-persistent:PROGRAM",
+        "NAME=external-persistent:PROGRAM",
+    ] {
+        assert!(t.contains(form), "{form} missing from {t}");
+    }
+}
+
+#[test]
+fn a_report_flag_naming_a_file_is_an_error_naming_the_flag() {
+    let dir = workspace(
+        "report-file",
+        &[("cases/a.json", SINGLE), ("taken", "not a folder")],
+    );
+    for target in ["taken", "taken/inside"] {
+        let out = rastercheck(&dir, &["run", "cases", "--report", target]);
+        let t = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{t}");
+        assert!(
+            t.contains(&format!(
+                "error: --report {target}: taken is a file, not a folder"
+            )),
+            "{t}"
+        );
+        assert_no_panic(&out);
+    }
+}
+
+#[test]
+fn show_labels_a_foils_failure_foil_as_run_does() {
+    let dir = workspace("show-foil", &[("cases/pair.json", TIE_PAIR)]);
+    let foil = "foil-any-coverage";
+    let out = rastercheck(&dir, &["run", "cases", "-r", foil]);
+    let run = text(&out);
+    assert!(run.contains(&format!("FOIL  pair  {foil}")), "{run}");
+    let shown = rastercheck(
+        &dir,
+        &["show", "cases/pair.json", "--out", "pictures", "-r", foil],
+    );
+    let t = text(&shown);
+    assert!(t.contains(&format!("FOIL {foil}:")), "{t}");
+    assert!(!t.contains("FAIL"), "{t}");
+}

@@ -365,8 +365,8 @@ fn probe_finds_a_rasterizers_own_clipping() {
             !found.follows_case && found.consistent,
             "{clip:?}: {found:?}"
         );
-        assert_eq!(found.clip_xy, Some(clip.xy.name()), "{found:?}");
-        assert_eq!(found.clip_z, Some(clip.z.name()), "{found:?}");
+        assert_eq!(found.clip_xy(), Some(clip.xy.name()), "{found:?}");
+        assert_eq!(found.clip_z(), Some(clip.z.name()), "{found:?}");
     }
     // Production follows each case; a screen-space rasterizer is not probed.
     let found = probe_clip(&rastercheck::production::Production).expect("takes clip space");
@@ -389,14 +389,14 @@ fn a_rasterizers_own_clipping_is_judged_and_named() {
     let (_, run) = common::run(&scene, &FixedClip(own));
     assert_eq!(run.judged_clip, Some(own));
     assert!(
-        matches!(run.verdict, rastercheck::harness::suite::Verdict::Pass),
+        matches!(run.verdict, rastercheck::harness::judge::Verdict::Pass),
         "{:?}",
         run.verdict
     );
     // Held to the case's clipping instead, it fails: the check can fail.
     let (_, run) = common::run(&scene, &common::AsStated(&FixedClip(own)));
     assert!(
-        matches!(run.verdict, rastercheck::harness::suite::Verdict::Fail(_)),
+        matches!(run.verdict, rastercheck::harness::judge::Verdict::Fail(_)),
         "{:?}",
         run.verdict
     );

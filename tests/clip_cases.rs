@@ -16,7 +16,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use rastercheck::harness::suite;
+use rastercheck::harness::{discover, load, oracle};
 use rastercheck::scene::{parse_case, Limits};
 
 fn root() -> PathBuf {
@@ -121,12 +121,12 @@ fn reference_against_model(seed: &str, wrong: bool) -> (usize, usize, Vec<String
         args.push("--wrong");
     }
     generator(&args);
-    let found = suite::discover(&[cases]);
+    let found = discover::discover(&[cases]);
     assert!(found.errors.is_empty(), "{:?}", found.errors);
     let mut differ = Vec::new();
     for file in &found.cases {
-        let scene = suite::load(file, &Limits::default()).expect("a valid random case");
-        let covered = suite::run_reference(&scene).frame.covered_samples();
+        let scene = load::load(file, &Limits::default()).expect("a valid random case");
+        let covered = oracle::run_reference(&scene).frame.covered_samples();
         let pinned = scene.expect.samples_covered.expect("pinned");
         if covered != pinned {
             differ.push(format!("{}: reference {covered}, model {pinned}", file.id));

@@ -10,7 +10,7 @@ mod common;
 
 use common::Rng;
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::Verdict;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::reference;

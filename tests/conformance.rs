@@ -15,7 +15,10 @@
 use std::path::{Path, PathBuf};
 
 use libtest_mimic::{Arguments, Failed, Trial};
-use rastercheck::harness::suite::{self, CaseFile, GoldenStatus, Verdict};
+use rastercheck::harness::discover::CaseFile;
+use rastercheck::harness::golden::GoldenStatus;
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{discover, golden, judge, load, oracle};
 use rastercheck::production::Production;
 use rastercheck::scene::Limits;
 
@@ -26,7 +29,7 @@ fn root() -> PathBuf {
 fn main() {
     let args = Arguments::from_args();
     let cases = root().join("cases");
-    let found = suite::discover(std::slice::from_ref(&cases));
+    let found = discover::discover(std::slice::from_ref(&cases));
     let mut trials: Vec<Trial> = found
         .cases
         .into_iter()
@@ -40,7 +43,7 @@ fn main() {
             .collect();
         files.sort();
         for path in files {
-            let file = suite::case_file(&path);
+            let file = discover::case_file(&path);
             trials.push(Trial::test(file.id.clone(), move || invalid_case(&file)));
         }
     }
@@ -48,10 +51,10 @@ fn main() {
 }
 
 fn valid_case(file: &CaseFile) -> Result<(), Failed> {
-    let scene = suite::load(file, &Limits::default()).map_err(|e| e.to_string())?;
-    let reference = suite::run_reference(&scene);
+    let scene = load::load(file, &Limits::default()).map_err(|e| e.to_string())?;
+    let reference = oracle::run_reference(&scene);
     let mut problems = Vec::new();
-    match suite::check_golden(&root(), &file.id, &reference.frame) {
+    match golden::check_golden(&root(), &file.id, &reference.frame) {
         GoldenStatus::Matches => {}
         GoldenStatus::Missing(path) => problems.push(format!(
             "no golden file {}; run `cargo run --release -- bless {}` and review it",
@@ -62,7 +65,7 @@ fn valid_case(file: &CaseFile) -> Result<(), Failed> {
             "the reference no longer reproduces its golden file: {why}"
         )),
     }
-    let run = suite::run_candidate(&scene, &reference, &Production);
+    let run = judge::run_candidate(&scene, &reference, &Production);
     match &run.verdict {
         Verdict::Pass => {}
         Verdict::Fail(reasons) => {
@@ -71,7 +74,7 @@ fn valid_case(file: &CaseFile) -> Result<(), Failed> {
         other => problems.push(format!(
             "production: {}: {}",
             other.label(),
-            suite::describe(&run)
+            judge::describe(&run)
         )),
     }
     if problems.is_empty() {
@@ -83,7 +86,7 @@ fn valid_case(file: &CaseFile) -> Result<(), Failed> {
 
 fn invalid_case(file: &CaseFile) -> Result<(), Failed> {
     let expected = expected_error(&file.path)?;
-    match suite::load(file, &Limits::default()) {
+    match load::load(file, &Limits::default()) {
         Ok(_) => Err(format!(
             "{} was read without error; expected: {expected:?}",
             file.path.display()

@@ -306,17 +306,18 @@ impl rastercheck::rasterizer::Rasterizer for OwnRule {
 /// rule it declares still fails.
 #[test]
 fn time_coverage_pins_follow_the_case_not_a_declared_rule() {
-    use rastercheck::harness::suite::{self, Verdict};
+    use rastercheck::harness::judge::{run_candidate, Verdict};
+    use rastercheck::harness::{discover, load, oracle};
     use rastercheck::rasterizer::Rasterizer;
     use rastercheck::scene::{FillRule, Limits};
     for (id, own) in [
         ("motion/ride_top_edge_bottom_right", FillRule::TopLeft),
         ("motion/ride_top_edge_top_left", FillRule::BottomRight),
     ] {
-        let file = suite::case_file(&root().join("cases").join(format!("{id}.json")));
-        let scene = suite::load(&file, &Limits::default()).unwrap();
-        let reference = suite::run_reference(&scene);
-        let run = suite::run_candidate(&scene, &reference, &OwnRule(own));
+        let file = discover::case_file(&root().join("cases").join(format!("{id}.json")));
+        let scene = load::load(&file, &Limits::default()).unwrap();
+        let reference = oracle::run_reference(&scene);
+        let run = run_candidate(&scene, &reference, &OwnRule(own));
         assert_eq!(run.verdict, Verdict::Pass, "{id} under its own {own}");
         assert_eq!(run.judged_rule, Some(own));
         // Declaring the rule without following it is caught.
@@ -340,7 +341,7 @@ fn time_coverage_pins_follow_the_case_not_a_declared_rule() {
                 Some(self.0)
             }
         }
-        let run = suite::run_candidate(&scene, &reference, &Liar(own));
+        let run = run_candidate(&scene, &reference, &Liar(own));
         assert!(
             matches!(run.verdict, Verdict::Fail(_)),
             "{id}: drawn under the case's rule while declaring {own}: {:?}",

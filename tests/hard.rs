@@ -15,9 +15,11 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{discover, judge, load, oracle};
 use rastercheck::production::foils::{FloatF32, FloatF64};
 use rastercheck::rasterizer::Rasterizer;
+use rastercheck::registry;
 use rastercheck::scene::Limits;
 
 /// Hard cases on which `float-f32` departs from the reference.
@@ -56,14 +58,14 @@ const F64_FAILS: &[&str] = &[
 /// cases it does not support; the number of cases.
 fn failures(foil: &dyn Rasterizer) -> (BTreeMap<String, u64>, Vec<String>, usize) {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/hard");
-    let found = suite::discover(&[dir]);
+    let found = discover::discover(&[dir]);
     assert!(found.errors.is_empty(), "{:?}", found.errors);
     let mut failed = BTreeMap::new();
     let mut unsupported = Vec::new();
     for file in &found.cases {
-        let scene = suite::load(file, &Limits::default()).expect("hard cases are valid");
-        let reference = suite::run_reference(&scene);
-        let run = suite::run_candidate(&scene, &reference, foil);
+        let scene = load::load(file, &Limits::default()).expect("hard cases are valid");
+        let reference = oracle::run_reference(&scene);
+        let run = judge::run_candidate(&scene, &reference, foil);
         match run.verdict {
             Verdict::Pass => {}
             Verdict::Unsupported(_) => unsupported.push(file.id.clone()),
@@ -219,7 +221,7 @@ const METHOD_FAILS: &[(&str, &[&str], bool)] = &[
 #[test]
 fn polygon_and_antialiasing_families_catch_the_methods_built_to_fail_them() {
     for &(name, must_fail, exact) in METHOD_FAILS {
-        let candidate = suite::rasterizer(name).expect("a known rasterizer");
+        let candidate = registry::by_name(name).expect("a known rasterizer");
         let (failed, unsupported, _) = failures(&*candidate);
         let ours = |id: &&String| is_polygon_or_aa(id);
         println!(

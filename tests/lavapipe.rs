@@ -7,7 +7,8 @@
 use std::path::Path;
 
 use rastercheck::adapters::lavapipe::{self, Lavapipe, STANDARD_4X};
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::SamplePlan;
 use rastercheck::scene::Scene;
 
@@ -34,7 +35,7 @@ use common::adapters::{
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
-fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
+fn run(scene: &Scene) -> (oracle::ReferenceRun, CandidateRun) {
     common::run(scene, &Lavapipe)
 }
 
@@ -155,18 +156,18 @@ fn clipping_at_the_viewport_moves_ties_on_clipped_edges() {
     let (reference, r) = run(&off_screen);
     eprintln!("finding: {}", report("off-screen vertex", &reference, &r));
     let m = r.metrics.as_ref().expect("lavapipe drew a frame");
-    assert_eq!(m.coverage.extra, 0, "{}", suite::describe(&r));
+    assert_eq!(m.coverage.extra, 0, "{}", judge::describe(&r));
     // Either the on-edge samples are lost (Mesa 22.3 here) or, on a driver
     // with a guard band, none is; nothing off the edge may differ.
     assert!(
         m.coverage.missing == 0 || m.coverage.missing == 6,
         "{}",
-        suite::describe(&r)
+        judge::describe(&r)
     );
     let (reference, r) = run(&case("triangles/shared_edge_shallow"));
     eprintln!("finding: {}", report("shared_edge_shallow", &reference, &r));
     let w = r.metrics.as_ref().unwrap().watertight.clone().unwrap();
-    assert!(w.is_watertight(), "{}", suite::describe(&r));
+    assert!(w.is_watertight(), "{}", judge::describe(&r));
 }
 
 /// Lines and unsnapped geometry are reported unsupported, never passed.
@@ -212,8 +213,8 @@ fn the_prepared_path_draws_what_rasterize_draws() {
 
 #[test]
 fn is_listed_by_name() {
-    assert!(rastercheck::adapters::names().contains(&"lavapipe"));
-    let r = rastercheck::adapters::by_name("lavapipe").expect("registered");
+    assert!(rastercheck::registry::names().contains(&"lavapipe"));
+    let r = rastercheck::registry::by_name("lavapipe").expect("registered");
     assert_eq!(r.name(), "lavapipe");
 }
 
@@ -349,15 +350,15 @@ fn a_readback_in_the_wrong_slot_order_fails() {
             case("antialias/probe_standard4"),
         ),
     ] {
-        let reference = suite::run_reference(&scene);
-        let right = suite::run_candidate(&scene, &reference, &Lavapipe);
+        let reference = oracle::run_reference(&scene);
+        let right = judge::run_candidate(&scene, &reference, &Lavapipe);
         assert_eq!(
             right.verdict,
             Verdict::Pass,
             "{}",
             report(id, &reference, &right)
         );
-        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed(&Lavapipe));
+        let wrong = judge::run_candidate(&scene, &reference, &SlotsReversed(&Lavapipe));
         eprintln!("{}", report(id, &reference, &wrong));
         assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
         let frame = wrong.frame.as_ref().unwrap();
@@ -464,7 +465,7 @@ fn depth_and_linear_attributes_per_sample_are_within_the_bound() {
             c.channel
         );
     }
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
 }
 
 /// A finding in the driver (Mesa 22.3 llvmpipe): with per-sample
@@ -494,7 +495,7 @@ fn perspective_attributes_per_sample_divide_by_w_at_the_pixel_centre() {
     assert!(
         matches!(r.verdict, Verdict::Fail(_)),
         "{}",
-        suite::describe(&r)
+        judge::describe(&r)
     );
     let frame = r.frame.as_ref().expect("lavapipe drew a frame");
     assert!(mismatched_samples(&reference.frame, frame).is_empty());

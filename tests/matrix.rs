@@ -16,7 +16,7 @@ fn the_matrix_has_every_default_row_and_findings() {
     let shown = text(&out);
     assert_eq!(out.status.code(), Some(0), "{shown}");
     assert!(shown.contains("| rasterizer | triangles ("), "{shown}");
-    for row in rastercheck::harness::matrix::default_rows() {
+    for row in rastercheck::registry::matrix_default_rows() {
         let line = shown
             .lines()
             .find(|l| l.starts_with(&format!("| `{row}`")))
@@ -134,7 +134,7 @@ fn write_readme_replaces_only_the_marked_block() {
         "{block}"
     );
     assert!(
-        block.contains(&rastercheck::harness::matrix::today()),
+        block.contains(&rastercheck::harness::today::today()),
         "{block}"
     );
     assert!(block.contains("| `mutant:flipped-ties` |"), "{block}");
@@ -169,10 +169,12 @@ fn write_readme_replaces_only_the_marked_block() {
 /// names a rule or a sampler that probe did not find.
 #[test]
 fn matrix_and_probe_agree_on_every_row() {
+    use rastercheck::explore::matrix;
     use rastercheck::explore::probe::{self, SamplerKind};
-    use rastercheck::harness::{matrix, suite};
+    use rastercheck::harness::discover;
+    use rastercheck::registry;
 
-    let mut names: Vec<String> = matrix::default_rows()
+    let mut names: Vec<String> = rastercheck::registry::matrix_default_rows()
         .into_iter()
         .filter(|n| matches!(matrix::rasterizer(n), Some(Ok(_))))
         .collect();
@@ -183,14 +185,14 @@ fn matrix_and_probe_agree_on_every_row() {
             "{foil} is not a default row"
         );
     }
-    let found = suite::discover(&[root().join("cases/triangles")]);
+    let found = discover::discover(&[root().join("cases/triangles")]);
     let limits = rastercheck::scene::Limits::default();
-    let m = matrix::build(&found.cases, &limits, &names, None, &probe::diagnose);
+    let m = matrix::build(&found.cases, &limits, &names, None);
     let shown = m.to_markdown();
     let findings: Vec<&str> = shown.lines().filter(|l| l.starts_with("- ")).collect();
     for (name, row) in names.iter().zip(&m.rows) {
         assert!(row.available.is_ok(), "{name}: {:?}", row.available);
-        let r = suite::rasterizer(name).unwrap();
+        let r = registry::by_name(name).unwrap();
         let p = probe::probe(r.as_ref()).unwrap_or_else(|e| panic!("{name}: {e}"));
         let d = match &row.diagnosis {
             Some(Ok(d)) => d,

@@ -799,7 +799,7 @@ fn only_methods_with_a_time_loop_claim_motion_blur() {
     let scenes: Vec<Scene> = (0..10).map(|_| random_scene(&mut rng)).collect();
     let mut claim = Vec::new();
     for name in names {
-        let method = rastercheck::harness::suite::rasterizer(name).unwrap();
+        let method = rastercheck::registry::by_name(name).unwrap();
         if !method.capabilities().motion_blur {
             continue;
         }

@@ -15,8 +15,10 @@ use serde_json::Value;
 use common::cli::exr_channel;
 use rastercheck::frame::Frame;
 use rastercheck::harness::baseline::{Baseline, Change, Observed, SelectionInfo};
+use rastercheck::harness::discover::CaseFile;
+use rastercheck::harness::golden::GoldenStatus;
 use rastercheck::harness::runner::{CaseOutcome, Selection};
-use rastercheck::harness::suite::{self, CaseFile, GoldenStatus};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::rasterizer::Rasterizer;
@@ -41,7 +43,7 @@ fn outcomes(dir: &Path, slides: &[Slide]) -> Vec<CaseOutcome> {
             std::fs::create_dir_all(path.parent().unwrap()).unwrap();
             std::fs::write(&path, slide.json()).unwrap();
             let scene = slide.scene();
-            let reference = suite::run_reference_with(&scene, |_, plan| slide.exact(plan));
+            let reference = oracle::run_reference_with(&scene, |_, plan| slide.exact(plan));
             let candidates: Vec<Box<dyn Rasterizer + '_>> = vec![
                 sampler(slide),
                 Box::new(Mutant(Mutation::MotionAtOpen)),
@@ -49,7 +51,7 @@ fn outcomes(dir: &Path, slides: &[Slide]) -> Vec<CaseOutcome> {
             ];
             let runs = candidates
                 .iter()
-                .map(|c| suite::run_candidate(&scene, &reference, c.as_ref()))
+                .map(|c| judge::run_candidate(&scene, &reference, c.as_ref()))
                 .collect();
             CaseOutcome {
                 file: CaseFile {
@@ -356,7 +358,7 @@ fn a_frame_that_is_not_time_coverage_gets_no_time_pictures() {
         Frame::new(s.canvas.width, s.canvas.height, false, 0)
     });
     outcomes[0].candidates[0] =
-        suite::run_candidate(&scene, outcomes[0].reference.as_ref().unwrap(), &wrong);
+        judge::run_candidate(&scene, outcomes[0].reference.as_ref().unwrap(), &wrong);
     let (out, report) = write_report(&dir, &outcomes);
     let result = &report["cases"][0]["results"][0];
     assert_eq!(result["verdict"], "error", "{result}");

@@ -17,7 +17,8 @@ use std::path::{Path, PathBuf};
 
 use dashu_ratio::RBig;
 
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::reference::motion;
@@ -63,7 +64,7 @@ fn the_oracle_reproduces_the_hand_computed_time_coverage_exactly() {
             assert_eq!(got.bound, RBig::ZERO, "{} pixel {p}", slide.name);
             assert_eq!(got.value, want.value, "{} pixel {p}", slide.name);
         }
-        let r = suite::run_reference(&s);
+        let r = oracle::run_reference(&s);
         let check = r.time.as_ref().unwrap().as_ref().expect("the oracle ran");
         assert!(check.broken_promises.is_empty());
         assert_eq!(r.frame.time, Some(slide.exact_f64(&plan)));
@@ -78,14 +79,14 @@ fn pins_hold_on_the_oracle_and_a_wrong_pin_is_caught() {
         ),
         ..Slide::new("slide")
     };
-    let r = suite::run_reference(&pinned("0.4375").scene());
+    let r = oracle::run_reference(&pinned("0.4375").scene());
     let check = r.time.as_ref().unwrap().as_ref().expect("the oracle ran");
     assert!(
         check.broken_promises.is_empty(),
         "{:?}",
         check.broken_promises
     );
-    let r = suite::run_reference(&pinned("0.4376").scene());
+    let r = oracle::run_reference(&pinned("0.4376").scene());
     let check = r.time.as_ref().unwrap().as_ref().expect("the oracle ran");
     assert_eq!(
         check.broken_promises.len(),
@@ -99,26 +100,26 @@ fn pins_hold_on_the_oracle_and_a_wrong_pin_is_caught() {
 fn with_the_oracle_the_motion_mutants_fail_and_an_honest_sampler_passes() {
     for slide in slides() {
         let s = slide.scene();
-        let r = suite::run_reference(&s);
+        let r = oracle::run_reference(&s);
         let sampler = Given("sampler", |s: &Scene, p: &Plan| slide.sampled(s, p));
-        let run = suite::run_candidate(&s, &r, &sampler);
+        let run = judge::run_candidate(&s, &r, &sampler);
         assert_eq!(
             run.verdict,
             Verdict::Pass,
             "{}: {}",
             slide.name,
-            suite::describe(&run)
+            judge::describe(&run)
         );
-        let run = suite::run_candidate(&s, &r, &rastercheck::reference::Reference);
+        let run = judge::run_candidate(&s, &r, &rastercheck::reference::Reference);
         assert_eq!(
             run.verdict,
             Verdict::Pass,
             "{}: {}",
             slide.name,
-            suite::describe(&run)
+            judge::describe(&run)
         );
         for mutation in [Mutation::MotionAtOpen, Mutation::MotionHalfShutter] {
-            let run = suite::run_candidate(&s, &r, &Mutant(mutation));
+            let run = judge::run_candidate(&s, &r, &Mutant(mutation));
             match &run.verdict {
                 Verdict::Fail(reasons) => assert!(
                     reasons.iter().all(|m| m.starts_with("time: ")),

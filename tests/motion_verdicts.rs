@@ -10,7 +10,9 @@ mod sliding;
 use dashu_ratio::RBig;
 
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, CandidateRun, ReferenceRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::oracle::ReferenceRun;
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::reference::motion::Certified;
 use rastercheck::scene::Scene;
@@ -18,7 +20,7 @@ use sliding::{Given, Slide};
 
 fn reference(slide: &Slide) -> (Scene, ReferenceRun) {
     let s = slide.scene();
-    let r = suite::run_reference_with(&s, |_, plan| slide.exact(plan));
+    let r = oracle::run_reference_with(&s, |_, plan| slide.exact(plan));
     (s, r)
 }
 
@@ -59,8 +61,8 @@ fn the_exact_time_coverage_passes() {
     assert_eq!(moving, 4 * 12);
     assert!(r.interior.is_none() && r.areas.is_none());
     assert_eq!((r.frame.samples, r.frame.sample_count()), (0, 0));
-    let run = suite::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
-    assert_eq!(run.verdict, Verdict::Pass, "{}", suite::describe(&run));
+    let run = judge::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
+    assert_eq!(run.verdict, Verdict::Pass, "{}", judge::describe(&run));
     let t = run.metrics.as_ref().unwrap().time.clone().unwrap();
     assert_eq!((t.max_error, t.rms_moving, t.moving_pixels), (0.0, 0.0, 48));
     // The sample metrics have nothing to compare and stay quiet, with 4×
@@ -70,17 +72,17 @@ fn the_exact_time_coverage_passes() {
         ..Slide::new("slide_aa4")
     };
     let (s, r) = reference(&aa);
-    let run = suite::run_candidate(&s, &r, &exact_candidate(&aa));
-    assert_eq!(run.verdict, Verdict::Pass, "{}", suite::describe(&run));
+    let run = judge::run_candidate(&s, &r, &exact_candidate(&aa));
+    assert_eq!(run.verdict, Verdict::Pass, "{}", judge::describe(&run));
     let m = run.metrics.as_ref().unwrap();
     assert_eq!((m.coverage.samples, m.coverage.mismatched()), (0, 0));
     assert!(m.coverage.mask.is_empty() && m.channels.is_empty());
     assert!(m.antialias.is_none() && m.watertight.is_none() && m.lines.is_none());
     assert!(m.time.is_some());
     assert!(
-        suite::describe(&run).starts_with("time coverage only · time max err 0.00e0"),
+        judge::describe(&run).starts_with("time coverage only · time max err 0.00e0"),
         "{}",
-        suite::describe(&run)
+        judge::describe(&run)
     );
 }
 
@@ -101,7 +103,7 @@ fn bounds_pass_within_and_fail_beyond() {
             ..Slide::new("slide")
         };
         let (s, r) = reference(&slide);
-        let run = suite::run_candidate(&s, &r, &Given("off", shifted(&slide, off)));
+        let run = judge::run_candidate(&s, &r, &Given("off", shifted(&slide, off)));
         let t = run.metrics.as_ref().unwrap().time.clone().unwrap();
         assert!((t.rms_moving - 0.1).abs() < 1e-15, "{t:?}");
         assert!((t.bias_moving - 0.1).abs() < 1e-15, "{t:?}");
@@ -128,7 +130,7 @@ fn invalid_values_fail_even_within_the_bounds() {
         ..Slide::new("slide")
     };
     let (s, r) = reference(&slide);
-    let run = suite::run_candidate(
+    let run = judge::run_candidate(
         &s,
         &r,
         &Given(
@@ -158,7 +160,7 @@ fn pins_hold_within_the_certified_bound_plus_1e_12_and_fail_beyond() {
     ] {
         let slide = pinned(value);
         let (s, r) = reference(&slide);
-        let run = suite::run_candidate(&s, &r, &exact_candidate(&slide));
+        let run = judge::run_candidate(&s, &r, &exact_candidate(&slide));
         if holds {
             assert_eq!(run.verdict, Verdict::Pass, "{value}: {:?}", run.verdict);
         } else {
@@ -179,7 +181,7 @@ fn pins_hold_within_the_certified_bound_plus_1e_12_and_fail_beyond() {
         (RBig::ZERO, false),
         (rastercheck::reference::motion::max_bound(), true),
     ] {
-        let r = suite::run_reference_with(&s, |_, plan| {
+        let r = oracle::run_reference_with(&s, |_, plan| {
             let mut values = slide.exact(plan);
             values[16 + 5].bound = bound.clone();
             values
@@ -193,7 +195,7 @@ fn pins_hold_within_the_certified_bound_plus_1e_12_and_fail_beyond() {
         );
         // A value with a bound is not known to be whole: pixel (5, 1) moves.
         assert!(!check.whole[16 + 5]);
-        let run = suite::run_candidate(&s, &r, &exact_candidate(&slide));
+        let run = judge::run_candidate(&s, &r, &exact_candidate(&slide));
         assert_eq!(
             matches!(run.verdict, Verdict::Pass),
             holds,
@@ -216,7 +218,7 @@ fn a_broken_pin_fails_every_candidate() {
         Given("exact", shifted(&slide, |_, v| v)),
         Given("off", shifted(&slide, |_, v| v + 0.01)),
     ] {
-        let run = suite::run_candidate(&s, &r, &candidate);
+        let run = judge::run_candidate(&s, &r, &candidate);
         let f = reasons(&run);
         assert!(
             f.iter()
@@ -231,9 +233,9 @@ fn a_broken_pin_fails_every_candidate() {
 fn a_broken_oracle_is_reported_on_every_candidate() {
     let slide = Slide::new("slide");
     let s = slide.scene();
-    let r = suite::run_reference_with(&s, |_, _| panic!("no roots today"));
+    let r = oracle::run_reference_with(&s, |_, _| panic!("no roots today"));
     assert!(r.frame.time.as_ref().unwrap().iter().all(|v| v.is_nan()));
-    let run = suite::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
+    let run = judge::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
     assert_eq!(
         reasons(&run),
         ["reference: the time-coverage oracle failed: no roots today"]
@@ -246,7 +248,7 @@ fn a_broken_oracle_is_reported_on_every_candidate() {
     assert!(err.contains("not a number"), "{err}");
     assert!(!path.exists());
 
-    let short = suite::run_reference_with(&s, |_, _| {
+    let short = oracle::run_reference_with(&s, |_, _| {
         vec![
             Certified {
                 value: RBig::ONE,
@@ -255,7 +257,7 @@ fn a_broken_oracle_is_reported_on_every_candidate() {
             3
         ]
     });
-    let run = suite::run_candidate(&s, &short, &Given("exact", shifted(&slide, |_, v| v)));
+    let run = judge::run_candidate(&s, &short, &Given("exact", shifted(&slide, |_, v| v)));
     assert_eq!(
         reasons(&run),
         ["reference: the time-coverage oracle returned 3 values for 96 pixels"]
@@ -299,7 +301,7 @@ fn frames_of_the_wrong_shape_are_errors() {
         ),
     ];
     for (name, make, why) in cases {
-        let run = suite::run_candidate(&s, &r, &Given(name, make));
+        let run = judge::run_candidate(&s, &r, &Given(name, make));
         match &run.verdict {
             Verdict::Error(message) => {
                 assert!(
@@ -318,8 +320,8 @@ fn frames_of_the_wrong_shape_are_errors() {
     };
     let s = still.scene();
     assert!(Plan::for_scene(&s).motion.is_none());
-    let r = suite::run_reference(&s);
-    let run = suite::run_candidate(
+    let r = oracle::run_reference(&s);
+    let run = judge::run_candidate(
         &s,
         &r,
         &Given("timed", |s: &Scene, _: &Plan| {
@@ -339,7 +341,7 @@ fn sample_expectations_on_a_moving_scene_are_named() {
     let (mut s, r) = reference(&slide);
     s.expect.samples_covered = Some(12);
     s.expect.watertight = true;
-    let run = suite::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
+    let run = judge::run_candidate(&s, &r, &Given("exact", shifted(&slide, |_, v| v)));
     let f = reasons(&run);
     assert_eq!(
         f,

@@ -534,8 +534,8 @@ fn probe_finds_a_rasterizers_own_point_clipping() {
         for bounds in PointBounds::ALL {
             let found = probe_points(&FixedPoints(points, bounds)).expect("draws points");
             assert!(!found.follows_case && found.consistent, "{found:?}");
-            assert_eq!(found.clip_points, Some(points.name()), "{found:?}");
-            assert_eq!(found.point_bounds, Some(bounds.name()), "{found:?}");
+            assert_eq!(found.clip_points(), Some(points.name()), "{found:?}");
+            assert_eq!(found.point_bounds(), Some(bounds.name()), "{found:?}");
         }
     }
     assert!(probe_points(&rastercheck::production::foils::FloatF32).is_none());

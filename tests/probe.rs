@@ -7,10 +7,10 @@ use common::{rastercheck, text};
 use std::path::{Path, PathBuf};
 
 use rastercheck::explore::probe::{self, Profile, SamplerKind};
-use rastercheck::harness::suite;
+use rastercheck::registry;
 
 fn probe_of(name: &str) -> Profile {
-    let r = suite::rasterizer(name).unwrap_or_else(|| panic!("no rasterizer {name}"));
+    let r = registry::by_name(name).unwrap_or_else(|| panic!("no rasterizer {name}"));
     let p = probe::probe(r.as_ref()).unwrap_or_else(|e| panic!("{name}: {e}"));
     eprintln!("{}", p.describe());
     p
@@ -182,7 +182,7 @@ fn a_sample_outside_the_pixel_is_found_and_not_read_as_a_rule() {
 
 #[test]
 fn the_python_example_is_point_sampled_with_closed_edges() {
-    let p = probe_of(rastercheck::harness::matrix::PYTHON_EXAMPLE);
+    let p = probe_of(rastercheck::registry::PYTHON_EXAMPLE);
     assert_eq!(p.sampler, SamplerKind::Point);
     assert_eq!(p.fill_rule.as_deref(), Some("all-edges"));
     assert!(p.fill_rule_consistent);

@@ -8,7 +8,8 @@
 
 use rastercheck::adapters::vulkan::{self, Vulkan};
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{PolygonFill, Primitive, Scene};
@@ -40,7 +41,7 @@ fn available() -> bool {
     }
 }
 
-fn run(scene: &Scene) -> (suite::ReferenceRun, suite::CandidateRun) {
+fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
     common::run(scene, &VULKAN)
 }
 
@@ -153,7 +154,7 @@ fn a_wrong_stencil_test_fails() {
         "{}",
         report("overlap", &reference, &right)
     );
-    let wrong = suite::run_candidate(&scene, &reference, &FillSwapped);
+    let wrong = judge::run_candidate(&scene, &reference, &FillSwapped);
     let m = wrong.metrics.as_ref().unwrap();
     assert_eq!(
         m.coverage.missing,
@@ -261,8 +262,8 @@ fn a_readback_in_the_wrong_slot_order_fails() {
     }
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         let scene = probe_scene(pattern, n);
-        let reference = suite::run_reference(&scene);
-        let wrong = suite::run_candidate(&scene, &reference, &SlotsReversed(&VULKAN));
+        let reference = oracle::run_reference(&scene);
+        let wrong = judge::run_candidate(&scene, &reference, &SlotsReversed(&VULKAN));
         let verdict = &wrong.verdict;
         assert!(
             matches!(verdict, Verdict::Fail(_)),
@@ -355,7 +356,7 @@ fn the_report_names_the_device_and_driver() {
     let declared = VULKAN.declared().expect("a device is made");
     assert!(declared.contains("Vulkan 1."), "{declared}");
     assert!(declared.contains("shifted passes"), "{declared}");
-    assert!(rastercheck::adapters::names().contains(&vulkan::NAME));
+    assert!(rastercheck::registry::names().contains(&vulkan::NAME));
 }
 
 #[test]

@@ -10,6 +10,8 @@
 //! express (a line rule, attributes, a fill rule they cannot change) is
 //! `RasterError::Unsupported`, reported as such and never as a pass or
 //! failure.
+//!
+//! Each adapter is made by name through `crate::registry`, one row each.
 
 #[cfg(feature = "euc")]
 pub mod euc;
@@ -35,61 +37,3 @@ pub mod tiny_skia;
 pub mod vello;
 #[cfg(feature = "vulkan")]
 pub mod vulkan;
-
-use crate::rasterizer::Rasterizer;
-
-/// The names of the built-in adapters compiled into this binary.
-#[allow(clippy::vec_init_then_push)] // each push is behind its own feature
-pub fn names() -> Vec<&'static str> {
-    #[allow(unused_mut)]
-    let mut names = Vec::new();
-    #[cfg(feature = "vulkan")]
-    names.extend([vulkan::NAME, vulkan::PASSES_NAME]);
-    #[cfg(feature = "lavapipe")]
-    names.push(lavapipe::NAME);
-    #[cfg(feature = "gl")]
-    names.extend([gl::NAME, gl::SOFTPIPE]);
-    #[cfg(feature = "tiny-skia")]
-    names.push("tiny-skia");
-    #[cfg(feature = "euc")]
-    names.push("euc");
-    #[cfg(feature = "vello")]
-    names.push("vello-cpu");
-    names
-}
-
-/// A built-in adapter by name, or an external program:
-/// `external:PROGRAM [ARGS]` and `external-persistent:PROGRAM [ARGS]`
-/// (split on whitespace; SPEC.md §12).
-pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
-    #[cfg(feature = "vulkan")]
-    if name == vulkan::NAME || name == vulkan::PASSES_NAME {
-        let passes_only = name == vulkan::PASSES_NAME;
-        return Some(Box::new(vulkan::Vulkan { passes_only }));
-    }
-    #[cfg(feature = "lavapipe")]
-    if name == lavapipe::NAME {
-        return Some(Box::new(lavapipe::Lavapipe));
-    }
-    #[cfg(feature = "gl")]
-    if name == gl::NAME {
-        return Some(Box::new(gl::Gl));
-    }
-    #[cfg(feature = "gl")]
-    if name == gl::SOFTPIPE {
-        return Some(Box::new(gl::Softpipe));
-    }
-    match name {
-        #[cfg(feature = "tiny-skia")]
-        "tiny-skia" => return Some(Box::new(tiny_skia::TinySkia)),
-        #[cfg(feature = "euc")]
-        "euc" => return Some(Box::new(euc::Euc)),
-        #[cfg(feature = "vello")]
-        "vello-cpu" => return Some(Box::new(vello::VelloCpu)),
-        _ => {}
-    }
-    if let Some(external) = external::by_name(name) {
-        return Some(external);
-    }
-    None
-}

@@ -23,7 +23,7 @@ pub(super) fn measure_lines(sizes: &Sizes, notes: &mut Vec<String>) -> Workload 
         .iter()
         .map(|&n| match n {
             "midpoint-plain" => Box::new(PlainMidpoint),
-            n => crate::harness::suite::rasterizer(n).expect("a built-in rasterizer"),
+            n => crate::registry::by_name(n).expect("a built-in rasterizer"),
         })
         .collect();
     let mut times: Vec<Vec<Duration>> = vec![Vec::new(); methods.len()];

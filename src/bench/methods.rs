@@ -39,7 +39,7 @@ pub fn triangle_methods() -> Vec<(String, Box<dyn Rasterizer>)> {
         names.push("gl");
     }
     for name in names {
-        if let Some(r) = crate::harness::suite::rasterizer(name) {
+        if let Some(r) = crate::registry::by_name(name) {
             out.push((name.to_owned(), r));
         }
     }
@@ -105,7 +105,7 @@ pub(super) fn aa_methods(counts: &[u32]) -> Vec<AaMethod> {
         rasterizer: Box::new(crate::production::adaptive::resolve::AdaptiveResolve),
     });
     for name in ["adaptive-refine", "area-f32", "tiny-skia", "vello-cpu"] {
-        if let Some(r) = crate::harness::suite::rasterizer(name) {
+        if let Some(r) = crate::registry::by_name(name) {
             out.push(AaMethod {
                 name: format!("{name} (16× standard case)"),
                 antialias: Some(with(16, Pattern::Standard, false)),

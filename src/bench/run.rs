@@ -63,7 +63,7 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
         quick: options.quick,
         machine,
         cores,
-        date: crate::harness::matrix::today(),
+        date: crate::harness::today::today(),
         version: env!("CARGO_PKG_VERSION").to_owned(),
         repetitions: sizes.repetitions,
         workloads,

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use super::timing::median;
-use crate::harness::suite::{discover, load};
+use crate::harness::discover::discover;
+use crate::harness::load::load;
 use crate::plan::Plan;
 use crate::production::Production;
 use crate::rasterizer::Rasterizer;

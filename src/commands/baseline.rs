@@ -7,11 +7,17 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
 
-use super::{default_paths, discover, rasterizers_named, unknown_rasterizer, Exit, LimitArgs};
+use super::cases::default_paths;
+use super::cases::discover;
+use super::exit::Exit;
+use super::limits::LimitArgs;
+use super::names::rasterizers_named;
+use super::names::unknown_rasterizer;
 use crate::harness::baseline::{Baseline, Observed, SelectionInfo};
+use crate::harness::discover;
 use crate::harness::runner::{self, Selection};
-use crate::harness::suite;
 use crate::rasterizer::Rasterizer;
+use crate::registry;
 
 #[derive(Subcommand)]
 pub enum BaselineCommand {
@@ -56,7 +62,7 @@ pub struct BaselineSelectArgs {
     pub family: Option<String>,
     /// Worker threads, at most 256 (default, or 0: one per core).
     /// Results do not depend on it.
-    #[arg(long, value_parser = super::threads)]
+    #[arg(long, value_parser = super::values::threads)]
     pub threads: Option<usize>,
     #[command(flatten)]
     pub limits: LimitArgs,
@@ -68,7 +74,7 @@ fn baseline_cases(
     paths: Vec<PathBuf>,
     selection: &Selection,
     allow_empty: bool,
-) -> Result<Vec<suite::CaseFile>, Exit> {
+) -> Result<Vec<discover::CaseFile>, Exit> {
     let (found, bad) = discover(paths);
     if bad {
         return Err(Exit::BadInput);
@@ -84,7 +90,7 @@ fn baseline_cases(
 /// Runs the cases and observes each candidate's metrics, recorded under
 /// `names` (one per candidate, in order).
 fn observe(
-    files: &[suite::CaseFile],
+    files: &[discover::CaseFile],
     candidates: &[Box<dyn Rasterizer>],
     names: &[String],
     select: &BaselineSelectArgs,
@@ -196,7 +202,7 @@ fn baseline_check(
             .map(|n| (n.clone(), n.clone()))
             .collect()
     } else {
-        if let Err(exit) = super::check_names(&names) {
+        if let Err(exit) = super::names::check_names(&names) {
             return exit;
         }
         names
@@ -229,9 +235,9 @@ fn baseline_check(
             );
             return Exit::BadInput;
         }
-        match suite::rasterizer(run) {
+        match registry::by_name(run) {
             Some(r) => {
-                if let Err(exit) = super::environment_for(run) {
+                if let Err(exit) = super::names::environment_for(run) {
                     return exit;
                 }
                 candidates.push(r)

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::Exit;
+use super::exit::Exit;
 use crate::bench;
 
 /// The arguments of `bench`.

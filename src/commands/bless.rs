@@ -6,8 +6,10 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{discover, Exit, LimitArgs};
-use crate::harness::{golden, suite};
+use super::cases::discover;
+use super::exit::Exit;
+use super::limits::LimitArgs;
+use crate::harness::{discover, golden, load, oracle};
 
 /// The arguments of `bless`.
 #[derive(Args)]
@@ -26,7 +28,7 @@ pub fn bless(args: BlessArgs) -> Exit {
     let root = PathBuf::from(".");
     let mut written = 0;
     for file in &found.cases {
-        let scene = match suite::load(file, &limits) {
+        let scene = match load::load(file, &limits) {
             Ok(scene) => scene,
             Err(e) => {
                 eprintln!("error: {e}");
@@ -41,7 +43,7 @@ pub fn bless(args: BlessArgs) -> Exit {
             continue;
         }
         let reference = match crate::deadline::within(limits.case_timeout, || {
-            suite::run_reference_planned(&scene, plan)
+            oracle::run_reference_planned(&scene, plan)
         }) {
             Ok(reference) => reference,
             Err(exceeded) => {
@@ -50,7 +52,7 @@ pub fn bless(args: BlessArgs) -> Exit {
                 continue;
             }
         };
-        let path = golden::path_for(&suite::golden_root(&file.path, &root), &file.id);
+        let path = golden::path_for(&discover::golden_root(&file.path, &root), &file.id);
         match golden::write(&reference.frame, &path) {
             Ok(()) => written += 1,
             Err(e) => {

@@ -5,8 +5,10 @@
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 
+use crate::harness::golden::GoldenStatus;
+use crate::harness::judge;
+use crate::harness::judge::Verdict;
 use crate::harness::runner::{CaseOutcome, Problem};
-use crate::harness::suite::{self, GoldenStatus, Verdict};
 use crate::rasterizer::Rasterizer;
 
 /// Set once stdout could not be written (a reader that closed the pipe,
@@ -117,7 +119,7 @@ pub(crate) fn print_outcome(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),
             result.rasterizer,
-            suite::describe(result)
+            judge::describe(result)
         );
         if let Verdict::Fail(reasons) = &result.verdict {
             for reason in reasons {

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::Exit;
+use super::exit::Exit;
 use crate::report::diff::{self, render, Change, Diff};
 
 /// Rows of each list printed on the console; `--out` files hold more.
@@ -35,7 +35,7 @@ fn parse_pair(text: &str) -> Result<(String, String), String> {
         Some((o, n)) if !o.is_empty() && !n.is_empty() => Ok((o.to_owned(), n.to_owned())),
         _ => Err(format!(
             "expected OLD_NAME=NEW_NAME, got {:?}",
-            super::shorten(text)
+            super::values::shorten(text)
         )),
     }
 }

@@ -15,7 +15,7 @@ use std::process::Command;
 use clap::Args;
 
 use super::console::outln;
-use super::Exit;
+use super::exit::Exit;
 
 #[derive(Args)]
 pub struct DocsArgs {
@@ -65,7 +65,7 @@ const FAMILIES: [(&str, &str); 10] = [
 pub fn generate(name: &str, root: &Path, exe: &Path) -> Option<Result<String, String>> {
     Some(match name {
         "families" => families_table(&root.join("cases")),
-        "rasterizers" => Ok(rasterizers_table()),
+        "rasterizers" => Ok(crate::registry::markdown_table()),
         "limits" => Ok(limits_table()),
         "sample-output" => sample_output(root, exe),
         "baseline-output" => baseline_output(root, exe),
@@ -338,85 +338,6 @@ fn json_files_here(dir: &Path) -> usize {
             .filter(|e| e.path().is_file() && e.path().extension().is_some_and(|x| x == "json"))
             .count()
     })
-}
-
-/// Adapters and the cargo feature each needs, whether or not this build
-/// has it. TODO(registry): `crate::registry::markdown_table()` replaces
-/// this list and [`rasterizers_table`].
-const ADAPTERS: [(&str, &str, &str); 8] = [
-    (
-        "tiny-skia",
-        "tiny-skia",
-        "library: tiny-skia's path filler (default feature)",
-    ),
-    (
-        "euc",
-        "euc",
-        "library: euc's 3D pipeline, closed edges (default feature)",
-    ),
-    ("vello-cpu", "vello", "library: vello_cpu's area coverage"),
-    (
-        "vulkan",
-        "vulkan",
-        "driver: any installed Vulkan driver through ash",
-    ),
-    (
-        "vulkan-passes",
-        "vulkan",
-        "driver: `vulkan` drawing every sample pattern by shifted passes",
-    ),
-    (
-        "lavapipe",
-        "lavapipe",
-        "driver: Mesa's Vulkan rasterizer on the CPU through wgpu",
-    ),
-    ("gl", "gl", "driver: Mesa's llvmpipe OpenGL through EGL"),
-    (
-        "softpipe",
-        "gl",
-        "driver: Mesa's softpipe OpenGL, in a run of its own",
-    ),
-];
-
-/// The rasterizers table: every name `-r` accepts in a build with every
-/// feature. TODO(registry): becomes `crate::registry::markdown_table()`.
-fn rasterizers_table() -> String {
-    let mut out =
-        String::from("| Name | Kind | Cargo feature | Description |\n|---|---|---|---|\n");
-    let adapter = |name: &str| ADAPTERS.iter().any(|(a, _, _)| *a == name);
-    for name in crate::harness::suite::rasterizer_names() {
-        if adapter(name) {
-            continue;
-        }
-        let (kind, description) = match name {
-            "reference" => ("exact", "the exact oracle itself (always passes)"),
-            "production" => (
-                "exact",
-                "the fast rasterizer: fixed point, integer edge functions",
-            ),
-            n if n.starts_with("mutant:") => ("mutant", "production with one planted bug"),
-            n if n.starts_with("dda-")
-                || n.starts_with("float-")
-                || n.starts_with("foil-")
-                || n == "flood-fill"
-                || n == "adaptive-refine"
-                || n == "area-f32" =>
-            {
-                ("foil", "a textbook method, measured; never fails a run")
-            }
-            _ => ("method", "another of production's methods"),
-        };
-        out.push_str(&format!("| `{name}` | {kind} | — | {description} |\n"));
-    }
-    for (name, feature, description) in ADAPTERS {
-        let (kind, description) = description.split_once(": ").unwrap_or(("", description));
-        out.push_str(&format!(
-            "| `{name}` | {kind} | `{feature}` | {description} |\n"
-        ));
-    }
-    out.push_str("| `external:PROGRAM ARGS` | external | — | any program speaking SPEC.md §12, one process per case |\n");
-    out.push_str("| `external-persistent:PROGRAM ARGS` | external | — | the same, one process per thread answering JSON lines |\n");
-    out
 }
 
 /// `n` as a power of two (`2^24`) when it is one, in decimal otherwise.

@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use super::{rasterizer_named, Exit};
+use super::exit::Exit;
+use super::names::rasterizer_named;
 use crate::explore::fuzz;
 
 #[derive(Args)]
@@ -89,7 +90,13 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
                 .iter()
                 .map(|f| f.name())
                 .collect();
-            eprintln!("error: unknown family {f:?}; known: {}", known.join(", "));
+            let meant = crate::scene::case::closest(f, &known)
+                .map(|m| format!("did you mean {m:?}? "))
+                .unwrap_or_default();
+            eprintln!(
+                "error: unknown family {f:?}; {meant}known: {}",
+                known.join(", ")
+            );
             return Exit::BadInput;
         }
     };

@@ -7,8 +7,13 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{discover, unknown_rasterizer, Exit, LimitArgs};
-use crate::harness::matrix;
+use super::cases::discover;
+use super::exit::Exit;
+use super::limits::LimitArgs;
+use super::names::unknown_rasterizer;
+use crate::explore::matrix;
+use crate::harness::today::today;
+use crate::registry;
 
 #[derive(Args)]
 pub struct MatrixArgs {
@@ -24,7 +29,7 @@ pub struct MatrixArgs {
     pub write_readme: Option<PathBuf>,
     /// Worker threads, at most 256 (default, or 0: one per core).
     /// Results do not depend on it.
-    #[arg(long, value_parser = super::threads)]
+    #[arg(long, value_parser = super::values::threads)]
     pub threads: Option<usize>,
     #[command(flatten)]
     pub limits: LimitArgs,
@@ -34,11 +39,11 @@ pub struct MatrixArgs {
 /// written into a README.
 pub fn matrix(args: MatrixArgs) -> Exit {
     let names = if args.rasterizers.is_empty() {
-        matrix::default_rows()
+        registry::matrix_default_rows()
     } else {
         args.rasterizers
     };
-    if let Err(exit) = super::check_names(&names) {
+    if let Err(exit) = super::names::check_names(&names) {
         return exit;
     }
     if let Some(name) = names.iter().find(|n| matrix::rasterizer(n).is_none()) {
@@ -46,7 +51,7 @@ pub fn matrix(args: MatrixArgs) -> Exit {
         return Exit::BadInput;
     }
     for name in &names {
-        if let Err(exit) = super::environment_for(name) {
+        if let Err(exit) = super::names::environment_for(name) {
             return exit;
         }
     }
@@ -59,13 +64,7 @@ pub fn matrix(args: MatrixArgs) -> Exit {
         eprintln!("error: no case files found; nothing was judged");
         return Exit::NothingJudged;
     }
-    let m = matrix::build(
-        &found.cases,
-        &args.limits.limits(),
-        &names,
-        args.threads,
-        &crate::explore::probe::diagnose,
-    );
+    let m = matrix::build(&found.cases, &args.limits.limits(), &names, args.threads);
     out!("{}", m.to_markdown());
     if m.unreadable > 0 {
         eprintln!(
@@ -76,7 +75,7 @@ pub fn matrix(args: MatrixArgs) -> Exit {
     if let Some(file) = &args.write_readme {
         let written = std::fs::read_to_string(file)
             .map_err(|e| e.to_string())
-            .and_then(|text| matrix::replace_block(&text, &m.readme_block(&matrix::today())))
+            .and_then(|text| matrix::replace_block(&text, &m.readme_block(&today())))
             .and_then(|text| std::fs::write(file, text).map_err(|e| e.to_string()));
         match written {
             Ok(()) => outln!("\nwrote the matrix into {}", file.display()),

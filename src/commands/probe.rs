@@ -6,7 +6,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{rasterizer_named, Exit};
+use super::exit::Exit;
+use super::names::rasterizer_named;
 
 /// The arguments of `probe`.
 #[derive(Args)]

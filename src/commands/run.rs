@@ -8,8 +8,11 @@ use std::path::PathBuf;
 
 use clap::Args;
 
+use super::cases::{discover, family_hint};
 use super::console::{print_outcome, Progress};
-use super::{discover, rasterizers_named, Exit, LimitArgs};
+use super::exit::Exit;
+use super::limits::LimitArgs;
+use super::names::rasterizers_named;
 use crate::harness::runner::{self, Problem, Selection};
 use crate::report;
 use crate::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
@@ -42,7 +45,7 @@ pub struct RunArgs {
     pub shard: Option<String>,
     /// Worker threads, at most 256 (default, or 0: one per core).
     /// Results do not depend on it.
-    #[arg(long, value_parser = super::threads)]
+    #[arg(long, value_parser = super::values::threads)]
     pub threads: Option<usize>,
     /// A profile written by `probe`: its rasterizer is judged under the
     /// fill rule it declares instead of each case's (only the fill rule
@@ -70,8 +73,11 @@ fn own_rule(x: &runner::Tally) -> String {
 
 pub fn run(args: RunArgs) -> Exit {
     let limits = args.limits.limits();
-    let (declared, names) = match crate::harness::profile::for_run(&args.profile, &args.rasterizers)
-    {
+    let (declared, names) = match crate::harness::profile::for_run(
+        &args.profile,
+        &args.rasterizers,
+        crate::registry::called,
+    ) {
         Ok(found) => found,
         Err(e) => {
             eprintln!("error: {e}");
@@ -103,8 +109,15 @@ pub fn run(args: RunArgs) -> Exit {
         shard,
     };
     let (found, mut bad_input) = discover(args.paths.clone());
+    let hint = args
+        .family
+        .as_deref()
+        .and_then(|f| family_hint(f, &found.cases));
     let files = selection.apply(found.cases);
     if files.is_empty() {
+        if let Some(hint) = hint {
+            eprintln!("note: {hint}");
+        }
         eprintln!(
             "error: no case files found{}{}",
             if selection == Selection::default() {
@@ -141,6 +154,14 @@ pub fn run(args: RunArgs) -> Exit {
     );
     report.cases = files.iter().map(CaseEntry::not_run).collect();
     if let Some(dir) = &args.report {
+        if let Some(file) = not_a_folder(dir) {
+            eprintln!(
+                "error: --report {}: {} is a file, not a folder",
+                dir.display(),
+                file.display()
+            );
+            return Exit::BadInput;
+        }
         // What an earlier run wrote there goes first, so that no file in
         // the folder can be mistaken for this run's.
         if let Err(e) = report::remove_owned(dir) {
@@ -320,4 +341,13 @@ pub fn run(args: RunArgs) -> Exit {
     } else {
         Exit::Pass
     }
+}
+
+/// The file in the way of a report folder: `dir` itself, or the nearest
+/// existing path above it, when that is not a folder.
+fn not_a_folder(dir: &std::path::Path) -> Option<&std::path::Path> {
+    dir.ancestors()
+        .filter(|p| !p.as_os_str().is_empty())
+        .find(|p| p.exists())
+        .filter(|p| !p.is_dir())
 }

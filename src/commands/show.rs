@@ -6,8 +6,11 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{rasterizer_named, Exit, LimitArgs};
-use crate::harness::suite::{self, Verdict};
+use super::exit::Exit;
+use super::limits::LimitArgs;
+use super::names::rasterizer_named;
+use crate::harness::judge::Verdict;
+use crate::harness::{discover, judge, load, oracle};
 use crate::report::png;
 
 /// The arguments of `show`.
@@ -44,8 +47,8 @@ pub fn show(args: ShowArgs) -> Exit {
         Ok(candidate) => candidate,
         Err(exit) => return exit,
     };
-    let file = suite::case_file(&case);
-    let scene = match suite::load(&file, &limits) {
+    let file = discover::case_file(&case);
+    let scene = match load::load(&file, &limits) {
         Ok(scene) => scene,
         Err(e) => {
             eprintln!("error: {e}");
@@ -68,10 +71,10 @@ pub fn show(args: ShowArgs) -> Exit {
         eprintln!("error: {}: {over}", case.display());
         return Exit::BadInput;
     }
-    let reference = suite::run_reference_planned(&scene, plan);
-    let result = suite::run_candidate(&scene, &reference, candidate.as_ref());
+    let reference = oracle::run_reference_planned(&scene, plan);
+    let result = judge::run_candidate(&scene, &reference, candidate.as_ref());
     let (Some(frame), Some(metrics)) = (&result.frame, &result.metrics) else {
-        eprintln!("{}: {}", candidate.name(), suite::describe(&result));
+        eprintln!("{}: {}", candidate.name(), judge::describe(&result));
         return Exit::Fail;
     };
     let asked = scale.unwrap_or_else(|| png::auto_scale(frame)).clamp(1, 64);
@@ -96,11 +99,16 @@ pub fn show(args: ShowArgs) -> Exit {
             for p in paths {
                 outln!("wrote {}", p.display());
             }
+            // A foil's failure is a departure, labelled as `run` labels it.
+            let label = match result.verdict {
+                Verdict::Fail(_) if candidate.is_foil() => "FOIL",
+                _ => result.verdict.label(),
+            };
             outln!(
                 "{} {}: {}",
-                result.verdict.label(),
+                label,
                 candidate.name(),
-                suite::describe(&result)
+                judge::describe(&result)
             );
             outln!("key: magenta = missing, red = extra, yellow = wrong owner, grey = covered alike; cyan = snapped edges");
             if matches!(result.verdict, Verdict::Pass) {

@@ -139,6 +139,25 @@ fn compare_channels(
     }
 }
 
+/// Whether the reference still reproduces a case's golden file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum GoldenStatus {
+    Matches,
+    Missing(PathBuf),
+    Differs(String),
+}
+
+pub fn check_golden(root: &Path, id: &str, frame: &Frame) -> GoldenStatus {
+    let path = path_for(root, id);
+    if !path.exists() {
+        return GoldenStatus::Missing(path);
+    }
+    match check(frame, &path) {
+        Ok(()) => GoldenStatus::Matches,
+        Err(why) => GoldenStatus::Differs(why),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

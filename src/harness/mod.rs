@@ -1,25 +1,22 @@
 //! The harness: from case files on disk to one outcome per case.
 //!
-//! - [`suite`]: finding case files, reading them, running one case through
-//!   the reference and the candidates, and judging the golden file.
-//! - [`oracle`]: the reference's answer for a case and what the exact
-//!   rationals say beyond its frame, computed once for every candidate.
-//! - [`runner`]: many cases at once: selection, parallel execution, limits,
-//!   outcomes in a fixed order.
-//! - [`golden`]: the blessed reference outputs (EXR) and their comparison.
-//! - [`baseline`]: recorded metrics that later runs must not get worse than.
-//! - [`profile`]: declared conventions (`run --profile`): a profiled
-//!   rasterizer judged under the fill rule its profile declares.
-//! - [`matrix`]: every case through several rasterizers, as a conformance
-//!   matrix with findings.
-//! - [`diagnosis`]: how a rasterizer samples and breaks ties, as `probe`
-//!   decides it, in the words both the profile and the matrix use.
+//! A case passes through: [`discover`] (case files, their ids and golden
+//! roots) → [`load`] (the file read into a scene) → [`oracle`] (the
+//! reference's answer, once for every candidate) → [`judge`] (each
+//! candidate's frame against it, under the conventions [`profile`] says it
+//! follows) → [`golden`] (the blessed reference output) → [`baseline`]
+//! (recorded metrics a later run must not get worse than). [`runner`] runs
+//! many cases at once: selection, parallel execution, limits, outcomes in a
+//! fixed order. [`panics`] is the text of a caught panic; [`today`] the
+//! date reports are stamped with.
 
 pub mod baseline;
-pub mod diagnosis;
+pub mod discover;
 pub mod golden;
-pub mod matrix;
+pub mod judge;
+pub mod load;
 pub mod oracle;
+pub mod panics;
 pub mod profile;
 pub mod runner;
-pub mod suite;
+pub mod today;

@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 use dashu_int::ops::Abs;
 use dashu_ratio::RBig;
 
-use super::suite::pass_on_deadline;
+use super::panics::pass_on_deadline;
 use crate::frame::Frame;
 use crate::metrics::AreaClass;
 use crate::plan::Plan;

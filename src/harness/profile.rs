@@ -3,7 +3,7 @@
 //! profiled rasterizer so that it follows its declared fill rule: the
 //! harness then judges it against a reference drawn under that rule
 //! instead of each case's, as it judges any rasterizer whose rule is fixed
-//! (`suite::run_candidate`, SPEC.md §3.1).
+//! (`judge::run_candidate`, SPEC.md §3.1).
 //!
 //! `explore::probe` writes profiles; the harness only reads what they
 //! declare, so a hand-written profile is judged the same way.
@@ -88,10 +88,12 @@ impl Declared {
 /// The profiles of `run --profile`, and the rasterizers to run: `names`,
 /// or the profiles' rasterizers when none are named (production when
 /// there are no profiles either). Every profiled rasterizer must be run,
-/// and have one profile.
+/// and have one profile; `called` is the name a `-r` argument is reported
+/// under (NAME for a program named with `-r NAME=external…`).
 pub fn for_run(
     files: &[std::path::PathBuf],
     names: &[String],
+    called: fn(&str) -> &str,
 ) -> Result<(Vec<Declared>, Vec<String>), String> {
     let mut declared: Vec<Declared> = Vec::new();
     for file in files {
@@ -111,10 +113,6 @@ pub fn for_run(
     } else {
         declared.iter().map(|d| d.rasterizer.clone()).collect()
     };
-    // A program named with `-r NAME=external…` is called NAME.
-    fn called(n: &str) -> &str {
-        crate::adapters::external::split_name(n).map_or(n, |(name, _)| name)
-    }
     if let Some(d) = declared
         .iter()
         .find(|d| !names.iter().any(|n| called(n) == d.rasterizer))
@@ -268,7 +266,7 @@ impl OwnConventions {
 
 /// The candidates of `run --profile`, each one a profile names wrapped in
 /// [`Profiled`]: judged under the profile's fill rule by the same path as a
-/// rasterizer whose rule is fixed (`suite::run_candidate`, SPEC.md §3.1).
+/// rasterizer whose rule is fixed (`judge::run_candidate`, SPEC.md §3.1).
 pub fn apply(
     candidates: Vec<Box<dyn Rasterizer>>,
     declared: &[Declared],

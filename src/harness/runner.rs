@@ -13,7 +13,11 @@ use rayon::prelude::*;
 
 use crate::deadline;
 use crate::frame::Frame;
-use crate::harness::suite::{self, CandidateRun, CaseFile, GoldenStatus, ReferenceRun, Verdict};
+use crate::harness::discover::CaseFile;
+use crate::harness::golden::GoldenStatus;
+use crate::harness::judge::{CandidateRun, Verdict};
+use crate::harness::oracle::ReferenceRun;
+use crate::harness::{discover, golden, judge, load, oracle, panics};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::scene::{Limits, Scene};
@@ -190,13 +194,13 @@ pub fn run_case(
         golden: None,
         candidates: Vec::new(),
     };
-    let scene = match suite::load_checked(file, limits) {
+    let scene = match load::load_checked(file, limits) {
         Ok(scene) => scene,
-        Err(suite::LoadError::Unreadable(e)) => {
+        Err(load::LoadError::Unreadable(e)) => {
             outcome.problem = Some(Problem::Unreadable(e.to_string()));
             return outcome;
         }
-        Err(suite::LoadError::OverLimit(e)) => {
+        Err(load::LoadError::OverLimit(e)) => {
             outcome.problem = Some(Problem::LimitExceeded(e.to_string()));
             return outcome;
         }
@@ -213,7 +217,7 @@ pub fn run_case(
     }
     let limit = limits.case_timeout;
     let reference = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        deadline::within(limit, || suite::run_reference_planned(&scene, plan))
+        deadline::within(limit, || oracle::run_reference_planned(&scene, plan))
     })) {
         Ok(Ok(reference)) => reference,
         Ok(Err(exceeded)) => {
@@ -225,13 +229,13 @@ pub fn run_case(
             return outcome;
         }
         Err(panic) => {
-            outcome.problem = Some(Problem::ReferenceFailed(suite::panic_message(&*panic)));
+            outcome.problem = Some(Problem::ReferenceFailed(panics::panic_message(&*panic)));
             outcome.scene = Some(scene);
             return outcome;
         }
     };
-    let golden_root = suite::golden_root(&file.path, root);
-    outcome.golden = Some(suite::check_golden(
+    let golden_root = discover::golden_root(&file.path, root);
+    outcome.golden = Some(golden::check_golden(
         &golden_root,
         &file.id,
         &reference.frame,
@@ -244,7 +248,7 @@ pub fn run_case(
         .map(|c| {
             let started = std::time::Instant::now();
             deadline::within(limit, || {
-                suite::run_candidate(&scene, &reference, c.as_ref())
+                judge::run_candidate(&scene, &reference, c.as_ref())
             })
             .unwrap_or_else(|exceeded| {
                 over.push(format!("{}: {} {exceeded}", file.path.display(), c.name()));

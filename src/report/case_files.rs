@@ -17,8 +17,8 @@ use super::files::{relative, write_file};
 use super::json::CaseEntry;
 use super::limits::{MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
 use super::{exr, html, png};
+use crate::harness::judge::Verdict;
 use crate::harness::runner::CaseOutcome;
-use crate::harness::suite::Verdict;
 
 /// Writes each case's pictures, error maps and page (see the module
 /// comment). Errors are kept, the first one reported by [`CaseWriter::finish`].

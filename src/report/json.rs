@@ -6,8 +6,9 @@
 
 use serde::Serialize;
 
+use crate::harness::golden::GoldenStatus;
+use crate::harness::judge::Verdict;
 use crate::harness::runner::{CaseOutcome, Problem, Tally};
-use crate::harness::suite::{GoldenStatus, Verdict};
 use crate::metrics::antialias::AntialiasMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
@@ -403,7 +404,7 @@ fn millis(d: std::time::Duration) -> f64 {
 
 impl CaseEntry {
     /// A case that has not run (yet).
-    pub fn not_run(file: &crate::harness::suite::CaseFile) -> CaseEntry {
+    pub fn not_run(file: &crate::harness::discover::CaseFile) -> CaseEntry {
         CaseEntry {
             id: file.id.clone(),
             path: file.path.display().to_string(),

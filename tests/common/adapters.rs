@@ -8,7 +8,8 @@
 use std::path::Path;
 
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{time::limits::TIME_ONE, Scene};
@@ -218,10 +219,10 @@ pub fn assert_eight_ties_change_hands(
     other: &str,
 ) {
     let (_, r) = run(&pair(own), candidate);
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
     assert_eq!(r.judged_rule, None);
     let (_, r) = run(&pair(other), candidate);
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
     assert_eq!(r.judged_rule.map(|r| r.name()), Some(own));
     let (_, r) = super::run_as_stated(&pair(other), candidate);
     let m = r.metrics.as_ref().unwrap();
@@ -229,7 +230,7 @@ pub fn assert_eight_ties_change_hands(
         (m.coverage.wrong_owner, m.coverage.missing, m.coverage.extra),
         (8, 0, 0),
         "{}",
-        suite::describe(&r)
+        judge::describe(&r)
     );
 }
 
@@ -392,15 +393,15 @@ impl Rasterizer for WholeShutter<'_> {
 pub fn assert_wrong_instants_fail(candidate: &dyn Rasterizer) {
     let id = "motion/shutter_quarter_to_three_quarters";
     let scene = case(id);
-    let reference = suite::run_reference(&scene);
-    let right = suite::run_candidate(&scene, &reference, candidate);
+    let reference = oracle::run_reference(&scene);
+    let right = judge::run_candidate(&scene, &reference, candidate);
     assert_eq!(
         right.verdict,
         Verdict::Pass,
         "{}",
         report(id, &reference, &right)
     );
-    let wrong = suite::run_candidate(&scene, &reference, &WholeShutter(candidate));
+    let wrong = judge::run_candidate(&scene, &reference, &WholeShutter(candidate));
     eprintln!("{}", report(id, &reference, &wrong));
     assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
 }

@@ -334,7 +334,7 @@ pub fn assert_inside_the_volume_passes(candidate: &dyn Rasterizer) {
     let (reference, run) = super::run(&scene, candidate);
     assert_eq!(
         run.verdict,
-        rastercheck::harness::suite::Verdict::Pass,
+        rastercheck::harness::judge::Verdict::Pass,
         "{}",
         super::report("inside", &reference, &run)
     );

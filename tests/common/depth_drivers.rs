@@ -6,7 +6,7 @@
 #![allow(dead_code)] // each test binary uses its own part
 
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::Verdict;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{DepthFormat, Scene};

@@ -17,7 +17,8 @@ pub use cli::{rastercheck, text};
 use std::path::Path;
 
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, CandidateRun};
+use rastercheck::harness::judge::CandidateRun;
+use rastercheck::harness::{judge, oracle};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{parse_case, Limits, Scene};
 
@@ -60,14 +61,14 @@ impl Rasterizer for AsStated<'_> {
 pub fn run_as_stated(
     scene: &Scene,
     candidate: &dyn Rasterizer,
-) -> (suite::ReferenceRun, CandidateRun) {
+) -> (oracle::ReferenceRun, CandidateRun) {
     run(scene, &AsStated(candidate))
 }
 
 /// The reference's run and the candidate's, on one scene.
-pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> (suite::ReferenceRun, CandidateRun) {
-    let reference = suite::run_reference(scene);
-    let run = suite::run_candidate(scene, &reference, candidate);
+pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> (oracle::ReferenceRun, CandidateRun) {
+    let reference = oracle::run_reference(scene);
+    let run = judge::run_candidate(scene, &reference, candidate);
     (reference, run)
 }
 
@@ -120,7 +121,7 @@ pub fn sample_name(frame: &Frame, i: usize) -> String {
 }
 
 /// One line per case: verdict, metrics, and the first differing samples.
-pub fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> String {
+pub fn report(id: &str, reference: &oracle::ReferenceRun, run: &CandidateRun) -> String {
     let diffs = run
         .frame
         .as_ref()
@@ -129,7 +130,7 @@ pub fn report(id: &str, reference: &suite::ReferenceRun, run: &CandidateRun) -> 
     format!(
         "{:<5} {id}: {}{}",
         run.verdict.label(),
-        suite::describe(run),
+        judge::describe(run),
         if diffs.is_empty() {
             String::new()
         } else {

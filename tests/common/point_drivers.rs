@@ -561,7 +561,7 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
 /// draws them), and the frame departs from the canvas-bounded rule: the
 /// square is cut at the viewport's side, not drawn whole.
 pub fn assert_squares_cut_at_the_viewport(candidate: &dyn Rasterizer) {
-    use rastercheck::harness::suite::Verdict;
+    use rastercheck::harness::judge::Verdict;
     use rastercheck::scene::PointBounds;
     assert_eq!(candidate.fixed_point_bounds(), Some(PointBounds::Viewport));
     let viewport = r#"{"x": 4, "y": 4, "width": 16, "height": 16}"#;
@@ -600,9 +600,9 @@ pub fn assert_probe_finds_declared_point_clipping(candidate: &dyn Rasterizer) {
     assert!(found.consistent && !found.follows_case, "{found:?}");
     assert_eq!(found.scenes, 5, "every probe point drawn: {found:?}");
     let declared = candidate.fixed_point_clip().expect("declared").name();
-    assert_eq!(found.clip_points, Some(declared), "{found:?}");
+    assert_eq!(found.clip_points(), Some(declared), "{found:?}");
     let bounds = candidate.fixed_point_bounds().expect("declared").name();
-    assert_eq!(found.point_bounds, Some(bounds), "{found:?}");
+    assert_eq!(found.point_bounds(), Some(bounds), "{found:?}");
 }
 
 /// Asserts `candidate` refuses `scene` with a reason containing `why`.

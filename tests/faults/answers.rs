@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use dashu_int::ops::Abs;
 
 use dashu_ratio::RBig;
-use rastercheck::harness::{golden, suite};
+use rastercheck::harness::{discover, golden, load};
 use rastercheck::plan::Plan;
 use rastercheck::reference::motion;
 use rastercheck::scene::Limits;
@@ -182,8 +182,8 @@ fn the_motion_golden_time_layer_is_what_spec_says() {
     files.sort();
     let (mut exact_pixels, mut bounded_pixels) = (0, 0);
     for path in files {
-        let file = suite::case_file(&path);
-        let scene = suite::load(&file, &Limits::default()).unwrap();
+        let file = discover::case_file(&path);
+        let scene = load::load(&file, &Limits::default()).unwrap();
         let plan = Plan::for_scene(&scene);
         if plan.motion.is_none() {
             continue;
@@ -222,7 +222,7 @@ fn the_motion_golden_time_layer_is_what_spec_says() {
 #[test]
 fn the_oracle_refines_a_pixel_until_it_rounds_once() {
     let path = repo().join("cases/motion/rotate_triangle_stratified16.json");
-    let scene = suite::load(&suite::case_file(&path), &Limits::default()).unwrap();
+    let scene = load::load(&discover::case_file(&path), &Limits::default()).unwrap();
     let plan = Plan::for_scene(&scene);
     let fine = motion::time_coverage(&scene, &plan);
     let coarse = motion::time_coverage_from(&scene, &plan, motion::Mutation::None, 4);

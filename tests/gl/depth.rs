@@ -3,7 +3,7 @@
 
 use rastercheck::adapters::gl::Gl;
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::Verdict;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::depth::unorm_index;

@@ -15,7 +15,8 @@ use std::process::Command;
 
 use rastercheck::adapters::gl::{self, Gl};
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{FillRule, Scene};
@@ -56,7 +57,7 @@ use common::adapters::{
 };
 use common::{case, inline, report};
 
-fn run(scene: &Scene) -> (suite::ReferenceRun, CandidateRun) {
+fn run(scene: &Scene) -> (oracle::ReferenceRun, CandidateRun) {
     common::run(scene, &Gl)
 }
 
@@ -124,15 +125,15 @@ fn its_tie_rule_is_bottom_left() {
     // Judged under its own rule (SPEC.md §3.1), it passes; held to the
     // case's, it fails.
     let (_, own) = run(&case("triangles/fill_rule_top_left"));
-    assert_eq!(own.verdict, Verdict::Pass, "{}", suite::describe(&own));
+    assert_eq!(own.verdict, Verdict::Pass, "{}", judge::describe(&own));
     assert_eq!(own.judged_rule, Some(FillRule::BottomLeft));
     let (reference, top_left) = common::run_as_stated(&case("triangles/fill_rule_top_left"), &Gl);
     eprintln!("{}", report("fill_rule_top_left", &reference, &top_left));
     assert!(matches!(top_left.verdict, Verdict::Fail(_)));
     let m = top_left.metrics.as_ref().unwrap();
-    assert!(m.coverage.wrong_owner > 0, "{}", suite::describe(&top_left));
+    assert!(m.coverage.wrong_owner > 0, "{}", judge::describe(&top_left));
     let w = m.watertight.clone().expect("a mesh case");
-    assert!(w.is_watertight(), "{}", suite::describe(&top_left));
+    assert!(w.is_watertight(), "{}", judge::describe(&top_left));
     // Two quads sharing a horizontal edge through the sample row y = 4.5:
     // top-left and bottom-left agree on every slanted edge and differ on
     // that row's 8 samples, which change hands.
@@ -192,8 +193,8 @@ fn refuses_what_it_cannot_express() {
     }
     assert_refuses_lines_and_unsnapped(&Gl);
     let scene = case("triangles/fill_rule_top_left");
-    let reference = suite::run_reference(&scene);
-    let r = suite::run_candidate(&scene, &reference, &gl::Softpipe);
+    let reference = oracle::run_reference(&scene);
+    let r = judge::run_candidate(&scene, &reference, &gl::Softpipe);
     match &r.verdict {
         Verdict::Error(why) => assert!(why.contains("GALLIUM_DRIVER=softpipe"), "{why}"),
         other => panic!("softpipe in an llvmpipe process: {other:?}"),
@@ -286,11 +287,11 @@ fn the_prepared_path_draws_what_rasterize_draws() {
 
 #[test]
 fn is_listed_by_name() {
-    let names = rastercheck::adapters::names();
+    let names = rastercheck::registry::names();
     assert!(names.contains(&"gl") && names.contains(&"softpipe"));
-    let r = rastercheck::adapters::by_name("gl").expect("registered");
+    let r = rastercheck::registry::by_name("gl").expect("registered");
     assert_eq!(r.name(), "gl");
-    let r = rastercheck::adapters::by_name("softpipe").expect("registered");
+    let r = rastercheck::registry::by_name("softpipe").expect("registered");
     assert_eq!(r.name(), "softpipe");
 }
 
@@ -534,7 +535,7 @@ fn a_wrong_shift_is_caught() {
             "{}",
             report(id, &reference, &right)
         );
-        let wrong = suite::run_candidate(&scene, &reference, &RotatedShifts);
+        let wrong = judge::run_candidate(&scene, &reference, &RotatedShifts);
         eprintln!("{}", report(id, &reference, &wrong));
         assert!(
             matches!(wrong.verdict, Verdict::Fail(_)),

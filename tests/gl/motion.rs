@@ -2,7 +2,7 @@
 //! counts summed into each pixel's time coverage.
 
 use rastercheck::adapters::gl::Gl;
-use rastercheck::harness::suite::Verdict;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{Primitive, Scene};
 

@@ -5,7 +5,7 @@
 
 use rastercheck::adapters::gl::Gl;
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::Verdict;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{LineRule, Primitive, Scene};

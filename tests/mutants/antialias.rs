@@ -4,7 +4,8 @@
 
 use crate::{reasons, run, scene};
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge;
+use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
 use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::production::Production;
@@ -65,7 +66,7 @@ fn the_oracles_own_mask_and_areas_pass_an_antialiased_case() {
             edit: unchanged,
         };
         let r = run(&s, &c);
-        assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+        assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
         let m = r.metrics.unwrap();
         let aa = m.antialias.expect("antialias metrics");
         assert_eq!((aa.piglit_violations, aa.resolve_mismatches), (0, 0));
@@ -181,7 +182,7 @@ fn expect_area_pins_the_oracles_areas() {
         edit: unchanged,
     };
     let r = run(&s, &exact);
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
     s.expect.area = Some(rastercheck::scene::Number::ratio(41, 1));
     let why = reasons(&run(&s, &exact));
     assert!(
@@ -195,7 +196,7 @@ fn expect_area_pins_the_oracles_areas() {
 fn production_passes_the_antialiased_case_its_mutants_fail() {
     let s = scene(AA_TRIANGLE);
     let r = run(&s, &Production);
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
 
     let shifted = run(&s, &Mutant(Mutation::ShiftedSamples));
     let why = reasons(&shifted);
@@ -238,7 +239,7 @@ const AA_DIAGONAL_PAIR: &str = r#"{
 fn watertightness_and_ties_are_judged_sample_by_sample() {
     let s = scene(AA_DIAGONAL_PAIR);
     let r = run(&s, &Production);
-    assert_eq!(r.verdict, Verdict::Pass, "{}", suite::describe(&r));
+    assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
     let w = r.metrics.unwrap().watertight.expect("a mesh case");
     // Samples 12 at (0, 8/16) and 15 at (1/16, 0) of the left column and
     // top row lie on the mesh's rim; the diagonal's samples are interior.
@@ -250,7 +251,7 @@ fn watertightness_and_ties_are_judged_sample_by_sample() {
         (w.holes, w.overdraw),
         (0, 8),
         "{}",
-        suite::describe(&closed)
+        judge::describe(&closed)
     );
     // Each overdrawn sample also makes its pixel resolve above 1.
     let why = reasons(&closed);

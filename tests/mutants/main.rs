@@ -8,7 +8,8 @@ mod antialias;
 mod motion;
 mod static_checks;
 
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{parse_case, Limits, Scene};
 
@@ -17,8 +18,8 @@ pub fn scene(json: &str) -> Scene {
 }
 
 pub fn run(scene: &Scene, candidate: &dyn Rasterizer) -> CandidateRun {
-    let reference = suite::run_reference(scene);
-    suite::run_candidate(scene, &reference, candidate)
+    let reference = oracle::run_reference(scene);
+    judge::run_candidate(scene, &reference, candidate)
 }
 
 pub fn reasons(run: &CandidateRun) -> Vec<String> {

@@ -3,7 +3,8 @@
 
 use crate::static_checks::DIAGONAL_PAIR;
 use crate::{reasons, run, scene};
-use rastercheck::harness::suite::{self, CandidateRun, Verdict};
+use rastercheck::harness::judge::{CandidateRun, Verdict};
+use rastercheck::harness::{judge, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::production::Production;
@@ -18,9 +19,9 @@ use crate::sliding::{self, Given, Slide};
 use rastercheck::metrics::TimeMetrics;
 
 /// The reference's run of a sliding square, from its exact values.
-fn slide_reference(slide: &Slide) -> (Scene, suite::ReferenceRun) {
+fn slide_reference(slide: &Slide) -> (Scene, oracle::ReferenceRun) {
     let s = slide.scene();
-    let reference = suite::run_reference_with(&s, |_, plan| slide.exact(plan));
+    let reference = oracle::run_reference_with(&s, |_, plan| slide.exact(plan));
     (s, reference)
 }
 
@@ -60,7 +61,7 @@ fn only_the_motion_mutants_claim_motion_blur() {
         assert_eq!(others, production, "{}", mutation.name());
     }
     let s = Slide::new("slide").scene();
-    let r = suite::run_candidate(
+    let r = judge::run_candidate(
         &s,
         &slide_reference(&Slide::new("slide")).1,
         &Mutant(Mutation::FlippedTies),
@@ -93,10 +94,10 @@ fn an_honest_sampler_passes_the_sliding_square_under_every_pattern() {
                 };
                 let (s, reference) = slide_reference(&slide);
                 let sampler = Given("sampler", |s: &Scene, p: &Plan| slide.sampled(s, p));
-                let r = suite::run_candidate(&s, &reference, &sampler);
+                let r = judge::run_candidate(&s, &reference, &sampler);
                 let t = time_metrics(&r);
                 let what = format!("{} dx {dx} {pattern}", slide.name);
-                assert_eq!(r.verdict, Verdict::Pass, "{what}: {}", suite::describe(&r));
+                assert_eq!(r.verdict, Verdict::Pass, "{what}: {}", judge::describe(&r));
                 assert!(t.moving_pixels > 0, "{what}: {t:?}");
                 assert!(
                     t.max_error > 0.0 || dx == 8 && pattern != "random",
@@ -139,7 +140,7 @@ fn time_metrics_catch_primitives_drawn_at_shutter_open() {
             })
             .collect();
         assert_eq!(frame.time.as_deref(), Some(at_open.as_slice()));
-        let r = suite::run_candidate(&s, &reference, &mutant);
+        let r = judge::run_candidate(&s, &reference, &mutant);
         let t = time_metrics(&r);
         // The expected metrics, from the exact values.
         let exact = slide.exact_f64(&plan);
@@ -183,7 +184,7 @@ fn time_metrics_catch_primitives_drawn_at_shutter_open() {
         ..Slide::new("slide_max")
     };
     let (s, reference) = slide_reference(&slide);
-    let failures = reasons(&suite::run_candidate(
+    let failures = reasons(&judge::run_candidate(
         &s,
         &reference,
         &Mutant(Mutation::MotionAtOpen),
@@ -220,7 +221,7 @@ fn time_metrics_catch_a_shutter_sampled_only_in_its_first_half() {
                 .collect();
             assert_eq!(frame.time.as_deref(), Some(expected.as_slice()));
         }
-        let r = suite::run_candidate(&s, &reference, &mutant);
+        let r = judge::run_candidate(&s, &reference, &mutant);
         let t = time_metrics(&r);
         assert!(t.rms_moving > 1.25 * t.allowed_rms.unwrap(), "{t:?}");
         let failures = reasons(&r);
@@ -240,7 +241,7 @@ fn time_metrics_catch_a_shutter_sampled_only_in_its_first_half() {
         ..Slide::new("slide_part")
     };
     let (s, reference) = slide_reference(&slide);
-    let r = suite::run_candidate(&s, &reference, &Mutant(Mutation::MotionHalfShutter));
+    let r = judge::run_candidate(&s, &reference, &Mutant(Mutation::MotionHalfShutter));
     assert!(
         reasons(&r)[0].starts_with("time: time-coverage RMS"),
         "{:?}",
@@ -248,7 +249,7 @@ fn time_metrics_catch_a_shutter_sampled_only_in_its_first_half() {
     );
     let honest = Given("sampler", |s: &Scene, p: &Plan| slide.sampled(s, p));
     assert_eq!(
-        suite::run_candidate(&s, &reference, &honest).verdict,
+        judge::run_candidate(&s, &reference, &honest).verdict,
         Verdict::Pass
     );
 }
@@ -275,7 +276,7 @@ fn an_accumulation_buffer_over_the_whole_shutter_is_not_caught() {
                 let instants: Vec<Number> = (0..16).map(|k| Number::ratio(2 * k + 1, 32)).collect();
                 rastercheck::production::mutants::accumulate(&s, &instants).unwrap()
             };
-            let r = suite::run_candidate(&s, &reference, &Given("accumulation", midpoints));
+            let r = judge::run_candidate(&s, &reference, &Given("accumulation", midpoints));
             let t = time_metrics(&r);
             assert_eq!(r.verdict, Verdict::Pass, "{}: {t:?}", slide.name);
             assert!(t.max_error <= 1.0 / 16.0 + 1e-12, "{}: {t:?}", slide.name);

@@ -4,11 +4,13 @@
 
 use crate::{reasons, run, scene};
 use rastercheck::frame::Frame;
-use rastercheck::harness::suite::{self, Verdict};
+use rastercheck::harness::judge::Verdict;
+use rastercheck::harness::{discover, judge, load, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::production::mutants::{Mutant, Mutation};
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
+use rastercheck::registry;
 use rastercheck::scene::{Limits, Scene};
 
 /// An 8×8 square split along its diagonal: the samples (i+½, i+½) lie
@@ -32,7 +34,7 @@ fn production_passes_the_tie_cases_used_below() {
             Verdict::Pass,
             "{}: {}",
             s.name,
-            suite::describe(&r)
+            judge::describe(&r)
         );
     }
 }
@@ -213,7 +215,7 @@ fn a_crashing_rasterizer_is_an_error_not_a_crash_of_the_suite() {
 #[test]
 fn golden_check_catches_a_changed_oracle() {
     let s = scene(PERSPECTIVE);
-    let reference = suite::run_reference(&s);
+    let reference = oracle::run_reference(&s);
     let dir = std::env::temp_dir().join(format!("rastercheck-golden-{}", std::process::id()));
     let path = dir.join("case.exr");
     rastercheck::harness::golden::write(&reference.frame, &path).unwrap();
@@ -245,7 +247,7 @@ fn golden_check_catches_a_changed_oracle() {
 /// with its failure reasons (empty when it passed).
 fn sweep(candidate: &dyn Rasterizer) -> Vec<(String, Vec<String>)> {
     let cases = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/triangles");
-    let found = suite::discover(&[cases]);
+    let found = discover::discover(&[cases]);
     assert!(
         found.cases.len() >= 40,
         "expected the bundled triangle cases"
@@ -254,7 +256,7 @@ fn sweep(candidate: &dyn Rasterizer) -> Vec<(String, Vec<String>)> {
         .cases
         .iter()
         .map(|file| {
-            let s = suite::load(file, &Limits::default()).unwrap();
+            let s = load::load(file, &Limits::default()).unwrap();
             let r = run(&s, candidate);
             let reasons = match r.verdict {
                 Verdict::Pass => Vec::new(),
@@ -336,12 +338,12 @@ fn the_bundled_perspective_cases_catch_screen_space_interpolation() {
 fn bundled(id: &str) -> Scene {
     let path =
         std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("cases/{id}.json"));
-    suite::load(&suite::case_file(&path), &Limits::default()).unwrap()
+    load::load(&discover::case_file(&path), &Limits::default()).unwrap()
 }
 
 fn departures(id: &str, name: &str) -> u64 {
     let s = bundled(id);
-    let foil = suite::rasterizer(name).unwrap();
+    let foil = registry::by_name(name).unwrap();
     assert!(foil.is_foil());
     let r = run(&s, foil.as_ref());
     assert_eq!(run(&s, &Production).verdict, Verdict::Pass, "{id}");

@@ -7,7 +7,7 @@ use dashu_ratio::RBig;
 
 use super::geometry::{minus, ratio, Point};
 use crate::frame::Frame;
-use crate::harness::suite::ReferenceRun;
+use crate::harness::oracle::ReferenceRun;
 use crate::plan::Plan;
 use crate::reference;
 use crate::scene::{Canvas, Effects, Expect, Number, Primitive, Scene};
@@ -161,7 +161,8 @@ mod tests {
     use crate::explore::fuzz::case_json::case_json;
     use crate::explore::fuzz::family::{generate, Family};
     use crate::explore::fuzz::judge::{evaluate, Outcome};
-    use crate::harness::suite::{self, Verdict};
+    use crate::harness::judge::Verdict;
+    use crate::harness::{judge, oracle};
     use crate::rasterizer::Rasterizer;
 
     /// The fairness check's sampler (the static reference at each of the
@@ -215,8 +216,8 @@ mod tests {
                 continue;
             }
             skipped += 1;
-            let reference = suite::run_reference(&scene);
-            let run = suite::run_candidate(&scene, &reference, &Production);
+            let reference = oracle::run_reference(&scene);
+            let run = judge::run_candidate(&scene, &reference, &Production);
             let Verdict::Fail(reasons) = run.verdict else {
                 panic!("production passes a scene refused as unfair: {why}");
             };

@@ -13,8 +13,10 @@ use super::case_json::valid;
 use super::fair::fair_time;
 use super::geometry::{orient, placed, Point};
 use crate::frame::Frame;
+use crate::harness::judge::Verdict;
+use crate::harness::oracle::ReferenceRun;
 use crate::harness::profile;
-use crate::harness::suite::{self, ReferenceRun, Verdict};
+use crate::harness::{judge, oracle, panics};
 use crate::metrics::{Metrics, SampleDiff};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
@@ -202,7 +204,7 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
         Err(panic) => {
             return Outcome::Broken(format!(
                 "the reference panicked: {}",
-                suite::panic_message(&*panic)
+                panics::panic_message(&*panic)
             ))
         }
     };
@@ -236,7 +238,7 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
             }
         }
     }
-    let run = suite::run_candidate(scene, &reference, candidate);
+    let run = judge::run_candidate(scene, &reference, candidate);
     match (run.verdict, run.metrics, run.frame) {
         (Verdict::Pass, ..) => Outcome::Pass,
         (Verdict::Unsupported(why), ..) => Outcome::Unsupported(why),
@@ -271,7 +273,7 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
     let started = Instant::now();
     let plan = Plan::for_scene(scene);
     if plan.motion.is_some() {
-        let run = suite::run_reference(scene);
+        let run = oracle::run_reference(scene);
         match &run.time {
             Some(Err(why)) => return Err(why.clone()),
             Some(Ok(check)) if !check.broken_promises.is_empty() => {
@@ -297,7 +299,7 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
     } else {
         None
     };
-    let areas = suite::area_check(scene);
+    let areas = oracle::area_check(scene);
     Ok(ReferenceRun {
         plan,
         frame,

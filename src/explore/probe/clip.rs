@@ -9,8 +9,7 @@
 //! under both; anything else is named by its nearest combination and
 //! reported inconsistent.
 
-use serde::Serialize;
-
+use super::convention::{conclude, differing, Convention, ConventionProbe};
 use crate::explore::fuzz::{generate, Family};
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -26,24 +25,27 @@ const SCENES: usize = 24;
 const TRIED: u64 = 3000;
 const SEED: u64 = 0xC11F_5EED;
 
-/// What the clipping probe found.
-#[derive(Clone, Debug, Serialize)]
-pub struct ClipProbe {
-    /// "follows each case's", "clip_xy guard-band, clip_z per-sample"
-    /// (fixed), or the nearest combination and why it is not certain.
-    pub finding: String,
-    /// Whether it follows each case's clip conventions.
-    pub follows_case: bool,
-    /// Its own `clip_xy` and `clip_z`, when they are fixed.
-    pub clip_xy: Option<&'static str>,
-    pub clip_z: Option<&'static str>,
-    /// Whether one answer explains every sample of every scene.
-    pub consistent: bool,
-    /// Samples that differ from the reference under each combination,
-    /// per statement: `[stated][combination]`, combinations in the order
-    /// of [`combinations`].
-    pub mismatches: Vec<Vec<usize>>,
-    pub scenes: usize,
+/// What the clipping probe found: `clip_xy` and `clip_z` in the profile.
+pub type ClipProbe = ConventionProbe<ClipRules>;
+
+impl Convention for ClipRules {
+    const FIELDS: [&'static str; 2] = ["clip_xy", "clip_z"];
+    const SCENES: &'static str = "clipping";
+    fn names(self) -> [&'static str; 2] {
+        [self.xy.name(), self.z.name()]
+    }
+}
+
+impl ClipProbe {
+    /// Its own `clip_xy`, when fixed.
+    pub fn clip_xy(&self) -> Option<&'static str> {
+        self.own.map(|[xy, _]| xy)
+    }
+
+    /// Its own `clip_z`, when fixed.
+    pub fn clip_z(&self) -> Option<&'static str> {
+        self.own.map(|[_, z]| z)
+    }
 }
 
 /// The four combinations of `clip_xy` and `clip_z`, under depth clip.
@@ -62,17 +64,6 @@ fn combinations() -> [ClipRules; 4] {
         c(ClipXy::ClipThenSnap, ClipZ::ClipThenSnap),
         c(ClipXy::ClipThenSnap, ClipZ::PerSample),
     ]
-}
-
-fn describe(c: &ClipRules) -> String {
-    format!("clip_xy {}, clip_z {}", c.xy.name(), c.z.name())
-}
-
-/// Samples whose coverage count or owner differ.
-fn differing(a: &Frame, b: &Frame) -> usize {
-    (0..a.coverage.len())
-        .filter(|&i| a.coverage[i] != b.coverage[i] || a.last[i] != b.last[i])
-        .count()
 }
 
 fn draw_reference(scene: &Scene) -> Frame {
@@ -138,48 +129,5 @@ pub fn probe_clip(candidate: &dyn Rasterizer) -> Option<ClipProbe> {
             }
         }
     }
-    if drawn == 0 {
-        return Some(ClipProbe {
-            finding: "unknown: it drew none of the clipping scenes".to_owned(),
-            follows_case: false,
-            clip_xy: None,
-            clip_z: None,
-            consistent: false,
-            mismatches,
-            scenes: scenes.len(),
-        });
-    }
-    let super::verdict::Verdict {
-        follows,
-        fixed,
-        best,
-        nearest,
-    } = super::verdict::verdict(&mismatches, [0, 3]);
-    let (finding, own) = if follows {
-        ("follows each case's clip_xy and clip_z".to_owned(), None)
-    } else if fixed {
-        (
-            format!("its own: {}", describe(&all[best])),
-            Some(all[best]),
-        )
-    } else {
-        (
-            format!(
-                "nearest {} ({} samples differ over {} scenes stated twice); inconsistent",
-                describe(&all[nearest]),
-                mismatches[0][nearest] + mismatches[1][nearest],
-                scenes.len()
-            ),
-            Some(all[nearest]),
-        )
-    };
-    Some(ClipProbe {
-        finding,
-        follows_case: follows,
-        clip_xy: own.map(|c| c.xy.name()),
-        clip_z: own.map(|c| c.z.name()),
-        consistent: follows || fixed,
-        mismatches,
-        scenes: scenes.len(),
-    })
+    Some(conclude(&all, mismatches, drawn > 0, scenes.len()))
 }

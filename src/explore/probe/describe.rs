@@ -1,7 +1,9 @@
 //! The profile in words: its departures from D3D11 and Vulkan as
 //! sentences, the human-readable account `probe` prints, and its JSON.
 
-use super::{Profile, SamplerKind, PROBE_BITS, RULE_NAMES};
+use super::diagnosis::SamplerKind;
+use super::evidence::{PROBE_BITS, RULE_NAMES};
+use super::profile::Profile;
 
 fn rule_index(name: &str) -> usize {
     RULE_NAMES.iter().position(|r| *r == name).unwrap_or(0)

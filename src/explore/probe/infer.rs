@@ -3,16 +3,19 @@
 //! along an axis, the sample position, and the interpolation error. The
 //! scenes are `scenes.rs`'s; sentences about the result are `describe.rs`'s.
 
+use super::diagnosis::{Eighths, CENTRE};
 use crate::frame::Frame;
-use crate::harness::diagnosis::{Eighths, CENTRE};
-use crate::harness::suite::{self, Verdict};
+use crate::harness::judge::Verdict;
+use crate::harness::{judge, oracle, panics};
 use crate::plan::Plan;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::reference;
 use crate::scene::{FillRule, Number, Scene};
 
+use super::evidence::{
+    ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES,
+};
 use super::scenes::{fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri};
-use super::{ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES};
 
 /// Draws a scene, catching panics.
 pub(super) fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError> {
@@ -23,7 +26,7 @@ pub(super) fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, R
     .unwrap_or_else(|panic| {
         Err(RasterError::Failed(format!(
             "panicked: {}",
-            suite::panic_message(&*panic)
+            panics::panic_message(&*panic)
         )))
     })
 }
@@ -296,8 +299,8 @@ pub(super) fn probe_interpolation(candidate: &dyn Rasterizer) -> Vec<Interpolati
     ]
     .iter()
     .map(|s| {
-        let reference = suite::run_reference(s);
-        let run = suite::run_candidate(s, &reference, candidate);
+        let reference = oracle::run_reference(s);
+        let run = judge::run_candidate(s, &reference, candidate);
         let (status, why) = match &run.verdict {
             Verdict::Unsupported(why) => ("unsupported", Some(why.clone())),
             Verdict::Error(why) => ("error", Some(why.clone())),

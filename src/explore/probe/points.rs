@@ -10,33 +10,35 @@
 //! (count and owner) with the reference under each combination, as the
 //! clipping probe does for triangles (`clip.rs`).
 
-use serde::Serialize;
-
+use super::convention::{conclude, differing, Convention, ConventionProbe};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference;
 use crate::scene::{parse_case, FillRule, Limits, PointBounds, PointClip, Scene};
 
-/// What the point probe found.
-#[derive(Clone, Debug, Serialize)]
-pub struct PointProbe {
-    /// "follows each case's clip_points and point_bounds", "its own:
-    /// clip_points guard-band, point_bounds viewport", or the nearest
-    /// combination and why it is not certain.
-    pub finding: String,
-    pub follows_case: bool,
-    /// Its own `clip_points` and `point_bounds`, when they are fixed.
-    pub clip_points: Option<&'static str>,
-    pub point_bounds: Option<&'static str>,
-    /// Whether one answer explains every sample of every scene.
-    pub consistent: bool,
-    /// Samples that differ from the reference under each combination,
-    /// per statement: `[stated][combination]`, combinations in the order
-    /// of [`combinations`].
-    pub mismatches: Vec<Vec<usize>>,
-    /// Scenes drawn (a refused one is skipped).
-    pub scenes: usize,
+/// What the point probe found: `clip_points` and `point_bounds` in the
+/// profile.
+pub type PointProbe = ConventionProbe<(PointClip, PointBounds)>;
+
+impl Convention for (PointClip, PointBounds) {
+    const FIELDS: [&'static str; 2] = ["clip_points", "point_bounds"];
+    const SCENES: &'static str = "point";
+    fn names(self) -> [&'static str; 2] {
+        [self.0.name(), self.1.name()]
+    }
+}
+
+impl PointProbe {
+    /// Its own `clip_points`, when fixed.
+    pub fn clip_points(&self) -> Option<&'static str> {
+        self.own.map(|[points, _]| points)
+    }
+
+    /// Its own `point_bounds`, when fixed.
+    pub fn point_bounds(&self) -> Option<&'static str> {
+        self.own.map(|[_, bounds]| bounds)
+    }
 }
 
 /// The four combinations of `clip_points` and `point_bounds`.
@@ -47,14 +49,6 @@ fn combinations() -> [(PointClip, PointBounds); 4] {
         (PointClip::GuardBand, PointBounds::Canvas),
         (PointClip::GuardBand, PointBounds::Viewport),
     ]
-}
-
-fn describe((points, bounds): (PointClip, PointBounds)) -> String {
-    format!(
-        "clip_points {}, point_bounds {}",
-        points.name(),
-        bounds.name()
-    )
 }
 
 /// The probe's points, as clip coordinates (x, y, w) and sizes: with
@@ -83,13 +77,6 @@ fn scene(i: usize, rule: FillRule, (points, bounds): (PointClip, PointBounds)) -
         bounds.name()
     );
     parse_case(&text, "probe_point.json", &Limits::default()).expect("a valid probe scene")
-}
-
-/// Samples whose coverage count or owner differ.
-fn differing(a: &Frame, b: &Frame) -> usize {
-    (0..a.coverage.len())
-        .filter(|&i| a.coverage[i] != b.coverage[i] || a.last[i] != b.last[i])
-        .count()
 }
 
 /// Probes a rasterizer that draws clip-space points; `None` for one that
@@ -130,49 +117,7 @@ pub fn probe_points(candidate: &dyn Rasterizer) -> Option<PointProbe> {
             }
         }
     }
-    if scenes == 0 {
-        return Some(PointProbe {
-            finding: "unknown: it drew none of the point scenes".to_owned(),
-            follows_case: false,
-            clip_points: None,
-            point_bounds: None,
-            consistent: false,
-            mismatches,
-            scenes,
-        });
-    }
-    let super::verdict::Verdict {
-        follows,
-        fixed,
-        best,
-        nearest,
-    } = super::verdict::verdict(&mismatches, [0, 3]);
-    let (finding, own) = if follows {
-        (
-            "follows each case's clip_points and point_bounds".to_owned(),
-            None,
-        )
-    } else if fixed {
-        (format!("its own: {}", describe(all[best])), Some(all[best]))
-    } else {
-        (
-            format!(
-                "nearest {} ({} samples differ over {scenes} scenes stated twice); inconsistent",
-                describe(all[nearest]),
-                mismatches[0][nearest] + mismatches[1][nearest],
-            ),
-            Some(all[nearest]),
-        )
-    };
-    Some(PointProbe {
-        finding,
-        follows_case: follows,
-        clip_points: own.map(|(p, _)| p.name()),
-        point_bounds: own.map(|(_, b)| b.name()),
-        consistent: follows || fixed,
-        mismatches,
-        scenes,
-    })
+    Some(conclude(&all, mismatches, scenes > 0, scenes))
 }
 
 #[cfg(test)]

@@ -34,8 +34,8 @@
 
 use serde_json::json;
 
+use super::diagnosis::{Sampler, SamplerKind};
 use crate::frame::Frame;
-use crate::harness::diagnosis::{Sampler, SamplerKind};
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::scene::{parse_case, Limits, Scene};
 

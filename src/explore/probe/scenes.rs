@@ -8,7 +8,7 @@ use serde_json::{json, Value};
 
 use crate::scene::{parse_case, Limits, Scene};
 
-use super::PROBE_BITS;
+use super::evidence::PROBE_BITS;
 
 fn scene(value: Value) -> Scene {
     parse_case(&value.to_string(), "probe", &Limits::default())

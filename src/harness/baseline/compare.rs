@@ -5,9 +5,12 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
-use super::{Baseline, Entry, Observed, Tolerances};
+use super::entry::Entry;
+use super::file::Baseline;
+use super::observe::Observed;
+use super::tolerance::Tolerances;
+use crate::harness::discover::CaseFile;
 use crate::harness::runner::Selection;
-use crate::harness::suite::CaseFile;
 
 impl Baseline {
     /// Compares what a run observed with this baseline. Only baseline

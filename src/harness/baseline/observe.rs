@@ -4,9 +4,9 @@
 
 use std::collections::BTreeMap;
 
-use super::{Entry, Value};
+use super::entry::{Entry, Value};
+use crate::harness::judge::CandidateRun;
 use crate::harness::runner::CaseOutcome;
-use crate::harness::suite::CandidateRun;
 use crate::metrics::Metrics;
 
 /// The recorded metrics of one candidate on one case.

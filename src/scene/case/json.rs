@@ -101,7 +101,7 @@ impl<'a> Fields<'a> {
 }
 
 /// The allowed name nearest to `key`, if it is plausibly a misspelling.
-pub(super) fn closest<'n>(key: &str, allowed: &[&'n str]) -> Option<&'n str> {
+pub fn closest<'n>(key: &str, allowed: &[&'n str]) -> Option<&'n str> {
     allowed
         .iter()
         .map(|name| (edit_distance(key, name), *name))

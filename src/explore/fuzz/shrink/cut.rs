@@ -2,7 +2,7 @@
 //! columns (crop and trim), polygon contours and vertices, and paths (moving
 //! vertices made static).
 
-use super::Shrinker;
+use super::state::Shrinker;
 use crate::explore::fuzz::judge::{samples_per_pixel, Kind};
 use crate::scene::{
     Canvas, Interpolation, Number, Polygon, PolygonFill, Primitive, Scene, Triangle,

@@ -5,7 +5,8 @@
 use dashu_int::UBig;
 use dashu_ratio::RBig;
 
-use super::{key, simpler, Shrinker};
+use super::state::Shrinker;
+use super::values::{key, simpler};
 use crate::explore::fuzz::geometry::num;
 use crate::explore::fuzz::judge::samples_per_pixel;
 use crate::reference::exact::snap;

@@ -2,7 +2,8 @@
 //! depth, attributes, w, rules, line options and expectations,
 //! `effects.antialias`, `effects.motion_blur` and `subpixel_bits`.
 
-use super::{coordinates, Edit, Shrinker};
+use super::state::{Edit, Shrinker};
+use super::values::coordinates;
 use crate::explore::fuzz::judge::Kind;
 use crate::reference::exact::snap;
 use crate::scene::rules::limits::MAX_SUBPIXEL_BITS;

@@ -1,7 +1,7 @@
 //! The `case_json` target: arbitrary bytes into the case reader.
 
 use crate::explore::fuzz::case_json::case_json as write_case;
-use crate::harness::suite;
+use crate::harness::oracle;
 use crate::production::Production;
 use crate::rasterizer::{RasterError, Rasterizer};
 use crate::scene::{parse_case, Limits};
@@ -42,7 +42,7 @@ pub fn case_json(data: &[u8]) {
         ),
         Err(e) => panic!("an accepted case, written back, is refused: {e}\n{written}"),
     }
-    let reference = suite::run_reference(&scene);
+    let reference = oracle::run_reference(&scene);
     if Production.capabilities().refuses(&scene).is_some() || reference.time.is_some() {
         return;
     }

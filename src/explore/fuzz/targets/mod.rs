@@ -25,54 +25,19 @@
 //!
 //! [`seeds`] writes each target's seed corpus: the bundled case files, the
 //! tapes of generated cases, and answers built from real frames.
+//!
+//! `by_name.rs` lists the targets and runs one by name.
 
 mod arithmetic;
+mod by_name;
 mod case_file;
 mod response;
 mod scene;
 mod seeds;
 
 pub use arithmetic::exact_arithmetic;
+pub use by_name::{run, TARGETS};
 pub use case_file::case_json;
 pub use response::protocol_response;
 pub use scene::{scene_reference_vs_production, FOUND_BY_SCENE_TARGET};
 pub use seeds::{seeds, write_corpus};
-
-/// The targets, by the names of their files in `fuzz/fuzz_targets/`.
-pub const TARGETS: [&str; 4] = [
-    "case_json",
-    "scene_reference_vs_production",
-    "protocol_response",
-    "exact_arithmetic",
-];
-
-/// Runs target `name` on `data`; `false` for an unknown name.
-pub fn run(name: &str, data: &[u8]) -> bool {
-    match name {
-        "case_json" => case_json(data),
-        "scene_reference_vs_production" => scene_reference_vs_production(data),
-        "protocol_response" => protocol_response(data),
-        "exact_arithmetic" => exact_arithmetic(data),
-        _ => return false,
-    }
-    true
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every seed of every target runs clean: the corpus a campaign starts
-    /// from holds no finding.
-    #[test]
-    fn every_seed_runs_clean() {
-        for name in TARGETS {
-            let seeds = seeds(name, std::path::Path::new("cases"));
-            assert!(seeds.len() >= 8, "{name}: {} seeds", seeds.len());
-            for (file, data) in &seeds {
-                let ran = std::panic::catch_unwind(|| run(name, data));
-                assert!(matches!(ran, Ok(true)), "{name} on seed {file}");
-            }
-        }
-    }
-}

@@ -2,7 +2,8 @@
 //! reference on a scene drawn from a tape of choices.
 
 use crate::explore::fuzz::case_json::case_json;
-use crate::explore::fuzz::{evaluate, scene_from_tape, Outcome};
+use crate::explore::fuzz::family::scene_from_tape;
+use crate::explore::fuzz::judge::{evaluate, Outcome};
 use crate::production::Production;
 
 /// What the target's panic message starts with, so that a test can tell a

@@ -2,8 +2,10 @@
 
 use std::path::Path;
 
+use super::by_name::TARGETS;
 use super::response::{requests, selector, Form};
-use crate::explore::fuzz::{tape_of_case, Family, Rng};
+use crate::explore::fuzz::family::{tape_of_case, Family};
+use crate::explore::fuzz::rng::Rng;
 use crate::frame::Frame;
 use crate::plan::Plan;
 
@@ -188,7 +190,7 @@ fn coverage(frame: &Frame, primitives: usize) -> String {
 /// Writes every target's seeds under `dir/<target>/`; the files written.
 pub fn write_corpus(dir: &Path, cases: &Path) -> Result<usize, String> {
     let mut written = 0;
-    for name in super::TARGETS {
+    for name in TARGETS {
         let folder = dir.join(name);
         std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
         for (file, bytes) in seeds(name, cases) {
@@ -198,4 +200,24 @@ pub fn write_corpus(dir: &Path, cases: &Path) -> Result<usize, String> {
         }
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::explore::fuzz::targets::by_name::run;
+
+    /// Every seed of every target runs clean: the corpus a campaign starts
+    /// from holds no finding.
+    #[test]
+    fn every_seed_runs_clean() {
+        for name in TARGETS {
+            let seeds = seeds(name, std::path::Path::new("cases"));
+            assert!(seeds.len() >= 8, "{name}: {} seeds", seeds.len());
+            for (file, data) in &seeds {
+                let ran = std::panic::catch_unwind(|| run(name, data));
+                assert!(matches!(ran, Ok(true)), "{name} on seed {file}");
+            }
+        }
+    }
 }

@@ -2,10 +2,10 @@
 //! the words for it: the one vocabulary that `probe`'s profile and the
 //! matrix's findings both speak, so that they cannot disagree.
 //!
-//! The decisions are made in `explore::probe` (above this layer); the
-//! matrix is handed them by its caller ([`crate::harness::matrix::build`]
-//! takes the decision function), and says nothing about a row's sampler or
-//! tie rule that is not in its [`Diagnosis`].
+//! The decisions are made in `explore::probe`; the matrix
+//! ([`crate::explore::matrix::build`]) asks probe for them, and says
+//! nothing about a row's sampler or tie rule that is not in its
+//! [`Diagnosis`].
 
 use serde::Serialize;
 

@@ -1,0 +1,58 @@
+//! The profile (`rastercheck-profile/1`): everything a probe found about a
+//! rasterizer, as `probe` writes it and `run --profile` reads it.
+
+use serde::Serialize;
+
+use super::clip::ClipProbe;
+use super::diagnosis::SamplerKind;
+use super::evidence::{InterpolationProbe, MeshEvidence, Resolved};
+use super::points::PointProbe;
+
+/// What a probe found.
+#[derive(Clone, Debug, Serialize)]
+pub struct Profile {
+    pub schema: &'static str,
+    pub tool: crate::report::json::Tool,
+    pub rasterizer: String,
+    /// How it decides coverage: `point`, `area`, `any-coverage` or
+    /// `unknown`. Only for `point` are the fill rule, subpixel bits and
+    /// sample position measured; otherwise they are `null` / "not
+    /// applicable". (Optional in `rastercheck-profile/1`: a profile
+    /// without it was written for a point sampler.)
+    pub sampler: SamplerKind,
+    /// The frames that decided the sampler, in a sentence.
+    pub sampler_evidence: String,
+    /// The rule that explains the most tie samples (`top-left`, ...,
+    /// `all-edges`, or `none` for open edges); `null` when nothing was
+    /// drawn, or when it is not point-sampled.
+    pub fill_rule: Option<String>,
+    /// Whether that rule explains every tie sample.
+    pub fill_rule_consistent: bool,
+    /// One entry per probe mesh.
+    pub fill_rule_evidence: Vec<MeshEvidence>,
+    /// `true` when y points down on screen (a triangle in the top half is
+    /// drawn in the top rows), `false` when up, `null` when unclear.
+    pub y_down: Option<bool>,
+    /// Subpixel bits the rasterizer keeps; `null` when it keeps all the
+    /// case states (`exact`) or when it could not be measured.
+    pub subpixel_bits: Option<u32>,
+    /// "8 bits", "exact", or why it is unknown.
+    pub subpixel: String,
+    /// Bits resolved along x and along y.
+    pub subpixel_resolved: Resolved,
+    /// "centre", "(x, y) in the pixel", "(1, 1) of the pixel, outside it
+    /// ...", "several: ...", "none found" or "not applicable (...)".
+    pub sample_position: String,
+    /// The sample's offset in its pixel, when there is exactly one.
+    pub sample_offset: Option<[f64; 2]>,
+    pub interpolation: Vec<InterpolationProbe>,
+    /// Its clipping (SPEC.md §16.9), when it takes clip space.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clip: Option<ClipProbe>,
+    /// What it does with clip-space points at the sides (SPEC.md §17.2),
+    /// when it draws them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub points: Option<PointProbe>,
+    /// Departures from D3D11 and Vulkan, as sentences.
+    pub departures: Vec<String>,
+}

@@ -1,0 +1,146 @@
+//! [`probe`]: every probe run in turn on one rasterizer, into its profile.
+//!
+//! Every probe draws small scenes built here (no case files) and reads the
+//! frames back; nothing about the rasterizer is assumed or asked:
+//!
+//! - **Sampler, first.** Slivers off every point of the 1/8 lattice, a
+//!   mesh of strips 1/8 px high and a triangle over whole pixels tell a
+//!   point sampler from an area sampler and an any-coverage (conservative)
+//!   one (`sampler.rs` shows why exactly). The fill-rule, subpixel and
+//!   sample-position probes below ask where one point per pixel falls;
+//!   for a rasterizer that is not point-sampled they are not run, and the
+//!   profile says "not applicable" instead of inventing a rule and bits.
+//!   [`diagnose`](super::diagnose) is the sampler, position and tie-rule decision alone: the
+//!   matrix takes its words about a row's sampler and rule from it, so the
+//!   two cannot disagree.
+//! - **Fill rule.** Meshes whose samples lie exactly on shared horizontal,
+//!   vertical and diagonal edges and on fan centres, in several windings
+//!   and draw orders. The reference draws each under all five rules; the
+//!   samples where the rules disagree are the tie samples, and the
+//!   candidate's count and owner there are compared with each rule and with
+//!   "none" (open edges: holes). The rule that explains every tie sample is
+//!   the answer; when none does, the nearest is named and the rule is
+//!   reported inconsistent, with the meshes where it departs.
+//! - **y direction.** A triangle in the top half of the canvas: does it
+//!   appear in the top rows?
+//! - **Subpixel precision.** For k = 1..16, a vertex B of a thin triangle
+//!   is drawn at three consecutive steps p_j → p_j + 2^-k of the 2^-k
+//!   grid (j = 0, 1, 2), each in its own cell whose geometry puts one
+//!   sample exactly on the edge when B is at τ_j = p_j + ⅓·2^-k or
+//!   p_j + ⅔·2^-k: never a dyadic number, so never a rounding boundary or
+//!   a tie, and strictly inside the step. The other vertices lie on the
+//!   2^-k grid and do not move within a step. A rasterizer that keeps
+//!   k bits (and is exact once it has snapped) draws each sample in one
+//!   render of its step and not in the other. One that keeps b < k bits
+//!   moves B to a point of its 2^-b grid less than 2^-b away (truncation,
+//!   rounding with any ties): the four points p_0 … p_3 span 3·2^-k, and
+//!   four distinct grid points 2^-b ≥ 2·2^-k apart cannot lie within 2^-b
+//!   of them, so at least one step is drawn twice the same and its sample
+//!   does not change. The finest k at which every step changes, for every
+//!   k up to it, is therefore exactly the bits kept. The sweep is made
+//!   along x and along y; one that rounds edge positions between vertices
+//!   (tiny-skia rounds each edge's x on its first scanline to 1/64)
+//!   resolves fewer bits along that axis, never more than its grid, so the
+//!   grid is the finer of the two (both are reported). Scenes state 16
+//!   subpixel bits, the most a case can: "exact" means the rasterizer
+//!   keeps all of them.
+//! - **Sample position.** 64 tiny triangles (3/32 px) around the offsets
+//!   (i/8, j/8) of separate pixels, with a margin: the ones drawn say where
+//!   the sample is, from −2 to 3 px, inside the pixel or not. It runs
+//!   before the fill-rule and precision probes, whose scenes are then moved
+//!   by (sample − centre) so that a shifted raster (a sample at (1, 1)) is
+//!   read against the reference's centre samples, not as a wrong rule.
+//! - **Interpolation.** A linear and a perspective mesh (w from 0.1 to 10)
+//!   with depth and two attributes, measured as in `run` (SPEC §6.3).
+//! - **Clipping** (`clip.rs`), for a rasterizer that takes clip space:
+//!   which `clip_xy` and `clip_z` it follows, or whether it follows each
+//!   case's (SPEC §16.9).
+//! - **Points** (`points.rs`), for one that also draws points: whether a
+//!   point whose centre leaves the side planes pops, and whether its
+//!   square is cut at the viewport (`clip_points`, `point_bounds`, SPEC
+//!   §17.2).
+//!
+//! `run --profile FILE` overrides each case's `rules.fill_rule` with the
+//! profile's rule for the rasterizer the profile names (and drops the
+//! case's `expect.samples_covered`, which pins the reference to the case's
+//! own rule); snapping, sample position and interpolation are still judged
+//! against the case as written.
+//!
+
+use super::clip::probe_clip;
+use super::describe::departures;
+use super::diagnose::{diagnose_with_evidence, not_measured};
+use super::evidence::{Resolved, PROBE_BITS};
+use super::infer::{probe_axis, probe_interpolation, probe_y};
+use super::points::probe_points;
+use super::profile::Profile;
+use crate::harness::profile::SCHEMA;
+use crate::rasterizer::Rasterizer;
+
+/// Probes a rasterizer. `Err` when it draws none of the probe scenes.
+pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
+    let (d, evidence) = diagnose_with_evidence(candidate)?;
+    let y_down = probe_y(candidate);
+    let (x_bits, y_bits) = match (not_measured(&d), d.offset) {
+        (None, Some(o)) => (
+            probe_axis(candidate, false, o),
+            probe_axis(candidate, true, o),
+        ),
+        (why, _) => {
+            let why = why.unwrap_or_default();
+            (Err(why.clone()), Err(why))
+        }
+    };
+    let (subpixel_bits, subpixel) = match (&x_bits, &y_bits) {
+        (Ok(x), Ok(y)) => {
+            // A rasterizer cannot resolve finer than its vertex grid along
+            // any axis, but may resolve less along one where it rounds edge
+            // positions between vertices: the grid is the finer of the two.
+            let b = (*x).max(*y);
+            let axes = if x == y {
+                String::new()
+            } else {
+                format!(
+                    " (x {x}, y {y}: edges resolve fewer bits along {} than the vertex grid)",
+                    if x < y { "x" } else { "y" }
+                )
+            };
+            if b >= PROBE_BITS {
+                (None, format!("exact{axes}"))
+            } else {
+                (Some(b), format!("{b} bits{axes}"))
+            }
+        }
+        (Err(e), _) | (_, Err(e)) if e.starts_with("not ") => (None, e.clone()),
+        (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
+    };
+    let interpolation = probe_interpolation(candidate);
+    let mut profile = Profile {
+        schema: SCHEMA,
+        tool: crate::report::json::Tool {
+            name: "rastercheck",
+            version: env!("CARGO_PKG_VERSION"),
+        },
+        rasterizer: candidate.name().to_owned(),
+        sampler: d.sampler.kind,
+        sampler_evidence: d.sampler.evidence,
+        fill_rule: d.fill_rule,
+        fill_rule_consistent: d.fill_rule_consistent,
+        fill_rule_evidence: evidence,
+        y_down,
+        subpixel_bits,
+        subpixel,
+        subpixel_resolved: Resolved {
+            x: x_bits.ok(),
+            y: y_bits.ok(),
+        },
+        sample_position: d.sample_position,
+        sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
+        interpolation,
+        clip: probe_clip(candidate),
+        points: probe_points(candidate),
+        departures: Vec::new(),
+    };
+    profile.departures = departures(&profile);
+    Ok(profile)
+}

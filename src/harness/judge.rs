@@ -1,0 +1,373 @@
+//! One candidate on one case: its frame judged against the reference's
+//! answer (under the conventions it declares it follows), as a [`Verdict`]
+//! with metrics, and a one-line summary of them.
+
+use std::time::{Duration, Instant};
+
+use super::oracle::{catch_oracle_run, primitive_areas, run_reference_planned, ReferenceRun};
+use super::panics::pass_on_deadline;
+use super::profile::{cannot_judge_under, OwnConventions};
+use crate::frame::Frame;
+use crate::metrics::{self, Metrics};
+use crate::rasterizer::{RasterError, Rasterizer};
+use crate::scene::{ClipRules, FillRule, Scene};
+
+/// How a candidate did on a case.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
+    Pass,
+    Fail(Vec<String>),
+    Unsupported(String),
+    /// The rasterizer broke (crashed, or returned an error).
+    Error(String),
+}
+
+impl Verdict {
+    /// The name a verdict is recorded under in reports and baselines;
+    /// a foil's failure is a `foil` departure.
+    pub fn recorded_name(&self, foil: bool) -> &'static str {
+        match self {
+            Verdict::Pass => "pass",
+            Verdict::Fail(_) if foil => "foil",
+            Verdict::Fail(_) => "fail",
+            Verdict::Unsupported(_) => "unsupported",
+            Verdict::Error(_) => "error",
+        }
+    }
+
+    pub fn label(&self) -> &'static str {
+        match self {
+            Verdict::Pass => "PASS",
+            Verdict::Fail(_) => "FAIL",
+            Verdict::Unsupported(_) => "UNSUPPORTED",
+            Verdict::Error(_) => "ERROR",
+        }
+    }
+}
+
+/// One candidate on one case.
+pub struct CandidateRun {
+    pub rasterizer: String,
+    pub verdict: Verdict,
+    pub metrics: Option<Metrics>,
+    pub frame: Option<Frame>,
+    pub elapsed: Duration,
+    /// The frame's [`Frame::method`], kept when the frame is released.
+    pub method: Option<&'static str>,
+    /// The rule it was judged under, when that is not the case's: the
+    /// rasterizer follows a fill rule of its own
+    /// ([`Rasterizer::fixed_fill_rule`]).
+    pub judged_rule: Option<FillRule>,
+    /// The clip conventions it was judged under, when they are not the
+    /// case's ([`Rasterizer::fixed_clip_rules`]).
+    pub judged_clip: Option<ClipRules>,
+}
+
+impl CandidateRun {
+    pub fn without_frame(rasterizer: String, verdict: Verdict, elapsed: Duration) -> CandidateRun {
+        CandidateRun {
+            rasterizer,
+            verdict,
+            metrics: None,
+            frame: None,
+            elapsed,
+            method: None,
+            judged_rule: None,
+            judged_clip: None,
+        }
+    }
+}
+
+pub fn run_candidate(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    candidate: &dyn Rasterizer,
+) -> CandidateRun {
+    let started = Instant::now();
+    if let Some(why) = candidate.capabilities().refuses(scene) {
+        return CandidateRun::without_frame(
+            candidate.name().to_owned(),
+            Verdict::Unsupported(why),
+            started.elapsed(),
+        );
+    }
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        candidate.rasterize(scene, &reference.plan)
+    }));
+    let elapsed = started.elapsed();
+    let name = candidate.name().to_owned();
+    let frame = match result {
+        Ok(Ok(frame)) => frame,
+        Ok(Err(RasterError::Unsupported(why))) => {
+            return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed)
+        }
+        Ok(Err(RasterError::Failed(why))) => {
+            return CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
+        }
+        Err(panic) => {
+            let why = pass_on_deadline(panic, "panicked");
+            return CandidateRun::without_frame(name, Verdict::Error(why), elapsed);
+        }
+    };
+    // A rasterizer that cannot follow the case's fill rule (or, in clip
+    // space, its clip conventions) is judged under the ones it follows,
+    // against the reference drawn under them.
+    let own = OwnConventions::of(candidate, scene);
+    if own.any() {
+        if let Some(why) = own
+            .fill_rule
+            .and_then(|rule| cannot_judge_under(scene, rule))
+        {
+            return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
+        }
+        let under = own.restate(scene);
+        // Restating changes rules only, never what the plan reads.
+        let reference = catch_oracle_run(|| run_reference_planned(&under, reference.plan.clone()));
+        let mut run = match reference {
+            Ok(reference) => judge(&under, &reference, frame, name, elapsed),
+            Err(why) => {
+                let why = format!(
+                    "the reference under {} it follows failed: {why}",
+                    own.describe()
+                );
+                CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
+            }
+        };
+        run.judged_rule = own.fill_rule;
+        run.judged_clip = own.clip;
+        return run;
+    }
+    judge(scene, reference, frame, name, elapsed)
+}
+
+/// Judges a candidate's frame against the reference's answer.
+fn judge(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    frame: Frame,
+    name: String,
+    elapsed: Duration,
+) -> CandidateRun {
+    if let Some(why) = shape_problem(&reference.frame, &frame) {
+        let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
+        return CandidateRun {
+            rasterizer: name,
+            verdict: Verdict::Error(why),
+            metrics: None,
+            method: frame.method,
+            frame: Some(frame),
+            elapsed,
+            judged_rule: None,
+            judged_clip: None,
+        };
+    }
+    // The oracle's exact areas, computed once with the reference's frame;
+    // their failure is the reference's, reported on the case.
+    let (areas, broken_oracle) = match &reference.areas {
+        Some(Ok(check)) => (Some(check), None),
+        Some(Err(why)) => (None, Some(why.clone())),
+        None => (None, None),
+    };
+    // Likewise the certified time coverage of a moving scene.
+    let (time, broken_time_oracle) = match &reference.time {
+        Some(Ok(check)) => (Some(check), None),
+        Some(Err(why)) => (None, Some(why.clone())),
+        None => (None, None),
+    };
+    // An area method that gives each primitive's coverage is judged per
+    // primitive too, against areas computed here, for it alone.
+    let part_areas = frame
+        .parts
+        .as_ref()
+        .filter(|_| areas.is_some())
+        .map(|_| primitive_areas(scene));
+    let known = metrics::Known {
+        interior: reference.interior.as_deref(),
+        classes: areas.as_ref().map(|a| a.classes.as_slice()),
+        whole_time: time.map(|t| t.whole.as_slice()),
+        part_areas: part_areas.as_deref(),
+        depth_allowed: reference.depth_allowed.as_deref(),
+    };
+    let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
+    // Without the oracle's values there is nothing to measure against: the
+    // one reason is the oracle's failure.
+    let mut failures = if broken_time_oracle.is_some() {
+        Vec::new()
+    } else {
+        metrics::failures(scene, &reference.frame, &m)
+    };
+    if let Some(check) = &areas {
+        failures.extend(check.broken_promises.iter().cloned());
+    }
+    failures.extend(broken_oracle);
+    if let Some(check) = time {
+        failures.extend(check.broken_promises.iter().cloned());
+    }
+    failures.extend(broken_time_oracle);
+    let verdict = if failures.is_empty() {
+        Verdict::Pass
+    } else {
+        Verdict::Fail(failures)
+    };
+    CandidateRun {
+        rasterizer: name,
+        verdict,
+        metrics: Some(m),
+        method: frame.method,
+        frame: Some(frame),
+        elapsed,
+        judged_rule: None,
+        judged_clip: None,
+    }
+}
+
+/// Why a candidate's frame cannot be compared with the reference's, if it
+/// cannot: another canvas, other samples or channels; for a scene in which
+/// something moves, anything but a time-only frame (one time coverage per
+/// pixel, no sample slots), and time coverage for any other scene.
+pub fn shape_problem(reference: &Frame, frame: &Frame) -> Option<String> {
+    if (frame.width, frame.height) != (reference.width, reference.height) {
+        return Some(format!(
+            "{}×{} for a {}×{} canvas",
+            frame.width, frame.height, reference.width, reference.height
+        ));
+    }
+    if reference.time.is_some() {
+        let time_only = frame.samples == 0
+            && frame.sample_count() == 0
+            && frame.last.is_empty()
+            && frame.resolved.is_none()
+            && frame.depth.is_none()
+            && frame.attributes.is_empty();
+        return match &frame.time {
+            None => Some(
+                "a scene in which something moves needs a time coverage per pixel".to_owned(),
+            ),
+            Some(t) if t.len() != frame.pixel_count() => Some(format!(
+                "{} time coverages for {} pixels",
+                t.len(),
+                frame.pixel_count()
+            )),
+            Some(_) if !time_only => Some(
+                "a scene in which something moves is judged on time coverage only: its frame has no sample slots, resolved coverage, depth or attributes".to_owned(),
+            ),
+            Some(_) => None,
+        };
+    }
+    if frame.time.is_some() {
+        return Some("time coverage for a scene in which nothing moves".to_owned());
+    }
+    let samples_only_resolved = frame.samples == 0 && reference.resolved.is_some();
+    // Coverage only (SPEC.md §12.9): no depth and no attributes, whatever
+    // the plan asks.
+    let values_not_given = samples_only_resolved
+        || frame.coverage_only && frame.depth.is_none() && frame.attributes.is_empty();
+    let wrong = !(frame.samples == reference.samples || samples_only_resolved)
+        || frame.resolved.is_some() != reference.resolved.is_some()
+        || frame
+            .resolved
+            .as_ref()
+            .is_some_and(|r| r.len() != frame.pixel_count())
+        || frame.sample_count() != frame.pixel_count() * frame.samples as usize
+        || frame.attributes.len() != reference.attributes.len() && !values_not_given
+        || frame.depth.is_some() != reference.depth.is_some() && !values_not_given;
+    wrong.then(|| {
+        format!(
+            "{} for the reference's {}",
+            channels(frame),
+            channels(reference)
+        )
+    })
+}
+
+/// What a frame holds, in words, for [`shape_problem`].
+fn channels(frame: &Frame) -> String {
+    let mut out = format!(
+        "{} samples per pixel, {} attributes",
+        frame.samples,
+        frame.attributes.len()
+    );
+    if frame.depth.is_some() {
+        out.push_str(", depth");
+    }
+    if frame.resolved.is_some() {
+        out.push_str(", resolved coverage");
+    }
+    out
+}
+
+/// A one-line summary of a candidate's metrics.
+pub fn describe(run: &CandidateRun) -> String {
+    let Some(m) = &run.metrics else {
+        return match &run.verdict {
+            Verdict::Unsupported(why) | Verdict::Error(why) => why.clone(),
+            _ => String::new(),
+        };
+    };
+    let c = &m.coverage;
+    let mut parts = vec![if m.time.is_some() {
+        "time coverage only".to_owned()
+    } else if !c.has_mask() {
+        "no samples (resolved coverage only)".to_owned()
+    } else if c.mismatched() == 0 {
+        format!(
+            "coverage {}/{} samples exact",
+            c.candidate_covered, c.samples
+        )
+    } else {
+        format!(
+            "coverage {} missing, {} extra, {} wrong owner of {} covered",
+            c.missing, c.extra, c.wrong_owner, c.reference_covered
+        )
+    }];
+    if let Some(w) = &m.watertight {
+        parts.push(format!(
+            "watertight: {} holes, {} overdraw in {} interior",
+            w.holes, w.overdraw, w.interior
+        ));
+    }
+    if let Some(l) = &m.lines {
+        parts.push(format!(
+            "{} midpoint lines, {} crowded steps",
+            l.lines, l.crowded_steps
+        ));
+    }
+    if let Some(aa) = &m.antialias {
+        parts.push(format!(
+            "aa max err {:.2e} edge rms {:.2e} (bias {:+.1e}) over {} edge pixels, {} piglit violations",
+            aa.max_error, aa.rms_edge, aa.bias_edge, aa.edge_pixels, aa.piglit_violations
+        ));
+        if let Some(p) = &aa.primitives {
+            parts.push(format!(
+                "per primitive: max err {:.2e} over {} primitive-pixels, {} over the bound, {} not exact",
+                p.max_error, p.judged, p.over_bound, p.exactness_violations
+            ));
+        }
+    }
+    if let Some(t) = &m.time {
+        let efficiency = t
+            .efficiency()
+            .map(|e| format!(", sample test efficiency {:.1}%", e * 100.0))
+            .unwrap_or_default();
+        parts.push(format!(
+            "time max err {:.2e} at ({}, {}) rms {:.2e} (bias {:+.1e}) over {} moving pixels{efficiency}",
+            t.max_error, t.worst_pixel[0], t.worst_pixel[1], t.rms_moving, t.bias_moving, t.moving_pixels
+        ));
+    }
+    if let Some(worst) = m
+        .channels
+        .iter()
+        .max_by(|a, b| (a.max_abs / a.allowed_abs).total_cmp(&(b.max_abs / b.allowed_abs)))
+    {
+        let rms = m.channels.iter().map(|ch| ch.rms).fold(0.0, f64::max);
+        parts.push(format!(
+            "interp max {:.2e} ({:.1} ulp, {}) rms {:.1e} over {} channels",
+            worst.max_abs,
+            worst.max_ulp,
+            worst.channel,
+            rms,
+            m.channels.len()
+        ));
+    }
+    parts.join(" · ")
+}
