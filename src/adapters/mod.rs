@@ -73,11 +73,11 @@ pub fn by_name(name: &str) -> Option<Box<dyn Rasterizer>> {
     }
     #[cfg(feature = "gl")]
     if name == gl::NAME {
-        return Some(Box::new(gl::Gl));
+        return Some(Box::new(gl::Gl { softpipe: false }));
     }
     #[cfg(feature = "gl")]
     if name == gl::SOFTPIPE {
-        return Some(Box::new(gl::Softpipe));
+        return Some(Box::new(gl::Gl { softpipe: true }));
     }
     match name {
         #[cfg(feature = "tiny-skia")]

@@ -9,8 +9,8 @@ use glow::HasContext;
 use khronos_egl as egl;
 
 use super::clip::{self, ProvokingFn};
-use super::depth;
-use super::msaa::{self, Fetch};
+use super::fetch::{self, Fetch};
+use super::offset_clamp;
 use super::samples::{self, DriverSamples};
 use super::shaders::program;
 use crate::adapters::gpu::GROUPS;
@@ -97,7 +97,7 @@ pub(super) struct GlContext {
     /// `glPolygonOffsetClamp` (GL 4.6, ARB_polygon_offset_clamp) or
     /// `glPolygonOffsetClampEXT`, where the context offers one: a depth
     /// bias with a clamp needs it (`depth.rs`).
-    pub(super) offset_clamp: Option<depth::OffsetClampFn>,
+    pub(super) offset_clamp: Option<offset_clamp::OffsetClampFn>,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -175,13 +175,13 @@ impl GlContext {
         let (renderer, version, point_range, point_granularity, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let offset_clamp = depth::offset_clamp(&gl, |name| egl.get_proc_address(name));
+            let offset_clamp = offset_clamp::offset_clamp(&gl, |name| egl.get_proc_address(name));
             let mut point_range = [0f32; 2];
             gl.get_parameter_f32_slice(glow::POINT_SIZE_RANGE, &mut point_range);
             let point_granularity = gl.get_parameter_f32(glow::POINT_SIZE_GRANULARITY);
             let made =
                 set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
-                    let fetch = msaa::fetch(&gl)?;
+                    let fetch = fetch::fetch(&gl)?;
                     let offered = samples::query(&gl, multisample)?;
                     // SAFETY: glClipControl(GLenum, GLenum) is this entry
                     // point's signature.

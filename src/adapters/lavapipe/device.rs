@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use crate::scene::{Cull, Interpolation};
 
-use super::pipelines::Unpack;
+use super::unpack::Unpack;
 
 /// What to install when no adapter is found.
 const INSTALL_HINT: &str =
