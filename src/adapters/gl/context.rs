@@ -13,7 +13,7 @@ use super::fetch::{self, Fetch};
 use super::offset_clamp;
 use super::samples::{self, DriverSamples};
 use super::shaders::program;
-use crate::adapters::gpu::GROUPS;
+use crate::adapters::gpu::{self, GROUPS};
 use crate::rasterizer::RasterError;
 use crate::scene::Interpolation;
 
@@ -107,6 +107,7 @@ unsafe impl Send for GlContext {}
 
 impl GlContext {
     fn new() -> Result<GlContext, String> {
+        gpu::quiet_mesa();
         // SAFETY: loading libEGL runs its initialisers, as any EGL program does.
         let egl = unsafe { Egl::load_required() }
             .map_err(|e| format!("no EGL 1.5 library (libEGL.so.1): {INSTALL_HINT} ({e})"))?;

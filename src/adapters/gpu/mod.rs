@@ -4,7 +4,8 @@
 //! attachment's state and read-back (`depth.rs`), the WGSL of the two
 //! Vulkan adapters (`wgsl.rs`), what a driver cannot be handed of a
 //! clip-space scene (`clip.rs`), what they draw and the target size
-//! (`acceptance.rs`), and the channels they write (`channels.rs`).
+//! (`acceptance.rs`), the channels they write (`channels.rs`), and
+//! Mesa's environment noise quieted where they start it (`mesa_noise.rs`).
 //!
 //! Positions are snapped exactly to the case's grid, rounded once to f32,
 //! and mapped to clip space over a power-of-two target, on which the
@@ -19,6 +20,7 @@ mod channels;
 mod clip;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 pub(crate) mod depth;
+mod mesa_noise;
 mod passes;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 pub(crate) mod points;
@@ -41,3 +43,4 @@ pub(crate) use time::time_draws;
 pub(crate) use acceptance::{capabilities, snapping_bits, target_size};
 #[allow(unused_imports)] // not every adapter reads each
 pub(crate) use channels::{groups, CHANNELS, GROUPS, MAX_ATTRIBUTES};
+pub(crate) use mesa_noise::quiet_mesa;
