@@ -234,6 +234,9 @@ fn baseline_check(
                 if let Err(exit) = super::environment_for(run) {
                     return exit;
                 }
+                if let Err(exit) = super::startable(run) {
+                    return exit;
+                }
                 candidates.push(r)
             }
             None if names.is_empty() => {

@@ -148,14 +148,13 @@ pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> 
         Exit::BadInput
     })?;
     environment_for(name)?;
+    startable(name)?;
     Ok(found)
 }
 
 /// Bad usage in the environment a rasterizer reads (an external program's
-/// `RASTERCHECK_EXTERNAL_TIMEOUT`), or an external program that cannot
-/// start: `Err` (already printed) when malformed.
+/// `RASTERCHECK_EXTERNAL_TIMEOUT`): `Err` (already printed) when malformed.
 pub(crate) fn environment_for(name: &str) -> Result<(), Exit> {
-    let given = name;
     let name = crate::adapters::external::split_name(name).map_or(name, |(_, spec)| spec);
     if !name.trim_start().starts_with("external") {
         return Ok(());
@@ -163,10 +162,14 @@ pub(crate) fn environment_for(name: &str) -> Result<(), Exit> {
     crate::adapters::external::check_environment().map_err(|e| {
         eprintln!("error: {e}");
         Exit::BadInput
-    })?;
-    // A program that cannot start is said once, before any case runs.
-    crate::adapters::external::preflight(given).map_err(|e| {
-        eprintln!("error: -r {given}: {e}");
+    })
+}
+
+/// An external program that cannot start (`adapters::external::preflight`):
+/// `Err` (already printed, once, before any case runs) when it cannot.
+pub(crate) fn startable(name: &str) -> Result<(), Exit> {
+    crate::adapters::external::preflight(name).map_err(|e| {
+        eprintln!("error: -r {name}: {e}");
         Exit::BadInput
     })
 }
