@@ -29,8 +29,7 @@ mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_prepared_draws_as_rasterize, assert_probe_diagnosis, assert_refuses_lines_and_unsnapped,
-    bundled_ids, record_every_triangle_case, square_of, SlotsReversed, INTERPOLATION, TIE_CASES,
-    WINDING_CASES,
+    bundled_ids, record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
 };
 use common::sample_drivers::{
     assert_each_probe_lights_its_slot, assert_reversed_slots_fail, probe_scene, STANDARD_4,

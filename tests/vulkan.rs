@@ -20,13 +20,13 @@ const VULKAN: Vulkan = Vulkan { passes_only: false };
 mod common;
 use common::adapters::{
     assert_each, assert_interpolation_within_the_bound, assert_judges_at_least_85_percent,
-    assert_probe_diagnosis, assert_wrong_instants_fail, bundled_ids, SlotsReversed, INTERPOLATION,
-    TIE_CASES, WINDING_CASES,
+    assert_probe_diagnosis, assert_wrong_instants_fail, bundled_ids, INTERPOLATION, TIE_CASES,
+    WINDING_CASES,
 };
 use common::sample_drivers::{
     assert_each_probe_lights_its_slot, assert_reversed_slots_fail, probe_scene, STANDARD_4,
 };
-use common::{case, inline, report, sample_name};
+use common::{case, inline, report};
 
 /// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
 /// and fails under CI.
