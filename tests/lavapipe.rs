@@ -13,16 +13,12 @@ use rastercheck::scene::Scene;
 
 /// Whether lavapipe is here; prints why not once per test.
 fn available() -> bool {
-    match lavapipe::adapter_description() {
-        Ok(description) => {
-            eprintln!("lavapipe adapter: {description}");
-            true
-        }
-        Err(why) => {
-            common::adapters::skipped("Vulkan adapter", "mesa-vulkan-drivers libvulkan1", &why);
-            false
-        }
-    }
+    common::adapters::driver_here(
+        "lavapipe",
+        lavapipe::adapter_description(),
+        "Vulkan adapter",
+        "mesa-vulkan-drivers libvulkan1",
+    )
 }
 
 mod common;

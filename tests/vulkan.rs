@@ -31,16 +31,12 @@ use common::{case, inline, report};
 /// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
 /// and fails under CI.
 fn available() -> bool {
-    match vulkan::device_description() {
-        Ok(description) => {
-            eprintln!("vulkan adapter: {description}");
-            true
-        }
-        Err(why) => {
-            common::adapters::skipped("Vulkan device", "libvulkan1 mesa-vulkan-drivers", &why);
-            false
-        }
-    }
+    common::adapters::driver_here(
+        "vulkan",
+        vulkan::device_description(),
+        "Vulkan device",
+        "libvulkan1 mesa-vulkan-drivers",
+    )
 }
 
 fn run(scene: &Scene) -> (suite::ReferenceRun, suite::CandidateRun) {
