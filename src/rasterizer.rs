@@ -54,6 +54,23 @@ impl Capabilities {
         }
     }
 
+    /// Nothing at all: the base a rasterizer that takes little names what
+    /// it takes on, `Capabilities { triangles: true, ..Capabilities::none() }`.
+    pub fn none() -> Capabilities {
+        Capabilities {
+            triangles: false,
+            ideal_geometry: false,
+            attributes: false,
+            depth: false,
+            polygons: false,
+            antialias: false,
+            motion_blur: false,
+            clip_space: false,
+            depth_attachment: false,
+            points: false,
+        }
+    }
+
     /// Why a scene asks for more than these capabilities, if it does.
     /// The harness checks this before it calls a rasterizer.
     pub fn refuses(&self, scene: &Scene) -> Option<String> {

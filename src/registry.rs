@@ -290,14 +290,14 @@ fn lavapipe() -> Option<Box<dyn Rasterizer>> {
 
 fn gl() -> Option<Box<dyn Rasterizer>> {
     #[cfg(feature = "gl")]
-    return boxed(crate::adapters::gl::Gl);
+    return boxed(crate::adapters::gl::Gl { softpipe: false });
     #[cfg(not(feature = "gl"))]
     None
 }
 
 fn softpipe() -> Option<Box<dyn Rasterizer>> {
     #[cfg(feature = "gl")]
-    return boxed(crate::adapters::gl::Softpipe);
+    return boxed(crate::adapters::gl::Gl { softpipe: true });
     #[cfg(not(feature = "gl"))]
     None
 }

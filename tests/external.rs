@@ -360,28 +360,80 @@ fn a_fragment_outside_the_canvas_is_an_error() {
 }
 
 #[test]
-fn a_missing_program_cannot_start_and_says_so() {
+fn a_missing_program_cannot_start_and_says_so_once() {
     let dir = scratch("missing-program");
     std::fs::create_dir_all(dir.join("cases")).unwrap();
     std::fs::write(dir.join("cases/easy.json"), EASY).unwrap();
+    std::fs::write(
+        dir.join("cases/easy_too.json"),
+        EASY.replace("\"easy\"", "\"easy_too\""),
+    )
+    .unwrap();
     for name in [
         "external:/no/such/rasterizer --fast",
         "external-persistent:/no/such/rasterizer",
+        "mine=external:/no/such/rasterizer",
     ] {
-        let out = rastercheck(&dir, &["run", "cases", "-r", name], &[]);
+        let out = rastercheck(&dir, &["run", "cases", "-r", name, "--report", "rep"], &[]);
         let t = text(&out);
-        assert_eq!(out.status.code(), Some(1), "{t}");
-        let line = line_of(&t, "easy", name);
-        assert!(line.starts_with("ERROR"), "{t}");
-        assert!(
-            line.contains("cannot start \"/no/such/rasterizer\": No such file or directory"),
-            "{t}"
+        // Bad usage, said once before any case runs, with no report.
+        assert_eq!(out.status.code(), Some(2), "{t}");
+        assert_eq!(
+            t.trim(),
+            format!(
+                "error: -r {name}: cannot start /no/such/rasterizer: No such file or directory"
+            ),
         );
+        assert!(!dir.join("rep").exists(), "{t}");
     }
+    // A bare name is looked for on PATH.
+    let out = rastercheck(
+        &dir,
+        &["run", "cases", "-r", "external:no-such-rasterizer-here"],
+        &[],
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(
+        text(&out).contains(
+            "cannot start no-such-rasterizer-here: No such file or directory (not found on PATH)"
+        ),
+        "{}",
+        text(&out)
+    );
     // No program at all is not a rasterizer name.
     let out = rastercheck(&dir, &["run", "cases", "-r", "external:  "], &[]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     assert!(text(&out).contains("unknown rasterizer"), "{}", text(&out));
+}
+
+#[test]
+fn a_file_that_is_not_executable_cannot_start_and_says_so_once() {
+    let dir = scratch("not-executable");
+    std::fs::create_dir_all(dir.join("cases")).unwrap();
+    std::fs::write(dir.join("cases/easy.json"), EASY).unwrap();
+    std::fs::write(dir.join("raster.sh"), "#!/bin/sh\nexit 0\n").unwrap();
+    for name in ["external:./raster.sh", "external-persistent:./raster.sh"] {
+        for command in [&["run", "cases", "-r", name][..], &["probe", "-r", name]] {
+            let out = rastercheck(&dir, command, &[]);
+            let t = text(&out);
+            assert_eq!(out.status.code(), Some(2), "{command:?}: {t}");
+            assert_eq!(
+                t.trim(),
+                format!(
+                    "error: -r {name}: cannot start ./raster.sh: Permission denied (the file \
+                     is not executable)"
+                ),
+                "{command:?}"
+            );
+        }
+    }
+    let out = rastercheck(&dir, &["run", "cases", "-r", "external:./cases"], &[]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(
+        text(&out).contains("cannot start ./cases: Is a directory"),
+        "{}",
+        text(&out)
+    );
 }
 
 #[test]

@@ -9,29 +9,27 @@ use std::path::Path;
 use rastercheck::adapters::lavapipe::{self, Lavapipe, STANDARD_4X};
 use rastercheck::harness::judge::{CandidateRun, Verdict};
 use rastercheck::harness::{judge, oracle};
-use rastercheck::plan::SamplePlan;
+use rastercheck::plan::{Plan, SamplePlan};
 use rastercheck::scene::Scene;
 
 /// Whether lavapipe is here; prints why not once per test.
 fn available() -> bool {
-    match lavapipe::adapter_description() {
-        Ok(description) => {
-            eprintln!("lavapipe adapter: {description}");
-            true
-        }
-        Err(why) => {
-            common::adapters::skipped("Vulkan adapter", "mesa-vulkan-drivers libvulkan1", &why);
-            false
-        }
-    }
+    common::adapters::driver_here(
+        "lavapipe",
+        lavapipe::adapter_description(),
+        "Vulkan adapter",
+        "mesa-vulkan-drivers libvulkan1",
+    )
 }
 
 mod common;
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_prepared_draws_as_rasterize, assert_probe_diagnosis, assert_refuses_lines_and_unsnapped,
-    bundled_ids, record_every_triangle_case, square_of, SlotsReversed, INTERPOLATION, TIE_CASES,
-    WINDING_CASES,
+    bundled_ids, record_every_triangle_case, square_of, INTERPOLATION, TIE_CASES, WINDING_CASES,
+};
+use common::sample_drivers::{
+    assert_each_probe_lights_its_slot, assert_reversed_slots_fail, probe_scene, STANDARD_4,
 };
 use common::{case, inline, mismatched_samples, report, sample_name};
 
@@ -280,33 +278,6 @@ fn standard_4x_masks_equal_the_references_sample_by_sample() {
 /// standard location of sample i, in pixel (i, 0), for each i: the centre
 /// is on the squares' shared diagonal, which the top-left rule gives to one
 /// of them, and the square reaches no other sample.
-fn probe_scene() -> Scene {
-    let mut triangles = Vec::new();
-    for (i, [sx, sy]) in STANDARD_4X.iter().enumerate() {
-        let (cx, cy) = (i as f64 + f64::from(*sx) / 16.0, f64::from(*sy) / 16.0);
-        let (l, r, t, b) = (
-            cx - 1.0 / 32.0,
-            cx + 1.0 / 32.0,
-            cy - 1.0 / 32.0,
-            cy + 1.0 / 32.0,
-        );
-        triangles.push(format!(
-            r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#
-        ));
-        triangles.push(format!(
-            r#"{{"triangle": [[{l}, {t}], [{r}, {b}], [{l}, {b}]]}}"#
-        ));
-    }
-    inline(&format!(
-        r#"{{"name": "probe", "canvas": {{"width": 4, "height": 1}},
-            "rules": {{"subpixel_bits": 8}},
-            "effects": {{"antialias": {{"samples": 4, "pattern": "standard"}}}},
-            "primitives": [{}],
-            "expect": {{"max_coverage_error": 0.25, "max_coverage_rms": 0.25}}}}"#,
-        triangles.join(", ")
-    ))
-}
-
 /// The readback's slot order and lavapipe's sample positions: a tiny square
 /// on standard location i lights exactly slot i of its pixel and nothing
 /// else, so sample index i of the driver is standard location i, slot i.
@@ -315,24 +286,18 @@ fn a_probe_on_each_standard_location_lights_exactly_that_slot() {
     if !available() {
         return;
     }
-    let scene = probe_scene();
-    let (reference, run) = run(&scene);
+    // The probe's squares sit on Vulkan's standard 4× table.
+    let offsets = Plan::for_scene(&probe_scene(STANDARD_4, 4))
+        .antialias
+        .unwrap()
+        .offsets;
+    assert_eq!(offsets, STANDARD_4X.map(|p| p.map(|c| c << 4)));
+    let (_, run) = assert_each_probe_lights_its_slot(&Lavapipe, STANDARD_4, 4);
     let frame = run.frame.as_ref().expect("lavapipe drew a frame");
-    let lit: Vec<String> = (0..frame.sample_count())
-        .filter(|&i| frame.coverage[i] > 0)
-        .map(|i| sample_name(frame, i))
-        .collect();
-    assert_eq!(lit, ["(0,0)#0", "(1,0)#1", "(2,0)#2", "(3,0)#3"]);
     for i in 0..4 {
         assert_eq!(frame.coverage[i * 4 + i], 1, "sample {i}");
     }
     assert_eq!(frame.resolved, Some(vec![0.25; 4]));
-    assert_eq!(
-        run.verdict,
-        Verdict::Pass,
-        "{}",
-        report("probe", &reference, &run)
-    );
 }
 
 /// The comparison has teeth: the same frames with each pixel's slots
@@ -344,7 +309,7 @@ fn a_readback_in_the_wrong_slot_order_fails() {
         return;
     }
     for (id, scene) in [
-        ("probe", probe_scene()),
+        ("probe", probe_scene(STANDARD_4, 4)),
         (
             "antialias/probe_standard4",
             case("antialias/probe_standard4"),
@@ -358,9 +323,7 @@ fn a_readback_in_the_wrong_slot_order_fails() {
             "{}",
             report(id, &reference, &right)
         );
-        let wrong = judge::run_candidate(&scene, &reference, &SlotsReversed(&Lavapipe));
-        eprintln!("{}", report(id, &reference, &wrong));
-        assert!(matches!(wrong.verdict, Verdict::Fail(_)), "{id}");
+        let (reference, wrong) = assert_reversed_slots_fail(&Lavapipe, id, &scene);
         let frame = wrong.frame.as_ref().unwrap();
         // Slots 0 and 3, 1 and 2 trade places: every covered sample moves.
         let moved = mismatched_samples(&reference.frame, frame).len();

@@ -21,24 +21,23 @@ const VULKAN: Vulkan = Vulkan { passes_only: false };
 mod common;
 use common::adapters::{
     assert_each, assert_interpolation_within_the_bound, assert_judges_at_least_85_percent,
-    assert_probe_diagnosis, assert_wrong_instants_fail, bundled_ids, SlotsReversed, INTERPOLATION,
-    TIE_CASES, WINDING_CASES,
+    assert_probe_diagnosis, assert_wrong_instants_fail, bundled_ids, INTERPOLATION, TIE_CASES,
+    WINDING_CASES,
 };
-use common::{case, inline, report, sample_name};
+use common::sample_drivers::{
+    assert_each_probe_lights_its_slot, assert_reversed_slots_fail, probe_scene, STANDARD_4,
+};
+use common::{case, inline, report};
 
 /// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
 /// and fails under CI.
 fn available() -> bool {
-    match vulkan::device_description() {
-        Ok(description) => {
-            eprintln!("vulkan adapter: {description}");
-            true
-        }
-        Err(why) => {
-            common::adapters::skipped("Vulkan device", "libvulkan1 mesa-vulkan-drivers", &why);
-            false
-        }
-    }
+    common::adapters::driver_here(
+        "vulkan",
+        vulkan::device_description(),
+        "Vulkan device",
+        "libvulkan1 mesa-vulkan-drivers",
+    )
 }
 
 fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
@@ -165,45 +164,9 @@ fn a_wrong_stencil_test_fails() {
 }
 
 /// The patterns the probes use: 8× n-rooks (no device's native pattern:
-/// shifted passes) and standard 4× (native MSAA where the device offers
-/// 4×, lavapipe among them).
+/// shifted passes) and standard 4× (`STANDARD_4`: native MSAA where the
+/// device offers 4×, lavapipe among them).
 const N_ROOKS_8: &str = r#"{"samples": 8, "pattern": "n-rooks", "seed": 7, "position_bits": 4}"#;
-const STANDARD_4: &str = r#"{"samples": 4, "pattern": "standard"}"#;
-
-/// A tiny square around each sample of `pattern` (n samples), in pixel
-/// (i, 0) for sample i: the adapter must light exactly slot i of pixel i.
-fn probe_scene(pattern: &str, n: u32) -> Scene {
-    let probe = inline(&format!(
-        r#"{{"name": "offsets", "canvas": {{"width": {n}, "height": 1}},
-            "effects": {{"antialias": {pattern}}},
-            "primitives": [{{"triangle": [[0, 0], [1, 0], [0, 1]]}}]}}"#
-    ));
-    let offsets = Plan::for_scene(&probe).antialias.unwrap().offsets;
-    let squares: Vec<String> = offsets
-        .iter()
-        .enumerate()
-        .flat_map(|(i, [sx, sy])| {
-            let unit = if pattern.contains("position_bits") {
-                16.0
-            } else {
-                256.0
-            };
-            let (cx, cy) = (i as f64 + f64::from(*sx) / unit, f64::from(*sy) / unit);
-            let (l, r, t, b) = (cx - 0.03125, cx + 0.03125, cy - 0.03125, cy + 0.03125);
-            [
-                format!(r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#),
-                format!(r#"{{"triangle": [[{l}, {t}], [{r}, {b}], [{l}, {b}]]}}"#),
-            ]
-        })
-        .collect();
-    inline(&format!(
-        r#"{{"name": "probe", "canvas": {{"width": {n}, "height": 1}},
-            "rules": {{"subpixel_bits": 8}}, "effects": {{"antialias": {pattern}}},
-            "primitives": [{}],
-            "expect": {{"max_coverage_error": 0.25, "max_coverage_rms": 0.25}}}}"#,
-        squares.join(", ")
-    ))
-}
 
 /// Each probe lights exactly its own slot, through `vulkan` (native 4×
 /// where offered, shifted passes for n-rooks) and `vulkan-passes`.
@@ -215,21 +178,7 @@ fn each_probe_lights_exactly_the_probed_slot() {
     let passes = Vulkan { passes_only: true };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         for candidate in [&VULKAN, &passes] {
-            let scene = probe_scene(pattern, n);
-            let (reference, run) = common::run(&scene, candidate);
-            let frame = run.frame.as_ref().expect("vulkan drew a frame");
-            let lit: Vec<String> = (0..frame.sample_count())
-                .filter(|&i| frame.coverage[i] > 0)
-                .map(|i| sample_name(frame, i))
-                .collect();
-            let expected: Vec<String> = (0..n).map(|i| format!("({i},0)#{i}")).collect();
-            assert_eq!(lit, expected, "{} {pattern}", candidate.name());
-            assert_eq!(
-                run.verdict,
-                Verdict::Pass,
-                "{}",
-                report("probe", &reference, &run)
-            );
+            assert_each_probe_lights_its_slot(candidate, pattern, n);
         }
     }
 }
@@ -261,14 +210,7 @@ fn a_readback_in_the_wrong_slot_order_fails() {
         return;
     }
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
-        let scene = probe_scene(pattern, n);
-        let reference = oracle::run_reference(&scene);
-        let wrong = judge::run_candidate(&scene, &reference, &SlotsReversed(&VULKAN));
-        let verdict = &wrong.verdict;
-        assert!(
-            matches!(verdict, Verdict::Fail(_)),
-            "{pattern}: {verdict:?}"
-        );
+        assert_reversed_slots_fail(&VULKAN, pattern, &probe_scene(pattern, n));
     }
 }
 

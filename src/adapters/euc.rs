@@ -145,13 +145,11 @@ impl Rasterizer for Euc {
 
     fn capabilities(&self) -> Capabilities {
         Capabilities {
-            polygons: false,
-            antialias: false,
-            motion_blur: false,
-            clip_space: false,
-            depth_attachment: false,
-            points: false,
-            ..Capabilities::everything()
+            triangles: true,
+            ideal_geometry: true,
+            attributes: true,
+            depth: true,
+            ..Capabilities::none()
         }
     }
 

@@ -99,13 +99,11 @@ pub(crate) fn culled(positions: &[[RBig; 2]; 3], cull: Cull) -> bool {
 #[allow(dead_code)] // used by the tiny-skia and vello adapters
 pub(crate) fn path_fill_capabilities() -> Capabilities {
     Capabilities {
-        attributes: false,
-        depth: false,
-        motion_blur: false,
-        clip_space: false,
-        depth_attachment: false,
-        points: false,
-        ..Capabilities::everything()
+        triangles: true,
+        ideal_geometry: true,
+        polygons: true,
+        antialias: true,
+        ..Capabilities::none()
     }
 }
 

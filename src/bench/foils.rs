@@ -13,15 +13,7 @@ use crate::scene::{FillRule, LastPixel, LineRule, Number, Primitive, Scene};
 fn coverage_only(triangles: bool) -> Capabilities {
     Capabilities {
         triangles,
-        ideal_geometry: false,
-        attributes: false,
-        depth: false,
-        polygons: false,
-        antialias: false,
-        motion_blur: false,
-        clip_space: false,
-        depth_attachment: false,
-        points: false,
+        ..Capabilities::none()
     }
 }
 

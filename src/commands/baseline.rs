@@ -240,6 +240,9 @@ fn baseline_check(
                 if let Err(exit) = super::names::environment_for(run) {
                     return exit;
                 }
+                if let Err(exit) = super::names::startable(run) {
+                    return exit;
+                }
                 candidates.push(r)
             }
             None if names.is_empty() => {

@@ -86,7 +86,17 @@ pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> 
         Exit::BadInput
     })?;
     environment_for(name)?;
+    startable(name)?;
     Ok(found)
+}
+
+/// An external program that cannot start (`adapters::external::preflight`):
+/// `Err` (already printed, once, before any case runs) when it cannot.
+pub(crate) fn startable(name: &str) -> Result<(), Exit> {
+    external::preflight(name).map_err(|e| {
+        eprintln!("error: -r {name}: {e}");
+        Exit::BadInput
+    })
 }
 
 /// Bad usage in the environment a rasterizer reads (an external program's

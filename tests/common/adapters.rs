@@ -72,6 +72,27 @@ pub fn skipped(what: &str, install: &str, why: &str) {
     );
 }
 
+/// Whether the driver `described` names is here: says which (on the
+/// test's stderr, as `NAME adapter: DESCRIPTION`), or why not ([`skipped`],
+/// which fails under CI).
+pub fn driver_here(
+    name: &str,
+    described: Result<String, String>,
+    what: &str,
+    install: &str,
+) -> bool {
+    match described {
+        Ok(description) => {
+            eprintln!("{name} adapter: {description}");
+            true
+        }
+        Err(why) => {
+            skipped(what, install, &why);
+            false
+        }
+    }
+}
+
 /// probe's diagnosis of a GPU driver: point-sampled at the pixel centre,
 /// ties by `rule` explaining every tie sample (Vulkan's top-left;
 /// llvmpipe's GL bottom-left in y-down terms), y down, and the subpixel

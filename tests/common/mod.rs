@@ -10,6 +10,7 @@ pub mod cli;
 pub mod clip_drivers;
 pub mod depth_drivers;
 pub mod point_drivers;
+pub mod sample_drivers;
 
 #[allow(unused_imports)] // not every binary runs the binary
 pub use cli::{rastercheck, text};

@@ -1,7 +1,7 @@
 //! Depth formats and polygon offsets (SPEC.md §18) drawn into a real depth
 //! attachment, and its stored values read back.
 
-use rastercheck::adapters::gl::Gl;
+use super::GL;
 use rastercheck::frame::Frame;
 use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
@@ -23,8 +23,8 @@ fn answers_every_depth_case() {
     if !available() {
         return;
     }
-    assert!(Gl.capabilities().depth_attachment);
-    super::common::depth_drivers::assert_depth_cases_pass(&Gl);
+    assert!(GL.capabilities().depth_attachment);
+    super::common::depth_drivers::assert_depth_cases_pass(&GL);
 }
 
 /// The same driver without its offset, or storing a unorm case as f32,
@@ -34,7 +34,7 @@ fn a_wrong_depth_attachment_fails() {
     if !available() {
         return;
     }
-    super::common::depth_drivers::assert_wrong_depth_is_caught(&Gl);
+    super::common::depth_drivers::assert_wrong_depth_is_caught(&GL);
 }
 
 /// An 8×8 screen-space triangle over the canvas's upper-left half at
@@ -54,7 +54,7 @@ fn flat_half(format: &str, bias: Option<&str>) -> Scene {
 
 /// The depth of every covered sample of gl's frame of `scene`.
 fn covered_depths(scene: &Scene) -> Vec<f64> {
-    let frame = Gl
+    let frame = GL
         .rasterize(scene, &Plan::for_scene(scene))
         .unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     let depth = frame.depth.as_ref().expect("a depth channel");
@@ -137,16 +137,16 @@ impl Rasterizer for FragmentDepth {
         "gl-fragment-depth"
     }
     fn capabilities(&self) -> Capabilities {
-        Gl.capabilities()
+        GL.capabilities()
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        Gl.fixed_fill_rule()
+        GL.fixed_fill_rule()
     }
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let mut exact = scene.clone();
         exact.rules.depth_format = DepthFormat::Exact;
         exact.rules.depth_bias = None;
-        Gl.rasterize(&exact, plan)
+        GL.rasterize(&exact, plan)
     }
 }
 
@@ -155,13 +155,13 @@ impl Rasterizer for Unorm24AsFraction {
         "gl-unorm24-as-fraction"
     }
     fn capabilities(&self) -> Capabilities {
-        Gl.capabilities()
+        GL.capabilities()
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        Gl.fixed_fill_rule()
+        GL.fixed_fill_rule()
     }
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = Gl.rasterize(scene, plan)?;
+        let mut frame = GL.rasterize(scene, plan)?;
         for d in frame.depth.iter_mut().flatten() {
             if let Some(k) = unorm_index(*d, 24) {
                 *d = f64::from(k as f32 / 16_777_216.0);
@@ -212,7 +212,7 @@ fn the_prepared_path_draws_depth_as_rasterize_does() {
         return;
     }
     assert_prepared_draws_as_rasterize(
-        &Gl,
+        &GL,
         &[
             "depth/spec_offset_constant",
             "depth/unorm24_on_grid",
@@ -235,7 +235,7 @@ fn depth_state_does_not_leak_into_the_next_case() {
     let after = ["clip/depth_clip_near", "triangles/interp_depth_z"];
     let draw = |id: &str| {
         let scene = case(id);
-        Gl.rasterize(&scene, &Plan::for_scene(&scene))
+        GL.rasterize(&scene, &Plan::for_scene(&scene))
             .unwrap_or_else(|e| panic!("{id}: {e}"))
     };
     let before: Vec<Frame> = after.iter().map(|id| draw(id)).collect();
@@ -264,7 +264,7 @@ fn antialiased_depth_is_drawn_by_shifted_passes() {
             "primitives": [{"triangle": [[0, 0], [8, 0], [0, 8]]}]}"#,
     );
     scene.effects = aa.effects;
-    let (reference, r) = run(&scene, &Gl);
+    let (reference, r) = run(&scene, &GL);
     let line = report("flat_half_aa", &reference, &r);
     eprintln!("{line}");
     assert_eq!(r.verdict, Verdict::Pass, "{line}");
@@ -279,7 +279,7 @@ fn antialiased_depth_is_drawn_by_shifted_passes() {
                                      {"position": [7, 5], "z": "3/4"}],
                             "rule": "rectangle", "width": 2}]}"#,
     );
-    match Gl.rasterize(&lines, &Plan::for_scene(&lines)) {
+    match GL.rasterize(&lines, &Plan::for_scene(&lines)) {
         Err(RasterError::Unsupported(why)) => assert!(why.contains("depth attachment"), "{why}"),
         other => panic!(
             "rectangle lines with depth: {:?}",

@@ -50,6 +50,9 @@ mod motion;
 mod msaa;
 mod rectangles;
 
+/// Mesa's GL, whatever driver the process holds (llvmpipe here).
+const GL: Gl = Gl { softpipe: false };
+
 use common::adapters::{
     assert_each, assert_eight_ties_change_hands, assert_interpolation_within_the_bound,
     assert_prepared_draws_as_rasterize, assert_probe_diagnosis, assert_refuses_lines_and_unsnapped,
@@ -58,7 +61,7 @@ use common::adapters::{
 use common::{case, inline, report};
 
 fn run(scene: &Scene) -> (oracle::ReferenceRun, CandidateRun) {
-    common::run(scene, &Gl)
+    common::run(scene, &GL)
 }
 
 /// probe finds llvmpipe point-sampled at the centre with bottom-left ties
@@ -68,7 +71,7 @@ fn probe_finds_a_point_sampler_with_bottom_left_ties() {
     if !available() {
         return;
     }
-    assert_probe_diagnosis(&Gl, "bottom-left");
+    assert_probe_diagnosis(&GL, "bottom-left");
 }
 
 /// Tie cases beyond `TIE_CASES` (samples exactly on edges, shared edges, fan
@@ -91,7 +94,7 @@ fn matches_the_reference_under_bottom_left() {
     }
     assert_each(
         &[TIE_CASES, MORE_TIE_CASES].concat(),
-        &Gl,
+        &GL,
         bottom_left,
         |_, run, line, failures| {
             let m = run.metrics.as_ref().expect("gl drew a frame");
@@ -127,7 +130,7 @@ fn its_tie_rule_is_bottom_left() {
     let (_, own) = run(&case("triangles/fill_rule_top_left"));
     assert_eq!(own.verdict, Verdict::Pass, "{}", judge::describe(&own));
     assert_eq!(own.judged_rule, Some(FillRule::BottomLeft));
-    let (reference, top_left) = common::run_as_stated(&case("triangles/fill_rule_top_left"), &Gl);
+    let (reference, top_left) = common::run_as_stated(&case("triangles/fill_rule_top_left"), &GL);
     eprintln!("{}", report("fill_rule_top_left", &reference, &top_left));
     assert!(matches!(top_left.verdict, Verdict::Fail(_)));
     let m = top_left.metrics.as_ref().unwrap();
@@ -146,7 +149,7 @@ fn its_tie_rule_is_bottom_left() {
                {"triangle": [[0, 4.5], [8, 8], [0, 8]]}"#,
         )
     };
-    assert_eight_ties_change_hands(&Gl, pair, "bottom-left", "top-left");
+    assert_eight_ties_change_hands(&GL, pair, "bottom-left", "top-left");
 }
 
 /// The interpolation cases (depth, linear, flat, perspective with a wide
@@ -157,7 +160,7 @@ fn interpolation_is_within_the_bound() {
     if !available() {
         return;
     }
-    assert_interpolation_within_the_bound(INTERPOLATION, &Gl, "gl", bottom_left);
+    assert_interpolation_within_the_bound(INTERPOLATION, &GL, "gl", bottom_left);
 }
 
 /// Culling follows the case's on-screen winding through GL's y-up window
@@ -191,10 +194,10 @@ fn refuses_what_it_cannot_express() {
     if !available() {
         return;
     }
-    assert_refuses_lines_and_unsnapped(&Gl);
+    assert_refuses_lines_and_unsnapped(&GL);
     let scene = case("triangles/fill_rule_top_left");
     let reference = oracle::run_reference(&scene);
-    let r = judge::run_candidate(&scene, &reference, &gl::Softpipe);
+    let r = judge::run_candidate(&scene, &reference, &Gl { softpipe: true });
     match &r.verdict {
         Verdict::Error(why) => assert!(why.contains("GALLIUM_DRIVER=softpipe"), "{why}"),
         other => panic!("softpipe in an llvmpipe process: {other:?}"),
@@ -208,7 +211,7 @@ fn every_triangle_case_for_the_record() {
     if !available() {
         return;
     }
-    record_every_triangle_case(&Gl, "gl");
+    record_every_triangle_case(&GL, "gl");
 }
 
 /// softpipe, in a process of its own (the CLI, `GALLIUM_DRIVER` unset so
@@ -273,7 +276,7 @@ fn the_prepared_path_draws_what_rasterize_draws() {
         return;
     }
     assert_prepared_draws_as_rasterize(
-        &Gl,
+        &GL,
         &[
             "triangles/interp_mixed_modes",
             "triangles/fan_16_center",
@@ -318,13 +321,13 @@ fn polygons_by_stencil_then_cover_match_the_reference() {
         "polygons/pentagram_nonzero",
         "polygons/star_on_centres_bottom_left",
     ];
-    assert_each(&ids, &Gl, bottom_left, |_, run, line, failures| {
+    assert_each(&ids, &GL, bottom_left, |_, run, line, failures| {
         if run.verdict != Verdict::Pass {
             failures.push(line.to_owned());
         }
     });
     let (reference, top_left) =
-        common::run_as_stated(&case("polygons/star_on_centres_top_left"), &Gl);
+        common::run_as_stated(&case("polygons/star_on_centres_top_left"), &GL);
     eprintln!(
         "{}",
         report("star_on_centres_top_left", &reference, &top_left)
@@ -412,7 +415,7 @@ fn refuses_the_line_rules_gl_does_not_draw() {
             r#"{{"name": "l", "canvas": {{"width": 8, "height": 8}},
                 "primitives": [{{"line": [[0.5, 0.5], [7.5, 3.5]], "rule": "{rule}"{extra}}}]}}"#
         ));
-        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+        match GL.rasterize(&scene, &Plan::for_scene(&scene)) {
             Err(e) => assert!(e.to_string().contains(why), "{rule}: {e}"),
             Ok(_) => panic!("{rule} lines drawn"),
         }
@@ -500,11 +503,11 @@ impl Rasterizer for RotatedShifts {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Gl.capabilities()
+        GL.capabilities()
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = Gl.rasterize(scene, plan)?;
+        let mut frame = GL.rasterize(scene, plan)?;
         let n = frame.samples as usize;
         for p in 0..frame.pixel_count() {
             frame.coverage[p * n..(p + 1) * n].rotate_left(1);
@@ -570,7 +573,7 @@ fn refuses_shifted_passes_that_would_not_be_exact() {
                 "effects": {{"antialias": {antialias}}},
                 "primitives": [{{"triangle": [[0.3, 0.2], [3.7, 1.1], [1.2, 3.9]]}}]}}"#
         ));
-        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+        match GL.rasterize(&scene, &Plan::for_scene(&scene)) {
             Err(RasterError::Unsupported(e)) => assert!(e.contains(why), "{antialias}: {e}"),
             other => panic!("{antialias}: {:?}", other.map(|f| f.covered_samples())),
         }
@@ -587,7 +590,7 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
         return;
     }
     let known = ["midpoint", "wide aliased lines", "subpixel_bits: null"];
-    common::adapters::assert_judges_at_least_85_percent(&Gl, &known);
+    common::adapters::assert_judges_at_least_85_percent(&GL, &known);
 }
 
 #[test]
@@ -595,7 +598,7 @@ fn clip_space_honours_the_provoking_vertex() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_provoking_vertex(&Gl);
+    common::clip_drivers::assert_provoking_vertex(&GL);
 }
 
 #[test]
@@ -603,7 +606,7 @@ fn clip_space_depth_is_clipped_or_clamped() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_depth_clip_and_clamp(&Gl);
+    common::clip_drivers::assert_depth_clip_and_clamp(&GL);
 }
 
 #[test]
@@ -611,7 +614,7 @@ fn clip_space_refuses_what_it_cannot_hand_the_driver() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_clip_refusals(&Gl);
+    common::clip_drivers::assert_clip_refusals(&GL);
 }
 
 /// llvmpipe's clipping conventions (`fixed_clip_rules`) hold sample for
@@ -621,7 +624,7 @@ fn clip_space_follows_its_declared_clipping_conventions() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_clip_conventions(&Gl);
+    common::clip_drivers::assert_clip_conventions(&GL);
 }
 
 #[test]
@@ -629,7 +632,7 @@ fn clip_space_viewport_places_the_scene() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_viewport_placement(&Gl);
+    common::clip_drivers::assert_viewport_placement(&GL);
 }
 
 #[test]
@@ -637,7 +640,7 @@ fn clip_space_inside_the_volume_passes() {
     if !available() {
         return;
     }
-    common::clip_drivers::assert_inside_the_volume_passes(&Gl);
+    common::clip_drivers::assert_inside_the_volume_passes(&GL);
 }
 
 /// llvmpipe interpolates from the unsnapped positions it divides
@@ -647,7 +650,7 @@ fn clip_space_values_come_from_the_declared_positions() {
     if !available() {
         return;
     }
-    let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&Gl);
+    let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&GL);
     eprintln!("gl: values depart {own:e} from its own positions', {other:e} from the others'");
 }
 
@@ -659,7 +662,7 @@ fn measure_points() {
     if !available() {
         return;
     }
-    common::point_drivers::measure(&Gl);
+    common::point_drivers::measure(&GL);
 }
 
 /// Points follow the point rule under llvmpipe's own fill rule in screen
@@ -670,7 +673,7 @@ fn points_follow_the_rule_in_screen_space() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_screen_points(&Gl);
+    common::point_drivers::assert_screen_points(&GL);
 }
 
 /// Clip-space points: placed by the viewport, touching its edges, the
@@ -680,7 +683,7 @@ fn points_follow_the_rule_in_clip_space() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_clip_points(&Gl);
+    common::point_drivers::assert_clip_points(&GL);
 }
 
 #[test]
@@ -688,7 +691,7 @@ fn multisampled_points_follow_the_rule() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_multisampled_points(&Gl);
+    common::point_drivers::assert_multisampled_points(&GL);
 }
 
 /// Sub-pixel sizes, sizes off the grid or out of range, and clip-space
@@ -699,7 +702,7 @@ fn points_the_driver_cannot_draw_exactly_are_refused() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_point_refusals(&Gl);
+    common::point_drivers::assert_point_refusals(&GL);
 }
 
 /// Clip-space squares reaching outside the viewport are cut at its side
@@ -710,7 +713,7 @@ fn point_squares_are_cut_at_the_viewport() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_squares_cut_at_the_viewport(&Gl);
+    common::point_drivers::assert_squares_cut_at_the_viewport(&GL);
 }
 
 /// probe finds the point clipping the adapter declares.
@@ -719,7 +722,7 @@ fn probe_finds_the_declared_point_clipping() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_probe_finds_declared_point_clipping(&Gl);
+    common::point_drivers::assert_probe_finds_declared_point_clipping(&GL);
 }
 
 /// The point checks catch the opposite ties, snapped sizes and an
@@ -729,7 +732,7 @@ fn wrong_point_rules_are_caught() {
     if !available() {
         return;
     }
-    common::point_drivers::assert_wrong_rules_are_caught(&Gl);
+    common::point_drivers::assert_wrong_rules_are_caught(&GL);
 }
 
 /// A clip-space case with points is judged under the driver's own
@@ -737,5 +740,5 @@ fn wrong_point_rules_are_caught() {
 /// case's.
 #[test]
 fn clip_points_are_judged_under_the_drivers_own() {
-    common::point_drivers::assert_judged_under_own_point_clip(&Gl);
+    common::point_drivers::assert_judged_under_own_point_clip(&GL);
 }

@@ -1,7 +1,7 @@
 //! Motion by time passes: one scissored draw per pixel and time test, the
 //! counts summed into each pixel's time coverage.
 
-use rastercheck::adapters::gl::Gl;
+use super::GL;
 use rastercheck::harness::judge::Verdict;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::scene::{Primitive, Scene};
@@ -52,7 +52,7 @@ fn moving_cases_by_time_passes_pass_under_the_drivers_rule() {
             own.verdict
         );
     }
-    assert_each(&ids, &Gl, bottom_left_unpinned, |_, run, line, failures| {
+    assert_each(&ids, &GL, bottom_left_unpinned, |_, run, line, failures| {
         if run.verdict != Verdict::Pass {
             failures.push(line.to_owned());
         }
@@ -67,7 +67,7 @@ fn wrong_instants_fail() {
     if !available() {
         return;
     }
-    assert_wrong_instants_fail(&Gl);
+    assert_wrong_instants_fail(&GL);
 }
 
 /// The reports say how moving scenes are drawn.
@@ -77,7 +77,7 @@ fn declares_time_passes() {
         return;
     }
     let _ = run(&case("motion/spec_moves_as_written"));
-    let declared = Gl.declared().expect("the context is made");
+    let declared = GL.declared().expect("the context is made");
     assert!(declared.contains("motion by time passes"), "{declared}");
-    assert!(Gl.capabilities().motion_blur);
+    assert!(GL.capabilities().motion_blur);
 }

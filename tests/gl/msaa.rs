@@ -1,7 +1,9 @@
 //! The driver's own multisampling: the counts and sample positions it
 //! reports, and native MSAA drawing each sample where it says.
 
-use rastercheck::adapters::gl::{self, Gl};
+use rastercheck::adapters::gl;
+
+use super::GL;
 use rastercheck::plan::{Plan, SamplePlan};
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::reference;
@@ -56,7 +58,7 @@ fn a_triangle_around_each_driver_position_lights_exactly_its_slot() {
                     antialias: Some(aa.clone()),
                     ..Plan::for_scene(&scene)
                 };
-                let frame = Gl.rasterize(&scene, &plan).expect("drawn");
+                let frame = GL.rasterize(&scene, &plan).expect("drawn");
                 let lit: Vec<usize> = (0..frame.sample_count())
                     .filter(|&k| frame.coverage[k] > 0)
                     .collect();
@@ -106,7 +108,7 @@ fn native_msaa_matches_the_reference_at_the_drivers_positions() {
             ..Plan::coverage_only()
         };
         let exact = reference::render(&scene, &plan);
-        let frame = Gl.rasterize(&scene, &plan).expect("drawn");
+        let frame = GL.rasterize(&scene, &plan).expect("drawn");
         let differ = (0..exact.sample_count())
             .filter(|&k| {
                 exact.coverage[k] != frame.coverage[k]

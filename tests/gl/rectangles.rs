@@ -3,7 +3,7 @@
 //! scene shifted so that one driver sample lies on each pixel centre, that
 //! sample read.
 
-use rastercheck::adapters::gl::Gl;
+use super::GL;
 use rastercheck::frame::Frame;
 use rastercheck::harness::judge::Verdict;
 use rastercheck::plan::Plan;
@@ -163,7 +163,7 @@ fn refuses_rectangles_it_cannot_draw_exactly() {
             r#"{{"name": "l", "canvas": {{"width": 8, "height": 8}},
                 "rules": {{"subpixel_bits": {bits}}}, "primitives": [{primitives}]}}"#
         ));
-        match Gl.rasterize(&scene, &Plan::for_scene(&scene)) {
+        match GL.rasterize(&scene, &Plan::for_scene(&scene)) {
             Err(e) => assert!(e.to_string().contains(why), "{why}: {e}"),
             Ok(_) => panic!("{why}: drawn"),
         }

@@ -24,7 +24,7 @@ use crate::plan::{MotionPlan, Plan};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{Number, Scene, Vertex};
 
-use super::protocol::{float_exact, pixel_of, whole_below};
+use super::values::{float_exact, pixel_of, whole_below};
 
 /// Why a moving scene is not sent to a program that has not declared
 /// motion in a version 2 hello: one-shot programs, version 1 programs.

@@ -8,7 +8,8 @@ use std::sync::{Arc, Condvar, Mutex};
 use std::thread::{self, JoinHandle};
 use std::time::{Duration, Instant};
 
-use super::*;
+use super::limits::{PIPE_GRACE, STDERR_KEEP, STDERR_QUOTE_CHARS, STDERR_QUOTE_LINES};
+use crate::rasterizer::RasterError;
 
 pub(super) fn exit_description(status: ExitStatus) -> String {
     if let Some(code) = status.code() {

@@ -4,7 +4,7 @@
 //! antialiased coverage, or an EXR file in the golden files' layout
 //! (`frame::exr`); a moving scene's extra fields and its answers are
 //! `motion.rs`'s (SPEC.md §12.8). Starting, feeding and reaping the
-//! processes that speak it is `mod.rs`'s.
+//! processes that speak it is `one_shot.rs`'s and `pool.rs`'.
 
 use std::path::Path;
 
@@ -15,22 +15,16 @@ use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
 
-use super::{motion, Answers, PROTOCOL, PROTOCOL_V2};
+use super::hello::Answers;
+use super::motion;
+use super::values::{exact, float, pixel_of, whole_below};
 
-/// A number twice: its nearest f64, and (in the sibling `exact` object) its
-/// exact spelling.
-fn float(n: &Number) -> Value {
-    json!(n.to_f64_lossy())
-}
+/// The protocol's name and version, sent in every request of v1.
+pub const PROTOCOL: &str = "rastercheck-external/1";
 
-fn exact(n: &Number) -> Value {
-    Value::String(n.to_exact_string())
-}
-
-/// A number as a request gives it: (its nearest f64, its exact spelling).
-pub(super) fn float_exact(n: &Number) -> (Value, Value) {
-    (float(n), exact(n))
-}
+/// Version 2 (SPEC.md §12.7): the program's hello, ids in every request
+/// and answer.
+pub const PROTOCOL_V2: &str = "rastercheck-external/2";
 
 /// A vertex; a moving one (SPEC.md §12.8) also carries `to`, its position
 /// at shutter close, while `x` and `y` are its `from`.
@@ -353,31 +347,6 @@ fn compose(
 /// The method a coverage-only frame of a scene with values names: what the
 /// reports show beside its verdict.
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
-
-/// The pixel (x, y) an answer's item starts with, or why it is none of
-/// the canvas (`at` names the item's JSON path).
-pub(super) fn pixel_of(
-    item: &[Value],
-    (width, height): (u32, u32),
-    at: &dyn Fn() -> String,
-) -> Result<(u32, u32), String> {
-    match (whole_below(&item[0], width), whole_below(&item[1], height)) {
-        (Some(x), Some(y)) => Ok((x, y)),
-        _ => Err(format!(
-            "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
-            at(),
-            item[0],
-            item[1]
-        )),
-    }
-}
-
-/// A whole number in [0, limit), as JSON gives it.
-pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
-    v.as_f64()
-        .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
-        .map(|c| c as u32)
-}
 
 /// An area method's answer (SPEC.md §12.2): each primitive's covered
 /// fraction of the pixels it touches, summed into a frame without samples,

@@ -3,8 +3,19 @@
 //! that answers the request in flight; under version 2 by its id, stray
 //! and late lines skipped and counted.
 
+use std::collections::VecDeque;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Child, ChildStdin, ExitStatus};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::thread::{self, JoinHandle};
+use std::time::{Duration, Instant};
+
+use serde_json::Value;
+
+use super::hello::{self, Hello};
+use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE};
+use super::messages::shorten;
 use super::process::*;
-use super::*;
 
 /// What a persistent exchange got instead of a line.
 pub(super) enum Exchange {

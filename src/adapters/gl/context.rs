@@ -9,11 +9,11 @@ use glow::HasContext;
 use khronos_egl as egl;
 
 use super::clip::{self, ProvokingFn};
-use super::depth;
-use super::msaa::{self, Fetch};
+use super::fetch::{self, Fetch};
+use super::offset_clamp;
 use super::samples::{self, DriverSamples};
 use super::shaders::program;
-use crate::adapters::gpu::GROUPS;
+use crate::adapters::gpu::{self, GROUPS};
 use crate::rasterizer::RasterError;
 use crate::scene::Interpolation;
 
@@ -97,7 +97,7 @@ pub(super) struct GlContext {
     /// `glPolygonOffsetClamp` (GL 4.6, ARB_polygon_offset_clamp) or
     /// `glPolygonOffsetClampEXT`, where the context offers one: a depth
     /// bias with a clamp needs it (`depth.rs`).
-    pub(super) offset_clamp: Option<depth::OffsetClampFn>,
+    pub(super) offset_clamp: Option<offset_clamp::OffsetClampFn>,
 }
 
 // SAFETY: the EGL handles are plain pointers that EGL lets any thread use;
@@ -107,6 +107,7 @@ unsafe impl Send for GlContext {}
 
 impl GlContext {
     fn new() -> Result<GlContext, String> {
+        gpu::quiet_mesa();
         // SAFETY: loading libEGL runs its initialisers, as any EGL program does.
         let egl = unsafe { Egl::load_required() }
             .map_err(|e| format!("no EGL 1.5 library (libEGL.so.1): {INSTALL_HINT} ({e})"))?;
@@ -175,13 +176,13 @@ impl GlContext {
         let (renderer, version, point_range, point_granularity, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
-            let offset_clamp = depth::offset_clamp(&gl, |name| egl.get_proc_address(name));
+            let offset_clamp = offset_clamp::offset_clamp(&gl, |name| egl.get_proc_address(name));
             let mut point_range = [0f32; 2];
             gl.get_parameter_f32_slice(glow::POINT_SIZE_RANGE, &mut point_range);
             let point_granularity = gl.get_parameter_f32(glow::POINT_SIZE_GRANULARITY);
             let made =
                 set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
-                    let fetch = msaa::fetch(&gl)?;
+                    let fetch = fetch::fetch(&gl)?;
                     let offered = samples::query(&gl, multisample)?;
                     // SAFETY: glClipControl(GLenum, GLenum) is this entry
                     // point's signature.

@@ -3,7 +3,7 @@
 
 use glow::HasContext;
 
-use super::accepted;
+use super::accepted::accepted;
 use super::context::{with_context, GlContext};
 use super::drawing::Drawing;
 use crate::frame::Frame;

@@ -32,7 +32,7 @@
 use dashu_ratio::RBig;
 
 use super::super::float_input::{f32_of, snapped, to_f32};
-use super::MAX_ATTRIBUTES;
+use super::channels::MAX_ATTRIBUTES;
 use crate::scene::{Interpolation, LineRule, Polygon, PolygonFill, Primitive, Scene, Vertex};
 
 /// Floats per vertex: clip position (4), `[primitive + 1, depth, lo, hi]`
@@ -282,6 +282,29 @@ impl Stream {
                 first: end - n,
                 end,
             }),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_ndc_mapping_is_exact_for_snapped_coordinates() {
+        // x · 2/P − 1 and back, for 8-bit coordinates across the whole range.
+        for p in [1u32, 8, 1024, 16384] {
+            let s = 2.0 / p as f32;
+            for x in [
+                -32768.0f32,
+                -32768.0 + 1.0 / 256.0,
+                -0.00390625,
+                0.5,
+                1023.5,
+                32768.0 - 1.0 / 256.0,
+            ] {
+                let ndc = x * s - 1.0;
+                assert_eq!(f64::from(ndc), f64::from(x) * 2.0 / f64::from(p) - 1.0);
+                assert_eq!((ndc + 1.0) * (p as f32 / 2.0), x);
+            }
         }
     }
 }

@@ -21,7 +21,7 @@ use std::collections::HashMap;
 use dashu_int::UBig;
 use dashu_ratio::RBig;
 
-use super::Placement;
+use super::stream::Placement;
 use crate::plan::MotionPlan;
 
 /// The most time tests one scene is drawn with: one draw each.

@@ -5,7 +5,7 @@
 //! target's samples out. Text only; each adapter adds its fragment entry
 //! points and makes its own pipelines.
 
-use super::{GROUPS, MAX_ATTRIBUTES};
+use super::channels::{GROUPS, MAX_ATTRIBUTES};
 use crate::scene::Interpolation;
 
 /// The vertex input (the stream's six vec4s), the varyings with the case's

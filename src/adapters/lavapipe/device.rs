@@ -4,9 +4,10 @@
 
 use std::collections::HashMap;
 
+use crate::adapters::gpu;
 use crate::scene::{Cull, Interpolation};
 
-use super::pipelines::Unpack;
+use super::unpack::Unpack;
 
 /// What to install when no adapter is found.
 const INSTALL_HINT: &str =
@@ -81,6 +82,7 @@ impl MsaaFormats {
 
 impl Gpu {
     pub(super) fn new() -> Result<Gpu, String> {
+        gpu::quiet_mesa();
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::VULKAN;
         let instance = wgpu::Instance::new(desc);

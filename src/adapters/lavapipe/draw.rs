@@ -15,11 +15,8 @@ use crate::scene::Scene;
 
 use super::super::gpu::{self, VERTEX_FLOATS};
 use super::device::Gpu;
-use super::pipelines::Unpack;
 use super::readback::{self, copy_out, read_rows};
-
-/// Samples per pixel of an antialiased scene: Vulkan's standard 4×.
-pub(super) const MSAA: u32 = 4;
+use super::unpack::{Unpack, MSAA};
 
 /// The error scopes of one submission's work, open from before its first
 /// command (or buffer) is made until it has been waited for.

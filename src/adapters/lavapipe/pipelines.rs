@@ -10,15 +10,7 @@ use super::super::gpu::wgsl;
 use super::super::gpu::VERTEX_FLOATS;
 use super::device::Gpu;
 use super::shaders::shader;
-
-/// The unpacking pass's pipelines and their bind group layout.
-#[derive(Clone)]
-pub(super) struct Unpack {
-    pub(super) layout: wgpu::BindGroupLayout,
-    /// Into `R32Float` (counts) and `Rgba32Float` (channel groups).
-    pub(super) single: wgpu::RenderPipeline,
-    pub(super) quad: wgpu::RenderPipeline,
-}
+use super::unpack::{Unpack, MSAA};
 
 impl Gpu {
     fn module(&mut self, mode: Interpolation, per_sample: bool) -> &wgpu::ShaderModule {
@@ -150,7 +142,7 @@ impl Gpu {
             });
             let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some("rastercheck lavapipe unpack"),
-                source: wgpu::ShaderSource::Wgsl(wgsl::unpack(super::draw::MSAA, false).into()),
+                source: wgpu::ShaderSource::Wgsl(wgsl::unpack(MSAA, false).into()),
             });
             let pipeline = |format: wgpu::TextureFormat| {
                 device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

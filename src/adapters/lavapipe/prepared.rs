@@ -19,7 +19,8 @@ use crate::scene::Scene;
 
 use super::device::Gpu;
 use super::draw::{Drawing, Passes, Scopes};
-use super::{accepted, gpu, lock};
+use super::refusals::accepted;
+use super::shared::{gpu, lock};
 
 /// A scene set up on the shared device, to be cleared, drawn and read back
 /// again and again.

@@ -7,6 +7,7 @@ use std::ffi::CStr;
 
 use ash::vk;
 
+use crate::adapters::gpu;
 use crate::scene::DepthFormat;
 
 /// What the device offers that decides what it can draw.
@@ -108,6 +109,7 @@ pub(super) const INSTALL_HINT: &str =
 
 impl Device {
     pub(super) fn new() -> Result<Device, String> {
+        gpu::quiet_mesa();
         // SAFETY: loading libvulkan runs its initialisers, as any Vulkan
         // program does.
         let entry = unsafe { ash::Entry::load() }

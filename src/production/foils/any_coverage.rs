@@ -44,14 +44,7 @@ impl Rasterizer for AnyCoverage {
         Capabilities {
             triangles: true,
             ideal_geometry: true,
-            attributes: false,
-            depth: false,
-            polygons: false,
-            antialias: false,
-            motion_blur: false,
-            clip_space: false,
-            depth_attachment: false,
-            points: false,
+            ..Capabilities::none()
         }
     }
 

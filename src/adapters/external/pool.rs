@@ -1,0 +1,262 @@
+//! The pool of persistent processes (`external-persistent:…`): a line to
+//! an idle process and a line back, in the version it speaks (v2's ids
+//! keep the stream in step), a stuck process retired and its case sent
+//! once more, and every process said goodbye to when the adapter is
+//! dropped.
+
+use std::sync::atomic::Ordering;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use serde_json::Value;
+
+use super::adapter::External;
+use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
+use super::messages::seconds;
+use super::motion;
+use super::process::{exit_description, failed, kill, kill_group, wait_until, Output};
+use super::protocol::{parse_response, request, request_v2};
+use super::worker::{Exchange, Worker};
+use crate::deadline;
+use crate::plan::Plan;
+use crate::rasterizer::RasterError;
+use crate::scene::Scene;
+
+impl External {
+    /// A line to a process of the pool, and a line back. The request is
+    /// written in the version the process speaks: v2 (an id, the answer
+    /// found by it) when its first line was a hello of version 2, else v1.
+    pub(super) fn persistent(
+        &self,
+        pool: &Mutex<Vec<Worker>>,
+        scene: &Scene,
+        plan: &Plan,
+        timeout: Duration,
+        max_output: u64,
+        retried: bool,
+    ) -> Result<Value, RasterError> {
+        let deadline = Instant::now() + timeout;
+        let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
+        let mut worker = match idle {
+            Some(worker) => worker,
+            None => {
+                let mut worker = Worker::start(self.start()?, max_output);
+                if !self.said_no_hello.load(Ordering::Relaxed) {
+                    worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                    if worker.hello.is_none() {
+                        self.said_no_hello.store(true, Ordering::Relaxed);
+                    }
+                }
+                worker
+            }
+        };
+        let moving = plan.motion.is_some();
+        worker.await_late_hello(if moving {
+            HELLO_WAIT.min(timeout)
+        } else {
+            Duration::ZERO
+        });
+        let mark = worker.stderr.written();
+        if let Some(Err(why)) = &worker.hello {
+            let why = format!("its hello is not a hello of SPEC.md §12.7: {why}");
+            worker.end(true);
+            return Err(failed(why, &worker.stderr, mark));
+        }
+        if let Some(Ok(hello)) = &worker.hello {
+            let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
+            if declared.is_none() {
+                *declared = hello.title();
+            }
+            drop(declared);
+            *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+            if let Some(why) = hello.refuses(scene, plan) {
+                // Never sent: the program said it cannot draw it.
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                return Err(RasterError::Unsupported(why));
+            }
+        }
+        if moving && worker.hello.is_none() {
+            // Version 1 carries no moving vertices: never sent.
+            pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+            return Err(RasterError::Unsupported(format!(
+                "{}; this process of the program wrote no hello",
+                motion::NOT_DECLARED
+            )));
+        }
+        if worker.speaks_v2() {
+            return match self
+                .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
+            {
+                Ok(result) => result,
+                // The process was stuck on an earlier case, and is gone:
+                // this case is sent once more, to a fresh one, with a
+                // fresh time limit (within the case's deadline).
+                Err(_) if !retried => {
+                    let timeout = match (self.timeout.clone(), deadline::remaining()) {
+                        (Ok(t), Some(left)) => t.min(left),
+                        (Ok(t), None) => t,
+                        (Err(why), _) => return Err(RasterError::Failed(why)),
+                    };
+                    self.persistent(pool, scene, plan, timeout, max_output, true)
+                }
+                Err(why) => Err(why),
+            };
+        }
+        let mut request =
+            serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
+        request.push(b'\n');
+        let line = worker.exchange(request, deadline);
+        let result = match line {
+            Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            Err(Exchange::TimedOut | Exchange::Flood) => {
+                Err((format!("timed out after {}", seconds(timeout)), true))
+            }
+            Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
+            Err(Exchange::Broken(Output::Read(e))) => {
+                Err((format!("reading its output: {e}"), true))
+            }
+            Err(Exchange::Broken(Output::TooLong)) => Err((
+                format!(
+                    "wrote more than {max_output} bytes to stdout in one line (the limit \
+                     is {MAX_OUTPUT_ENV}, in bytes); it was killed"
+                ),
+                true,
+            )),
+        };
+        match result {
+            Ok(value) => {
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                Ok(value)
+            }
+            Err((why, kill_now)) => {
+                // The stream is out of step, or the process is gone: it is
+                // not used again, and a later case starts a fresh one.
+                let why = match worker.end(kill_now) {
+                    Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
+                    _ => why,
+                };
+                Err(failed(why, &worker.stderr, mark))
+            }
+        }
+    }
+
+    /// A v2 exchange (SPEC.md §12.7): the answer is the line that carries
+    /// the request's id. Stray lines make this case a protocol error and
+    /// nothing else; late answers to requests that timed out are dropped;
+    /// a timeout keeps the process unless it is its second in a row: the
+    /// process is then stuck on the earlier request, and is killed;
+    /// `Err` says so, for the caller to send the case to a fresh process.
+    #[allow(clippy::too_many_arguments)]
+    fn persistent_v2(
+        &self,
+        pool: &Mutex<Vec<Worker>>,
+        mut worker: Worker,
+        scene: &Scene,
+        plan: &Plan,
+        deadline: Instant,
+        timeout: Duration,
+        max_output: u64,
+    ) -> Result<Result<Value, RasterError>, RasterError> {
+        let id = format!(
+            "{}#{}",
+            scene.name,
+            self.next_id.fetch_add(1, Ordering::Relaxed)
+        );
+        let mark = worker.stderr.written();
+        let mut request =
+            serde_json::to_vec(&request_v2(scene, plan, &id)).expect("a JSON value serializes");
+        request.push(b'\n');
+        let (answer, skipped) = worker.exchange_v2(request, &id, deadline, max_output);
+        let keep = |worker: Worker| pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+        let strays = skipped.describe();
+        let (why, kill_now) = match answer {
+            Ok(value) if skipped.strays == 0 => {
+                keep(worker);
+                return Ok(Ok(value));
+            }
+            Ok(_) => {
+                let why = format!(
+                    "protocol error: before its answer (id {id:?}) it wrote {strays}; the \
+                     answer was read and not judged, and the next case is read by its own id"
+                );
+                let err = failed(why, &worker.stderr, mark);
+                keep(worker);
+                return Ok(Err(err));
+            }
+            Err(Exchange::TimedOut) => {
+                worker.owe(id.clone());
+                let why = format!(
+                    "timed out after {} with no answer to id {id:?}{}",
+                    seconds(timeout),
+                    if skipped.strays + skipped.late > 0 {
+                        format!(" ({strays})")
+                    } else {
+                        String::new()
+                    }
+                );
+                if worker.timeouts_in_a_row < 2 {
+                    // It may only be slow: kept, and its late answer is
+                    // dropped by its id when it comes.
+                    let err = failed(
+                        format!("{why}; the process is kept (a late answer is dropped by its id)"),
+                        &worker.stderr,
+                        mark,
+                    );
+                    keep(worker);
+                    return Ok(Err(err));
+                }
+                // Nothing since its last timeout: stuck on that request.
+                let why = format!(
+                    "{why}, nor to the earlier request it timed out on: it is stuck, and \
+                     was killed"
+                );
+                worker.end(true);
+                return Err(failed(why, &worker.stderr, mark));
+            }
+            Err(Exchange::Flood) => (
+                format!(
+                    "{strays} without answering id {id:?}, more than {MAX_SKIPPED_LINES} lines \
+                     or {max_output} bytes ({MAX_OUTPUT_ENV}); it was killed"
+                ),
+                true,
+            ),
+            Err(Exchange::Closed) => ("closed its output".to_owned(), false),
+            Err(Exchange::Broken(Output::Read(e))) => (format!("reading its output: {e}"), true),
+            Err(Exchange::Broken(Output::TooLong)) => (
+                format!(
+                    "wrote more than {max_output} bytes to stdout in one line (the limit \
+                     is {MAX_OUTPUT_ENV}, in bytes); it was killed"
+                ),
+                true,
+            ),
+        };
+        let why = match worker.end(kill_now) {
+            Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
+            _ => why,
+        };
+        Ok(Err(failed(why, &worker.stderr, mark)))
+    }
+}
+
+impl Drop for External {
+    fn drop(&mut self) {
+        let Some(pool) = &self.pool else { return };
+        let mut workers = std::mem::take(&mut *pool.lock().unwrap_or_else(|e| e.into_inner()));
+        // Say goodbye to all first, so that they shut down together.
+        for worker in &mut workers {
+            worker.say_bye();
+        }
+        let deadline = Instant::now() + BYE_GRACE;
+        for worker in &mut workers {
+            if wait_until(&mut worker.child, deadline).is_none() {
+                kill(&mut worker.child);
+            }
+            // What it started goes with it.
+            kill_group(&mut worker.child);
+            worker.reaped = true;
+        }
+        for worker in &mut workers {
+            worker.join();
+        }
+    }
+}

@@ -1,0 +1,47 @@
+//! Numbers and pixels as the protocol's JSON carries them: a number
+//! written twice (its nearest f64 and its exact spelling), a pixel and a
+//! whole number read back.
+
+use serde_json::{json, Value};
+
+use crate::scene::Number;
+
+/// A number twice: its nearest f64, and (in the sibling `exact` object) its
+/// exact spelling.
+pub(super) fn float(n: &Number) -> Value {
+    json!(n.to_f64_lossy())
+}
+
+pub(super) fn exact(n: &Number) -> Value {
+    Value::String(n.to_exact_string())
+}
+
+/// A number as a request gives it: (its nearest f64, its exact spelling).
+pub(super) fn float_exact(n: &Number) -> (Value, Value) {
+    (float(n), exact(n))
+}
+
+/// The pixel (x, y) an answer's item starts with, or why it is none of
+/// the canvas (`at` names the item's JSON path).
+pub(super) fn pixel_of(
+    item: &[Value],
+    (width, height): (u32, u32),
+    at: &dyn Fn() -> String,
+) -> Result<(u32, u32), String> {
+    match (whole_below(&item[0], width), whole_below(&item[1], height)) {
+        (Some(x), Some(y)) => Ok((x, y)),
+        _ => Err(format!(
+            "{}: ({}, {}) is not a pixel of the {width}×{height} canvas",
+            at(),
+            item[0],
+            item[1]
+        )),
+    }
+}
+
+/// A whole number in [0, limit), as JSON gives it.
+pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
+    v.as_f64()
+        .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
+        .map(|c| c as u32)
+}

@@ -1,0 +1,49 @@
+//! The `lavapipe` adapter: the [`Rasterizer`] over Mesa's lavapipe through
+//! wgpu, drawing on the shared device (see `docs/drivers/lavapipe.md`).
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::scene::{FillRule, Scene};
+
+use super::prepared;
+use super::refusals::accepted;
+use super::shared::{gpu, lock};
+use crate::adapters::gpu;
+
+/// The name on the command line and in reports.
+pub const NAME: &str = "lavapipe";
+
+/// Mesa's lavapipe, through wgpu's Vulkan backend.
+pub struct Lavapipe;
+
+impl Rasterizer for Lavapipe {
+    fn name(&self) -> &str {
+        NAME
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        gpu::capabilities(true)
+    }
+
+    /// Vulkan's, as the `vulkan` adapter says: the driver chooses, and
+    /// lavapipe follows top-left.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::TopLeft)
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let bits = accepted(scene, plan)?;
+        let gpu = gpu().map_err(|why| RasterError::Failed(why.clone()))?;
+        lock(gpu).render(scene, plan, bits)
+    }
+
+    /// Everything `rasterize` draws, set up once: see `prepared.rs`.
+    fn prepare<'a>(
+        &'a self,
+        scene: &'a Scene,
+        plan: &'a Plan,
+    ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
+        Some(prepared::prepare(scene, plan).map(|p| Box::new(p) as Box<dyn Prepared + 'a>))
+    }
+}

@@ -1,0 +1,67 @@
+//! What lavapipe can draw through wgpu, and why it refuses the rest: no
+//! points, Vulkan's standard 4× samples only, the first provoking vertex,
+//! no line rule, snapped geometry.
+
+use crate::adapters::gpu;
+use crate::plan::{Plan, SamplePlan};
+use crate::rasterizer::{refuse_last_provoking, RasterError};
+use crate::scene::Scene;
+
+/// The subpixel bits lavapipe snaps the scene to, or why it cannot draw it:
+/// samples other than Vulkan's standard 4×, a line, unsnapped geometry or
+/// too many attributes.
+pub(super) fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
+    if scene.has_points() {
+        return Err(RasterError::Unsupported(
+            "the wgpu adapter draws no points (wgpu has only 1-pixel points, no size)".to_owned(),
+        ));
+    }
+    if let Some(aa) = &plan.antialias {
+        if let Some(why) = standard_4x_refusal(aa) {
+            return Err(RasterError::Unsupported(why));
+        }
+    } else if plan.samples_per_pixel != 1 {
+        return Err(RasterError::Unsupported(format!(
+            "{} samples per pixel without a sample pattern",
+            plan.samples_per_pixel
+        )));
+    }
+    refuse_last_provoking(
+        scene,
+        "the wgpu adapter (wgpu has no choice of provoking vertex)",
+    )?;
+    gpu::snapping_bits(
+        scene,
+        plan,
+        |_| {
+            Some("wgpu draws only 1-pixel lines, with no choice of the case's line rule".to_owned())
+        },
+        "lavapipe",
+    )
+}
+
+/// Vulkan's standard 4× sample locations (`standardSampleLocations`), in
+/// 1/16 pixel from the pixel's top-left corner, y down, in Vulkan's sample
+/// order: sample index i of the driver is slot i of the frame.
+pub const STANDARD_4X: [[u32; 2]; 4] = [[6, 2], [14, 6], [2, 10], [10, 14]];
+
+/// Why lavapipe cannot draw these samples, if it cannot: wgpu asks the
+/// driver for 4× MSAA at its standard locations and nothing else, so the
+/// plan's offsets must be exactly [`STANDARD_4X`] at its position bits
+/// (the offsets are checked, not the pattern's name).
+pub fn standard_4x_refusal(aa: &SamplePlan) -> Option<String> {
+    let standard = aa.position_bits.checked_sub(4).map(|shift| {
+        STANDARD_4X
+            .iter()
+            .map(|p| p.map(|c| c << shift))
+            .collect::<Vec<_>>()
+    });
+    if standard.as_deref() == Some(aa.offsets.as_slice()) {
+        return None;
+    }
+    Some(format!(
+        "{} samples per pixel, not at Vulkan's standard 4x locations: \
+         wgpu exposes 4x MSAA at the standard positions only",
+        aa.offsets.len()
+    ))
+}

@@ -1,0 +1,173 @@
+//! The `vulkan` and `vulkan-passes` adapters: the [`Rasterizer`] over the
+//! shared device, what each declares of the device's conventions, and how
+//! a scene is handed to `draw.rs` (natively multisampled, by shifted
+//! passes, or by time passes; see `docs/drivers/vulkan.md`).
+
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
+
+use super::draw;
+use super::native::{native_offered, native_samples};
+use super::refusals::accepted;
+use super::shared::{lock, shared, Shared};
+use crate::adapters::gpu::{self, Placement};
+
+/// The name on the command line and in reports.
+pub const NAME: &str = "vulkan";
+
+/// The name of the adapter that draws every sample pattern by shifted
+/// passes, never natively: the same device, to compare the two.
+pub const PASSES_NAME: &str = "vulkan-passes";
+
+/// Any Vulkan driver, through ash.
+pub struct Vulkan {
+    /// Shifted passes even where the device multisamples the pattern.
+    pub passes_only: bool,
+}
+
+impl Rasterizer for Vulkan {
+    fn name(&self) -> &str {
+        if self.passes_only {
+            PASSES_NAME
+        } else {
+            NAME
+        }
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            ideal_geometry: false,
+            ..Capabilities::everything()
+        }
+    }
+
+    /// Vulkan lets the device choose; devices follow D3D's top-left rule
+    /// (lavapipe and NVIDIA, measured). A device that does not is caught:
+    /// its cases are judged under top-left.
+    fn fixed_fill_rule(&self) -> Option<FillRule> {
+        Some(FillRule::TopLeft)
+    }
+
+    /// Vulkan lets the device choose. lavapipe clips against all six planes
+    /// before the divide and snaps the new vertices (measured on scenes
+    /// that separate the conventions, `tests/vulkan.rs`: 6 samples depart
+    /// from per-sample near clipping, 3 from a guard band, none from clip
+    /// then snap). Another device is judged under these and shows it.
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+
+    /// lavapipe sets its planes up in floating point from the divided,
+    /// unsnapped vertices, and snaps only the edges (SPEC.md §16.10: on
+    /// the bundled clip-space cases its depth and attributes depart from
+    /// the snapped positions' values by up to 1.3e-3, and from the
+    /// unsnapped positions' by at most 2.3e-6).
+    fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
+        Some(InterpolateFrom::Unsnapped)
+    }
+
+    /// Vulkan lets the device choose. lavapipe pops no point: it draws one
+    /// whose centre is outside the side planes (measured,
+    /// `tests/vulkan.rs`), and limits its square to the viewport rectangle
+    /// ([`Rasterizer::fixed_point_bounds`]).
+    fn fixed_point_clip(&self) -> Option<PointClip> {
+        Some(PointClip::GuardBand)
+    }
+
+    /// Mesa limits a point's square to the viewport rectangle (measured on
+    /// the bundled point cases, SPEC.md §17.4).
+    fn fixed_point_bounds(&self) -> Option<PointBounds> {
+        Some(PointBounds::Viewport)
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let shared = shared().map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
+        let mut shared = lock(shared);
+        let Shared {
+            device,
+            pipelines,
+            unpack,
+        } = &mut *shared;
+        let bits = accepted(scene, plan, &device.offers)?;
+        let target = gpu::target_size(scene, device.offers.max_side, "this Vulkan device")?;
+        let centres = Placement::at_centres(bits, target);
+        if let Some(n) = native_samples(scene, plan, &device.offers, self.passes_only) {
+            let job = draw::Job {
+                samples: n,
+                ..draw::Job::per_placement(scene, &[centres])
+            };
+            let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
+            return draw::slots(&bytes, scene, plan, &job);
+        }
+        let shifts = match &plan.antialias {
+            Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)
+                .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,
+            None => vec![centres.shift.clone()],
+        };
+        let Some(motion) = &plan.motion else {
+            let placements: Vec<Placement> = shifts
+                .into_iter()
+                .map(|shift| Placement {
+                    shift,
+                    ..Placement::at_centres(bits, target)
+                })
+                .collect();
+            let job = draw::Job::per_placement(scene, &placements);
+            let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
+            return draw::slots(&bytes, scene, plan, &job);
+        };
+        let canvas = (scene.canvas.width, scene.canvas.height);
+        let time = gpu::time_draws(motion, canvas, bits, target, &shifts)
+            .map_err(|why| RasterError::Unsupported(format!("time passes: {why}")))?;
+        let job = draw::Job {
+            streams: time
+                .placements
+                .iter()
+                .map(|p| {
+                    crate::deadline::check();
+                    gpu::Stream::new(scene, p)
+                })
+                .collect(),
+            passes: vec![time
+                .draws
+                .iter()
+                .map(|&(p, stream)| (draw::rect(p % canvas.0, p / canvas.0, 1, 1), stream))
+                .collect()],
+            samples: 1,
+        };
+        let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
+        draw::time(&bytes, scene, shifts.len() as u32 * motion.blur.samples)
+    }
+
+    /// The device, its driver and version, once the device is made, and
+    /// how samples and instants are drawn.
+    fn declared(&self) -> Option<String> {
+        let shared = shared().ok()?;
+        let shared = lock(shared);
+        let offers = &shared.device.offers;
+        let sampling = if self.passes_only {
+            "antialiasing by shifted passes only".to_owned()
+        } else {
+            let counts: Vec<String> = [2u32, 4, 8, 16]
+                .into_iter()
+                .filter(|&n| native_offered(offers, n))
+                .map(|n| format!("{n}x"))
+                .collect();
+            format!(
+                "antialiasing by native MSAA at the standard locations ({}), \
+                 by shifted passes otherwise",
+                if counts.is_empty() {
+                    "none offered".to_owned()
+                } else {
+                    counts.join(", ")
+                }
+            )
+        };
+        Some(format!(
+            "{}; {sampling}; motion by time passes",
+            shared.device.description
+        ))
+    }
+}
