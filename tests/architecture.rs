@@ -260,11 +260,10 @@ fn is_raw_start(bytes: &[char], i: usize) -> bool {
 }
 
 fn is_char_literal(bytes: &[char], i: usize) -> bool {
-    match (bytes.get(i + 1), bytes.get(i + 2)) {
-        (Some('\\'), _) => true,
-        (Some(_), Some('\'')) => true,
-        _ => false,
-    }
+    matches!(
+        (bytes.get(i + 1), bytes.get(i + 2)),
+        (Some('\\'), _) | (Some(_), Some('\''))
+    )
 }
 
 /// Every path a module's code names from `crate`, `super` or `self`, made
