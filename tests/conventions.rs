@@ -275,13 +275,17 @@ fn fuzz_with_a_profile_judges_under_its_rule_and_writes_cases_stating_it() {
     assert!(text(&out).contains("is a profile of mutant:flipped-ties, not of production"));
 }
 
-/// Production drawing every case under one fill rule and declaring it, as
-/// a driver does: a case restated under its rule is drawn exactly.
-struct OwnRule(rastercheck::scene::FillRule);
+/// Production declaring one fill rule whatever a case states, as a driver
+/// does, and drawing under it (`follows`) or under the case's own (a
+/// rasterizer whose declaration is wrong).
+struct Declares {
+    rule: rastercheck::scene::FillRule,
+    follows: bool,
+}
 
-impl rastercheck::rasterizer::Rasterizer for OwnRule {
+impl rastercheck::rasterizer::Rasterizer for Declares {
     fn name(&self) -> &str {
-        "own-rule"
+        "declares"
     }
     fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
         rastercheck::production::Production.capabilities()
@@ -291,10 +295,15 @@ impl rastercheck::rasterizer::Rasterizer for OwnRule {
         scene: &rastercheck::scene::Scene,
         plan: &rastercheck::plan::Plan,
     ) -> Result<rastercheck::frame::Frame, rastercheck::rasterizer::RasterError> {
-        rastercheck::production::Production.rasterize(&scene.with_fill_rule(self.0), plan)
+        let drawn = if self.follows {
+            scene.with_fill_rule(self.rule)
+        } else {
+            scene.clone()
+        };
+        rastercheck::production::Production.rasterize(&drawn, plan)
     }
     fn fixed_fill_rule(&self) -> Option<rastercheck::scene::FillRule> {
-        Some(self.0)
+        Some(self.rule)
     }
 }
 
@@ -308,43 +317,35 @@ impl rastercheck::rasterizer::Rasterizer for OwnRule {
 fn time_coverage_pins_follow_the_case_not_a_declared_rule() {
     use rastercheck::harness::judge::{run_candidate, Verdict};
     use rastercheck::harness::{discover, load, oracle};
-    use rastercheck::rasterizer::Rasterizer;
     use rastercheck::scene::{FillRule, Limits};
-    for (id, own) in [
+    for (id, rule) in [
         ("motion/ride_top_edge_bottom_right", FillRule::TopLeft),
         ("motion/ride_top_edge_top_left", FillRule::BottomRight),
     ] {
         let file = discover::case_file(&root().join("cases").join(format!("{id}.json")));
         let scene = load::load(&file, &Limits::default()).unwrap();
         let reference = oracle::run_reference(&scene);
-        let run = run_candidate(&scene, &reference, &OwnRule(own));
-        assert_eq!(run.verdict, Verdict::Pass, "{id} under its own {own}");
-        assert_eq!(run.judged_rule, Some(own));
-        // Declaring the rule without following it is caught.
-        struct Liar(FillRule);
-        impl Rasterizer for Liar {
-            fn name(&self) -> &str {
-                "liar"
-            }
-            fn capabilities(&self) -> rastercheck::rasterizer::Capabilities {
-                rastercheck::production::Production.capabilities()
-            }
-            fn rasterize(
-                &self,
-                scene: &rastercheck::scene::Scene,
-                plan: &rastercheck::plan::Plan,
-            ) -> Result<rastercheck::frame::Frame, rastercheck::rasterizer::RasterError>
-            {
-                rastercheck::production::Production.rasterize(scene, plan)
-            }
-            fn fixed_fill_rule(&self) -> Option<FillRule> {
-                Some(self.0)
-            }
-        }
-        let run = run_candidate(&scene, &reference, &Liar(own));
+        let run = run_candidate(
+            &scene,
+            &reference,
+            &Declares {
+                rule,
+                follows: true,
+            },
+        );
+        assert_eq!(run.verdict, Verdict::Pass, "{id} under its own {rule}");
+        assert_eq!(run.judged_rule, Some(rule));
+        let run = run_candidate(
+            &scene,
+            &reference,
+            &Declares {
+                rule,
+                follows: false,
+            },
+        );
         assert!(
             matches!(run.verdict, Verdict::Fail(_)),
-            "{id}: drawn under the case's rule while declaring {own}: {:?}",
+            "{id}: drawn under the case's rule while declaring {rule}: {:?}",
             run.verdict
         );
     }
