@@ -19,8 +19,9 @@ use crate::registry;
 pub struct MatrixArgs {
     /// Case files or folders (default: cases).
     pub paths: Vec<PathBuf>,
-    /// Row; repeat for several (default: production, the foils, tiny-skia,
-    /// euc, the Python example and lavapipe).
+    /// Row; repeat for several (default: the registry's matrix rows:
+    /// production, the foils, tiny-skia, euc, the Python example and the
+    /// drivers, whether or not compiled in).
     #[arg(long = "rasterizer", short = 'r')]
     pub rasterizers: Vec<String>,
     /// Replace the text between `<!-- matrix:begin -->` and
@@ -75,7 +76,12 @@ pub fn matrix(args: MatrixArgs) -> Exit {
     if let Some(file) = &args.write_readme {
         let written = std::fs::read_to_string(file)
             .map_err(|e| e.to_string())
-            .and_then(|text| matrix::replace_block(&text, &m.readme_block(&today())))
+            .and_then(|text| {
+                matrix::replace_block(
+                    &text,
+                    &m.readme_block(&today(), &file.display().to_string()),
+                )
+            })
             .and_then(|text| std::fs::write(file, text).map_err(|e| e.to_string()));
         match written {
             Ok(()) => outln!("\nwrote the matrix into {}", file.display()),
