@@ -182,6 +182,18 @@ pub trait Rasterizer: Send + Sync {
         None
     }
 
+    /// The subpixel bits this rasterizer snaps vertices to whatever a case
+    /// states, when its vertex precision is fixed: a driver's
+    /// `subPixelPrecisionBits` or `GL_SUBPIXEL_BITS` (SPEC.md §3.2). A case
+    /// stated at more bits, or unsnapped (`subpixel_bits: null`), is judged
+    /// against the reference drawn at these, and reported as such, as for
+    /// [`Rasterizer::fixed_fill_rule`]; a case at fewer bits is drawn as
+    /// stated (its vertices lie on this finer grid). `None` for a
+    /// rasterizer that follows each case's bits.
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        None
+    }
+
     /// The positions this rasterizer interpolates clip-space values from
     /// whatever a case states (SPEC.md §16.5): a driver sets its planes up
     /// as its pipeline does. Judged as [`Rasterizer::fixed_clip_rules`].

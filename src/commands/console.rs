@@ -115,6 +115,15 @@ pub(crate) fn print_outcome(
                 stated.words()
             ));
         }
+        if let (Some(bits), Some(scene)) = (result.judged_bits, &outcome.scene) {
+            let stated = scene
+                .rules
+                .subpixel_bits
+                .map_or("no snapping".to_owned(), |b| b.to_string());
+            method.push_str(&format!(
+                " (judged under its own {bits} subpixel bits; the case states {stated})"
+            ));
+        }
         outln!(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),

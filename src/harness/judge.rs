@@ -61,6 +61,9 @@ pub struct CandidateRun {
     /// The clip conventions it was judged under, when they are not the
     /// case's ([`Rasterizer::fixed_clip_rules`]).
     pub judged_clip: Option<ClipRules>,
+    /// The subpixel bits it was judged at, when they are not the case's
+    /// ([`Rasterizer::fixed_subpixel_bits`], SPEC.md §3.2).
+    pub judged_bits: Option<u32>,
 }
 
 impl CandidateRun {
@@ -74,6 +77,7 @@ impl CandidateRun {
             method: None,
             judged_rule: None,
             judged_clip: None,
+            judged_bits: None,
         }
     }
 }
@@ -110,7 +114,7 @@ pub fn run_candidate(
         }
     };
     // A rasterizer that cannot follow the case's fill rule (or, in clip
-    // space, its clip conventions) is judged under the ones it follows,
+    // space, its clip conventions, or its subpixel bits) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
     if own.any() {
@@ -135,6 +139,7 @@ pub fn run_candidate(
         };
         run.judged_rule = own.fill_rule;
         run.judged_clip = own.clip;
+        run.judged_bits = own.subpixel_bits;
         return run;
     }
     judge(scene, reference, frame, name, elapsed)
@@ -159,6 +164,7 @@ fn judge(
             elapsed,
             judged_rule: None,
             judged_clip: None,
+            judged_bits: None,
         };
     }
     // The oracle's exact areas, computed once with the reference's frame;
@@ -218,6 +224,7 @@ fn judge(
         elapsed,
         judged_rule: None,
         judged_clip: None,
+        judged_bits: None,
     }
 }
 

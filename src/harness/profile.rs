@@ -186,10 +186,15 @@ pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
 /// values are its one vertex's, SPEC.md §17.2): a case of points alone is
 /// judged under the driver's own `clip_points` and `point_bounds` and
 /// nothing else.
+///
+/// Its fixed subpixel bits ([`Rasterizer::fixed_subpixel_bits`]) where the
+/// case states more bits or none (SPEC.md §3.2): a case at fewer bits is
+/// drawn as stated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
     pub clip: Option<ClipRules>,
+    pub subpixel_bits: Option<u32>,
 }
 
 impl OwnConventions {
@@ -228,16 +233,25 @@ impl OwnConventions {
             }
         }
         let clip = (clip != stated).then_some(clip);
-        OwnConventions { fill_rule, clip }
+        let subpixel_bits = candidate
+            .fixed_subpixel_bits()
+            .filter(|&own| scene.rules.subpixel_bits.is_none_or(|bits| bits > own));
+        OwnConventions {
+            fill_rule,
+            clip,
+            subpixel_bits,
+        }
     }
 
     pub fn any(&self) -> bool {
-        self.fill_rule.is_some() || self.clip.is_some()
+        self.fill_rule.is_some() || self.clip.is_some() || self.subpixel_bits.is_some()
     }
 
     /// The case restated under these conventions. The pins
     /// `samples_covered` and `time_coverage` (whose riding samples fall by
-    /// the tie rule) describe the case's own, so they are dropped.
+    /// the tie rule) describe the case's own, so they are dropped; so is
+    /// `area` (the exact area of the snapped primitives) when the bits
+    /// change.
     pub fn restate(&self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
         if let Some(rule) = self.fill_rule {
@@ -245,6 +259,10 @@ impl OwnConventions {
         }
         if let Some(clip) = self.clip {
             s.rules.clip = clip;
+        }
+        if let Some(bits) = self.subpixel_bits {
+            s.rules.subpixel_bits = Some(bits);
+            s.expect.area = None;
         }
         s.expect.samples_covered = None;
         s.expect.time_coverage.clear();
@@ -259,6 +277,9 @@ impl OwnConventions {
         }
         if let Some(clip) = self.clip {
             words.push(clip.words());
+        }
+        if let Some(bits) = self.subpixel_bits {
+            words.push(format!("{bits} subpixel bits"));
         }
         words.join(" and ")
     }

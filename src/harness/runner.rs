@@ -383,8 +383,10 @@ pub struct Tally {
     /// Departures of a foil (counted apart from failures).
     pub foil: usize,
     /// Of all these, the results judged under the rasterizer's own fill
-    /// rule instead of the case's ([`crate::Rasterizer::fixed_fill_rule`],
-    /// or a profile): conventions, named apart in every summary.
+    /// rule, clipping or subpixel bits instead of the case's
+    /// ([`crate::Rasterizer::fixed_fill_rule`], a profile,
+    /// [`crate::Rasterizer::fixed_subpixel_bits`]): conventions, named
+    /// apart in every summary.
     #[serde(skip_serializing_if = "is_zero")]
     pub own_rule: usize,
 }

@@ -247,6 +247,10 @@ pub struct ResultEntry {
     /// not the case's (`rules.clip`, SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub judged_clip: Option<ClipInfo>,
+    /// The subpixel bits it was judged at, when they are its own and not
+    /// the case's (`rules.subpixel_bits`, SPEC.md §3.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_subpixel_bits: Option<u32>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -464,6 +468,7 @@ impl CaseEntry {
                 method: run.method,
                 judged_fill_rule: run.judged_rule.map(|r| r.name()),
                 judged_clip: run.judged_clip.map(|c| ClipInfo::of(&c)),
+                judged_subpixel_bits: run.judged_bits,
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })
@@ -539,8 +544,11 @@ impl Report {
                     "unsupported" => tally.unsupported += 1,
                     _ => tally.error += 1,
                 }
-                tally.own_rule +=
-                    usize::from(result.judged_fill_rule.is_some() || result.judged_clip.is_some());
+                tally.own_rule += usize::from(
+                    result.judged_fill_rule.is_some()
+                        || result.judged_clip.is_some()
+                        || result.judged_subpixel_bits.is_some(),
+                );
             }
         }
         self.totals = totals;

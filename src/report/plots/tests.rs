@@ -207,6 +207,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 method: None,
                 judged_fill_rule: None,
                 judged_clip: None,
+                judged_subpixel_bits: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })
