@@ -283,7 +283,6 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
     let known = [
         "midpoint rule",
         "strictLines",
-        "subpixel_bits: null",
         "Bresenham",
         "rectangular lines",
     ];

@@ -184,9 +184,9 @@ pub fn assert_interpolation_within_the_bound(
     });
 }
 
-/// A line and a case of unsnapped coordinates are `unsupported`, never
-/// passed.
-pub fn assert_refuses_lines_and_unsnapped(candidate: &dyn Rasterizer) {
+/// A line is `unsupported`, never passed; a case of unsnapped coordinates
+/// is judged at the rasterizer's own subpixel bits.
+pub fn assert_refuses_lines_and_judges_unsnapped(candidate: &dyn Rasterizer) {
     let line = inline(
         r#"{"name": "l", "canvas": {"width": 8, "height": 8},
             "primitives": [{"line": [[0.5, 0.5], [7.5, 3.5]]}]}"#,
@@ -195,11 +195,17 @@ pub fn assert_refuses_lines_and_unsnapped(candidate: &dyn Rasterizer) {
         run(&line, candidate).1.verdict,
         Verdict::Unsupported(_)
     ));
+    // Unsnapped geometry is drawn on the driver's grid and judged at its
+    // bits (SPEC.md §3.2), and named so.
     let scene = case("triangles/unsnapped_dyadic_edges");
-    assert!(matches!(
-        run(&scene, candidate).1.verdict,
-        Verdict::Unsupported(_)
-    ));
+    let r = run(&scene, candidate).1;
+    assert!(
+        !matches!(r.verdict, Verdict::Unsupported(_) | Verdict::Error(_)),
+        "{:?}",
+        r.verdict
+    );
+    assert_eq!(r.judged_bits, candidate.fixed_subpixel_bits());
+    assert!(r.judged_bits.is_some());
 }
 
 /// Every triangle case once, for the record: each verdict printed, the

@@ -12,8 +12,8 @@ use crate::adapters::gpu::depth::DepthTarget;
 
 /// The subpixel bits Mesa's GL snaps the scene to and the depth
 /// attachment it needs (`depth.rs`), or why it cannot draw it: several
-/// samples per pixel, a line rule GL does not draw (`lines.rs`),
-/// unsnapped geometry, too many attributes, or a depth attachment
+/// samples per pixel, a line rule GL does not draw (`lines.rs`), too
+/// many attributes, or a depth attachment
 /// `gpu::depth::target` refuses. For `softpipe`, asks for it if no display
 /// exists yet.
 pub(super) fn accepted(
@@ -27,7 +27,7 @@ pub(super) fn accepted(
             plan.samples_per_pixel
         )));
     }
-    let bits = gpu::snapping_bits(scene, plan, lines::refusal, "Mesa's GL")?;
+    let bits = gpu::snapping_bits(scene, plan, lines::refusal, super::passes::DRIVER_BITS)?;
     if let Some(why) = lines::scene_refusal(scene, plan) {
         return Err(RasterError::Unsupported(format!("lines: {why}")));
     }

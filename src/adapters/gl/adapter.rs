@@ -99,6 +99,14 @@ impl Rasterizer for Gl {
         (!self.softpipe).then_some(PointBounds::Viewport)
     }
 
+    /// The context's `GL_SUBPIXEL_BITS` (SPEC.md §3.2; llvmpipe's is 8):
+    /// a case at more bits, or unsnapped, is judged at these. `None` before
+    /// the context exists (asked after a draw, so only where none could be
+    /// made).
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        context::existing(|gl| gl.subpixel_bits)
+    }
+
     fn declared(&self) -> Option<String> {
         declared()
     }

@@ -94,6 +94,8 @@ pub(super) struct GlContext {
     /// `GL_POINT_SIZE_RANGE` and `GL_POINT_SIZE_GRANULARITY`.
     pub(super) point_range: [f32; 2],
     pub(super) point_granularity: f32,
+    /// `GL_SUBPIXEL_BITS`: the bits the driver snaps window coordinates to.
+    pub(super) subpixel_bits: u32,
     /// `glPolygonOffsetClamp` (GL 4.6, ARB_polygon_offset_clamp) or
     /// `glPolygonOffsetClampEXT`, where the context offers one: a depth
     /// bias with a clamp needs it (`depth.rs`).
@@ -173,13 +175,14 @@ impl GlContext {
         let clip_control = egl.get_proc_address("glClipControl");
         let multisample = egl.get_proc_address("glGetMultisamplefv");
         // SAFETY: plain queries and object creation on the current context.
-        let (renderer, version, point_range, point_granularity, made) = unsafe {
+        let (renderer, version, point_range, point_granularity, subpixel_bits, made) = unsafe {
             let renderer = gl.get_parameter_string(glow::RENDERER);
             let version = gl.get_parameter_string(glow::VERSION);
             let offset_clamp = offset_clamp::offset_clamp(&gl, |name| egl.get_proc_address(name));
             let mut point_range = [0f32; 2];
             gl.get_parameter_f32_slice(glow::POINT_SIZE_RANGE, &mut point_range);
             let point_granularity = gl.get_parameter_f32(glow::POINT_SIZE_GRANULARITY);
+            let subpixel_bits = gl.get_parameter_i32(glow::SUBPIXEL_BITS).max(0) as u32;
             let made =
                 set_up_context(&gl, provoking).and_then(|(max_side, programs, provoking)| {
                     let fetch = fetch::fetch(&gl)?;
@@ -195,7 +198,14 @@ impl GlContext {
                         (provoking, clip, offset_clamp),
                     ))
                 });
-            (renderer, version, point_range, point_granularity, made)
+            (
+                renderer,
+                version,
+                point_range,
+                point_granularity,
+                subpixel_bits,
+                made,
+            )
         };
         let _ = egl.make_current(display, None, None, None);
         let ((max_side, programs, fetch, (max_samples, offered)), (provoking, clip, offset_clamp)) =
@@ -216,6 +226,7 @@ impl GlContext {
             clip,
             point_range,
             point_granularity,
+            subpixel_bits,
             offset_clamp,
         })
     }

@@ -13,9 +13,10 @@ use crate::scene::{Number, Scene};
 /// is judged, so the adapter hands it the case's numbers as they are and
 /// cannot snap for it. Hence:
 ///
-/// - **subpixel bits**: as in screen space, unsnapped geometry (`null`) is
-///   refused, and a case at more bits than the driver's is drawn and shows
-///   the driver's coarser grid. A case at fewer bits is refused: in screen
+/// - **subpixel bits**: as in screen space, unsnapped geometry (`null`) and
+///   a case at more bits than the driver's are drawn on the driver's grid,
+///   and judged at its bits (SPEC.md §3.2). A case at fewer bits is
+///   refused: in screen
 ///   space the adapter snaps to the coarser grid itself before the driver
 ///   sees the vertex (exact on the driver's finer grid), but here the
 ///   vertices are the driver's own (divided, and new ones from clipping).
@@ -30,19 +31,11 @@ use crate::scene::{Number, Scene};
 ///   `cases/clip`).
 pub(crate) fn clip_space_refusal(scene: &Scene, driver: &str, driver_bits: u32) -> Option<String> {
     let viewport = scene.viewport.as_ref()?;
-    match scene.rules.subpixel_bits {
-        None => {
-            return Some(format!(
-                "unsnapped geometry (subpixel_bits: null): {driver} snaps to {driver_bits} subpixel bits"
-            ))
-        }
-        Some(bits) if bits < driver_bits => {
-            return Some(format!(
-                "subpixel_bits {bits}: {driver} snaps clip-space vertices (divided, and those \
-                 clipping makes) to its own {driver_bits} bits, and the adapter cannot snap them coarser"
-            ))
-        }
-        Some(_) => {}
+    if let Some(bits) = scene.rules.subpixel_bits.filter(|&bits| bits < driver_bits) {
+        return Some(format!(
+            "subpixel_bits {bits}: {driver} snaps clip-space vertices (divided, and those \
+             clipping makes) to its own {driver_bits} bits, and the adapter cannot snap them coarser"
+        ));
     }
     let not_f32 = |n: &Number| {
         let q = n.as_rbig();

@@ -7,7 +7,7 @@ use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{FillRule, Scene};
 
 use super::prepared;
-use super::refusals::accepted;
+use super::refusals::{accepted, DRIVER_BITS};
 use super::shared::{gpu, lock};
 use crate::adapters::gpu;
 
@@ -30,6 +30,12 @@ impl Rasterizer for Lavapipe {
     /// lavapipe follows top-left.
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         Some(FillRule::TopLeft)
+    }
+
+    /// lavapipe's 8 bits (SPEC.md §3.2): a case at more, or unsnapped, is
+    /// judged at 8.
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        Some(DRIVER_BITS)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

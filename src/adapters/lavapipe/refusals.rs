@@ -1,15 +1,19 @@
 //! What lavapipe can draw through wgpu, and why it refuses the rest: no
 //! points, Vulkan's standard 4× samples only, the first provoking vertex,
-//! no line rule, snapped geometry.
+//! no line rule.
 
 use crate::adapters::gpu;
 use crate::plan::{Plan, SamplePlan};
 use crate::rasterizer::{refuse_last_provoking, RasterError};
 use crate::scene::Scene;
 
-/// The subpixel bits lavapipe snaps the scene to, or why it cannot draw it:
-/// samples other than Vulkan's standard 4×, a line, unsnapped geometry or
-/// too many attributes.
+/// The subpixel bits lavapipe snaps to (`subPixelPrecisionBits`; wgpu does
+/// not report it, and lavapipe's is 8).
+pub const DRIVER_BITS: u32 = 8;
+
+/// The subpixel bits the scene is snapped to (an unsnapped scene to
+/// [`DRIVER_BITS`]), or why lavapipe cannot draw it: samples other than
+/// Vulkan's standard 4×, a line or too many attributes.
 pub(super) fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
     if scene.has_points() {
         return Err(RasterError::Unsupported(
@@ -36,7 +40,7 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan) -> Result<u32, RasterError> {
         |_| {
             Some("wgpu draws only 1-pixel lines, with no choice of the case's line rule".to_owned())
         },
-        "lavapipe",
+        DRIVER_BITS,
     )
 }
 

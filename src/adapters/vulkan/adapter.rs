@@ -82,6 +82,15 @@ impl Rasterizer for Vulkan {
         Some(PointBounds::Viewport)
     }
 
+    /// The device's `subPixelPrecisionBits` (SPEC.md §3.2): a case at more
+    /// bits, or unsnapped, is judged at the device's. `None` where the
+    /// device cannot be made (nothing is drawn then).
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        let shared = shared().ok()?;
+        let bits = lock(shared).device.offers.subpixel_bits;
+        Some(bits)
+    }
+
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let shared = shared().map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
         let mut shared = lock(shared);

@@ -1,6 +1,6 @@
 //! What a Vulkan device can draw of a scene, and why it refuses the rest:
 //! line modes and widths, stencil, points, clip space, depth attachments,
-//! the provoking vertex, unsnapped geometry and attributes.
+//! the provoking vertex and attributes.
 
 use super::device::{self, Offers};
 use crate::adapters::float_input::f32_of;
@@ -9,8 +9,8 @@ use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::{DepthMode, LineRule, Primitive, Scene};
 
-/// The subpixel bits the scene is snapped to, or why the device cannot
-/// draw it: unsnapped geometry, too many attributes, a line rule or width
+/// The subpixel bits the scene is snapped to (an unsnapped one to the
+/// device's own), or why the device cannot draw it: too many attributes, a line rule or width
 /// it has no mode for, a polygon without a stencil format.
 pub(super) fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u32, RasterError> {
     let unsupported = |why: String| Err(RasterError::Unsupported(why));
@@ -52,12 +52,10 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u3
                 .into(),
         );
     }
-    let Some(bits) = scene.rules.subpixel_bits else {
-        return unsupported(format!(
-            "unsnapped geometry (subpixel_bits: null): the device snaps to {} subpixel bits",
-            offers.subpixel_bits
-        ));
-    };
+    // Unsnapped geometry is snapped to the device's own grid, ties to even:
+    // the case restated at the device's bits (SPEC.md §3.2), which is what
+    // it is judged against.
+    let bits = scene.rules.subpixel_bits.unwrap_or(offers.subpixel_bits);
     if plan.attributes > gpu::MAX_ATTRIBUTES {
         return unsupported(format!(
             "{} attributes (this adapter carries at most {})",
