@@ -165,8 +165,9 @@ pub enum Outcome {
 }
 
 /// The scene as `candidate` is judged on it: stated under the fill rule
-/// (and, in clip space, the clip conventions) it follows whatever a case
-/// states, when it has them (SPEC.md §3.1, §16; a profile's under `fuzz
+/// (and, in clip space, the clip conventions; and at its subpixel bits
+/// where the scene states more or none) it follows whatever a case
+/// states, when it has them (SPEC.md §3.1, §3.2, §16; a profile's under `fuzz
 /// --profile`), so that the reference, the failure's kinds and the case
 /// written all state the conventions judged. `Err` when the scene cannot
 /// be judged under that rule (all-edges polygons).
