@@ -1,0 +1,124 @@
+//! Area methods judged as area methods (SPEC.md §14.4), through the binary,
+//! with `tests/clients/area_foils.py`: a program that answers coverage per
+//! primitive (§12.9) and declares no `coverage_bits`, so each primitive is
+//! held to its exact area within the default step, 2^-8.
+//!
+//! - Drawing nothing fails every antialias case in which some pixel's exact
+//!   area exceeds one step, with its own reason (§6.1 applied to coverage
+//!   answers); the cases in which every pixel's exact area is at most one
+//!   step stay legitimately passable, and are counted.
+//! - A constant 0.9 wherever a primitive touches fails every case.
+
+mod common;
+
+use std::path::PathBuf;
+
+use common::cli::{rastercheck, read_json, scratch, text};
+use serde_json::Value;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The default step an area method that declares no quantization is held
+/// to (SPEC.md §14.4), and the 10^-9 a declared step allows beyond itself.
+const STEP: f64 = 1.0 / 256.0;
+const FLOAT_SLACK: f64 = 1e-9;
+
+/// Runs the client with `flags` over the antialias cases, one thread: each
+/// case's (id, result).
+fn run(tag: &str, flags: &str) -> (Vec<(String, Value)>, String) {
+    let dir = scratch(&format!("area-{tag}"));
+    let client = root().join("tests/clients/area_foils.py");
+    let spec = format!(
+        "foil=external-persistent:python3 {} {flags}",
+        client.display()
+    );
+    let report = dir.join("report");
+    let report_arg = report.display().to_string();
+    let args = [
+        "run",
+        "cases/antialias",
+        "-r",
+        &spec,
+        "--threads",
+        "1",
+        "--report",
+        &report_arg,
+    ];
+    let out = rastercheck(&root(), &args);
+    let json = read_json(&report.join("report.json"));
+    let results = json["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            (
+                c["id"].as_str().unwrap().to_owned(),
+                c["results"][0].clone(),
+            )
+        })
+        .collect();
+    (results, text(&out))
+}
+
+fn reasons(r: &Value) -> String {
+    r["reasons"].to_string()
+}
+
+#[test]
+fn drawing_nothing_fails_every_case_whose_exact_area_exceeds_one_step() {
+    let (results, printed) = run("empty", "--empty");
+    let mut passable = Vec::new();
+    for (id, r) in &results {
+        if r["verdict"] == "unsupported" {
+            continue;
+        }
+        // Drawing nothing, its error at each pixel is the exact area
+        // there: the largest is the largest exact area of a pixel.
+        let largest = r["metrics"]["antialias"]["max_error"].as_f64().unwrap();
+        if largest > STEP + FLOAT_SLACK {
+            assert_eq!(r["verdict"], "fail", "{id}: largest area {largest}");
+            let why = reasons(r);
+            assert!(
+                why.contains("drew nothing where the exact area"),
+                "{id}: {why}"
+            );
+            assert!(why.contains("default step 2^-8"), "{id}: {why}");
+        } else {
+            assert_eq!(r["verdict"], "pass", "{id}: {}", reasons(r));
+            passable.push(id.clone());
+        }
+    }
+    // The legitimately passable cases: every pixel's exact area is at most
+    // one step (here 0: they draw nothing an area method can see, the
+    // degenerate and zero-area triangles), so an empty answer is within it.
+    assert_eq!(passable, PASSABLE, "{printed}");
+}
+
+const PASSABLE: [&str; 0] = [];
+
+#[test]
+fn a_constant_answer_fails_every_case() {
+    let (results, printed) = run("constant", "--constant 0.9");
+    for (id, r) in &results {
+        if r["verdict"] == "unsupported" {
+            continue;
+        }
+        let largest = r["metrics"]["antialias"]["max_error"].as_f64().unwrap();
+        if largest > STEP + FLOAT_SLACK {
+            assert_eq!(r["verdict"], "fail", "{id}: {printed}");
+            assert!(
+                reasons(r).contains("from the primitive's exact area"),
+                "{id}: {}",
+                reasons(r)
+            );
+        }
+    }
+    // spec_n_rooks_offsets: 0.9 where the exact area is 3/512.
+    let (_, rooks) = results
+        .iter()
+        .find(|(id, _)| id == "antialias/spec_n_rooks_offsets")
+        .unwrap();
+    assert_eq!(rooks["verdict"], "fail", "{}", reasons(rooks));
+}
