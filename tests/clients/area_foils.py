@@ -32,19 +32,25 @@ def answer(req):
     cull = req["rules"]["cull"]
     out = []
     for prim in req["primitives"]:
-        if "triangle" not in prim:
-            return {"unsupported": "triangles only"}
-        pts = area8.vertices(prim["triangle"], bits)
+        if "triangle" in prim:
+            pts = area8.vertices(prim["triangle"], bits)
+            contours = [] if area8.culled(pts, cull) else [pts]
+        elif "contours" in prim:
+            contours = [area8.vertices(c, bits) for c in prim["contours"]]
+        else:
+            return {"unsupported": "triangles and polygons only"}
         touched = []
-        if CONSTANT is not None and not area8.culled(pts, cull):
-            xs, ys = area8.box(pts, width, height)
-            touched = [(x, y) for y in ys for x in xs if area8.pixel_area(pts, x, y) > 0]
+        if CONSTANT is not None and contours:
+            xs, ys = area8.box([p for c in contours for p in c], width, height)
+            touched = [(x, y) for y in ys for x in xs
+                       if any(area8.pixel_area(c, x, y) > 0 for c in contours)]
         out.append({"coverage": [[x, y, CONSTANT] for (x, y) in touched]})
     return {"primitives": out}
 
 
 def main():
-    caps = {"primitives": ["triangles"], "antialias": True, "fill_rules": ["top-left"],
+    caps = {"primitives": ["triangles", "polygons"], "antialias": True,
+            "fill_rules": ["top-left"], "polygon_fills": ["nonzero", "even-odd"],
             "coverage_only": True}
     hello = {"protocol": 2, "name": "area_foils", "version": "1", "capabilities": caps}
     print(json.dumps({"hello": hello}), flush=True)

@@ -1,0 +1,157 @@
+//! Area methods judged as area methods (SPEC.md §14.4).
+//!
+//! An area method answers each primitive's covered fraction of each pixel
+//! (an external program's `coverage` answer, §12.9: a frame without
+//! samples that keeps its [`Parts`]). It claims the exact area, so it is
+//! held to the exact area within one step: the quantization it declares
+//! (`coverage_bits`), or, when it declares none, [`DEFAULT_STEP`]. The
+//! N-sample bounds of a case (`max_coverage_error`, `max_coverage_rms`)
+//! are written for sample methods, whose samples may miss a sliver whole;
+//! they do not apply to it.
+//!
+//! Drawing nothing where some pixel's exact area exceeds one step is a
+//! failure of its own (§6.1 applied to coverage answers). A case in which
+//! every pixel's exact area is at most one step stays passable by an empty
+//! answer: that answer is within the step everywhere.
+//!
+//! A frame without samples and without parts (production's `area-f32`,
+//! `adaptive-resolve`, the library adapters) is not told apart here from
+//! a sample method resolved without its mask: `adaptive-resolve` is one.
+
+use serde::Serialize;
+
+use super::parts::FLOAT_SLACK;
+use crate::frame::{Frame, Parts};
+
+/// The step an area method that declares no quantization is held to: 2^-8,
+/// the finest common 8-bit encoding. A method that rounds to the nearest
+/// multiple of 1/255 or of 1/256 (error at most 1/510 or 1/512), or
+/// truncates to multiples of 1/256, meets it without declaring anything;
+/// one that truncates to multiples of 1/255 must declare `coverage_bits`.
+pub const DEFAULT_STEP: f64 = 1.0 / 256.0;
+
+/// Whether a frame is an area method's answer, judged as such: no samples,
+/// and coverage per primitive.
+pub fn is_area_answer(frame: &Frame) -> bool {
+    frame.samples == 0 && frame.parts.is_some()
+}
+
+/// The step a primitive's coverage is held to: the declared one, else the
+/// default.
+pub fn step_of(parts: &Parts) -> f64 {
+    if parts.step > 0.0 {
+        parts.step
+    } else {
+        DEFAULT_STEP
+    }
+}
+
+/// The bound on each primitive-pixel error: one step, and 10^-9 for the
+/// program's own float arithmetic.
+pub fn allowed_error(parts: &Parts) -> f64 {
+    step_of(parts) + FLOAT_SLACK
+}
+
+/// What a reason names the step as.
+pub fn whose_step(declared: f64) -> &'static str {
+    if declared > 0.0 {
+        "one step of the declared quantization"
+    } else {
+        "the default step 2^-8 of an area method that declares no coverage_bits, SPEC.md §14.4"
+    }
+}
+
+/// An area answer that draws nothing where the reference draws more than
+/// one step: `report.json`'s `metrics.antialias.nothing_drawn`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NothingDrawn {
+    /// Pixels whose exact area exceeds one step.
+    pub pixels: u64,
+    /// The largest exact area of a pixel, and where (the first such pixel).
+    pub largest: f64,
+    pub at: [u32; 2],
+    /// The declared step; 0 for none (the default applies).
+    pub step: f64,
+}
+
+/// [`NothingDrawn`] when `candidate` is an area answer that is 0 on every
+/// pixel while some pixel's exact area (the reference's resolved value)
+/// exceeds one step.
+pub fn nothing_drawn(reference: &Frame, candidate: &Frame) -> Option<NothingDrawn> {
+    let parts = candidate
+        .parts
+        .as_ref()
+        .filter(|_| is_area_answer(candidate))?;
+    let (exact, resolved) = (reference.resolved.as_ref()?, candidate.resolved.as_ref()?);
+    let drawn = resolved.iter().any(|&r| r != 0.0)
+        || parts.coverage.iter().flatten().any(|&(_, f)| f != 0.0);
+    if drawn {
+        return None;
+    }
+    let bound = allowed_error(parts);
+    let width = reference.width.max(1) as usize;
+    let mut out = NothingDrawn {
+        pixels: 0,
+        largest: 0.0,
+        at: [0, 0],
+        step: parts.step,
+    };
+    for (p, &e) in exact.iter().enumerate() {
+        if e > bound {
+            out.pixels += 1;
+        }
+        if e > out.largest {
+            out.largest = e;
+            out.at = [(p % width) as u32, (p / width) as u32];
+        }
+    }
+    (out.pixels > 0).then_some(out)
+}
+
+/// The reason a [`NothingDrawn`] fails a case.
+pub fn failure(n: &NothingDrawn) -> String {
+    let [x, y] = n.at;
+    format!(
+        "antialias: drew nothing where the exact area of {} pixels exceeds {:.3e} ({}); the largest, {:.3e}, is at ({x}, {y}) (SPEC.md §6.1)",
+        n.pixels,
+        if n.step > 0.0 { n.step } else { DEFAULT_STEP },
+        whose_step(n.step),
+        n.largest
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn answer(resolved: Vec<f64>, step: f64) -> Frame {
+        let mut f = Frame::resolved_only(2, 1, resolved);
+        f.parts = Some(Parts {
+            coverage: vec![vec![]],
+            step,
+        });
+        f
+    }
+
+    #[test]
+    fn nothing_is_a_failure_only_where_an_area_exceeds_one_step() {
+        let reference = Frame::resolved_only(2, 1, vec![0.5, 0.001]);
+        let n = nothing_drawn(&reference, &answer(vec![0.0, 0.0], 0.0)).unwrap();
+        assert_eq!((n.pixels, n.largest, n.at), (1, 0.5, [0, 0]));
+        assert!(failure(&n).contains("default step 2^-8"));
+        // Below one step everywhere: passable.
+        let faint = Frame::resolved_only(2, 1, vec![0.003, 0.001]);
+        assert_eq!(nothing_drawn(&faint, &answer(vec![0.0, 0.0], 0.0)), None);
+        // A declared coarser step widens it.
+        let coarse = Frame::resolved_only(2, 1, vec![0.2, 0.0]);
+        assert_eq!(nothing_drawn(&coarse, &answer(vec![0.0, 0.0], 0.25)), None);
+        // Something drawn, or no parts (not told apart from a sample
+        // method): not this rule.
+        assert_eq!(
+            nothing_drawn(&reference, &answer(vec![0.5, 0.0], 0.0)),
+            None
+        );
+        let bare = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
+        assert_eq!(nothing_drawn(&reference, &bare), None);
+    }
+}
