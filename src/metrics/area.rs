@@ -9,10 +9,11 @@
 //! are written for sample methods, whose samples may miss a sliver whole;
 //! they do not apply to it.
 //!
-//! Drawing nothing where some pixel's exact area exceeds one step is a
-//! failure of its own (§6.1 applied to coverage answers). A case in which
-//! every pixel's exact area is at most one step stays passable by an empty
-//! answer: that answer is within the step everywhere.
+//! Drawing nothing where some primitive's exact area in a pixel exceeds one
+//! step is a failure of its own (§6.1 applied to coverage answers). A case
+//! in which every primitive's exact area in every pixel is at most one step
+//! stays passable by an empty answer: that answer is within the step
+//! everywhere.
 //!
 //! A frame without samples and without parts (production's `area-f32`,
 //! `adaptive-resolve`, the library adapters) is not told apart here from
@@ -20,7 +21,7 @@
 
 use serde::Serialize;
 
-use super::parts::FLOAT_SLACK;
+use super::parts::{PartCheck, FLOAT_SLACK};
 use crate::frame::{Frame, Parts};
 
 /// The step an area method that declares no quantization is held to: 2^-8,
@@ -61,59 +62,45 @@ pub fn whose_step(declared: f64) -> &'static str {
     }
 }
 
-/// An area answer that draws nothing where the reference draws more than
-/// one step: `report.json`'s `metrics.antialias.nothing_drawn`.
+/// An area answer that draws nothing where a primitive's exact area in a
+/// pixel exceeds one step: `report.json`'s `metrics.antialias.nothing_drawn`.
+/// Judged per primitive, as the step is: two primitives of 1/256 each in a
+/// pixel may both round to 0.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct NothingDrawn {
-    /// Pixels whose exact area exceeds one step.
-    pub pixels: u64,
-    /// The largest exact area of a pixel, and where (the first such pixel).
+    /// (primitive, pixel) pairs whose exact area exceeds one step.
+    pub pairs: u64,
+    /// The largest exact area of a pair, and where: [primitive, x, y].
     pub largest: f64,
-    pub at: [u32; 2],
+    pub at: [u32; 3],
     /// The declared step; 0 for none (the default applies).
     pub step: f64,
 }
 
 /// [`NothingDrawn`] when `candidate` is an area answer that is 0 on every
-/// pixel while some pixel's exact area (the reference's resolved value)
-/// exceeds one step.
-pub fn nothing_drawn(reference: &Frame, candidate: &Frame) -> Option<NothingDrawn> {
+/// pixel and for every primitive, while some primitive's exact area in a
+/// pixel exceeds one step (`check`: its per-primitive comparison).
+pub fn nothing_drawn(candidate: &Frame, check: &PartCheck) -> Option<NothingDrawn> {
     let parts = candidate
         .parts
         .as_ref()
         .filter(|_| is_area_answer(candidate))?;
-    let (exact, resolved) = (reference.resolved.as_ref()?, candidate.resolved.as_ref()?);
-    let drawn = resolved.iter().any(|&r| r != 0.0)
+    let drawn = candidate.resolved.iter().flatten().any(|&r| r != 0.0)
         || parts.coverage.iter().flatten().any(|&(_, f)| f != 0.0);
-    if drawn {
-        return None;
-    }
-    let bound = allowed_error(parts);
-    let width = reference.width.max(1) as usize;
-    let mut out = NothingDrawn {
-        pixels: 0,
-        largest: 0.0,
-        at: [0, 0],
+    (!drawn && check.areas_over_bound > 0).then(|| NothingDrawn {
+        pairs: check.areas_over_bound,
+        largest: check.largest_area,
+        at: check.largest_at,
         step: parts.step,
-    };
-    for (p, &e) in exact.iter().enumerate() {
-        if e > bound {
-            out.pixels += 1;
-        }
-        if e > out.largest {
-            out.largest = e;
-            out.at = [(p % width) as u32, (p / width) as u32];
-        }
-    }
-    (out.pixels > 0).then_some(out)
+    })
 }
 
 /// The reason a [`NothingDrawn`] fails a case.
 pub fn failure(n: &NothingDrawn) -> String {
-    let [x, y] = n.at;
+    let [p, x, y] = n.at;
     format!(
-        "antialias: drew nothing where the exact area of {} pixels exceeds {:.3e} ({}); the largest, {:.3e}, is at ({x}, {y}) (SPEC.md §6.1)",
-        n.pixels,
+        "antialias: drew nothing where the exact area of {} primitive-pixels exceeds {:.3e} ({}); the largest, {:.3e}, is primitive {p}'s at ({x}, {y}) (SPEC.md §6.1)",
+        n.pairs,
         if n.step > 0.0 { n.step } else { DEFAULT_STEP },
         whose_step(n.step),
         n.largest
@@ -123,35 +110,49 @@ pub fn failure(n: &NothingDrawn) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::metrics::parts;
+    use dashu_ratio::RBig;
 
-    fn answer(resolved: Vec<f64>, step: f64) -> Frame {
+    fn answer(fractions: Vec<(u32, f64)>, step: f64) -> Frame {
+        let mut resolved = vec![0.0; 2];
+        for &(p, f) in &fractions {
+            resolved[p as usize] += f;
+        }
         let mut f = Frame::resolved_only(2, 1, resolved);
         f.parts = Some(Parts {
-            coverage: vec![vec![]],
+            coverage: vec![fractions, vec![]],
             step,
         });
         f
     }
 
+    fn area(n: u32, d: u32) -> RBig {
+        RBig::from_parts(n.into(), d.into())
+    }
+
+    fn nothing(exact: &[Vec<(u32, RBig)>], given: &Frame) -> Option<NothingDrawn> {
+        let check = parts::measure(given.parts.as_ref().unwrap(), exact, 2, 2);
+        nothing_drawn(given, &check)
+    }
+
     #[test]
     fn nothing_is_a_failure_only_where_an_area_exceeds_one_step() {
-        let reference = Frame::resolved_only(2, 1, vec![0.5, 0.001]);
-        let n = nothing_drawn(&reference, &answer(vec![0.0, 0.0], 0.0)).unwrap();
-        assert_eq!((n.pixels, n.largest, n.at), (1, 0.5, [0, 0]));
+        let exact = vec![vec![(0, area(1, 2))], vec![(1, area(1, 1000))]];
+        let n = nothing(&exact, &answer(vec![], 0.0)).unwrap();
+        assert_eq!((n.pairs, n.largest, n.at), (1, 0.5, [0, 0, 0]));
         assert!(failure(&n).contains("default step 2^-8"));
-        // Below one step everywhere: passable.
-        let faint = Frame::resolved_only(2, 1, vec![0.003, 0.001]);
-        assert_eq!(nothing_drawn(&faint, &answer(vec![0.0, 0.0], 0.0)), None);
+        // Below one step for every primitive, though not in their sum:
+        // passable.
+        let faint = vec![vec![(0, area(1, 256))], vec![(0, area(1, 256))]];
+        assert_eq!(nothing(&faint, &answer(vec![], 0.0)), None);
         // A declared coarser step widens it.
-        let coarse = Frame::resolved_only(2, 1, vec![0.2, 0.0]);
-        assert_eq!(nothing_drawn(&coarse, &answer(vec![0.0, 0.0], 0.25)), None);
+        let coarse = vec![vec![(0, area(1, 5))], vec![]];
+        assert_eq!(nothing(&coarse, &answer(vec![], 0.25)), None);
         // Something drawn, or no parts (not told apart from a sample
         // method): not this rule.
-        assert_eq!(
-            nothing_drawn(&reference, &answer(vec![0.5, 0.0], 0.0)),
-            None
-        );
+        assert_eq!(nothing(&exact, &answer(vec![(0, 0.5)], 0.0)), None);
+        let check = parts::measure(&answer(vec![], 0.0).parts.unwrap(), &exact, 2, 2);
         let bare = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
-        assert_eq!(nothing_drawn(&reference, &bare), None);
+        assert_eq!(nothing_drawn(&bare, &check), None);
     }
 }

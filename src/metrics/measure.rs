@@ -121,10 +121,8 @@ pub fn measure_known(
         ),
         parts.as_ref().map(|p| p.slack.as_slice()),
     );
-    if let Some(aa) = &mut antialias {
-        aa.nothing_drawn = area::nothing_drawn(reference, candidate);
-    }
     if let (Some(aa), Some(p)) = (&mut antialias, parts) {
+        aa.nothing_drawn = area::nothing_drawn(candidate, &p);
         aa.primitives = Some(p.metrics);
     }
     let mut channels = Vec::new();

@@ -68,6 +68,11 @@ pub struct PartCheck {
     /// Per pixel: the sum of the declared steps of the primitives whose
     /// exact area there is strictly between 0 and 1.
     pub slack: Vec<f64>,
+    /// Pairs whose exact area exceeds the bound (`area.rs`: an empty answer
+    /// fails there), the largest exact area of a pair, and where.
+    pub areas_over_bound: u64,
+    pub largest_area: f64,
+    pub largest_at: [u32; 3],
 }
 
 /// Compares each primitive's fractions with its exact areas (`exact[p]`:
@@ -89,6 +94,7 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
         first_violation: None,
     };
     let mut slack = vec![0.0; pixels];
+    let (mut areas_over_bound, mut largest_area, mut largest_at) = (0, 0.0, [0, 0, 0]);
     let width = width.max(1);
     for (p, (given, areas)) in parts.coverage.iter().zip(exact).enumerate() {
         for (pixel, fraction, area) in pairs(given, areas) {
@@ -105,6 +111,10 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
                 *s += parts.step;
             }
             let exact = area.as_ref().map_or(0.0, to_f64_nearest);
+            areas_over_bound += u64::from(allowed.is_some_and(|b| exact > b));
+            if exact > largest_area {
+                (largest_area, largest_at) = (exact, at);
+            }
             let error = (fraction - exact).abs();
             let error = if error.is_nan() { f64::INFINITY } else { error };
             if error > m.max_error {
@@ -114,7 +124,13 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
             m.over_bound += u64::from(allowed.is_some_and(|b| error > b));
         }
     }
-    PartCheck { metrics: m, slack }
+    PartCheck {
+        metrics: m,
+        slack,
+        areas_over_bound,
+        largest_area,
+        largest_at,
+    }
 }
 
 /// The pixels of one primitive where the fraction given or the exact area
