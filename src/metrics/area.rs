@@ -21,8 +21,11 @@
 
 use serde::Serialize;
 
-use super::parts::{PartCheck, FLOAT_SLACK};
 use crate::frame::{Frame, Parts};
+
+/// What a declared step allows beyond itself: the program's own rounding
+/// of an area it computes in floats.
+pub const FLOAT_SLACK: f64 = 1e-9;
 
 /// The step an area method that declares no quantization is held to: 2^-8,
 /// the finest common 8-bit encoding. A method that rounds to the nearest
@@ -62,6 +65,16 @@ pub fn whose_step(declared: f64) -> &'static str {
     }
 }
 
+/// What the per-primitive comparison (`parts.rs`) saw of the exact areas:
+/// the (primitive, pixel) pairs whose area exceeds the bound, the largest
+/// area of a pair, and where, [primitive, x, y].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct AreasSeen {
+    pub over_bound: u64,
+    pub largest: f64,
+    pub at: [u32; 3],
+}
+
 /// An area answer that draws nothing where a primitive's exact area in a
 /// pixel exceeds one step: `report.json`'s `metrics.antialias.nothing_drawn`.
 /// Judged per primitive, as the step is: two primitives of 1/256 each in a
@@ -79,18 +92,18 @@ pub struct NothingDrawn {
 
 /// [`NothingDrawn`] when `candidate` is an area answer that is 0 on every
 /// pixel and for every primitive, while some primitive's exact area in a
-/// pixel exceeds one step (`check`: its per-primitive comparison).
-pub fn nothing_drawn(candidate: &Frame, check: &PartCheck) -> Option<NothingDrawn> {
+/// pixel exceeds one step (`seen`: by the per-primitive comparison).
+pub fn nothing_drawn(candidate: &Frame, seen: &AreasSeen) -> Option<NothingDrawn> {
     let parts = candidate
         .parts
         .as_ref()
         .filter(|_| is_area_answer(candidate))?;
     let drawn = candidate.resolved.iter().flatten().any(|&r| r != 0.0)
         || parts.coverage.iter().flatten().any(|&(_, f)| f != 0.0);
-    (!drawn && check.areas_over_bound > 0).then(|| NothingDrawn {
-        pairs: check.areas_over_bound,
-        largest: check.largest_area,
-        at: check.largest_at,
+    (!drawn && seen.over_bound > 0).then(|| NothingDrawn {
+        pairs: seen.over_bound,
+        largest: seen.largest,
+        at: seen.at,
         step: parts.step,
     })
 }
@@ -110,8 +123,6 @@ pub fn failure(n: &NothingDrawn) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::metrics::parts;
-    use dashu_ratio::RBig;
 
     fn answer(fractions: Vec<(u32, f64)>, step: f64) -> Frame {
         let mut resolved = vec![0.0; 2];
@@ -126,33 +137,31 @@ mod tests {
         f
     }
 
-    fn area(n: u32, d: u32) -> RBig {
-        RBig::from_parts(n.into(), d.into())
-    }
-
-    fn nothing(exact: &[Vec<(u32, RBig)>], given: &Frame) -> Option<NothingDrawn> {
-        let check = parts::measure(given.parts.as_ref().unwrap(), exact, 2, 2);
-        nothing_drawn(given, &check)
+    fn seen(over_bound: u64, largest: f64) -> AreasSeen {
+        AreasSeen {
+            over_bound,
+            largest,
+            at: [0, 1, 0],
+        }
     }
 
     #[test]
     fn nothing_is_a_failure_only_where_an_area_exceeds_one_step() {
-        let exact = vec![vec![(0, area(1, 2))], vec![(1, area(1, 1000))]];
-        let n = nothing(&exact, &answer(vec![], 0.0)).unwrap();
-        assert_eq!((n.pairs, n.largest, n.at), (1, 0.5, [0, 0, 0]));
+        let n = nothing_drawn(&answer(vec![], 0.0), &seen(1, 0.5)).unwrap();
+        assert_eq!((n.pairs, n.largest, n.at), (1, 0.5, [0, 1, 0]));
         assert!(failure(&n).contains("default step 2^-8"));
-        // Below one step for every primitive, though not in their sum:
-        // passable.
-        let faint = vec![vec![(0, area(1, 256))], vec![(0, area(1, 256))]];
-        assert_eq!(nothing(&faint, &answer(vec![], 0.0)), None);
-        // A declared coarser step widens it.
-        let coarse = vec![vec![(0, area(1, 5))], vec![]];
-        assert_eq!(nothing(&coarse, &answer(vec![], 0.25)), None);
+        assert!(failure(&n).contains("primitive 0's at (1, 0)"));
+        let n = nothing_drawn(&answer(vec![], 0.25), &seen(1, 0.5)).unwrap();
+        assert!(failure(&n).contains("2.500e-1 (one step of the declared quantization)"));
+        // No area over one step: passable.
+        assert_eq!(nothing_drawn(&answer(vec![], 0.0), &seen(0, 0.003)), None);
         // Something drawn, or no parts (not told apart from a sample
         // method): not this rule.
-        assert_eq!(nothing(&exact, &answer(vec![(0, 0.5)], 0.0)), None);
-        let check = parts::measure(&answer(vec![], 0.0).parts.unwrap(), &exact, 2, 2);
+        assert_eq!(
+            nothing_drawn(&answer(vec![(0, 0.5)], 0.0), &seen(1, 0.5)),
+            None
+        );
         let bare = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
-        assert_eq!(nothing_drawn(&bare, &check), None);
+        assert_eq!(nothing_drawn(&bare, &seen(1, 0.5)), None);
     }
 }

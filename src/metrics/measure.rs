@@ -122,7 +122,7 @@ pub fn measure_known(
         parts.as_ref().map(|p| p.slack.as_slice()),
     );
     if let (Some(aa), Some(p)) = (&mut antialias, parts) {
-        aa.nothing_drawn = area::nothing_drawn(candidate, &p);
+        aa.nothing_drawn = area::nothing_drawn(candidate, &p.areas);
         aa.primitives = Some(p.metrics);
     }
     let mut channels = Vec::new();

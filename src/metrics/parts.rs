@@ -31,9 +31,8 @@ use serde::Serialize;
 use crate::frame::Parts;
 use crate::reference::area::to_f64_nearest;
 
-/// What a declared step allows beyond itself: the program's own rounding
-/// of an area it computes in floats.
-pub const FLOAT_SLACK: f64 = 1e-9;
+pub use super::area::FLOAT_SLACK;
+use super::area::{self, AreasSeen};
 
 /// What the per-primitive comparison found; `report.json`'s
 /// `metrics.antialias.primitives` (SPEC.md §10.1).
@@ -70,9 +69,7 @@ pub struct PartCheck {
     pub slack: Vec<f64>,
     /// Pairs whose exact area exceeds the bound (`area.rs`: an empty answer
     /// fails there), the largest exact area of a pair, and where.
-    pub areas_over_bound: u64,
-    pub largest_area: f64,
-    pub largest_at: [u32; 3],
+    pub areas: AreasSeen,
 }
 
 /// Compares each primitive's fractions with its exact areas (`exact[p]`:
@@ -82,7 +79,7 @@ pub struct PartCheck {
 pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: usize) -> PartCheck {
     // One step, and 10^-9 for the program's own float arithmetic (an area
     // a hair below k/255 computed in doubles, truncated).
-    let allowed = Some(super::area::allowed_error(parts));
+    let allowed = Some(area::allowed_error(parts));
     let mut m = PartMetrics {
         judged: 0,
         max_error: 0.0,
@@ -94,7 +91,7 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
         first_violation: None,
     };
     let mut slack = vec![0.0; pixels];
-    let (mut areas_over_bound, mut largest_area, mut largest_at) = (0, 0.0, [0, 0, 0]);
+    let mut seen = AreasSeen::default();
     let width = width.max(1);
     for (p, (given, areas)) in parts.coverage.iter().zip(exact).enumerate() {
         for (pixel, fraction, area) in pairs(given, areas) {
@@ -111,9 +108,9 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
                 *s += parts.step;
             }
             let exact = area.as_ref().map_or(0.0, to_f64_nearest);
-            areas_over_bound += u64::from(allowed.is_some_and(|b| exact > b));
-            if exact > largest_area {
-                (largest_area, largest_at) = (exact, at);
+            seen.over_bound += u64::from(allowed.is_some_and(|b| exact > b));
+            if exact > seen.largest {
+                (seen.largest, seen.at) = (exact, at);
             }
             let error = (fraction - exact).abs();
             let error = if error.is_nan() { f64::INFINITY } else { error };
@@ -127,9 +124,7 @@ pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: us
     PartCheck {
         metrics: m,
         slack,
-        areas_over_bound,
-        largest_area,
-        largest_at,
+        areas: seen,
     }
 }
 
@@ -180,7 +175,7 @@ pub fn failures(m: &PartMetrics) -> Vec<String> {
     }
     if let Some(bound) = m.allowed_error.filter(|_| m.over_bound > 0) {
         let [p, x, y] = m.worst;
-        let whose = super::area::whose_step(m.step);
+        let whose = area::whose_step(m.step);
         out.push(format!(
             "antialias: {} primitive-pixel coverages are more than {bound:.3e} ({whose}) from the primitive's exact area; the largest, {:.3e}, is primitive {p}'s at ({x}, {y})",
             m.over_bound, m.max_error
