@@ -100,7 +100,7 @@ pub fn nothing_drawn(candidate: &Frame, seen: &AreasSeen) -> Option<NothingDrawn
         .filter(|_| is_area_answer(candidate))?;
     let drawn = candidate.resolved.iter().flatten().any(|&r| r != 0.0)
         || parts.coverage.iter().flatten().any(|&(_, f)| f != 0.0);
-    (!drawn && seen.over_bound > 0).then(|| NothingDrawn {
+    (!drawn && seen.over_bound > 0).then_some(NothingDrawn {
         pairs: seen.over_bound,
         largest: seen.largest,
         at: seen.at,
