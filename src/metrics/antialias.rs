@@ -24,6 +24,7 @@
 
 use serde::Serialize;
 
+use super::area::NothingDrawn;
 use super::error_bounds::{within, ErrorBounds};
 use super::parts::PartMetrics;
 use crate::frame::Frame;
@@ -115,6 +116,10 @@ pub struct AntialiasMetrics {
     /// per-primitive comparison (`parts.rs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub primitives: Option<PartMetrics>,
+    /// Such a method that drew nothing where some pixel's exact area
+    /// exceeds one step (`area.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nothing_drawn: Option<NothingDrawn>,
 }
 
 fn is_zero(n: &u64) -> bool {
@@ -133,12 +138,18 @@ impl AntialiasMetrics {
 
 /// The bounds of a case: `expect.max_coverage_error` and
 /// `expect.max_coverage_rms`, the latter by default piglit's for sample
-/// methods (none for area methods, `samples` = 0).
+/// methods (none for a frame without samples, `samples` = 0). An area
+/// answer (`area::is_area_answer`) is held to none of them: it is held to
+/// its exact area within one step, per primitive (`area.rs`, `parts.rs`).
 pub fn bounds(
     max_coverage_error: Option<f64>,
     max_coverage_rms: Option<f64>,
     samples: u32,
+    area_answer: bool,
 ) -> (Option<f64>, Option<f64>) {
+    if area_answer {
+        return (None, None);
+    }
     let rms = max_coverage_rms.or((samples > 0).then(|| default_rms_bound(samples)));
     (max_coverage_error, rms)
 }
@@ -209,6 +220,7 @@ pub fn measure_with_slack(
         allowed_error: bounds.0,
         allowed_rms: bounds.1,
         primitives: None,
+        nothing_drawn: None,
     };
     let (mut sum_sq_edge, mut sum_sq_all, mut sum_edge) = (0f64, 0f64, 0f64);
     let errors = signed_errors(reference, candidate);
@@ -310,6 +322,9 @@ pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
             "antialias: {} pixels resolve to other than the box resolve of their own samples",
             m.resolve_mismatches
         ));
+    }
+    if let Some(nothing) = &m.nothing_drawn {
+        out.push(super::area::failure(nothing));
     }
     if let Some(parts) = &m.primitives {
         out.extend(super::parts::failures(parts));

@@ -2,6 +2,7 @@
 //! one case, with what the oracle knows exactly beyond its frame.
 
 use super::antialias::{self, AntialiasMetrics, AreaClass};
+use super::area;
 use super::coverage::{self, CoverageMetrics};
 use super::depth;
 use super::interpolation::{self, ChannelError};
@@ -105,7 +106,6 @@ pub fn measure_known(
             exact,
             scene.canvas.width,
             candidate.pixel_count(),
-            scene.expect.max_coverage_error,
         )),
         _ => None,
     };
@@ -117,10 +117,12 @@ pub fn measure_known(
             scene.expect.max_coverage_error,
             scene.expect.max_coverage_rms,
             candidate.samples,
+            area::is_area_answer(candidate),
         ),
         parts.as_ref().map(|p| p.slack.as_slice()),
     );
     if let (Some(aa), Some(p)) = (&mut antialias, parts) {
+        aa.nothing_drawn = area::nothing_drawn(candidate, &p.areas);
         aa.primitives = Some(p.metrics);
     }
     let mut channels = Vec::new();

@@ -3,12 +3,14 @@
 //!
 //! `measure.rs` measures a candidate with every metric that applies
 //! (`coverage.rs`, `watertight.rs`, `line.rs`, `interpolation.rs` and
-//! `depth.rs`, `antialias.rs` and `parts.rs`, `time.rs`; the per-pixel ones
+//! `depth.rs`, `antialias.rs` and `parts.rs` (an area method judged as one:
+//! `area.rs`), `time.rs`; the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
 //! candidate fails.
 
 pub mod antialias;
+pub mod area;
 pub mod coverage;
 pub mod depth;
 pub(crate) mod difference;

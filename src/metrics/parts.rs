@@ -16,7 +16,7 @@
 //!   step (a k-bit method claims the exact area as a multiple of
 //!   1/(2^k − 1); one step allows rounding either way, and 10^-9 more the
 //!   program's float arithmetic), or, where no
-//!   quantization is declared, at most the case's `max_coverage_error`;
+//!   quantization is declared, at most the default step 2^-8 (`area.rs`);
 //! - the sum is then held to piglit's rule within the sum of the steps of
 //!   the primitives that partly cover the pixel ([`PartCheck::slack`]): the
 //!   error their roundings can add up to, and no more.
@@ -31,9 +31,8 @@ use serde::Serialize;
 use crate::frame::Parts;
 use crate::reference::area::to_f64_nearest;
 
-/// What a declared step allows beyond itself: the program's own rounding
-/// of an area it computes in floats.
-pub const FLOAT_SLACK: f64 = 1e-9;
+pub use super::area::FLOAT_SLACK;
+use super::area::{self, AreasSeen};
 
 /// What the per-primitive comparison found; `report.json`'s
 /// `metrics.antialias.primitives` (SPEC.md §10.1).
@@ -48,8 +47,8 @@ pub struct PartMetrics {
     pub worst: [u32; 3],
     /// The quantization step the rasterizer declares; 0 for none.
     pub step: f64,
-    /// The bound on each pair's error: the step, else the case's
-    /// `max_coverage_error`; none: only exactness is held.
+    /// The bound on each pair's error: the declared step, else the default
+    /// step 2^-8 (`area.rs`), and 10^-9; never none any more.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub allowed_error: Option<f64>,
     /// Pairs over that bound.
@@ -68,26 +67,19 @@ pub struct PartCheck {
     /// Per pixel: the sum of the declared steps of the primitives whose
     /// exact area there is strictly between 0 and 1.
     pub slack: Vec<f64>,
+    /// Pairs whose exact area exceeds the bound (`area.rs`: an empty answer
+    /// fails there), the largest exact area of a pair, and where.
+    pub areas: AreasSeen,
 }
 
 /// Compares each primitive's fractions with its exact areas (`exact[p]`:
 /// (pixel, area) for the pixels where primitive p's area is not 0, as
-/// `reference::primitive_pixel_areas` gives them). `max_coverage_error` is
-/// the case's bound, used when no step is declared.
-pub fn measure(
-    parts: &Parts,
-    exact: &[Vec<(u32, RBig)>],
-    width: u32,
-    pixels: usize,
-    max_coverage_error: Option<f64>,
-) -> PartCheck {
+/// `reference::primitive_pixel_areas` gives them). Without a declared
+/// step each pair is held to the default step (`area.rs`).
+pub fn measure(parts: &Parts, exact: &[Vec<(u32, RBig)>], width: u32, pixels: usize) -> PartCheck {
     // One step, and 10^-9 for the program's own float arithmetic (an area
     // a hair below k/255 computed in doubles, truncated).
-    let allowed = if parts.step > 0.0 {
-        Some(parts.step + FLOAT_SLACK)
-    } else {
-        max_coverage_error
-    };
+    let allowed = Some(area::allowed_error(parts));
     let mut m = PartMetrics {
         judged: 0,
         max_error: 0.0,
@@ -99,6 +91,7 @@ pub fn measure(
         first_violation: None,
     };
     let mut slack = vec![0.0; pixels];
+    let mut seen = AreasSeen::default();
     let width = width.max(1);
     for (p, (given, areas)) in parts.coverage.iter().zip(exact).enumerate() {
         for (pixel, fraction, area) in pairs(given, areas) {
@@ -115,6 +108,10 @@ pub fn measure(
                 *s += parts.step;
             }
             let exact = area.as_ref().map_or(0.0, to_f64_nearest);
+            seen.over_bound += u64::from(allowed.is_some_and(|b| exact > b));
+            if exact > seen.largest {
+                (seen.largest, seen.at) = (exact, at);
+            }
             let error = (fraction - exact).abs();
             let error = if error.is_nan() { f64::INFINITY } else { error };
             if error > m.max_error {
@@ -124,7 +121,11 @@ pub fn measure(
             m.over_bound += u64::from(allowed.is_some_and(|b| error > b));
         }
     }
-    PartCheck { metrics: m, slack }
+    PartCheck {
+        metrics: m,
+        slack,
+        areas: seen,
+    }
 }
 
 /// The pixels of one primitive where the fraction given or the exact area
@@ -174,11 +175,7 @@ pub fn failures(m: &PartMetrics) -> Vec<String> {
     }
     if let Some(bound) = m.allowed_error.filter(|_| m.over_bound > 0) {
         let [p, x, y] = m.worst;
-        let whose = if m.step > 0.0 {
-            "one step of the declared quantization"
-        } else {
-            "the case's max_coverage_error"
-        };
+        let whose = area::whose_step(m.step);
         out.push(format!(
             "antialias: {} primitive-pixel coverages are more than {bound:.3e} ({whose}) from the primitive's exact area; the largest, {:.3e}, is primitive {p}'s at ({x}, {y})",
             m.over_bound, m.max_error
@@ -219,7 +216,6 @@ mod tests {
             &exact(),
             2,
             2,
-            None,
         );
         assert!(
             failures(&c.metrics).is_empty(),
@@ -238,19 +234,19 @@ mod tests {
             &exact(),
             2,
             2,
-            Some(1.0),
         );
         assert_eq!(c.metrics.over_bound, 2);
         assert_eq!(failures(&c.metrics).len(), 1);
-        // Without a declared step the case's bound holds instead.
+        // Without a declared step the default step holds instead.
         let c = measure(
             &parts(1.0 / 3.0 + 0.1, 2.0 / 3.0 - 0.1, 1.0, 0.0),
             &exact(),
             2,
             2,
-            Some(0.05),
         );
         assert_eq!(c.metrics.over_bound, 2);
+        assert_eq!(c.metrics.allowed_error, Some(1.0 / 256.0 + FLOAT_SLACK));
+        assert!(failures(&c.metrics)[0].contains("default step 2^-8"));
     }
 
     #[test]
@@ -261,14 +257,13 @@ mod tests {
             &exact(),
             2,
             2,
-            None,
         );
         assert_eq!(c.metrics.exactness_violations, 1);
         assert_eq!(c.metrics.first_violation, Some([0, 1, 0]));
         // A fraction where the primitive does not reach, listed twice.
         let mut p = parts(1.0 / 3.0, 2.0 / 3.0, 1.0, step);
         p.coverage[1].extend([(1, 0.5 / 255.0), (1, 0.5 / 255.0)]);
-        let c = measure(&p, &exact(), 2, 2, None);
+        let c = measure(&p, &exact(), 2, 2);
         assert_eq!((c.metrics.exactness_violations, c.metrics.judged), (1, 4));
         assert_eq!(c.metrics.first_violation, Some([1, 1, 0]));
     }

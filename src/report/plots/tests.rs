@@ -129,6 +129,7 @@ fn aa(samples: u32, rms_edge: f64) -> AntialiasMetrics {
         reference_pixels: 0,
         candidate_pixels: 0,
         primitives: None,
+        nothing_drawn: None,
         allowed_error: None,
         allowed_rms: None,
     }

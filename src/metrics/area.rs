@@ -1,0 +1,167 @@
+//! Area methods judged as area methods (SPEC.md §14.4).
+//!
+//! An area method answers each primitive's covered fraction of each pixel
+//! (an external program's `coverage` answer, §12.9: a frame without
+//! samples that keeps its [`Parts`]). It claims the exact area, so it is
+//! held to the exact area within one step: the quantization it declares
+//! (`coverage_bits`), or, when it declares none, [`DEFAULT_STEP`]. The
+//! N-sample bounds of a case (`max_coverage_error`, `max_coverage_rms`)
+//! are written for sample methods, whose samples may miss a sliver whole;
+//! they do not apply to it.
+//!
+//! Drawing nothing where some primitive's exact area in a pixel exceeds one
+//! step is a failure of its own (§6.1 applied to coverage answers). A case
+//! in which every primitive's exact area in every pixel is at most one step
+//! stays passable by an empty answer: that answer is within the step
+//! everywhere.
+//!
+//! A frame without samples and without parts (production's `area-f32`,
+//! `adaptive-resolve`, the library adapters) is not told apart here from
+//! a sample method resolved without its mask: `adaptive-resolve` is one.
+
+use serde::Serialize;
+
+use crate::frame::{Frame, Parts};
+
+/// What a declared step allows beyond itself: the program's own rounding
+/// of an area it computes in floats.
+pub const FLOAT_SLACK: f64 = 1e-9;
+
+/// The step an area method that declares no quantization is held to: 2^-8,
+/// the finest common 8-bit encoding. A method that rounds to the nearest
+/// multiple of 1/255 or of 1/256 (error at most 1/510 or 1/512), or
+/// truncates to multiples of 1/256, meets it without declaring anything;
+/// one that truncates to multiples of 1/255 must declare `coverage_bits`.
+pub const DEFAULT_STEP: f64 = 1.0 / 256.0;
+
+/// Whether a frame is an area method's answer, judged as such: no samples,
+/// and coverage per primitive.
+pub fn is_area_answer(frame: &Frame) -> bool {
+    frame.samples == 0 && frame.parts.is_some()
+}
+
+/// The step a primitive's coverage is held to: the declared one, else the
+/// default.
+pub fn step_of(parts: &Parts) -> f64 {
+    if parts.step > 0.0 {
+        parts.step
+    } else {
+        DEFAULT_STEP
+    }
+}
+
+/// The bound on each primitive-pixel error: one step, and 10^-9 for the
+/// program's own float arithmetic.
+pub fn allowed_error(parts: &Parts) -> f64 {
+    step_of(parts) + FLOAT_SLACK
+}
+
+/// What a reason names the step as.
+pub fn whose_step(declared: f64) -> &'static str {
+    if declared > 0.0 {
+        "one step of the declared quantization"
+    } else {
+        "the default step 2^-8 of an area method that declares no coverage_bits, SPEC.md §14.4"
+    }
+}
+
+/// What the per-primitive comparison (`parts.rs`) saw of the exact areas:
+/// the (primitive, pixel) pairs whose area exceeds the bound, the largest
+/// area of a pair, and where, [primitive, x, y].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct AreasSeen {
+    pub over_bound: u64,
+    pub largest: f64,
+    pub at: [u32; 3],
+}
+
+/// An area answer that draws nothing where a primitive's exact area in a
+/// pixel exceeds one step: `report.json`'s `metrics.antialias.nothing_drawn`.
+/// Judged per primitive, as the step is: two primitives of 1/256 each in a
+/// pixel may both round to 0.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NothingDrawn {
+    /// (primitive, pixel) pairs whose exact area exceeds one step.
+    pub pairs: u64,
+    /// The largest exact area of a pair, and where: [primitive, x, y].
+    pub largest: f64,
+    pub at: [u32; 3],
+    /// The declared step; 0 for none (the default applies).
+    pub step: f64,
+}
+
+/// [`NothingDrawn`] when `candidate` is an area answer that is 0 on every
+/// pixel and for every primitive, while some primitive's exact area in a
+/// pixel exceeds one step (`seen`: by the per-primitive comparison).
+pub fn nothing_drawn(candidate: &Frame, seen: &AreasSeen) -> Option<NothingDrawn> {
+    let parts = candidate
+        .parts
+        .as_ref()
+        .filter(|_| is_area_answer(candidate))?;
+    let drawn = candidate.resolved.iter().flatten().any(|&r| r != 0.0)
+        || parts.coverage.iter().flatten().any(|&(_, f)| f != 0.0);
+    (!drawn && seen.over_bound > 0).then_some(NothingDrawn {
+        pairs: seen.over_bound,
+        largest: seen.largest,
+        at: seen.at,
+        step: parts.step,
+    })
+}
+
+/// The reason a [`NothingDrawn`] fails a case.
+pub fn failure(n: &NothingDrawn) -> String {
+    let [p, x, y] = n.at;
+    format!(
+        "antialias: drew nothing where the exact area of {} primitive-pixels exceeds {:.3e} ({}); the largest, {:.3e}, is primitive {p}'s at ({x}, {y}) (SPEC.md §6.1)",
+        n.pairs,
+        if n.step > 0.0 { n.step } else { DEFAULT_STEP },
+        whose_step(n.step),
+        n.largest
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn answer(fractions: Vec<(u32, f64)>, step: f64) -> Frame {
+        let mut resolved = vec![0.0; 2];
+        for &(p, f) in &fractions {
+            resolved[p as usize] += f;
+        }
+        let mut f = Frame::resolved_only(2, 1, resolved);
+        f.parts = Some(Parts {
+            coverage: vec![fractions, vec![]],
+            step,
+        });
+        f
+    }
+
+    fn seen(over_bound: u64, largest: f64) -> AreasSeen {
+        AreasSeen {
+            over_bound,
+            largest,
+            at: [0, 1, 0],
+        }
+    }
+
+    #[test]
+    fn nothing_is_a_failure_only_where_an_area_exceeds_one_step() {
+        let n = nothing_drawn(&answer(vec![], 0.0), &seen(1, 0.5)).unwrap();
+        assert_eq!((n.pairs, n.largest, n.at), (1, 0.5, [0, 1, 0]));
+        assert!(failure(&n).contains("default step 2^-8"));
+        assert!(failure(&n).contains("primitive 0's at (1, 0)"));
+        let n = nothing_drawn(&answer(vec![], 0.25), &seen(1, 0.5)).unwrap();
+        assert!(failure(&n).contains("2.500e-1 (one step of the declared quantization)"));
+        // No area over one step: passable.
+        assert_eq!(nothing_drawn(&answer(vec![], 0.0), &seen(0, 0.003)), None);
+        // Something drawn, or no parts (not told apart from a sample
+        // method): not this rule.
+        assert_eq!(
+            nothing_drawn(&answer(vec![(0, 0.5)], 0.0), &seen(1, 0.5)),
+            None
+        );
+        let bare = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
+        assert_eq!(nothing_drawn(&bare, &seen(1, 0.5)), None);
+    }
+}
