@@ -1,6 +1,7 @@
 //! `rastercheck run`: the main job. Cases are selected and run (harness),
-//! each outcome printed as it is judged (console), totals printed, and the
-//! report folder written (report).
+//! a progress bar shown while they are judged, each outcome then printed in
+//! case order (console), totals printed, and the report folder written
+//! (report).
 
 use super::console::outln;
 use std::io::IsTerminal;
