@@ -166,15 +166,6 @@ pub fn cannot_judge_under(scene: &Scene, rule: FillRule) -> Option<String> {
     })
 }
 
-/// A case with its fill rule replaced by a declared one.
-pub fn under_rule(scene: &Scene, rule: FillRule) -> Scene {
-    let mut s = scene.with_fill_rule(rule);
-    // The pins describe the case's own rule, not the declared one.
-    s.expect.samples_covered = None;
-    s.expect.time_coverage.clear();
-    s
-}
-
 /// The conventions a rasterizer is judged under instead of a case's, when
 /// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
 /// case states another, and for a clip-space case under depth clip its
