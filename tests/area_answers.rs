@@ -13,14 +13,8 @@
 
 mod common;
 
-use std::path::PathBuf;
-
-use common::cli::{rastercheck, read_json, scratch, text};
+use common::cli::run_client;
 use serde_json::Value;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
 
 /// The default step an area method that declares no quantization is held
 /// to (SPEC.md §14.4), and the 10^-9 a declared step allows beyond itself.
@@ -30,26 +24,13 @@ const FLOAT_SLACK: f64 = 1e-9;
 /// Runs the client with `flags` over the antialias cases, one thread: each
 /// case's (id, result).
 fn run(tag: &str, flags: &str) -> (Vec<(String, Value)>, String) {
-    let dir = scratch(&format!("area-{tag}"));
-    let client = root().join("tests/clients/area_foils.py");
-    let spec = format!(
-        "foil=external-persistent:python3 {} {flags}",
-        client.display()
+    let (json, printed) = run_client(
+        &format!("area-{tag}"),
+        "area_foils.py",
+        "foil",
+        flags,
+        &["cases/antialias"],
     );
-    let report = dir.join("report");
-    let report_arg = report.display().to_string();
-    let args = [
-        "run",
-        "cases/antialias",
-        "-r",
-        &spec,
-        "--threads",
-        "1",
-        "--report",
-        &report_arg,
-    ];
-    let out = rastercheck(&root(), &args);
-    let json = read_json(&report.join("report.json"));
     let results = json["cases"]
         .as_array()
         .unwrap()
@@ -61,7 +42,7 @@ fn run(tag: &str, flags: &str) -> (Vec<(String, Value)>, String) {
             )
         })
         .collect();
-    (results, text(&out))
+    (results, printed)
 }
 
 fn reasons(r: &Value) -> String {

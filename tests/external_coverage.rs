@@ -19,7 +19,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::cli::{rastercheck, read_json, scratch, text};
+use common::cli::{rastercheck, run_client, scratch, text};
 use serde_json::Value;
 
 fn root() -> PathBuf {
@@ -29,20 +29,13 @@ fn root() -> PathBuf {
 /// Runs the client with `flags` over `cases` (folders or files of the
 /// repository), one thread; the report, and what was printed.
 fn run(tag: &str, flags: &str, cases: &[&str]) -> (Value, String) {
-    let dir = scratch(&format!("coverage-{tag}"));
-    let client = root().join("tests/clients/area8.py");
-    let spec = format!(
-        "area8=external-persistent:python3 {} {flags}",
-        client.display()
-    );
-    let report = dir.join("report");
-    let mut args = vec!["run"];
-    args.extend_from_slice(cases);
-    args.extend(["-r", &spec, "--threads", "1", "--report"]);
-    let report_arg = report.display().to_string();
-    args.push(&report_arg);
-    let out = rastercheck(&root(), &args);
-    (read_json(&report.join("report.json")), text(&out))
+    run_client(
+        &format!("coverage-{tag}"),
+        "area8.py",
+        "area8",
+        flags,
+        cases,
+    )
 }
 
 /// The client's result on each case: (case id, result object).

@@ -144,6 +144,33 @@ pub fn workspace(name: &str, files: &[(&str, &str)]) -> PathBuf {
     dir
 }
 
+/// Runs the repository's test client `tests/clients/{client}` (Python, in
+/// persistent mode, called `name`) with `flags` over `cases` (folders or
+/// files of the repository) on one thread, its report in a fresh scratch
+/// folder `tag`: the report, and what was printed.
+pub fn run_client(
+    tag: &str,
+    client: &str,
+    name: &str,
+    flags: &str,
+    cases: &[&str],
+) -> (serde_json::Value, String) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = scratch(tag);
+    let program = root.join("tests/clients").join(client);
+    let spec = format!(
+        "{name}=external-persistent:python3 {} {flags}",
+        program.display()
+    );
+    let report = dir.join("report");
+    let report_arg = report.display().to_string();
+    let mut args = vec!["run"];
+    args.extend_from_slice(cases);
+    args.extend(["-r", &spec, "--threads", "1", "--report", &report_arg]);
+    let out = rastercheck(root, &args);
+    (read_json(&report.join("report.json")), text(&out))
+}
+
 /// A JSON file, parsed.
 pub fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
