@@ -387,7 +387,7 @@ fn a_rasterizers_own_clipping_is_judged_and_named() {
     let scene = common::case("clip/spec_near_clip_then_snap");
     assert_eq!(scene.rules.clip.z, ClipZ::ClipThenSnap);
     let (_, run) = common::run(&scene, &FixedClip(own));
-    assert_eq!(run.judged_clip, Some(own));
+    assert_eq!(run.judged.clip, Some(own));
     assert!(
         matches!(run.verdict, rastercheck::harness::judge::Verdict::Pass),
         "{:?}",

@@ -194,7 +194,7 @@ fn a_rasterizers_own_interpolate_from_is_judged_and_named() {
     };
     let (_, run) = common::run(&scene, &own);
     assert_eq!(
-        run.judged_clip.map(|c| c.values),
+        run.judged.clip.map(|c| c.values),
         Some(InterpolateFrom::Unsnapped)
     );
     assert!(matches!(run.verdict, Verdict::Pass), "{:?}", run.verdict);

@@ -334,7 +334,7 @@ fn time_coverage_pins_follow_the_case_not_a_declared_rule() {
             },
         );
         assert_eq!(run.verdict, Verdict::Pass, "{id} under its own {rule}");
-        assert_eq!(run.judged_rule, Some(rule));
+        assert_eq!(run.judged.fill_rule, Some(rule));
         let run = run_candidate(
             &scene,
             &reference,

@@ -87,7 +87,7 @@ fn a_rasterizer_judged_at_its_own_bits_passes() {
         }
         let coarser = stated.is_none_or(|b| b > 4);
         assert_eq!(
-            run.judged_bits,
+            run.judged.subpixel_bits,
             coarser.then_some(4),
             "{id} states {stated:?}"
         );
@@ -127,9 +127,9 @@ fn finer_cases_are_judged_at_the_rasterizers_bits_coarser_as_stated() {
         declares: 8,
     };
     let run = judge("triangles/guard_band_b16", &eight);
-    assert_eq!(run.judged_bits, Some(8));
+    assert_eq!(run.judged.subpixel_bits, Some(8));
     assert_eq!(run.verdict, Verdict::Pass);
     let run = judge("triangles/snap_tie_half_subpixel_b4", &eight);
-    assert_eq!(run.judged_bits, None);
+    assert_eq!(run.judged.subpixel_bits, None);
     assert_eq!(run.verdict, Verdict::Pass);
 }

@@ -101,13 +101,13 @@ pub(crate) fn print_outcome(
             continue;
         }
         let mut method = result.method.map(|m| format!(" ({m})")).unwrap_or_default();
-        if let (Some(rule), Some(scene)) = (result.judged_rule, &outcome.scene) {
+        if let (Some(rule), Some(scene)) = (result.judged.fill_rule, &outcome.scene) {
             method.push_str(&format!(
                 " (judged under its own {rule} rule; the case states {})",
                 scene.rules.fill_rule
             ));
         }
-        if let (Some(clip), Some(scene)) = (result.judged_clip, &outcome.scene) {
+        if let (Some(clip), Some(scene)) = (result.judged.clip, &outcome.scene) {
             let stated = scene.rules.clip;
             method.push_str(&format!(
                 " (judged under its own clipping, {}; the case states {})",
@@ -115,7 +115,7 @@ pub(crate) fn print_outcome(
                 stated.words()
             ));
         }
-        if let (Some(bits), Some(scene)) = (result.judged_bits, &outcome.scene) {
+        if let (Some(bits), Some(scene)) = (result.judged.subpixel_bits, &outcome.scene) {
             let stated = scene
                 .rules
                 .subpixel_bits

@@ -10,7 +10,7 @@ use super::profile::{cannot_judge_under, OwnConventions};
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer};
-use crate::scene::{ClipRules, FillRule, Scene};
+use crate::scene::Scene;
 
 /// How a candidate did on a case.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,16 +54,12 @@ pub struct CandidateRun {
     pub elapsed: Duration,
     /// The frame's [`Frame::method`], kept when the frame is released.
     pub method: Option<&'static str>,
-    /// The rule it was judged under, when that is not the case's: the
-    /// rasterizer follows a fill rule of its own
-    /// ([`Rasterizer::fixed_fill_rule`]).
-    pub judged_rule: Option<FillRule>,
-    /// The clip conventions it was judged under, when they are not the
-    /// case's ([`Rasterizer::fixed_clip_rules`]).
-    pub judged_clip: Option<ClipRules>,
-    /// The subpixel bits it was judged at, when they are not the case's
-    /// ([`Rasterizer::fixed_subpixel_bits`], SPEC.md §3.2).
-    pub judged_bits: Option<u32>,
+    /// The conventions of its own it was judged under where they are not
+    /// the case's: a fill rule ([`Rasterizer::fixed_fill_rule`]), clip
+    /// conventions ([`Rasterizer::fixed_clip_rules`]), subpixel bits
+    /// ([`Rasterizer::fixed_subpixel_bits`], SPEC.md §3.2); none when it
+    /// was judged as the case states.
+    pub judged: OwnConventions,
 }
 
 impl CandidateRun {
@@ -75,9 +71,7 @@ impl CandidateRun {
             frame: None,
             elapsed,
             method: None,
-            judged_rule: None,
-            judged_clip: None,
-            judged_bits: None,
+            judged: OwnConventions::default(),
         }
     }
 }
@@ -137,9 +131,7 @@ pub fn run_candidate(
                 CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
             }
         };
-        run.judged_rule = own.fill_rule;
-        run.judged_clip = own.clip;
-        run.judged_bits = own.subpixel_bits;
+        run.judged = own;
         return run;
     }
     judge(scene, reference, frame, name, elapsed)
@@ -162,9 +154,7 @@ fn judge(
             method: frame.method,
             frame: Some(frame),
             elapsed,
-            judged_rule: None,
-            judged_clip: None,
-            judged_bits: None,
+            judged: OwnConventions::default(),
         };
     }
     // The oracle's exact areas, computed once with the reference's frame;
@@ -222,9 +212,7 @@ fn judge(
         method: frame.method,
         frame: Some(frame),
         elapsed,
-        judged_rule: None,
-        judged_clip: None,
-        judged_bits: None,
+        judged: OwnConventions::default(),
     }
 }
 

@@ -466,9 +466,9 @@ impl CaseEntry {
                 },
                 time_ms: millis(run.elapsed),
                 method: run.method,
-                judged_fill_rule: run.judged_rule.map(|r| r.name()),
-                judged_clip: run.judged_clip.map(|c| ClipInfo::of(&c)),
-                judged_subpixel_bits: run.judged_bits,
+                judged_fill_rule: run.judged.fill_rule.map(|r| r.name()),
+                judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
+                judged_subpixel_bits: run.judged.subpixel_bits,
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })

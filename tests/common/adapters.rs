@@ -204,8 +204,8 @@ pub fn assert_refuses_lines_and_judges_unsnapped(candidate: &dyn Rasterizer) {
         "{:?}",
         r.verdict
     );
-    assert_eq!(r.judged_bits, candidate.fixed_subpixel_bits());
-    assert!(r.judged_bits.is_some());
+    assert_eq!(r.judged.subpixel_bits, candidate.fixed_subpixel_bits());
+    assert!(r.judged.subpixel_bits.is_some());
 }
 
 /// Every triangle case once, for the record: each verdict printed, the
@@ -247,10 +247,10 @@ pub fn assert_eight_ties_change_hands(
 ) {
     let (_, r) = run(&pair(own), candidate);
     assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
-    assert_eq!(r.judged_rule, None);
+    assert_eq!(r.judged.fill_rule, None);
     let (_, r) = run(&pair(other), candidate);
     assert_eq!(r.verdict, Verdict::Pass, "{}", judge::describe(&r));
-    assert_eq!(r.judged_rule.map(|r| r.name()), Some(own));
+    assert_eq!(r.judged.fill_rule.map(|r| r.name()), Some(own));
     let (_, r) = super::run_as_stated(&pair(other), candidate);
     let m = r.metrics.as_ref().unwrap();
     assert_eq!(

@@ -130,7 +130,7 @@ fn its_tie_rule_is_bottom_left() {
     // case's, it fails.
     let (_, own) = run(&case("triangles/fill_rule_top_left"));
     assert_eq!(own.verdict, Verdict::Pass, "{}", judge::describe(&own));
-    assert_eq!(own.judged_rule, Some(FillRule::BottomLeft));
+    assert_eq!(own.judged.fill_rule, Some(FillRule::BottomLeft));
     let (reference, top_left) = common::run_as_stated(&case("triangles/fill_rule_top_left"), &GL);
     eprintln!("{}", report("fill_rule_top_left", &reference, &top_left));
     assert!(matches!(top_left.verdict, Verdict::Fail(_)));
