@@ -434,6 +434,15 @@ fn resource_limits_are_errors_not_crashes() {
         t.contains("cases/pair.json: $.canvas: canvas of 64 pixels exceeds the limit of 63"),
         "{t}"
     );
+    // A limit of the run, not bad input: LIMIT, as the README's limits
+    // paragraph says (it was BAD, unreadable, before).
+    for limit in ["--max-canvas-pixels", "--max-primitives", "--max-samples"] {
+        let out = rastercheck(&dir, &["run", "cases", limit, "1"]);
+        let t = text(&out);
+        assert_eq!(out.status.code(), Some(2), "{t}");
+        assert!(t.contains("LIMIT"), "{limit}: {t}");
+        assert!(!t.contains("BAD"), "{limit}: {t}");
+    }
     assert_no_panic(&out);
 }
 

@@ -13,8 +13,9 @@ pub fn load(file: &CaseFile, limits: &Limits) -> Result<Scene, CaseError> {
     })
 }
 
-/// Why a case file did not become a scene: bad input, or a file larger
-/// than `--max-case-bytes` (a limit of the run, not a fault of the case).
+/// Why a case file did not become a scene: bad input, or a case over a
+/// configurable limit of the run (`--max-case-bytes`, `--max-canvas-pixels`,
+/// `--max-primitives`, `--max-samples`: not a fault of the case).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum LoadError {
     Unreadable(CaseError),
@@ -26,7 +27,13 @@ pub enum LoadError {
 /// cannot hang the run, and its size is checked before a byte is read.
 pub fn load_checked(file: &CaseFile, limits: &Limits) -> Result<Scene, LoadError> {
     let text = read_case_text(&file.path, limits.max_case_bytes)?;
-    parse_case(&text, &file.path.display().to_string(), limits).map_err(LoadError::Unreadable)
+    parse_case(&text, &file.path.display().to_string(), limits).map_err(|e| {
+        if e.over_limit {
+            LoadError::OverLimit(e)
+        } else {
+            LoadError::Unreadable(e)
+        }
+    })
 }
 
 /// The text of a case file of at most `max_bytes` bytes.
@@ -37,6 +44,7 @@ fn read_case_text(path: &Path, max_bytes: u64) -> Result<String, LoadError> {
         file: shown.clone(),
         location: "$".to_owned(),
         message,
+        over_limit: false,
     };
     let bad = |message: String| LoadError::Unreadable(error(message));
     let regular = |meta: &std::fs::Metadata| -> Result<(), LoadError> {

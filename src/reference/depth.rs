@@ -194,7 +194,8 @@ pub fn offset_interval(
 }
 
 /// Rational bounds [lo, hi] of √x for x = p/q ≥ 0: with s = ⌊√(p·q·4^b)⌋
-/// (b = [`SQRT_BITS`]), lo = s/(q·2^b) and hi = (s + 1)/(q·2^b). The
+/// (b = [`SQRT_BITS`]), lo = s/(q·2^b) and hi = (s + 1)/(q·2^b), or hi =
+/// lo when s² = p·q·4^b (x is a perfect square, its root exact). The
 /// certificate lo² ≤ x ≤ hi² is checked exactly before they are returned.
 ///
 /// # Panics
@@ -205,8 +206,15 @@ pub fn sqrt_bounds(x: &RBig) -> [RBig; 2] {
     let q = x.denominator().clone();
     let s = ((&p * &q) << (2 * SQRT_BITS)).sqrt();
     let den = IBig::from(&q << SQRT_BITS);
+    // A perfect square's root is exact: both ends are it (SPEC.md §18.2's
+    // m of a gradient along an axis, zero included).
+    let exact = &s * &s == (&p * &q) << (2 * SQRT_BITS);
     let lo = RBig::from_parts_signed(IBig::from(s.clone()), den.clone());
-    let hi = RBig::from_parts_signed(IBig::from(s + UBig::ONE), den);
+    let hi = if exact {
+        lo.clone()
+    } else {
+        RBig::from_parts_signed(IBig::from(s + UBig::ONE), den)
+    };
     assert!(
         &lo * &lo <= *x && *x <= &hi * &hi,
         "the square root's certificate failed"
@@ -249,8 +257,29 @@ mod tests {
             assert!(&lo * &lo <= x && x <= &hi * &hi);
             assert!(&hi - &lo <= q(1, 1) / RBig::from(IBig::ONE << SQRT_BITS));
         }
-        // A perfect square's root is its lower bound exactly.
-        assert_eq!(sqrt_bounds(&q(9, 4))[0], q(3, 2));
+        // A perfect square's root is both of its bounds, exactly (the upper
+        // one was (s + 1)/(q·2^b) before, so a zero gradient had m up to
+        // 2^-96 and a unorm24 depth at 1/2 could store 8388607).
+        assert_eq!(sqrt_bounds(&q(9, 4)), [q(3, 2), q(3, 2)]);
+        assert_eq!(sqrt_bounds(&q(0, 1)), [q(0, 1), q(0, 1)]);
+        assert_eq!(sqrt_bounds(&q(1, 1)), [q(1, 1), q(1, 1)]);
+        let [lo, hi] = sqrt_bounds(&q(2, 1));
+        assert!(lo < hi);
+    }
+
+    #[test]
+    fn a_plane_along_an_axis_has_an_exact_offset() {
+        let bias = DepthBias {
+            constant: crate::scene::Number::ZERO,
+            slope: crate::scene::Number::ONE,
+            clamp: crate::scene::Number::ZERO,
+        };
+        // A flat plane: m = 0 exactly, so the offset is 0 exactly.
+        let zero = offset_interval(&bias, DepthFormat::Float32, &[q(0, 1), q(0, 1)], &q(1, 2));
+        assert_eq!(zero, [q(0, 1), q(0, 1)]);
+        // z = -3x/4: m = 3/4 exactly.
+        let along = offset_interval(&bias, DepthFormat::Float32, &[q(-3, 4), q(0, 1)], &q(1, 2));
+        assert_eq!(along, [q(3, 4), q(3, 4)]);
     }
 
     #[test]

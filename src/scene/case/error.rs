@@ -12,6 +12,9 @@ pub struct CaseError {
     /// `line L column C` for a syntax error.
     pub location: String,
     pub message: String,
+    /// The case is over a configurable limit of the run (`--max-…`), not
+    /// bad: reported `limit-exceeded`, not unreadable (SPEC.md §8).
+    pub over_limit: bool,
 }
 
 impl fmt::Display for CaseError {

@@ -15,19 +15,22 @@ pub fn parse_case(text: &str, file: &str, limits: &Limits) -> Result<Scene, Case
         file: file.to_owned(),
         location: format!("line {} column {}", e.line(), e.column()),
         message: format!("invalid JSON: {}", strip_position(&e.to_string())),
+        over_limit: false,
     })?;
     if let Some(path) = json::duplicate_key(text) {
         return Err(CaseError {
             file: file.to_owned(),
             location: path.to_string(),
             message: "a key repeated in one object; each key may appear once (SPEC §1)".to_owned(),
+            over_limit: false,
         });
     }
-    let reader = Reader { limits };
+    let reader = Reader::new(limits);
     reader.scene(&value).map_err(|(path, message)| CaseError {
         file: file.to_owned(),
         location: path.to_string(),
         message,
+        over_limit: reader.over_limit.get(),
     })
 }
 

@@ -118,7 +118,7 @@ impl Reader<'_> {
         };
         let pixels = canvas.pixel_count() as u64;
         if pixels > self.limits.max_canvas_pixels {
-            return fail(
+            return self.over(
                 path,
                 format!(
                     "canvas of {pixels} pixels exceeds the limit of {} (raise it with --max-canvas-pixels)",
@@ -192,7 +192,7 @@ impl Reader<'_> {
             );
         }
         if items.len() > self.limits.max_primitives {
-            return fail(
+            return self.over(
                 path,
                 format!(
                     "{} primitives exceed the limit of {} (raise it with --max-primitives)",

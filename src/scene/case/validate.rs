@@ -104,7 +104,7 @@ impl Reader<'_> {
                 format!(" × {s} samples × {t} time samples"),
             ),
         };
-        fail(
+        self.over(
             &path,
             format!(
                 "{pixels} pixels{factors} = {total} sample points exceed the limit of {} (raise it with --max-samples)",
