@@ -8,7 +8,7 @@ mod common;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::process::Output;
+use std::process::{Command, Output};
 
 use common::cli::{rastercheck as rastercheck_in, read_json as read, text};
 use serde_json::Value;
@@ -20,6 +20,24 @@ const MUTANT: &str = "mutant:no-perspective";
 /// Runs in the repository, on its bundled cases.
 fn rastercheck(args: &[&str]) -> Output {
     rastercheck_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
+}
+
+/// `rastercheck ARGS` under a 60 s `timeout` (a hang fails, not blocks, the
+/// test) and, with `cap_kib`, an address-space cap (`ulimit -v`).
+fn bounded(args: &[&str], cap_kib: Option<u64>) -> Output {
+    let quoted: Vec<String> = args.iter().map(|a| format!("'{a}'")).collect();
+    let cap = cap_kib.map_or(String::new(), |k| format!("ulimit -v {k}; "));
+    let script = format!(
+        "{cap}exec timeout 60 '{}' {}",
+        env!("CARGO_BIN_EXE_rastercheck"),
+        quoted.join(" ")
+    );
+    Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("sh runs")
 }
 
 fn code(out: &Output) -> i32 {
@@ -413,6 +431,39 @@ fn bad_input_exits_2_naming_the_file() {
             assert!(!printed.contains("panicked"), "{printed}");
         }
     }
+
+    // A FIFO with no writer is refused, not waited on (it hung before).
+    let fifo = dir.join("fifo.json");
+    let made = Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    let out = bounded(&["diff", s(&fifo), s(&good)], None);
+    assert_eq!(code(&out), 2, "{}", text(&out));
+    assert!(
+        text(&out).contains("not a regular file (a FIFO)"),
+        "{}",
+        text(&out)
+    );
+
+    // 64 MB of JSON that is not a report, under a 256 MiB address-space
+    // cap: refused in constant memory (parsed whole first, it took 421 MB
+    // and aborted under the cap).
+    let big = dir.join("big.json");
+    let mut numbers = String::with_capacity(64 << 20);
+    numbers.push('[');
+    while numbers.len() < 64 << 20 {
+        numbers.push_str("0.123456789,");
+    }
+    numbers.push_str("0]");
+    std::fs::write(&big, numbers).unwrap();
+    let out = bounded(&["diff", s(&big), s(&good)], Some(256 << 10));
+    assert_eq!(code(&out), 2, "{}", text(&out));
+    assert!(text(&out).contains("big.json"), "{}", text(&out));
+    assert!(
+        text(&out).contains("expected a JSON object"),
+        "{}",
+        text(&out)
+    );
+    std::fs::remove_file(&big).unwrap();
 
     // An --out folder that cannot be created: before anything is read.
     let file = dir.join("a-file");

@@ -82,7 +82,7 @@ fn read_case_text(path: &Path, max_bytes: u64) -> Result<String, LoadError> {
 }
 
 /// What kind of file `meta` describes, in words.
-fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+pub fn file_kind(meta: &std::fs::Metadata) -> &'static str {
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt;

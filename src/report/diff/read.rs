@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
+use crate::harness::load::file_kind;
 use crate::report::json::SCHEMA;
 
 /// The verdicts and case statuses a `rastercheck-report/1` holds.
@@ -89,8 +90,22 @@ pub fn report_file(path: &Path) -> PathBuf {
 }
 
 /// Reads a report file or folder; `Err` names the file and the JSON path.
+///
+/// Only a regular file is opened (a FIFO with no writer would hang), and
+/// its schema is checked by a first pass that keeps nothing but the
+/// `schema` field, so a large JSON file that is not a report is refused in
+/// constant memory instead of being parsed whole first.
 pub fn read(path: &Path) -> Result<Side, String> {
     let file = report_file(path);
+    let shown = file.display();
+    let meta = std::fs::metadata(&file).map_err(|e| format!("{shown}: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!(
+            "{shown}: not a regular file ({}); a report must be a regular file",
+            file_kind(&meta)
+        ));
+    }
+    check_schema(&file).map_err(|e| format!("{shown}: {e}"))?;
     let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
     let value: Value =
         serde_json::from_str(&text).map_err(|e| format!("{}: not JSON: {e}", file.display()))?;
@@ -106,23 +121,61 @@ pub fn read(path: &Path) -> Result<Side, String> {
 
 type Parsed = (bool, Vec<String>, BTreeMap<String, Case>);
 
+/// The first pass: the file is JSON, an object, and its `schema` is a
+/// report's. Every other value is skipped as it is read
+/// ([`serde::de::IgnoredAny`]), so memory stays constant.
+fn check_schema(file: &Path) -> Result<(), String> {
+    #[derive(serde::Deserialize)]
+    struct Head {
+        schema: Option<String>,
+    }
+    use std::io::BufRead;
+    let opened = std::fs::File::open(file).map_err(|e| e.to_string())?;
+    let mut reader = std::io::BufReader::new(opened);
+    // An object, not an array (serde would read an array as the struct's
+    // fields in order).
+    loop {
+        let buf = reader.fill_buf().map_err(|e| e.to_string())?;
+        if buf.is_empty() {
+            return Err("not JSON: the file is empty".to_owned());
+        }
+        let blank = buf.iter().take_while(|b| b.is_ascii_whitespace()).count();
+        if blank == buf.len() {
+            reader.consume(blank);
+            continue;
+        }
+        if buf[blank] != b'{' {
+            return Err("expected a JSON object (a report.json)".to_owned());
+        }
+        break;
+    }
+    let head: Head = serde_json::from_reader(reader).map_err(|e| {
+        if e.is_data() {
+            format!("schema: expected the string {SCHEMA:?}: {e}")
+        } else {
+            format!("not JSON: {e}")
+        }
+    })?;
+    check_schema_name(head.schema.as_deref())
+}
+
+fn check_schema_name(schema: Option<&str>) -> Result<(), String> {
+    match schema {
+        Some(SCHEMA) => Ok(()),
+        Some(other) => Err(format!(
+            "schema: expected {SCHEMA:?}, got {other:?} (not a rastercheck report, or another version)"
+        )),
+        None => Err(format!(
+            "schema: missing; expected {SCHEMA:?} (not a rastercheck report.json)"
+        )),
+    }
+}
+
 fn parse(root: &Value) -> Result<Parsed, String> {
     let root_obj = root
         .as_object()
         .ok_or("expected a JSON object (a report.json)")?;
-    match root_obj.get("schema").and_then(Value::as_str) {
-        Some(SCHEMA) => {}
-        Some(other) => {
-            return Err(format!(
-                "schema: expected {SCHEMA:?}, got {other:?} (not a rastercheck report, or another version)"
-            ))
-        }
-        None => {
-            return Err(format!(
-                "schema: missing; expected {SCHEMA:?} (not a rastercheck report.json)"
-            ))
-        }
-    }
+    check_schema_name(root_obj.get("schema").and_then(Value::as_str))?;
     let complete = root_obj
         .get("complete")
         .and_then(Value::as_bool)
