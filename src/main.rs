@@ -81,6 +81,10 @@ fn main() -> ExitCode {
             return ExitCode::from(exit.code());
         }
     };
+    // A signal kills the external programs a command started (each leads
+    // a process group of its own) and ends it; `run` installs its own
+    // handler, which stops the run and writes a partial report.
+    rastercheck::stop::install_exiting();
     let exit = match cli.command {
         Command::Run(args) => commands::run::run(args),
         Command::Bless(args) => commands::bless::bless(args),

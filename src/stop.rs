@@ -6,6 +6,12 @@
 //!   and kills every registered child with SIGKILL. A second signal ends
 //!   the process at once (exit 128 + signal), for a user who does not want
 //!   to wait for the cases in flight.
+//! - [`install_exiting`] (every other command: `baseline`, `matrix`,
+//!   `probe`, `fuzz`, `show`, ...; they have no partial report to write)
+//!   kills every registered child on the first signal and ends the process
+//!   at once with 128 + signal, so that no external program outlives it
+//!   (each leads a process group of its own, which the terminal's signal
+//!   does not reach).
 //! - The runner polls [`requested`] before each case and starts no new one
 //!   once it is set; it marks the cases that did not finish `not-run`.
 //! - An adapter that starts a process calls [`register`] with its pid right
@@ -20,10 +26,13 @@
 //! nothing is allocated or locked. Imports nothing from the crate: every
 //! stage may use it, as [`crate::deadline`].
 
-use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 
 /// The signal that asked the run to stop; 0 while none has.
 static STOP: AtomicI32 = AtomicI32::new(0);
+
+/// Whether the first signal ends the process ([`install_exiting`]).
+static EXIT_AT_ONCE: AtomicBool = AtomicBool::new(false);
 
 /// Slots for the pids of running children; 0 is a free slot.
 const SLOTS: usize = 1024;
@@ -124,6 +133,11 @@ fn kill_pid(_pid: i32) {}
 
 #[cfg(unix)]
 extern "C" fn on_signal(signal: libc::c_int) {
+    if EXIT_AT_ONCE.load(Ordering::SeqCst) {
+        kill_children();
+        // SAFETY: _exit(2) is async-signal-safe.
+        unsafe { libc::_exit(128 + signal) };
+    }
     if STOP
         .compare_exchange(0, signal, Ordering::SeqCst, Ordering::SeqCst)
         .is_err()
@@ -136,8 +150,21 @@ extern "C" fn on_signal(signal: libc::c_int) {
     kill_children();
 }
 
-/// Installs the handler for SIGINT and SIGTERM (unix; elsewhere nothing).
+/// Installs the handler for SIGINT and SIGTERM (unix; elsewhere nothing):
+/// the first signal stops the run, the second ends the process.
 pub fn install() {
+    EXIT_AT_ONCE.store(false, Ordering::SeqCst);
+    handle();
+}
+
+/// Installs the handler for a command that has nothing to finish: the
+/// first signal kills the registered children and ends the process.
+pub fn install_exiting() {
+    EXIT_AT_ONCE.store(true, Ordering::SeqCst);
+    handle();
+}
+
+fn handle() {
     #[cfg(unix)]
     {
         let handler = on_signal as extern "C" fn(libc::c_int) as libc::sighandler_t;

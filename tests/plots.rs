@@ -31,6 +31,8 @@ fn a_report_has_plots_and_the_summary_links_them() {
     let out = scratch("plots");
     std::fs::create_dir_all(out.join("plots")).unwrap();
     std::fs::write(out.join("plots/stale.svg"), "<svg/>").unwrap();
+    // An earlier run's folder: its marker (SPEC §10) says so.
+    std::fs::write(out.join(".rastercheck-report"), "").unwrap();
     let report = out.to_str().unwrap();
     let mut args = vec![
         "run",

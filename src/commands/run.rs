@@ -154,6 +154,8 @@ pub fn run(args: RunArgs) -> Exit {
         LimitsInfo::of(&limits),
     );
     report.cases = files.iter().map(CaseEntry::not_run).collect();
+    // Held (locked) until the run returns.
+    let mut _claimed = None;
     if let Some(dir) = &args.report {
         if let Some(file) = not_a_folder(dir) {
             eprintln!(
@@ -163,11 +165,15 @@ pub fn run(args: RunArgs) -> Exit {
             );
             return Exit::BadInput;
         }
-        // What an earlier run wrote there goes first, so that no file in
-        // the folder can be mistaken for this run's.
-        if let Err(e) = report::remove_owned(dir) {
-            eprintln!("error: {e}");
-            return Exit::BadInput;
+        // Ours (new, empty, or marked by an earlier run) and locked for
+        // the run; what an earlier run wrote there goes first, so that no
+        // file in the folder can be mistaken for this run's.
+        match report::folder::claim(dir) {
+            Ok(folder) => _claimed = Some(folder),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return Exit::BadInput;
+            }
         }
         // Written first, so that a run that is killed still leaves a report
         // that lists what did not run.

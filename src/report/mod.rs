@@ -28,14 +28,17 @@
 //! at the end, from `report.json`'s model alone.
 //!
 //! Every file is written whole or not at all (`files.rs`'s [`write_file`]:
-//! a temporary name, then a rename), and a run first removes what an
-//! earlier run wrote there ([`remove_owned`]), never a user's own files.
+//! a temporary name, then a rename). A run writes only into a folder it
+//! claims (`folder.rs`: new, empty, or marked by an earlier run; locked
+//! while it writes), and first removes what an earlier run wrote there
+//! ([`remove_owned`]), never a user's own files.
 
 pub mod case_files;
 pub mod diff;
 pub mod escape;
 pub mod exr;
 pub mod files;
+pub mod folder;
 pub mod html;
 pub mod json;
 pub mod junit;

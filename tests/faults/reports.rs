@@ -301,6 +301,76 @@ fn sigterm_stops_the_reference_in_the_middle_of_a_case() {
     assert_eq!(report["complete"], false);
 }
 
+/// `baseline save` with `reports_slow.py`, stopped by `signal` while the
+/// program sleeps on the third case: the command ends with 128 + signal and
+/// the program is killed with it (before, only `run` installed the handler,
+/// and the program, in a process group of its own, kept sleeping).
+fn baseline_stopped_by(signal: &str, code: i32) {
+    let (dir, _) = with_cases(&format!("baseline-signal-{signal}"), 4);
+    let pids = dir.join("pids");
+    std::fs::create_dir_all(&pids).unwrap();
+    let program = manifest().join("tests/faults/programs/reports_slow.py");
+    let rasterizer = format!(
+        "external:python3 {} {} 2",
+        program.display(),
+        pids.display()
+    );
+    let log = std::fs::File::create(dir.join("log.txt")).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+        .args([
+            "baseline",
+            "save",
+            "base.json",
+            "cases",
+            "--threads",
+            "1",
+            "-r",
+        ])
+        .arg(&rasterizer)
+        .current_dir(&dir)
+        .env("RASTERCHECK_EXTERNAL_TIMEOUT", "600")
+        .stdin(Stdio::null())
+        .stdout(log.try_clone().unwrap())
+        .stderr(log)
+        .spawn()
+        .unwrap();
+    let mut run = Cleanup {
+        child,
+        pids: pids.clone(),
+    };
+    let child = &mut run.child;
+    let sleeping = || -> Option<u32> {
+        std::fs::read_dir(&pids).ok()?.find_map(|e| {
+            let name = e.ok()?.file_name().to_string_lossy().into_owned();
+            name.strip_suffix(".sleeping")?.parse().ok()
+        })
+    };
+    wait_for("the program to sleep on the third case", || {
+        sleeping().is_some() || child.try_wait().unwrap().is_some()
+    });
+    let sleeper = sleeping().expect("the third case's program sleeps");
+    let (status, took) = signal_and_wait(child, signal);
+    let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
+    assert_eq!(status.code(), Some(code), "{log}");
+    assert!(took < Duration::from_secs(5), "{took:?}: {log}");
+    assert!(!log.contains("panicked"), "{log}");
+    wait_for("the sleeping program to be gone", || {
+        matches!(process_state(sleeper), None | Some('Z'))
+    });
+    // No baseline half-written.
+    assert!(!dir.join("base.json").exists(), "{log}");
+}
+
+#[test]
+fn sigterm_to_baseline_save_kills_its_program() {
+    baseline_stopped_by("TERM", 143);
+}
+
+#[test]
+fn sigint_to_baseline_save_kills_its_program() {
+    baseline_stopped_by("INT", 130);
+}
+
 #[test]
 fn sigterm_stops_the_run_kills_the_program_and_leaves_a_partial_report() {
     stopped_by("TERM", 143);
@@ -322,6 +392,9 @@ fn a_reused_report_folder_loses_the_earlier_runs_files_and_keeps_the_users() {
         ("images/triangles/gone/production.png", "stale"),
         ("exr/triangles/gone/production.exr", "stale"),
         (".report.json.99.rastercheck-partial", "{\"cases\": ["),
+        // What marks the folder as an earlier run's (without it the run is
+        // refused: see the next test).
+        (".rastercheck-report", "an earlier run's"),
     ];
     let users = [
         ("notes.txt", "mine"),
@@ -355,6 +428,42 @@ fn a_reused_report_folder_loses_the_earlier_runs_files_and_keeps_the_users() {
     let report = read_json(&out.join("report.json"));
     assert_eq!(report["complete"], true);
     assert_eq!(report["cases"].as_array().unwrap().len(), ids.len());
+}
+
+#[test]
+fn a_users_folder_with_report_like_names_is_refused_and_kept_whole() {
+    // The user's own images/, pages/ and index.html, and no marker: before,
+    // all three were removed or overwritten.
+    let (dir, _) = with_cases("users-folder", 2);
+    let out = dir.join("site");
+    let users = [
+        ("index.html", "my site"),
+        ("images/logo.png", "my logo"),
+        ("pages/about.html", "about me"),
+    ];
+    for (path, content) in &users {
+        let path = out.join(path);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, content).unwrap();
+    }
+    let run = crate::bounded_run(&dir, &["run", "cases", "--report", "site"]);
+    let t = text(&run);
+    assert_eq!(run.status.code(), Some(2), "{t}");
+    assert!(t.contains("--report site"), "{t}");
+    assert!(t.contains("no rastercheck run wrote"), "{t}");
+    for (path, content) in &users {
+        assert_eq!(
+            std::fs::read_to_string(out.join(path)).unwrap(),
+            *content,
+            "{path}"
+        );
+    }
+    assert_eq!(
+        files_under(&out).len(),
+        users.len(),
+        "{:?}",
+        files_under(&out)
+    );
 }
 
 #[test]
