@@ -1,10 +1,17 @@
 //! The `vulkan` adapter (raw Vulkan through ash) against the exact
-//! reference: on CI, Mesa's lavapipe; on a machine with a GPU, its driver
-//! (`RASTERCHECK_VULKAN_DEVICE` picks one). Needs the `vulkan` feature and
-//! the system packages `libvulkan1 mesa-vulkan-drivers`. Without a device
-//! each test says loudly that it skipped; under `CI=true` a missing device
-//! fails the test instead.
+//! reference: on CI, Mesa's lavapipe and, in a second process of this
+//! binary (`the_same_tests_pass_on_swiftshader`), Google's SwiftShader; on
+//! a machine with a GPU, its driver (`RASTERCHECK_VULKAN_DEVICE` picks
+//! one). Needs the `vulkan` feature and the system packages `libvulkan1
+//! mesa-vulkan-drivers vulkan-validationlayers chromium`. Every test runs
+//! with the Khronos validation layer and fails on any message the
+//! adapter's messenger hears (its API record). Without a device, the layer
+//! or SwiftShader's ICD, a test says loudly that it skipped that part;
+//! under `CI=true` it fails instead.
 #![cfg(feature = "vulkan")]
+
+use std::path::PathBuf;
+use std::sync::OnceLock;
 
 use rastercheck::adapters::vulkan::{self, Vulkan};
 use rastercheck::frame::Frame;
@@ -29,15 +36,71 @@ use common::sample_drivers::{
 };
 use common::{case, inline, report};
 
-/// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
-/// and fails under CI.
-fn available() -> bool {
-    common::adapters::driver_here(
+/// Set in the process `the_same_tests_pass_on_swiftshader` starts: its
+/// device must be SwiftShader.
+const ON_SWIFTSHADER: &str = "RASTERCHECK_TESTS_ON_SWIFTSHADER";
+
+/// SwiftShader's ICD file: `RASTERCHECK_SWIFTSHADER_ICD`, or where Debian's
+/// `chromium-common` puts it.
+fn swiftshader_icd() -> PathBuf {
+    std::env::var_os("RASTERCHECK_SWIFTSHADER_ICD")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from("/usr/lib/chromium/vk_swiftshader_icd.json"))
+}
+
+/// Asks for the Khronos validation layer once per process, before the
+/// device is made; where it is not installed, each test says so (SKIPPED,
+/// failing under CI) and runs unvalidated.
+fn ask_for_validation() {
+    static ASKED: OnceLock<Result<(), String>> = OnceLock::new();
+    if let Err(why) = ASKED.get_or_init(vulkan::ask_for_validation) {
+        common::adapters::skipped(
+            "Khronos validation layer",
+            "vulkan-validationlayers",
+            why,
+        );
+    }
+}
+
+/// Whether a Vulkan device is here (with the validation layer on); says
+/// why not (SKIPPED, uncaptured), and fails under CI. The guard it gives
+/// fails the test where the API record is not clean when the test ends.
+fn available() -> Option<CleanRecord> {
+    ask_for_validation();
+    let here = common::adapters::driver_here(
         "vulkan",
         vulkan::device_description(),
         "Vulkan device",
         "libvulkan1 mesa-vulkan-drivers",
-    )
+    );
+    if !here {
+        return None;
+    }
+    if std::env::var_os(ON_SWIFTSHADER).is_some() {
+        let description = vulkan::device_description().unwrap_or_default();
+        assert!(
+            description.contains("SwiftShader"),
+            "{ON_SWIFTSHADER} is set and the device is {description}"
+        );
+    }
+    Some(CleanRecord)
+}
+
+/// Asserts, when a test that drew ends without a panic of its own, that
+/// the messenger heard nothing (SPEC.md §10, `api_record`). The record is
+/// the process's: a message any test caused fails the tests that end
+/// after it, each naming the first message.
+struct CleanRecord;
+
+impl Drop for CleanRecord {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            return;
+        }
+        let record = VULKAN.api_record().expect("the device is made");
+        eprintln!("vulkan: API record: {record}");
+        assert!(record.is_clean(), "vulkan: API record: {record}");
+    }
 }
 
 fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
@@ -48,17 +111,17 @@ fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
 /// sampler decision and the rule agree with what the cases show.
 #[test]
 fn probe_finds_a_point_sampler_with_top_left_ties() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_probe_diagnosis(&VULKAN, "top-left");
 }
 
 #[test]
 fn matches_the_reference_on_top_left_tie_and_winding_cases() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_each(
         &[TIE_CASES, WINDING_CASES].concat(),
         &VULKAN,
@@ -73,9 +136,9 @@ fn matches_the_reference_on_top_left_tie_and_winding_cases() {
 
 #[test]
 fn interpolation_is_within_the_bound() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_interpolation_within_the_bound(INTERPOLATION, &VULKAN, "vulkan", |_| {});
 }
 
@@ -84,9 +147,9 @@ fn interpolation_is_within_the_bound() {
 /// and fill rule fill, even-odd and nonzero, holes and self-crossings.
 #[test]
 fn polygons_by_stencil_then_cover_match_the_reference() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids: Vec<String> = bundled_ids("polygons", |_| true)
         .into_iter()
         .filter(|id| case(id).rules.fill_rule.name() == "top-left")
@@ -135,9 +198,9 @@ impl Rasterizer for FillSwapped {
 
 #[test]
 fn a_wrong_stencil_test_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     // Two overlapping squares wound the same way: winding 2 where they
     // overlap, filled by nonzero and empty under even-odd.
     let scene = inline(
@@ -172,9 +235,9 @@ const N_ROOKS_8: &str = r#"{"samples": 8, "pattern": "n-rooks", "seed": 7, "posi
 /// where offered, shifted passes for n-rooks) and `vulkan-passes`.
 #[test]
 fn each_probe_lights_exactly_the_probed_slot() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let passes = Vulkan { passes_only: true };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         for candidate in [&VULKAN, &passes] {
@@ -187,9 +250,9 @@ fn each_probe_lights_exactly_the_probed_slot() {
 /// the declared description says which counts are.
 #[test]
 fn standard_4x_is_drawn_natively_where_offered() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let declared = VULKAN.declared().unwrap();
     eprintln!("{declared}");
     let passes = Vulkan { passes_only: true }.declared().unwrap();
@@ -206,9 +269,9 @@ fn standard_4x_is_drawn_natively_where_offered() {
 /// probes, so the slot order is checked, not assumed.
 #[test]
 fn a_readback_in_the_wrong_slot_order_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         assert_reversed_slots_fail(&VULKAN, pattern, &probe_scene(pattern, n));
     }
@@ -218,9 +281,9 @@ fn a_readback_in_the_wrong_slot_order_fails() {
 /// and whose rule is top-left is drawn, and each is listed.
 #[test]
 fn every_antialias_case_is_judged() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for id in bundled_ids("antialias", |_| true) {
         let scene = case(&id);
         let (reference, run) = run(&scene);
@@ -243,9 +306,9 @@ fn every_antialias_case_is_judged() {
 /// its time-coverage bounds.
 #[test]
 fn moving_cases_by_time_passes_pass() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids: Vec<String> = bundled_ids("motion", |_| true)
         .into_iter()
         .filter(|id| case(id).rules.fill_rule.name() == "top-left")
@@ -266,9 +329,9 @@ fn moving_cases_by_time_passes_pass() {
 /// A wrong shutter is caught (`assert_wrong_instants_fail`).
 #[test]
 fn wrong_instants_fail() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_wrong_instants_fail(&VULKAN);
 }
 
@@ -277,9 +340,9 @@ fn wrong_instants_fail() {
 /// adapter's known words; none breaks.
 #[test]
 fn judges_at_least_85_percent_of_the_bundled_cases() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let known = [
         "midpoint rule",
         "strictLines",
@@ -291,9 +354,9 @@ fn judges_at_least_85_percent_of_the_bundled_cases() {
 
 #[test]
 fn the_report_names_the_device_and_driver() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let declared = VULKAN.declared().expect("a device is made");
     assert!(declared.contains("Vulkan 1."), "{declared}");
     assert!(declared.contains("shifted passes"), "{declared}");
@@ -302,25 +365,25 @@ fn the_report_names_the_device_and_driver() {
 
 #[test]
 fn clip_space_honours_the_provoking_vertex() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_provoking_vertex(&VULKAN);
 }
 
 #[test]
 fn clip_space_depth_is_clipped_or_clamped() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_depth_clip_and_clamp(&VULKAN);
 }
 
 #[test]
 fn clip_space_refuses_what_it_cannot_hand_the_driver() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_refusals(&VULKAN);
 }
 
@@ -328,25 +391,25 @@ fn clip_space_refuses_what_it_cannot_hand_the_driver() {
 /// sample on scenes that separate them, and the other conventions do not.
 #[test]
 fn clip_space_follows_its_declared_clipping_conventions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_conventions(&VULKAN);
 }
 
 #[test]
 fn clip_space_viewport_places_the_scene() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_viewport_placement(&VULKAN);
 }
 
 #[test]
 fn clip_space_inside_the_volume_passes() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_inside_the_volume_passes(&VULKAN);
 }
 
@@ -355,9 +418,9 @@ fn clip_space_inside_the_volume_passes() {
 /// the others.
 #[test]
 fn clip_space_values_come_from_the_declared_positions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&VULKAN);
     eprintln!("vulkan: values depart {own:e} from its own positions', {other:e} from the others'");
 }
@@ -367,9 +430,9 @@ fn clip_space_values_come_from_the_declared_positions() {
 #[test]
 #[ignore]
 fn measure_points() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::measure(&VULKAN);
 }
 
@@ -378,9 +441,9 @@ fn measure_points() {
 /// with their flat values and depth.
 #[test]
 fn points_follow_the_rule_in_screen_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_screen_points(&VULKAN);
 }
 
@@ -388,17 +451,17 @@ fn points_follow_the_rule_in_screen_space() {
 /// depth planes under clip and clamp, w ≤ 0.
 #[test]
 fn points_follow_the_rule_in_clip_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_clip_points(&VULKAN);
 }
 
 #[test]
 fn multisampled_points_follow_the_rule() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_multisampled_points(&VULKAN);
 }
 
@@ -407,9 +470,9 @@ fn multisampled_points_follow_the_rule() {
 /// with the reason.
 #[test]
 fn points_the_driver_cannot_draw_exactly_are_refused() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_point_refusals(&VULKAN);
 }
 
@@ -418,18 +481,18 @@ fn points_the_driver_cannot_draw_exactly_are_refused() {
 /// is told apart.
 #[test]
 fn point_squares_are_cut_at_the_viewport() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_squares_cut_at_the_viewport(&VULKAN);
 }
 
 /// probe finds the point clipping the adapter declares.
 #[test]
 fn probe_finds_the_declared_point_clipping() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_probe_finds_declared_point_clipping(&VULKAN);
 }
 
@@ -437,9 +500,9 @@ fn probe_finds_the_declared_point_clipping() {
 /// unsnapped centre.
 #[test]
 fn wrong_point_rules_are_caught() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_wrong_rules_are_caught(&VULKAN);
 }
 
@@ -456,9 +519,9 @@ fn clip_points_are_judged_under_the_drivers_own() {
 /// screen and clip space) is judged and passes (lavapipe: 17 of 17).
 #[test]
 fn depth_formats_and_offset_pass() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::depth_drivers::assert_depth_cases_pass(&VULKAN);
 }
 
@@ -466,9 +529,9 @@ fn depth_formats_and_offset_pass() {
 /// fails the cases that show it: the read-back is the attachment's.
 #[test]
 fn a_wrong_depth_attachment_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::depth_drivers::assert_wrong_depth_is_caught(&VULKAN);
 }
 
@@ -480,9 +543,9 @@ fn a_wrong_depth_attachment_fails() {
 /// without its offset.
 #[test]
 fn multisampled_depth_is_read_back_sample_by_sample() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (id, method) in [
         ("depth/offset_constant_standard4", "native MSAA"),
         ("depth/offset_negative_standard4", "native MSAA"),
@@ -494,4 +557,124 @@ fn multisampled_depth_is_read_back_sample_by_sample() {
         let frame = run.frame.expect("a frame");
         assert_eq!(frame.method, Some(method), "{id}");
     }
+}
+
+/// The messenger hears the Khronos validation layer: a device of its own,
+/// made with the layer, given a sampler that breaks
+/// `vulkan::INVALID_CALL_VUID`, has a record with that message first.
+/// The real layer, no mock; the shared device's record stays clean.
+#[test]
+fn the_api_record_hears_a_deliberately_invalid_call() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let record = match vulkan::invalid_call_record() {
+        Ok(record) => record,
+        Err(why) => {
+            common::adapters::skipped(
+                "Khronos validation layer",
+                "vulkan-validationlayers",
+                &why,
+            );
+            return;
+        }
+    };
+    eprintln!("the invalid call's record: {record}");
+    assert!(!record.is_clean(), "{record}");
+    assert!(record.errors >= 1, "{record}");
+    let first = record.first.as_deref().unwrap_or_default();
+    assert!(first.contains(vulkan::INVALID_CALL_VUID), "{record}");
+    assert_eq!(
+        record.validated_by.as_deref(),
+        Some("the Khronos validation layer")
+    );
+    let shown = record.to_string();
+    assert!(shown.contains(" errors, "), "{shown}");
+    assert!(shown.contains("undefined behaviour"), "{shown}");
+}
+
+/// A run with the layer asked for (`RASTERCHECK_VULKAN_VALIDATION=1`)
+/// shows the API record on the console and in report.json's rasterizer
+/// entry.
+#[test]
+fn a_run_reports_its_api_record() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let dir = common::cli::scratch("vulkan_api_record");
+    let case = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/triangles/fan_16_center.json");
+    let report = dir.join("report");
+    let out = common::cli::rastercheck_env(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "vulkan",
+            "--report",
+            report.to_str().unwrap(),
+        ],
+        &[("RASTERCHECK_VULKAN_VALIDATION", "1")],
+    );
+    let text = common::text(&out);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("vulkan: API record: 0 messages (checked by the Khronos validation layer)"),
+        "{text}"
+    );
+    let json = common::cli::read_json(&report.join("report.json"));
+    let record = &json["rasterizers"][0]["api_record"];
+    assert_eq!(record["errors"], 0, "{record}");
+    assert_eq!(record["warnings"], 0, "{record}");
+    assert_eq!(
+        record["validated_by"], "the Khronos validation layer",
+        "{record}"
+    );
+}
+
+/// Every test of this binary again, in a process of its own on SwiftShader
+/// (`VK_DRIVER_FILES` at its ICD, `RASTERCHECK_VULKAN_DEVICE=SwiftShader`),
+/// with the validation layer: each must pass there too. Its output is
+/// shown when it fails. Without the ICD it says it skipped (under
+/// `CI=true`, fails).
+#[test]
+fn the_same_tests_pass_on_swiftshader() {
+    if std::env::var_os(ON_SWIFTSHADER).is_some() {
+        return;
+    }
+    let icd = swiftshader_icd();
+    if !icd.is_file() {
+        common::adapters::skipped(
+            "SwiftShader Vulkan ICD",
+            "chromium (chromium-common ships vk_swiftshader_icd.json; or set RASTERCHECK_SWIFTSHADER_ICD)",
+            &format!("{} is not a file", icd.display()),
+        );
+        return;
+    }
+    let exe = std::env::current_exe().expect("this test binary");
+    let started = std::time::Instant::now();
+    let out = std::process::Command::new(exe)
+        .args(["--skip", "the_same_tests_pass_on_swiftshader"])
+        .env("VK_DRIVER_FILES", &icd)
+        .env("RASTERCHECK_VULKAN_DEVICE", "SwiftShader")
+        .env(ON_SWIFTSHADER, "1")
+        .output()
+        .expect("this test binary runs again");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let summary = stdout
+        .lines()
+        .filter(|l| l.starts_with("test result:"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    eprintln!(
+        "on SwiftShader ({}), in {:.0} s: {summary}",
+        icd.display(),
+        started.elapsed().as_secs_f64()
+    );
+    assert!(
+        out.status.success(),
+        "on SwiftShader:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(summary.contains(" passed;"), "{stdout}");
 }
