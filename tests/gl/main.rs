@@ -792,11 +792,21 @@ fn a_run_reports_its_api_record() {
         return;
     };
     let dir = common::cli::scratch("gl_api_record");
-    let case = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/triangles/fan_16_center.json");
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/cases/triangles/fan_16_center.json"
+    );
     let report = dir.join("report");
     let out = common::cli::rastercheck(
         &dir,
-        &["run", case, "-r", "gl", "--report", report.to_str().unwrap()],
+        &[
+            "run",
+            case,
+            "-r",
+            "gl",
+            "--report",
+            report.to_str().unwrap(),
+        ],
     );
     let text = common::text(&out);
     assert_eq!(out.status.code(), Some(0), "{text}");

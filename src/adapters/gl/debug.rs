@@ -32,9 +32,8 @@ pub(super) type Shared = Arc<Mutex<ApiRecord>>;
 /// # Safety
 /// `gl` is current on this thread.
 pub(super) unsafe fn listen(gl: &mut glow::Context) -> Shared {
-    let debug_context = gl.get_parameter_i32(glow::CONTEXT_FLAGS) as u32
-        & glow::CONTEXT_FLAG_DEBUG_BIT
-        != 0;
+    let debug_context =
+        gl.get_parameter_i32(glow::CONTEXT_FLAGS) as u32 & glow::CONTEXT_FLAG_DEBUG_BIT != 0;
     let record: Shared = Arc::new(Mutex::new(ApiRecord {
         validated_by: Some(if debug_context {
             "KHR_debug (a debug context)".to_owned()

@@ -32,6 +32,9 @@ pub fn invalid_call_record() -> Result<ApiRecord, String> {
         DEBUG_CONTEXT[1],
         khronos_egl::NONE,
     ];
+    // The bound API is per thread: this one may not have bound GL yet.
+    egl.bind_api(khronos_egl::OPENGL_API)
+        .map_err(|e| format!("EGL: no desktop OpenGL API: {e}"))?;
     let own = egl
         .create_context(display, shared.config, None, &attributes)
         .map_err(|e| format!("EGL: creating a second debug context: {e}"))?;

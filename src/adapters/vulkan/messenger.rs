@@ -223,8 +223,14 @@ unsafe extern "system" fn on_message(
             Some(d) => (text(d.p_message_id_name), text(d.p_message)),
             None => (None, None),
         };
+        // The layer's text repeats the id and lists handles before its
+        // last " | "; what follows is the rule broken.
+        let message = message.map(|m| match m.rsplit_once(" | ") {
+            Some((_, rule)) => rule.trim().to_owned(),
+            None => m.trim().to_owned(),
+        });
         let mut first = match (id, message) {
-            (Some(id), Some(m)) => format!("{id}: {}", m.trim()),
+            (Some(id), Some(m)) => format!("{id}: {m}"),
             (Some(id), None) => id,
             (None, Some(m)) => m.trim().to_owned(),
             (None, None) => "(no text)".to_owned(),
