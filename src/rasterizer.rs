@@ -115,6 +115,50 @@ pub fn refuse_last_provoking(scene: &Scene, who: &str) -> Result<(), RasterError
     Ok(())
 }
 
+/// What an API's own checker said of the calls an adapter made to a
+/// driver, over the process so far (SPEC.md §10, `api_record`): the
+/// Khronos validation layer through a debug-utils messenger, or GL's
+/// KHR_debug. A verdict drawn by invalid calls may rest on undefined
+/// behaviour, so a record that is not clean is reported beside them.
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct ApiRecord {
+    /// What checked the calls ("the Khronos validation layer", "KHR_debug");
+    /// `None` where only the driver's own messages were counted.
+    pub validated_by: Option<String>,
+    /// Messages of error severity (Vulkan) or type or severity (GL).
+    pub errors: u64,
+    /// Messages of warning severity (Vulkan).
+    pub warnings: u64,
+    /// The first message: its id (a VUID) and text, trimmed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first: Option<String>,
+}
+
+impl ApiRecord {
+    pub fn is_clean(&self) -> bool {
+        self.errors + self.warnings == 0
+    }
+}
+
+impl fmt::Display for ApiRecord {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let by = match &self.validated_by {
+            Some(by) => format!("checked by {by}"),
+            None => "not validated: only the driver's own messages were counted".to_owned(),
+        };
+        if self.is_clean() {
+            return write!(f, "0 messages ({by})");
+        }
+        write!(
+            f,
+            "{} errors, {} warnings ({by}); first: {}; its verdicts may rest on undefined behaviour",
+            self.errors,
+            self.warnings,
+            self.first.as_deref().unwrap_or("(no text)")
+        )
+    }
+}
+
 /// Why a rasterizer produced no frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RasterError {
@@ -156,6 +200,13 @@ pub trait Rasterizer: Send + Sync {
     /// said so: an external program's hello names itself and its version
     /// (SPEC.md §12.7). Reports show it beside the name it was given.
     fn declared(&self) -> Option<String> {
+        None
+    }
+
+    /// What the API's checker said of this adapter's calls so far, for a
+    /// driver adapter that listens ([`ApiRecord`]); `None` for one that
+    /// calls no driver API, or before it has made its device.
+    fn api_record(&self) -> Option<ApiRecord> {
         None
     }
 

@@ -84,6 +84,7 @@ fn write_report(dir: &Path, outcomes: &[CaseOutcome]) -> (PathBuf, Value) {
                 name: (*n).to_owned(),
                 foil: false,
                 declared: None,
+                api_record: None,
             })
             .collect(),
         LimitsInfo::of(&Limits::default()),

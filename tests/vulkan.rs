@@ -1,10 +1,17 @@
 //! The `vulkan` adapter (raw Vulkan through ash) against the exact
-//! reference: on CI, Mesa's lavapipe; on a machine with a GPU, its driver
-//! (`RASTERCHECK_VULKAN_DEVICE` picks one). Needs the `vulkan` feature and
-//! the system packages `libvulkan1 mesa-vulkan-drivers`. Without a device
-//! each test says loudly that it skipped; under `CI=true` a missing device
-//! fails the test instead.
+//! reference: on CI, Mesa's lavapipe and, in a second process of this
+//! binary (`the_same_tests_pass_on_swiftshader`), Google's SwiftShader; on
+//! a machine with a GPU, its driver (`RASTERCHECK_VULKAN_DEVICE` picks
+//! one). Needs the `vulkan` feature and the system packages `libvulkan1
+//! mesa-vulkan-drivers vulkan-validationlayers chromium`. Every test runs
+//! with the Khronos validation layer and fails on any message the
+//! adapter's messenger hears (its API record). Without a device, the layer
+//! or SwiftShader's ICD, a test says loudly that it skipped that part;
+//! under `CI=true` it fails instead.
 #![cfg(feature = "vulkan")]
+
+use std::path::PathBuf;
+use std::sync::OnceLock;
 
 use rastercheck::adapters::vulkan::{self, Vulkan};
 use rastercheck::frame::Frame;
@@ -29,15 +36,67 @@ use common::sample_drivers::{
 };
 use common::{case, inline, report};
 
-/// Whether a Vulkan device is here; says why not (SKIPPED, uncaptured),
-/// and fails under CI.
-fn available() -> bool {
-    common::adapters::driver_here(
+/// Set in the process `the_same_tests_pass_on_swiftshader` starts: its
+/// device must be SwiftShader.
+const ON_SWIFTSHADER: &str = "RASTERCHECK_TESTS_ON_SWIFTSHADER";
+
+/// SwiftShader's ICD file: `RASTERCHECK_SWIFTSHADER_ICD`, or where Debian's
+/// `chromium-common` puts it.
+fn swiftshader_icd() -> PathBuf {
+    std::env::var_os("RASTERCHECK_SWIFTSHADER_ICD")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from("/usr/lib/chromium/vk_swiftshader_icd.json"))
+}
+
+/// Asks for the Khronos validation layer once per process, before the
+/// device is made; where it is not installed, each test says so (SKIPPED,
+/// failing under CI) and runs unvalidated.
+fn ask_for_validation() {
+    static ASKED: OnceLock<Result<(), String>> = OnceLock::new();
+    if let Err(why) = ASKED.get_or_init(vulkan::ask_for_validation) {
+        common::adapters::skipped("Khronos validation layer", "vulkan-validationlayers", why);
+    }
+}
+
+/// Whether a Vulkan device is here (with the validation layer on); says
+/// why not (SKIPPED, uncaptured), and fails under CI. The guard it gives
+/// fails the test where the API record is not clean when the test ends.
+fn available() -> Option<CleanRecord> {
+    ask_for_validation();
+    let here = common::adapters::driver_here(
         "vulkan",
         vulkan::device_description(),
         "Vulkan device",
         "libvulkan1 mesa-vulkan-drivers",
-    )
+    );
+    if !here {
+        return None;
+    }
+    if std::env::var_os(ON_SWIFTSHADER).is_some() {
+        let description = vulkan::device_description().unwrap_or_default();
+        assert!(
+            description.contains("SwiftShader"),
+            "{ON_SWIFTSHADER} is set and the device is {description}"
+        );
+    }
+    Some(CleanRecord)
+}
+
+/// Asserts, when a test that drew ends without a panic of its own, that
+/// the messenger heard nothing (SPEC.md §10, `api_record`). The record is
+/// the process's: a message any test caused fails the tests that end
+/// after it, each naming the first message.
+struct CleanRecord;
+
+impl Drop for CleanRecord {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            return;
+        }
+        let record = VULKAN.api_record().expect("the device is made");
+        eprintln!("vulkan: API record: {record}");
+        assert!(record.is_clean(), "vulkan: API record: {record}");
+    }
 }
 
 fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
@@ -48,17 +107,17 @@ fn run(scene: &Scene) -> (oracle::ReferenceRun, judge::CandidateRun) {
 /// sampler decision and the rule agree with what the cases show.
 #[test]
 fn probe_finds_a_point_sampler_with_top_left_ties() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_probe_diagnosis(&VULKAN, "top-left");
 }
 
 #[test]
 fn matches_the_reference_on_top_left_tie_and_winding_cases() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_each(
         &[TIE_CASES, WINDING_CASES].concat(),
         &VULKAN,
@@ -73,9 +132,9 @@ fn matches_the_reference_on_top_left_tie_and_winding_cases() {
 
 #[test]
 fn interpolation_is_within_the_bound() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_interpolation_within_the_bound(INTERPOLATION, &VULKAN, "vulkan", |_| {});
 }
 
@@ -84,9 +143,9 @@ fn interpolation_is_within_the_bound() {
 /// and fill rule fill, even-odd and nonzero, holes and self-crossings.
 #[test]
 fn polygons_by_stencil_then_cover_match_the_reference() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids: Vec<String> = bundled_ids("polygons", |_| true)
         .into_iter()
         .filter(|id| case(id).rules.fill_rule.name() == "top-left")
@@ -135,9 +194,9 @@ impl Rasterizer for FillSwapped {
 
 #[test]
 fn a_wrong_stencil_test_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     // Two overlapping squares wound the same way: winding 2 where they
     // overlap, filled by nonzero and empty under even-odd.
     let scene = inline(
@@ -172,9 +231,9 @@ const N_ROOKS_8: &str = r#"{"samples": 8, "pattern": "n-rooks", "seed": 7, "posi
 /// where offered, shifted passes for n-rooks) and `vulkan-passes`.
 #[test]
 fn each_probe_lights_exactly_the_probed_slot() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let passes = Vulkan { passes_only: true };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         for candidate in [&VULKAN, &passes] {
@@ -187,9 +246,9 @@ fn each_probe_lights_exactly_the_probed_slot() {
 /// the declared description says which counts are.
 #[test]
 fn standard_4x_is_drawn_natively_where_offered() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let declared = VULKAN.declared().unwrap();
     eprintln!("{declared}");
     let passes = Vulkan { passes_only: true }.declared().unwrap();
@@ -206,9 +265,9 @@ fn standard_4x_is_drawn_natively_where_offered() {
 /// probes, so the slot order is checked, not assumed.
 #[test]
 fn a_readback_in_the_wrong_slot_order_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         assert_reversed_slots_fail(&VULKAN, pattern, &probe_scene(pattern, n));
     }
@@ -218,9 +277,9 @@ fn a_readback_in_the_wrong_slot_order_fails() {
 /// and whose rule is top-left is drawn, and each is listed.
 #[test]
 fn every_antialias_case_is_judged() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for id in bundled_ids("antialias", |_| true) {
         let scene = case(&id);
         let (reference, run) = run(&scene);
@@ -243,9 +302,9 @@ fn every_antialias_case_is_judged() {
 /// its time-coverage bounds.
 #[test]
 fn moving_cases_by_time_passes_pass() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids: Vec<String> = bundled_ids("motion", |_| true)
         .into_iter()
         .filter(|id| case(id).rules.fill_rule.name() == "top-left")
@@ -266,9 +325,9 @@ fn moving_cases_by_time_passes_pass() {
 /// A wrong shutter is caught (`assert_wrong_instants_fail`).
 #[test]
 fn wrong_instants_fail() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_wrong_instants_fail(&VULKAN);
 }
 
@@ -277,23 +336,32 @@ fn wrong_instants_fail() {
 /// adapter's known words; none breaks.
 #[test]
 fn judges_at_least_85_percent_of_the_bundled_cases() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
+    // A device limit each: a rule no mode draws, a line mode, a width.
     let known = [
         "midpoint rule",
         "strictLines",
         "Bresenham",
         "rectangular lines",
+        "(no wideLines)",
+        "off the driver's grid",
     ];
-    assert_judges_at_least_85_percent(&VULKAN, &known);
+    // Issue 35's bars: 85 % for lavapipe, 80 % for SwiftShader (4 bits: the
+    // offsets of more antialias patterns are off its grid; no wide lines).
+    if std::env::var_os(ON_SWIFTSHADER).is_some() {
+        common::adapters::assert_judges_at_least(&VULKAN, &known, 0.80);
+    } else {
+        assert_judges_at_least_85_percent(&VULKAN, &known);
+    }
 }
 
 #[test]
 fn the_report_names_the_device_and_driver() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let declared = VULKAN.declared().expect("a device is made");
     assert!(declared.contains("Vulkan 1."), "{declared}");
     assert!(declared.contains("shifted passes"), "{declared}");
@@ -302,25 +370,25 @@ fn the_report_names_the_device_and_driver() {
 
 #[test]
 fn clip_space_honours_the_provoking_vertex() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_provoking_vertex(&VULKAN);
 }
 
 #[test]
 fn clip_space_depth_is_clipped_or_clamped() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_depth_clip_and_clamp(&VULKAN);
 }
 
 #[test]
 fn clip_space_refuses_what_it_cannot_hand_the_driver() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_refusals(&VULKAN);
 }
 
@@ -328,25 +396,25 @@ fn clip_space_refuses_what_it_cannot_hand_the_driver() {
 /// sample on scenes that separate them, and the other conventions do not.
 #[test]
 fn clip_space_follows_its_declared_clipping_conventions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_conventions(&VULKAN);
 }
 
 #[test]
 fn clip_space_viewport_places_the_scene() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_viewport_placement(&VULKAN);
 }
 
 #[test]
 fn clip_space_inside_the_volume_passes() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_inside_the_volume_passes(&VULKAN);
 }
 
@@ -355,9 +423,9 @@ fn clip_space_inside_the_volume_passes() {
 /// the others.
 #[test]
 fn clip_space_values_come_from_the_declared_positions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&VULKAN);
     eprintln!("vulkan: values depart {own:e} from its own positions', {other:e} from the others'");
 }
@@ -367,9 +435,9 @@ fn clip_space_values_come_from_the_declared_positions() {
 #[test]
 #[ignore]
 fn measure_points() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::measure(&VULKAN);
 }
 
@@ -378,9 +446,9 @@ fn measure_points() {
 /// with their flat values and depth.
 #[test]
 fn points_follow_the_rule_in_screen_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_screen_points(&VULKAN);
 }
 
@@ -388,17 +456,17 @@ fn points_follow_the_rule_in_screen_space() {
 /// depth planes under clip and clamp, w ≤ 0.
 #[test]
 fn points_follow_the_rule_in_clip_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_clip_points(&VULKAN);
 }
 
 #[test]
 fn multisampled_points_follow_the_rule() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_multisampled_points(&VULKAN);
 }
 
@@ -407,9 +475,9 @@ fn multisampled_points_follow_the_rule() {
 /// with the reason.
 #[test]
 fn points_the_driver_cannot_draw_exactly_are_refused() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_point_refusals(&VULKAN);
 }
 
@@ -418,18 +486,18 @@ fn points_the_driver_cannot_draw_exactly_are_refused() {
 /// is told apart.
 #[test]
 fn point_squares_are_cut_at_the_viewport() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_squares_cut_at_the_viewport(&VULKAN);
 }
 
 /// probe finds the point clipping the adapter declares.
 #[test]
 fn probe_finds_the_declared_point_clipping() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_probe_finds_declared_point_clipping(&VULKAN);
 }
 
@@ -437,9 +505,9 @@ fn probe_finds_the_declared_point_clipping() {
 /// unsnapped centre.
 #[test]
 fn wrong_point_rules_are_caught() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_wrong_rules_are_caught(&VULKAN);
 }
 
@@ -456,9 +524,9 @@ fn clip_points_are_judged_under_the_drivers_own() {
 /// screen and clip space) is judged and passes (lavapipe: 17 of 17).
 #[test]
 fn depth_formats_and_offset_pass() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::depth_drivers::assert_depth_cases_pass(&VULKAN);
 }
 
@@ -466,9 +534,9 @@ fn depth_formats_and_offset_pass() {
 /// fails the cases that show it: the read-back is the attachment's.
 #[test]
 fn a_wrong_depth_attachment_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::depth_drivers::assert_wrong_depth_is_caught(&VULKAN);
 }
 
@@ -480,9 +548,9 @@ fn a_wrong_depth_attachment_fails() {
 /// without its offset.
 #[test]
 fn multisampled_depth_is_read_back_sample_by_sample() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (id, method) in [
         ("depth/offset_constant_standard4", "native MSAA"),
         ("depth/offset_negative_standard4", "native MSAA"),
@@ -494,4 +562,178 @@ fn multisampled_depth_is_read_back_sample_by_sample() {
         let frame = run.frame.expect("a frame");
         assert_eq!(frame.method, Some(method), "{id}");
     }
+}
+
+/// The messenger hears the Khronos validation layer: a device of its own,
+/// made with the layer, given a sampler that breaks
+/// `vulkan::INVALID_CALL_VUID`, has a record with that message first.
+/// The real layer, no mock; the shared device's record stays clean.
+#[test]
+fn the_api_record_hears_a_deliberately_invalid_call() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let record = match vulkan::invalid_call_record() {
+        Ok(record) => record,
+        Err(why) => {
+            common::adapters::skipped("Khronos validation layer", "vulkan-validationlayers", &why);
+            return;
+        }
+    };
+    eprintln!("the invalid call's record: {record}");
+    assert!(!record.is_clean(), "{record}");
+    assert!(record.errors >= 1, "{record}");
+    let first = record.first.as_deref().unwrap_or_default();
+    assert!(first.contains(vulkan::INVALID_CALL_VUID), "{record}");
+    assert_eq!(
+        record.validated_by.as_deref(),
+        Some("the Khronos validation layer")
+    );
+    let shown = record.to_string();
+    assert!(shown.contains(" errors, "), "{shown}");
+    assert!(shown.contains("undefined behaviour"), "{shown}");
+}
+
+/// A run with the layer asked for (`RASTERCHECK_VULKAN_VALIDATION=1`)
+/// shows the API record on the console and in report.json's rasterizer
+/// entry.
+#[test]
+fn a_run_reports_its_api_record() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let dir = common::cli::scratch("vulkan_api_record");
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/cases/triangles/fan_16_center.json"
+    );
+    let report = dir.join("report");
+    let out = common::cli::rastercheck_env(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "vulkan",
+            "--report",
+            report.to_str().unwrap(),
+        ],
+        &[("RASTERCHECK_VULKAN_VALIDATION", "1")],
+    );
+    let text = common::text(&out);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("vulkan: API record: 0 messages (checked by the Khronos validation layer)"),
+        "{text}"
+    );
+    let json = common::cli::read_json(&report.join("report.json"));
+    let record = &json["rasterizers"][0]["api_record"];
+    assert_eq!(record["errors"], 0, "{record}");
+    assert_eq!(record["warnings"], 0, "{record}");
+    assert_eq!(
+        record["validated_by"], "the Khronos validation layer",
+        "{record}"
+    );
+}
+
+/// The tests of this binary that fail on SwiftShader (Debian chromium
+/// 148's, 4 subpixel bits) today, each with what it showed; none is
+/// explained yet as a departure from a rule the driver states, and none is
+/// hidden: `the_same_tests_pass_on_swiftshader` fails on any other
+/// failure, and on any of these passing (take it off the list then).
+/// docs/drivers/vulkan.md "SwiftShader" keeps the same list.
+const FAILING_ON_SWIFTSHADER: &[(&str, &str)] = &[
+    ("a_wrong_depth_attachment_fails", "its scenes are unorm24, which SwiftShader cannot attach and copy out: unsupported, so nothing is caught"),
+    ("clip_space_values_come_from_the_declared_positions", "clip/spec_interpolate_snapped departs 3.7e-4 from the unsnapped positions' values the adapter declares for every device (measured on lavapipe)"),
+    ("each_probe_lights_exactly_the_probed_slot", "8x n-rooks at 4 position bits by shifted passes lights no slot"),
+    ("depth_formats_and_offset_pass", "unorm24 unsupported (a device limit); depth/offset_line_ignored and depth/offset_negative_standard4 fail on depth"),
+    ("interpolation_is_within_the_bound", "triangles/interp_perspective_fan: 95 of 289 samples differ, attributes off by up to 134"),
+    ("multisampled_depth_is_read_back_sample_by_sample", "depth/offset_negative_standard4: 100 samples outside the float32 depths allowed (1.17e-2)"),
+    ("multisampled_points_follow_the_rule", "sample offsets at 8 bits are off the device's 4-bit grid: refused"),
+    ("point_squares_are_cut_at_the_viewport", "pointSizeGranularity 0: every size above 1 refused ('steps of 0')"),
+    ("points_follow_the_rule_in_screen_space", "a size-1 point at (8.0039, 7.9961): 2 samples depart from the point rule"),
+    ("points_the_driver_cannot_draw_exactly_are_refused", "refused for pointSizeGranularity 0 before the reason the test wants"),
+    ("polygons_by_stencil_then_cover_match_the_reference", "polygons/circle_64_aa_grid64 and concave_arrow_aa_standard16 differ by tens of samples"),
+    ("probe_finds_the_declared_point_clipping", "2 of 5 probe points drawn (the others refused for pointSizeGranularity 0)"),
+    (
+        "judges_at_least_85_percent_of_the_bundled_cases",
+        "79.0 % of the triangles, lines, hard, antialias, motion and polygons cases judged (279 of 353; issue 35's bar for SwiftShader is 80 %); every other one refused for a device limit (no wide lines, antialias offsets off its 4-bit grid)",
+    ),
+];
+
+/// Every test of this binary again, in a process of its own on SwiftShader
+/// (`VK_DRIVER_FILES` at its ICD, `RASTERCHECK_VULKAN_DEVICE=SwiftShader`),
+/// with the validation layer: each must pass there too, but those of
+/// [`FAILING_ON_SWIFTSHADER`], which must fail (each is printed with what
+/// it showed). Its output is shown when it departs from that. Without
+/// the ICD it says it skipped (under `CI=true`, fails).
+#[test]
+fn the_same_tests_pass_on_swiftshader() {
+    if std::env::var_os(ON_SWIFTSHADER).is_some() {
+        return;
+    }
+    let icd = swiftshader_icd();
+    if !icd.is_file() {
+        common::adapters::skipped(
+            "SwiftShader Vulkan ICD",
+            "chromium (chromium-common ships vk_swiftshader_icd.json; or set RASTERCHECK_SWIFTSHADER_ICD)",
+            &format!("{} is not a file", icd.display()),
+        );
+        return;
+    }
+    let exe = std::env::current_exe().expect("this test binary");
+    let started = std::time::Instant::now();
+    let out = std::process::Command::new(exe)
+        .args(["--skip", "the_same_tests_pass_on_swiftshader"])
+        .env("VK_DRIVER_FILES", &icd)
+        .env("RASTERCHECK_VULKAN_DEVICE", "SwiftShader")
+        .env(ON_SWIFTSHADER, "1")
+        .output()
+        .expect("this test binary runs again");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let summary = stdout
+        .lines()
+        .filter(|l| l.starts_with("test result:"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    eprintln!(
+        "on SwiftShader ({}), in {:.0} s: {summary}",
+        icd.display(),
+        started.elapsed().as_secs_f64()
+    );
+    let ended = |how: &str| -> Vec<&str> {
+        stdout
+            .lines()
+            .filter_map(|l| l.strip_prefix("test ")?.strip_suffix(how))
+            .collect()
+    };
+    let (passed, failed) = (ended(" ... ok"), ended(" ... FAILED"));
+    for (name, what) in FAILING_ON_SWIFTSHADER {
+        eprintln!("FAILING ON SWIFTSHADER (not yet explained): {name}: {what}");
+    }
+    let known = |name: &&str| FAILING_ON_SWIFTSHADER.iter().any(|(k, _)| k == name);
+    let new_failures: Vec<&&str> = failed.iter().filter(|n| !known(n)).collect();
+    let now_passing: Vec<&&str> = passed.iter().filter(|n| known(n)).collect();
+    let tail = || {
+        format!(
+            "on SwiftShader:\n{stdout}\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        )
+    };
+    assert!(
+        new_failures.is_empty(),
+        "new failures {new_failures:?}: {}",
+        tail()
+    );
+    assert!(
+        now_passing.is_empty(),
+        "{now_passing:?} pass on SwiftShader now: take them off FAILING_ON_SWIFTSHADER"
+    );
+    assert_eq!(
+        failed.len(),
+        FAILING_ON_SWIFTSHADER.len(),
+        "every listed test ran and failed: {}",
+        tail()
+    );
+    assert!(passed.len() >= 20, "{}", tail());
 }

@@ -149,6 +149,7 @@ pub fn run(args: RunArgs) -> Exit {
                 name: c.name().to_owned(),
                 foil: c.is_foil(),
                 declared: None,
+                api_record: None,
             })
             .collect(),
         LimitsInfo::of(&limits),
@@ -251,6 +252,7 @@ pub fn run(args: RunArgs) -> Exit {
         .collect();
     for (info, candidate) in report.rasterizers.iter_mut().zip(&candidates) {
         info.declared = candidate.declared();
+        info.api_record = candidate.api_record();
     }
     let stopped = crate::stop::requested();
     report.complete = stopped.is_none();
@@ -287,6 +289,11 @@ pub fn run(args: RunArgs) -> Exit {
                 x.error,
                 own_rule(x)
             );
+        }
+    }
+    for (candidate, info) in candidates.iter().zip(&report.rasterizers) {
+        if let Some(record) = &info.api_record {
+            outln!("{}: API record: {record}", candidate.name());
         }
     }
     if let Some(signal) = stopped {

@@ -149,6 +149,9 @@ impl Rasterizer for Profiled {
     fn declared(&self) -> Option<String> {
         self.inner.declared()
     }
+    fn api_record(&self) -> Option<crate::rasterizer::ApiRecord> {
+        self.inner.api_record()
+    }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         Some(self.rule)
     }

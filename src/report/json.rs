@@ -47,6 +47,10 @@ pub struct RasterizerInfo {
     /// it said so during the run.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub declared: Option<String>,
+    /// What the API's checker said of a driver adapter's calls over the
+    /// run (SPEC.md §10); absent for a rasterizer that calls no driver API.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub api_record: Option<crate::rasterizer::ApiRecord>,
 }
 
 #[derive(Clone, Debug, Serialize)]

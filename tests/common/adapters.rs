@@ -437,6 +437,12 @@ pub fn assert_wrong_instants_fail(candidate: &dyn Rasterizer) {
 /// the bundled cases; every case it leaves unsupported says why in one of
 /// the `known` words; none breaks.
 pub fn assert_judges_at_least_85_percent(candidate: &dyn Rasterizer, known: &[&str]) {
+    assert_judges_at_least(candidate, known, 0.85);
+}
+
+/// [`assert_judges_at_least_85_percent`] with another bar (issue 35's for
+/// SwiftShader, a 4-bit device without wide lines: 80 %).
+pub fn assert_judges_at_least(candidate: &dyn Rasterizer, known: &[&str], bar: f64) {
     let families = [
         "triangles",
         "lines",
@@ -465,5 +471,5 @@ pub fn assert_judges_at_least_85_percent(candidate: &dyn Rasterizer, known: &[&s
     }
     let share = judged as f64 / ids.len() as f64;
     eprintln!("judged {judged} of {} ({:.1} %)", ids.len(), share * 100.0);
-    assert!(share >= 0.85, "judged only {judged} of {}", ids.len());
+    assert!(share >= bar, "judged only {judged} of {}", ids.len());
 }

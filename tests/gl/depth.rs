@@ -20,9 +20,9 @@ use super::common::{case, inline, report, run};
 /// sample outside the set its format and offset allow.
 #[test]
 fn answers_every_depth_case() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert!(GL.capabilities().depth_attachment);
     super::common::depth_drivers::assert_depth_cases_pass(&GL);
 }
@@ -31,9 +31,9 @@ fn answers_every_depth_case() {
 /// fails the cases that show it (`common::depth_drivers`).
 #[test]
 fn a_wrong_depth_attachment_fails() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     super::common::depth_drivers::assert_wrong_depth_is_caught(&GL);
 }
 
@@ -84,9 +84,9 @@ fn covered_depths(scene: &Scene) -> Vec<f64> {
 /// rows or words decoded wrongly.
 #[test]
 fn the_readback_follows_the_offset_on_the_grid() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let p = |e: i32| 2f64.powi(e);
     for (format, bits, r) in [
         ("unorm16", Some(16), [p(-16), p(-15)]),
@@ -178,9 +178,9 @@ impl Rasterizer for Unorm24AsFraction {
 /// (`answers_every_depth_case`).
 #[test]
 fn a_wrong_readback_is_caught() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let wrong: [(&dyn Rasterizer, &str); 3] = [
         (&FragmentDepth, "depth/spec_offset_constant"),
         (&FragmentDepth, "depth/unorm16_plane"),
@@ -208,9 +208,9 @@ fn a_wrong_readback_is_caught() {
 /// attachment cleared and the depth state set again for each draw.
 #[test]
 fn the_prepared_path_draws_depth_as_rasterize_does() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_prepared_draws_as_rasterize(
         &GL,
         &[
@@ -229,9 +229,9 @@ fn the_prepared_path_draws_depth_as_rasterize_does() {
 /// in screen space.
 #[test]
 fn depth_state_does_not_leak_into_the_next_case() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let after = ["clip/depth_clip_near", "triangles/interp_depth_z"];
     let draw = |id: &str| {
         let scene = case(id);
@@ -254,9 +254,9 @@ fn depth_state_does_not_leak_into_the_next_case() {
 /// judged; rectangle lines beside one are refused with the reason.
 #[test]
 fn antialiased_depth_is_drawn_by_shifted_passes() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let mut scene = flat_half("unorm16", Some(r#"{"constant": 4}"#));
     let aa = inline(
         r#"{"name": "aa", "canvas": {"width": 8, "height": 8},

@@ -21,16 +21,18 @@ use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{FillRule, Scene};
 
-/// Whether llvmpipe is here; prints why not once per test.
-fn available() -> bool {
+/// Whether llvmpipe is here; prints why not once per test. The guard it
+/// gives fails the test where the context's API record (its KHR_debug
+/// errors) is not clean when the test ends.
+fn available() -> Option<CleanRecord> {
     match gl::renderer_description() {
         Ok(description) if description.contains("llvmpipe") => {
             eprintln!("gl renderer: {description}");
-            true
+            Some(CleanRecord)
         }
         Ok(description) => {
             eprintln!("skipped: the GL renderer is {description}, not llvmpipe (GALLIUM_DRIVER?)");
-            false
+            None
         }
         Err(why) => {
             common::adapters::skipped(
@@ -38,8 +40,25 @@ fn available() -> bool {
                 "libegl1 libegl-mesa0 libgl1-mesa-dri",
                 &why,
             );
-            false
+            None
         }
+    }
+}
+
+/// Asserts, when a test that drew ends without a panic of its own, that
+/// the context's KHR_debug callback heard no error (SPEC.md §10,
+/// `api_record`). The record is the process's: a message any test caused
+/// fails the tests that end after it, each naming the first message.
+struct CleanRecord;
+
+impl Drop for CleanRecord {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            return;
+        }
+        let record = GL.api_record().expect("the context is made");
+        eprintln!("gl: API record: {record}");
+        assert!(record.is_clean(), "gl: API record: {record}");
     }
 }
 
@@ -69,9 +88,9 @@ fn run(scene: &Scene) -> (oracle::ReferenceRun, CandidateRun) {
 /// (in y-down terms: GL's window y points up) and 8 bits.
 #[test]
 fn probe_finds_a_point_sampler_with_bottom_left_ties() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_probe_diagnosis(&GL, "bottom-left");
 }
 
@@ -90,9 +109,9 @@ const MORE_TIE_CASES: &[&str] = &[
 
 #[test]
 fn matches_the_reference_under_bottom_left() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_each(
         &[TIE_CASES, MORE_TIE_CASES].concat(),
         &GL,
@@ -116,9 +135,9 @@ fn bottom_left(scene: &mut Scene) {
 /// samples given to the other triangle, but no hole and no overdraw.
 #[test]
 fn its_tie_rule_is_bottom_left() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let (reference, bottom_left) = run(&case("triangles/fill_rule_bottom_left"));
     assert_eq!(
         bottom_left.verdict,
@@ -158,9 +177,9 @@ fn its_tie_rule_is_bottom_left() {
 /// default bound.
 #[test]
 fn interpolation_is_within_the_bound() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_interpolation_within_the_bound(INTERPOLATION, &GL, "gl", bottom_left);
 }
 
@@ -169,9 +188,9 @@ fn interpolation_is_within_the_bound() {
 /// (culled triangles draw nothing, kept ones match).
 #[test]
 fn culling_follows_the_on_screen_winding() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let slivers = ["triangles/sliver_cull_cw", "triangles/sliver_cull_ccw"];
     for id in [WINDING_CASES, &slivers].concat() {
         let mut scene = case(id);
@@ -193,9 +212,9 @@ fn culling_follows_the_on_screen_winding() {
 /// a process holding llvmpipe, `softpipe` fails and says how to get it.
 #[test]
 fn refuses_what_it_cannot_express() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_refuses_lines_and_judges_unsnapped(&GL);
     let scene = case("triangles/fill_rule_top_left");
     let reference = oracle::run_reference(&scene);
@@ -210,9 +229,9 @@ fn refuses_what_it_cannot_express() {
 /// own rules, with llvmpipe's departures listed rather than hidden.
 #[test]
 fn every_triangle_case_for_the_record() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     record_every_triangle_case(&GL, "gl");
 }
 
@@ -220,9 +239,9 @@ fn every_triangle_case_for_the_record() {
 /// that the adapter sets it): its rule is bottom-right.
 #[test]
 fn softpipe_is_bottom_right_in_its_own_process() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/triangles");
     let output = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
         .env_remove("GALLIUM_DRIVER")
@@ -274,9 +293,9 @@ fn softpipe_is_bottom_right_in_its_own_process() {
 /// draw calls), a fan, a culling case, and the bench's own kind of scene.
 #[test]
 fn the_prepared_path_draws_what_rasterize_draws() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_prepared_draws_as_rasterize(
         &GL,
         &[
@@ -306,9 +325,9 @@ fn is_listed_by_name() {
 /// vertices on sample centres fails on exactly those ties.
 #[test]
 fn polygons_by_stencil_then_cover_match_the_reference() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids = [
         "polygons/bowtie_even_odd",
         "polygons/bowtie_nonzero",
@@ -343,9 +362,9 @@ fn polygons_by_stencil_then_cover_match_the_reference() {
 /// second pentagram's parity and draw it nowhere.
 #[test]
 fn each_polygon_starts_from_a_clear_stencil() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let star = r#"[[8, 1], [12.41015625, 14.56640625], [0.8671875, 6.18359375],
                    [15.1328125, 6.18359375], [3.58984375, 14.56640625]]"#;
     let scene = inline(&format!(
@@ -374,9 +393,9 @@ fn each_polygon_starts_from_a_clear_stencil() {
 /// by its own perturbation, in y-up window coordinates), and fails.
 #[test]
 fn diamond_exit_lines_are_drawn_and_judged() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let scene = inline(
         r#"{"name": "lines", "canvas": {"width": 32, "height": 32},
             "primitives": [
@@ -402,9 +421,9 @@ fn diamond_exit_lines_are_drawn_and_judged() {
 /// (`rectangle` is drawn: `rectangles.rs`).
 #[test]
 fn refuses_the_line_rules_gl_does_not_draw() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (rule, extra, why) in [
         ("midpoint", "", "midpoint"),
         (
@@ -462,9 +481,9 @@ fn triangle_around([x, y]: [f64; 2], fields: &str) -> Scene {
 /// slot.
 #[test]
 fn shifted_passes_light_each_slot_at_its_own_offset() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let mut failures = Vec::new();
     for antialias in [
         r#"{"samples": 4}"#,
@@ -525,9 +544,9 @@ impl Rasterizer for RotatedShifts {
 /// sample, though the resolved coverage of each pixel is unchanged).
 #[test]
 fn a_wrong_shift_is_caught() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for id in [
         "antialias/edge_slope_1_2_standard16",
         "polygons/pentagram_nonzero_aa_standard16",
@@ -555,9 +574,9 @@ fn a_wrong_shift_is_caught() {
 /// 8 bits, ties to even, does not commute with a shift).
 #[test]
 fn refuses_shifted_passes_that_would_not_be_exact() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     for (rules, antialias, why) in [
         (
             r#"{"subpixel_bits": 8}"#,
@@ -588,34 +607,34 @@ fn refuses_shifted_passes_that_would_not_be_exact() {
 /// geometry); none breaks.
 #[test]
 fn judges_at_least_85_percent_of_the_bundled_cases() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let known = ["midpoint", "wide aliased lines", "subpixel_bits: null"];
     common::adapters::assert_judges_at_least_85_percent(&GL, &known);
 }
 
 #[test]
 fn clip_space_honours_the_provoking_vertex() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_provoking_vertex(&GL);
 }
 
 #[test]
 fn clip_space_depth_is_clipped_or_clamped() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_depth_clip_and_clamp(&GL);
 }
 
 #[test]
 fn clip_space_refuses_what_it_cannot_hand_the_driver() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_refusals(&GL);
 }
 
@@ -623,25 +642,25 @@ fn clip_space_refuses_what_it_cannot_hand_the_driver() {
 /// sample on scenes that separate them, and the other conventions do not.
 #[test]
 fn clip_space_follows_its_declared_clipping_conventions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_clip_conventions(&GL);
 }
 
 #[test]
 fn clip_space_viewport_places_the_scene() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_viewport_placement(&GL);
 }
 
 #[test]
 fn clip_space_inside_the_volume_passes() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::clip_drivers::assert_inside_the_volume_passes(&GL);
 }
 
@@ -649,9 +668,9 @@ fn clip_space_inside_the_volume_passes() {
 /// (`fixed_interpolate_from`), and not from the snapped ones.
 #[test]
 fn clip_space_values_come_from_the_declared_positions() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let (own, other) = common::clip_drivers::assert_values_from_declared_positions(&GL);
     eprintln!("gl: values depart {own:e} from its own positions', {other:e} from the others'");
 }
@@ -661,9 +680,9 @@ fn clip_space_values_come_from_the_declared_positions() {
 #[test]
 #[ignore]
 fn measure_points() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::measure(&GL);
 }
 
@@ -672,9 +691,9 @@ fn measure_points() {
 /// with their flat values and depth.
 #[test]
 fn points_follow_the_rule_in_screen_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_screen_points(&GL);
 }
 
@@ -682,17 +701,17 @@ fn points_follow_the_rule_in_screen_space() {
 /// depth planes under clip and clamp, w ≤ 0.
 #[test]
 fn points_follow_the_rule_in_clip_space() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_clip_points(&GL);
 }
 
 #[test]
 fn multisampled_points_follow_the_rule() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_multisampled_points(&GL);
 }
 
@@ -701,9 +720,9 @@ fn multisampled_points_follow_the_rule() {
 /// with the reason.
 #[test]
 fn points_the_driver_cannot_draw_exactly_are_refused() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_point_refusals(&GL);
 }
 
@@ -712,18 +731,18 @@ fn points_the_driver_cannot_draw_exactly_are_refused() {
 /// is told apart.
 #[test]
 fn point_squares_are_cut_at_the_viewport() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_squares_cut_at_the_viewport(&GL);
 }
 
 /// probe finds the point clipping the adapter declares.
 #[test]
 fn probe_finds_the_declared_point_clipping() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_probe_finds_declared_point_clipping(&GL);
 }
 
@@ -731,9 +750,9 @@ fn probe_finds_the_declared_point_clipping() {
 /// unsnapped centre.
 #[test]
 fn wrong_point_rules_are_caught() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     common::point_drivers::assert_wrong_rules_are_caught(&GL);
 }
 
@@ -743,4 +762,59 @@ fn wrong_point_rules_are_caught() {
 #[test]
 fn clip_points_are_judged_under_the_drivers_own() {
     common::point_drivers::assert_judged_under_own_point_clip(&GL);
+}
+
+/// The context's KHR_debug callback hears the driver: a debug context of
+/// its own given `glEnable` of an enum no GL defines has a record whose
+/// first message names `GL_INVALID_ENUM`. The real driver, no mock; the
+/// shared context's record stays clean.
+#[test]
+fn the_api_record_hears_a_deliberately_invalid_call() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let record = gl::invalid_call_record().expect("a second context");
+    eprintln!("the invalid call's record: {record}");
+    assert!(record.errors >= 1, "{record}");
+    let first = record.first.as_deref().unwrap_or_default();
+    assert!(first.contains(gl::INVALID_CALL_ERROR), "{record}");
+    assert_eq!(
+        record.validated_by.as_deref(),
+        Some("KHR_debug (a debug context)")
+    );
+}
+
+/// A run shows the API record on the console and in report.json's
+/// rasterizer entry.
+#[test]
+fn a_run_reports_its_api_record() {
+    let Some(_record) = available() else {
+        return;
+    };
+    let dir = common::cli::scratch("gl_api_record");
+    let case = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/cases/triangles/fan_16_center.json"
+    );
+    let report = dir.join("report");
+    let out = common::cli::rastercheck(
+        &dir,
+        &[
+            "run",
+            case,
+            "-r",
+            "gl",
+            "--report",
+            report.to_str().unwrap(),
+        ],
+    );
+    let text = common::text(&out);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("gl: API record: 0 messages (checked by KHR_debug (a debug context))"),
+        "{text}"
+    );
+    let json = common::cli::read_json(&report.join("report.json"));
+    let record = &json["rasterizers"][0]["api_record"];
+    assert_eq!(record["errors"], 0, "{record}");
 }

@@ -35,9 +35,9 @@ fn bottom_left_unpinned(scene: &mut Scene) {
 /// top).
 #[test]
 fn moving_cases_by_time_passes_pass_under_the_drivers_rule() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let ids: Vec<String> = bundled_ids("motion", |_| true)
         .into_iter()
         .filter(|id| !has_parallelogram_lines(&case(id)))
@@ -75,18 +75,18 @@ fn moving_cases_by_time_passes_pass_under_the_drivers_rule() {
 /// A wrong shutter is caught (`assert_wrong_instants_fail`).
 #[test]
 fn wrong_instants_fail() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     assert_wrong_instants_fail(&GL);
 }
 
 /// The reports say how moving scenes are drawn.
 #[test]
 fn declares_time_passes() {
-    if !available() {
+    let Some(_record) = available() else {
         return;
-    }
+    };
     let _ = run(&case("motion/spec_moves_as_written"));
     let declared = GL.declared().expect("the context is made");
     assert!(declared.contains("motion by time passes"), "{declared}");

@@ -4,11 +4,12 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
+use crate::rasterizer::{ApiRecord, Capabilities, Prepared, RasterError, Rasterizer};
 use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
 
 use super::accepted::accepted;
 use super::context::{self, with_context};
+use super::debug;
 use super::prepared::prepare;
 use crate::adapters::gpu;
 
@@ -109,6 +110,12 @@ impl Rasterizer for Gl {
 
     fn declared(&self) -> Option<String> {
         declared()
+    }
+
+    /// What the context's KHR_debug callback heard of this process's
+    /// calls (`debug.rs`), once the context exists.
+    fn api_record(&self) -> Option<ApiRecord> {
+        context::existing(|gl| debug::snapshot(&gl.record))
     }
 
     fn prepare<'a>(

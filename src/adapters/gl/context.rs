@@ -9,6 +9,7 @@ use glow::HasContext;
 use khronos_egl as egl;
 
 use super::clip::{self, ProvokingFn};
+use super::debug::{self, DEBUG_CONTEXT};
 use super::fetch::{self, Fetch};
 use super::offset_clamp;
 use super::samples::{self, DriverSamples};
@@ -75,7 +76,12 @@ type Egl = egl::DynamicInstance<egl::EGL1_5>;
 pub(super) struct GlContext {
     pub(super) egl: Egl,
     pub(super) display: egl::Display,
+    /// The config the context was made with (`invalid_call.rs` makes
+    /// another with it).
+    pub(super) config: egl::Config,
     pub(super) context: egl::Context,
+    /// What the context's KHR_debug callback heard (`debug.rs`).
+    pub(super) record: debug::Shared,
     pub(super) gl: glow::Context,
     pub(super) renderer: String,
     pub(super) version: String,
@@ -158,19 +164,23 @@ impl GlContext {
                     3,
                     egl::CONTEXT_OPENGL_PROFILE_MASK,
                     egl::CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                    DEBUG_CONTEXT[0],
+                    DEBUG_CONTEXT[1],
                     egl::NONE,
                 ],
             )
-            .map_err(|e| fail("creating an OpenGL 3.3 core context", e))?;
+            .map_err(|e| fail("creating an OpenGL 3.3 core debug context", e))?;
         egl.make_current(display, None, None, Some(context))
             .map_err(|e| fail("making the context current (surfaceless)", e))?;
         // SAFETY: the context is current; the loader returns its entry points.
-        let gl = unsafe {
+        let mut gl = unsafe {
             glow::Context::from_loader_function(|name| {
                 egl.get_proc_address(name)
                     .map_or(std::ptr::null(), |f| f as *const c_void)
             })
         };
+        // SAFETY: the context is current.
+        let record = unsafe { debug::listen(&mut gl) };
         let provoking = egl.get_proc_address("glProvokingVertex");
         let clip_control = egl.get_proc_address("glClipControl");
         let multisample = egl.get_proc_address("glGetMultisamplefv");
@@ -213,7 +223,9 @@ impl GlContext {
         Ok(GlContext {
             egl,
             display,
+            config,
             context,
+            record,
             gl,
             renderer,
             version,

@@ -9,17 +9,21 @@
 //! shared EGL context), `passes.rs` / `time.rs` / `msaa.rs` (the passes it
 //! is drawn in), `draw.rs` (set up, cleared and drawn into a `drawing.rs`,
 //! with `depth.rs`'s attachment), then `readback.rs`; `prepared.rs` is the
-//! same for the bench, phase by phase.
+//! same for the bench, phase by phase. `debug.rs` keeps the API record
+//! (what KHR_debug said of the calls); `invalid_call.rs` makes a call it
+//! must catch, for the test that shows it does.
 
 mod accepted;
 mod adapter;
 mod clip;
 mod context;
+mod debug;
 mod depth;
 mod draw;
 mod drawing;
 mod driver;
 mod fetch;
+mod invalid_call;
 mod lines;
 mod msaa;
 mod offset_clamp;
@@ -32,3 +36,4 @@ mod time;
 
 pub use adapter::{Gl, NAME, SOFTPIPE};
 pub use driver::{driver_multisampling, renderer_description, DriverMultisampling};
+pub use invalid_call::{invalid_call_record, INVALID_CALL_ERROR};

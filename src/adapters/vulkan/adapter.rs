@@ -5,7 +5,7 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{ApiRecord, Capabilities, RasterError, Rasterizer};
 use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
 
 use super::draw;
@@ -148,6 +148,15 @@ impl Rasterizer for Vulkan {
         };
         let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
         draw::time(&bytes, scene, shifts.len() as u32 * motion.blur.samples)
+    }
+
+    /// What the instance's messenger heard of this process's calls
+    /// (`messenger.rs`): every case's, of both adapters on the shared
+    /// device.
+    fn api_record(&self) -> Option<ApiRecord> {
+        let shared = shared().ok()?;
+        let record = lock(shared).device.api_record();
+        Some(record)
     }
 
     /// The device, its driver and version, once the device is made, and

@@ -1,13 +1,16 @@
 //! Finding a Vulkan device and creating it: the loader, the instance, the
 //! physical device (`RASTERCHECK_VULKAN_DEVICE`, or the first GPU, or the
 //! first device), what it offers for rasterization, and the logical
-//! device with the features this adapter uses.
+//! device with the features this adapter uses; the instance's messenger
+//! keeps its API record (`messenger.rs`).
 
 use std::ffi::CStr;
 
 use ash::vk;
 
+use super::messenger::{self, Listening, Messenger, Record};
 use crate::adapters::gpu;
+use crate::rasterizer::ApiRecord;
 use crate::scene::DepthFormat;
 
 /// What the device offers that decides what it can draw.
@@ -93,6 +96,11 @@ pub(super) struct Device {
     /// Keeps the loader loaded while the device lives.
     _entry: ash::Entry,
     pub instance: ash::Instance,
+    /// The debug-utils messenger, where the instance offers one; destroyed
+    /// before the instance.
+    messenger: Option<Messenger>,
+    /// What it (and the instance's own creation) heard; outlives both.
+    record: Record,
     physical: vk::PhysicalDevice,
     pub device: ash::Device,
     pub queue: vk::Queue,
@@ -108,21 +116,58 @@ pub(super) const INSTALL_HINT: &str =
     "install libvulkan1 and a driver (Debian: mesa-vulkan-drivers for lavapipe)";
 
 impl Device {
-    pub(super) fn new() -> Result<Device, String> {
+    /// The device, with the Khronos validation layer enabled where this
+    /// process asks for it (`messenger::asked`) or `validate` insists.
+    pub(super) fn new(validate: bool) -> Result<Device, String> {
         gpu::quiet_mesa();
         // SAFETY: loading libvulkan runs its initialisers, as any Vulkan
         // program does.
         let entry = unsafe { ash::Entry::load() }
             .map_err(|e| format!("no Vulkan loader ({e}): {INSTALL_HINT}"))?;
+        let listening = Listening::plan(&entry, validate || messenger::asked())?;
+        let record = Record::new(&listening);
+        let mut hear_creation = record.create_info();
         let app = vk::ApplicationInfo::default()
             .application_name(c"rastercheck")
             .api_version(vk::API_VERSION_1_2);
-        let info = vk::InstanceCreateInfo::default().application_info(&app);
+        let mut info = vk::InstanceCreateInfo::default()
+            .application_info(&app)
+            .enabled_layer_names(&listening.layers)
+            .enabled_extension_names(&listening.extensions);
+        if listening.hears() {
+            info = info.push_next(&mut hear_creation);
+        }
         // SAFETY: a valid create info; the instance is destroyed in Drop.
         let instance = unsafe { entry.create_instance(&info, None) }
             .map_err(|e| format!("creating a Vulkan instance: {e}: {INSTALL_HINT}"))?;
-        match unsafe { Self::on(entry.clone(), instance.clone()) } {
-            Ok(device) => Ok(device),
+        // SAFETY: the instance enables VK_EXT_debug_utils where it hears.
+        // The record's box moves into the device, which destroys the
+        // messenger and then the instance before it lets the record go;
+        // on failure the record is let go here, after both.
+        let messenger = unsafe {
+            match listening.hears() {
+                true => Messenger::new(&entry, &instance, &record).map(Some),
+                false => Ok(None),
+            }
+        };
+        let made = messenger.and_then(|messenger| {
+            // SAFETY: a valid instance; the messenger is destroyed with it.
+            match unsafe { Self::on(entry.clone(), instance.clone()) } {
+                Ok(device) => Ok((device, messenger)),
+                Err(e) => {
+                    if let Some(m) = &messenger {
+                        unsafe { m.destroy() };
+                    }
+                    Err(e)
+                }
+            }
+        });
+        match made {
+            Ok((mut device, messenger)) => {
+                device.messenger = messenger;
+                device.record = record;
+                Ok(device)
+            }
             Err(e) => {
                 // SAFETY: nothing made from the instance outlives this.
                 unsafe { instance.destroy_instance(None) };
@@ -131,6 +176,13 @@ impl Device {
         }
     }
 
+    /// What the messenger heard so far.
+    pub(super) fn api_record(&self) -> ApiRecord {
+        self.record.get()
+    }
+
+    /// The device on `instance`, without its messenger and record (`new`
+    /// gives it them).
     unsafe fn on(entry: ash::Entry, instance: ash::Instance) -> Result<Device, String> {
         let physical = choose(&instance)?;
         let properties = instance.get_physical_device_properties(physical);
@@ -303,6 +355,8 @@ impl Device {
         Ok(Device {
             _entry: entry,
             instance,
+            messenger: None,
+            record: Record::default(),
             physical,
             device,
             queue,
@@ -342,6 +396,9 @@ impl Drop for Device {
         unsafe {
             let _ = self.device.device_wait_idle();
             self.device.destroy_device(None);
+            if let Some(m) = &self.messenger {
+                m.destroy();
+            }
             self.instance.destroy_instance(None);
         }
     }

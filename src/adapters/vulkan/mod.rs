@@ -9,11 +9,15 @@
 //! (natively multisampled or by shifted passes), `shared.rs` (the device
 //! and pipelines, made once: `device.rs`, `pipelines.rs`, `shaders.rs`),
 //! then `draw.rs` (recorded, submitted, read back, decoded, with
-//! `unpack.rs` for a multisampled target).
+//! `unpack.rs` for a multisampled target). `messenger.rs` keeps the API
+//! record (what the validation layer said of the calls); `invalid_call.rs`
+//! makes a call it must catch, for the test that shows it does.
 
 mod adapter;
 mod device;
 mod draw;
+mod invalid_call;
+mod messenger;
 mod native;
 mod pipelines;
 mod refusals;
@@ -22,4 +26,6 @@ mod shared;
 mod unpack;
 
 pub use adapter::{Vulkan, NAME, PASSES_NAME};
+pub use invalid_call::{invalid_call_record, INVALID_CALL_VUID};
+pub use messenger::ask_for_validation;
 pub use shared::device_description;

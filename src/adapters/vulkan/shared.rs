@@ -25,7 +25,7 @@ pub(super) fn shared() -> Result<&'static Mutex<Shared>, &'static String> {
     static SHARED: OnceLock<Result<Mutex<Shared>, String>> = OnceLock::new();
     SHARED
         .get_or_init(|| {
-            let device = Device::new()?;
+            let device = Device::new(false)?;
             if !device.blends(pipelines::COUNT_FORMAT) {
                 return Err(format!(
                     "{}: R32_SFLOAT does not blend, and the coverage count needs it",

@@ -77,6 +77,7 @@ fn report(rasterizers: &[&str]) -> Report {
                 name: (*n).into(),
                 foil: false,
                 declared: None,
+                api_record: None,
             })
             .collect(),
         LimitsInfo {
