@@ -1,10 +1,11 @@
 //! Numbers and pixels as the protocol's JSON carries them: a number
 //! written twice (its nearest f64 and its exact spelling), a pixel and a
-//! whole number read back.
+//! whole number read back, and a depth as its format stores it.
 
 use serde_json::{json, Value};
 
-use crate::scene::Number;
+use crate::scene::depth::unorm_value;
+use crate::scene::{DepthFormat, Number};
 
 /// A number twice: its nearest f64, and (in the sibling `exact` object) its
 /// exact spelling.
@@ -44,4 +45,21 @@ pub(super) fn whole_below(v: &Value, limit: u32) -> Option<u32> {
     v.as_f64()
         .filter(|c| c.fract() == 0.0 && *c >= 0.0 && *c < f64::from(limit))
         .map(|c| c as u32)
+}
+
+/// A depth an answer gives, as the case's format stores it (SPEC.md
+/// §12.10): under unorm n the stored integer k in [0, 2^n − 1], read back
+/// as k/(2^n − 1) rounded once to an f32, as a driver's readback is;
+/// under float32 any number, stored as its nearest f32; under `exact` the
+/// number itself. `None`: not a depth of the format.
+pub(super) fn stored_depth(value: f64, format: DepthFormat) -> Option<f64> {
+    match format {
+        DepthFormat::Exact => Some(value),
+        DepthFormat::Float32 => Some(f64::from(value as f32)),
+        DepthFormat::Unorm16 | DepthFormat::Unorm24 => {
+            let bits = format.unorm_bits()?;
+            let k = whole_below(&Value::from(value), 1 << bits)?;
+            Some(f64::from(unorm_value(k, bits)))
+        }
+    }
 }
