@@ -63,3 +63,26 @@ pub(super) fn stored_depth(value: f64, format: DepthFormat) -> Option<f64> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_depth_is_read_back_as_its_format_stores_it() {
+        let half = stored_depth(32768.0, DepthFormat::Unorm16).unwrap();
+        assert_eq!(half, f64::from(unorm_value(32768, 16)));
+        assert_eq!(stored_depth(65535.0, DepthFormat::Unorm16), Some(1.0));
+        // Not a stored integer of the format: refused.
+        assert_eq!(stored_depth(0.5, DepthFormat::Unorm16), None);
+        assert_eq!(stored_depth(65536.0, DepthFormat::Unorm16), None);
+        assert_eq!(stored_depth(-1.0, DepthFormat::Unorm24), None);
+        assert!(stored_depth(16_777_215.0, DepthFormat::Unorm24).is_some());
+        // float32: the nearest f32; exact: the number itself.
+        assert_eq!(
+            stored_depth(0.1, DepthFormat::Float32),
+            Some(f64::from(0.1f32))
+        );
+        assert_eq!(stored_depth(0.1, DepthFormat::Exact), Some(0.1));
+    }
+}
