@@ -33,7 +33,8 @@
 // hello says so, and rastercheck reports such cases unsupported.
 //
 // Files: main.c (the protocol: hello, one answer line per request, ids),
-// draw.c (a request into fragments), coverage.c (exact coverage tests),
+// draw.c (a request into fragments), clip.c (clip space and points),
+// scene.h (what draw.c and clip.c share), coverage.c (exact coverage tests),
 // fixed.c (exact spellings to fixed point), rational.c (exact rationals for
 // clip space), json.c (a minimal JSON reader),
 // buffer.c (a growable text buffer). C99 and the standard library, plus
