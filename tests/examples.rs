@@ -1,6 +1,7 @@
 //! The example rasterizers in C and JavaScript (`examples/c`,
 //! `examples/js`, docs/validating.md), judged through the binary
-//! over the bundled triangle, antialiasing, polygon and motion cases, in
+//! over the bundled triangle, antialiasing, polygon and motion cases (and
+//! the C example over the clip, point and depth cases, SPEC §12.10), in
 //! persistent mode with protocol v2 (moving scenes by SPEC §12.8): each hello is honoured (what a program declares it
 //! does not draw is UNSUPPORTED with the declaration as reason), each
 //! example gets the verdicts it was built for, and each one's planted bug
@@ -282,6 +283,209 @@ fn a_hello_without_motion_gets_no_moving_scenes() {
     for u in v.iter().filter(|v| v.id != still.id) {
         assert_eq!(u.verdict, "unsupported", "{u:?}");
         assert!(u.reasons.contains("its hello's motion: false"), "{u:?}");
+    }
+}
+
+/// The families of SPEC §16–§18, which the protocol carries to a program
+/// whose hello declares them (§12.10).
+const FAMILIES_3D: [&str; 3] = ["cases/clip", "cases/points", "cases/depth"];
+
+/// What the C example answers for a clip-space case it cannot draw
+/// exactly: its own reasons, each naming what it does not implement.
+const C_CANNOT: [&str; 3] = [
+    "beyond this program's 128-bit arithmetic",
+    "a projected position off this program's grid",
+    "polygon offset at exact coordinates is not implemented",
+];
+
+/// The C example draws clip-space triangles (clipped exactly in 128-bit
+/// rationals under each case's own conventions, vertices behind the eye by
+/// §16.4's homogeneous edge functions), points, and depth formats with
+/// polygon offset, and is judged as a built-in is: it fails nothing. What
+/// it leaves unsupported is a line rule its hello does not declare, or
+/// what it answers so itself, naming what it does not implement.
+#[test]
+fn the_c_example_draws_clip_space_points_and_depth_formats_exactly() {
+    let Some(exe) = c_example("c-3d") else { return };
+    let (code, v, t) = run("c-3d", "c", &exe.display().to_string(), &FAMILIES_3D);
+    assert_eq!(code, Some(0), "{t}");
+    assert_eq!(count(&v, "fail"), 0, "{t}");
+    assert_eq!(count(&v, "error"), 0, "{t}");
+    for u in v.iter().filter(|v| v.verdict == "unsupported") {
+        assert!(
+            C_CANNOT.iter().any(|why| u.reasons.contains(why))
+                || u.reasons
+                    .contains("the program (c-example 1) declares no diamond-exit lines"),
+            "{u:?}"
+        );
+    }
+    let family = |prefix: &str| {
+        v.iter()
+            .filter(|r| r.id.starts_with(prefix) && r.verdict == "pass")
+            .count()
+    };
+    // When written: clip 81 of 81, points 51 of 51, depth 20 of 21 (the
+    // 21st has a diamond-exit line, which the hello does not declare).
+    assert!(family("clip/") >= 81, "{t}");
+    assert!(family("points/") >= 51, "{t}");
+    assert!(family("depth/") >= 20, "{t}");
+    assert_eq!(
+        verdict_of(&v, "depth/offset_line_ignored").verdict,
+        "unsupported",
+        "{t}"
+    );
+    for id in [
+        "clip/spec_clip_then_snap",
+        "clip/spec_guard_band",
+        "clip/spec_near_per_sample",
+        "clip/spec_w_crossing",
+        "clip/offset_steep_perspective",
+        "points/spec_clip_pop",
+        "points/spec_bounds_viewport",
+        "depth/spec_offset_slope_45",
+        "depth/spec_depth_unorm16_half_way",
+    ] {
+        assert_eq!(verdict_of(&v, id).verdict, "pass", "{id}: {t}");
+    }
+    document(
+        "example-c-3d",
+        counts_line("the C example", &FAMILIES_3D, &v),
+    );
+}
+
+/// `--ignore-offset` declares polygon offset and draws every depth without
+/// it: each offset case whose offset moves a stored depth fails by its
+/// depth, and the cases without an offset still pass.
+#[test]
+fn the_c_example_ignoring_polygon_offset_is_caught() {
+    let Some(exe) = c_example("c-ignore-offset") else {
+        return;
+    };
+    let command = format!("{} --ignore-offset", exe.display());
+    let (code, v, t) = run("c-ignore-offset", "c", &command, &["cases/depth"]);
+    assert_eq!(code, Some(1), "{t}");
+    for id in [
+        "depth/offset_steep",
+        "depth/spec_offset_constant",
+        "depth/spec_offset_slope_45",
+    ] {
+        let caught = verdict_of(&v, id);
+        assert_eq!(caught.verdict, "fail", "{caught:?}");
+        assert!(caught.reasons.contains("depth"), "{caught:?}");
+    }
+    assert_eq!(
+        verdict_of(&v, "depth/spec_depth_float32").verdict,
+        "pass",
+        "{t}"
+    );
+    // Declaring no offset instead (--no-offset) makes those cases
+    // unsupported, unsent, with the declaration as reason.
+    let command = format!("{} --no-offset", exe.display());
+    let (_, v, t) = run(
+        "c-no-offset",
+        "c",
+        &command,
+        &["cases/depth/offset_steep.json"],
+    );
+    let refused = verdict_of(&v, "depth/offset_steep");
+    assert_eq!(refused.verdict, "unsupported", "{t}");
+    assert!(
+        refused
+            .reasons
+            .contains("its hello's polygon_offset: false"),
+        "{refused:?}"
+    );
+}
+
+/// `--fixed-clip` clips every case against all six planes before the
+/// divide and declares so (`conventions.clip_xy` and `clip_z`,
+/// SPEC §12.10): the cases stating other conventions are judged under its
+/// own and pass, reported so; `--fixed-clip-undeclared` draws the same
+/// without declaring it, and those cases fail.
+#[test]
+fn declared_clip_conventions_are_judged_as_conventions() {
+    let Some(exe) = c_example("c-fixed-clip") else {
+        return;
+    };
+    let command = format!("{} --fixed-clip", exe.display());
+    let (code, v, t) = run("c-fixed-clip", "c", &command, &["cases/clip"]);
+    assert_eq!(code, Some(0), "{t}");
+    assert_eq!(count(&v, "pass"), v.len(), "{t}");
+    let own = verdict_of(&v, "clip/spec_guard_band");
+    assert!(t.contains("judged under its own clipping"), "{t}");
+    assert_eq!(own.verdict, "pass", "{own:?}");
+    let command = format!("{} --fixed-clip-undeclared", exe.display());
+    let (code, v, t) = run("c-fixed-clip-undeclared", "c", &command, &["cases/clip"]);
+    assert_eq!(code, Some(1), "{t}");
+    // 22 of the 81 cases failed when written.
+    assert!(count(&v, "fail") >= 10, "{t}");
+    assert_eq!(
+        verdict_of(&v, "clip/spec_guard_band").verdict,
+        "fail",
+        "{t}"
+    );
+}
+
+/// A client that logs the name of every case it is sent and answers each
+/// `unsupported`; with `hello` it declares version 2 and the three
+/// screen-space primitives, nothing of SPEC §12.10.
+const COUNTING_CLIENT: &str = r#"
+import json, sys
+log = open(sys.argv[1], "a")
+if len(sys.argv) > 2 and sys.argv[2] == "hello":
+    print(json.dumps({"hello": {"protocol": 2, "name": "flat", "capabilities":
+                     {"primitives": ["triangles", "lines", "polygons"]}}}), flush=True)
+for line in sys.stdin:
+    request = json.loads(line)
+    if request.get("bye"):
+        break
+    log.write(request["case"] + "\n")
+    log.flush()
+    answer = {"unsupported": "counting only"}
+    if "id" in request:
+        answer["id"] = request["id"]
+    print(json.dumps(answer), flush=True)
+"#;
+
+/// A program that declares no clip space, points or depth formats (a
+/// version 2 hello without them, or no hello at all) is sent no case of
+/// those families that needs them: each is unsupported with the missing
+/// declaration as reason, and the program's own log of requests holds
+/// none of them.
+#[test]
+fn a_program_that_declares_no_clip_space_is_sent_none() {
+    if !available("python3") {
+        skipped("python3", "python3", "the counting client cannot run");
+        return;
+    }
+    for (tag, flag, reason) in [
+        ("count-hello", "hello", "the program (flat) declares no "),
+        ("count-v1", "", "this program wrote none"),
+    ] {
+        let dir = scratch(&format!("examples-{tag}"));
+        let script = dir.join("client.py");
+        std::fs::write(&script, COUNTING_CLIENT).unwrap();
+        let log = dir.join("sent.log");
+        let command = format!("python3 {} {} {flag}", script.display(), log.display());
+        let (_, v, t) = run(tag, "flat", &command, &FAMILIES_3D);
+        assert_eq!(v.len(), count(&v, "unsupported"), "{t}");
+        let sent = std::fs::read_to_string(&log).unwrap_or_default();
+        let sent: Vec<&str> = sent.lines().collect();
+        let refused: Vec<&Verdict> = v
+            .iter()
+            .filter(|r| !r.reasons.contains("counting only"))
+            .collect();
+        // Every clip and point case is refused, unsent.
+        for r in &v {
+            if r.id.starts_with("clip/") || r.id.starts_with("points/") {
+                assert!(r.reasons.contains(reason), "{r:?}");
+                let name = r.id.rsplit('/').next().unwrap();
+                assert!(!sent.contains(&name), "{name} was sent: {sent:?}");
+            }
+        }
+        // What was sent is what was not refused, one request each.
+        assert_eq!(sent.len() + refused.len(), v.len(), "{t}");
+        assert!(refused.len() >= 153, "{refused:?}");
     }
 }
 

@@ -1,8 +1,10 @@
 /* Drawing a request (draw.h): bounding-box traversal, an exact coverage
  * test per sample (coverage.c), depth and attributes interpolated in
- * doubles at the covered samples (SPEC.md §5). */
+ * doubles at the covered samples (SPEC.md §5), depth stored in the case's
+ * format (§18); clip space and points are clip.c's. */
 #include "draw.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -11,43 +13,13 @@
 
 #include "coverage.h"
 #include "fixed.h"
+#include "rational.h"
+#include "scene.h"
 
-#define MAX_ATTRIBUTES 16
-/* An instant of the shutter's unit interval is a multiple of 2^-32 (the
- * shutter's ends are multiples of 2^-16, u/65536 of it another 16 bits);
- * shifts of signed values are undefined for negatives, so multiply. */
-#define INSTANT_ONE ((i128)1 << 32)
-#define MAX_SAMPLES 256
-
-typedef struct {
-    fx16 x, y;   /* snapped; a moving vertex's position at shutter open */
-    fx16 tx, ty; /* a moving vertex's snapped position at shutter close */
-    double z, w, attributes[MAX_ATTRIBUTES];
-} vertex;
-
-enum interpolation { FLAT, LINEAR, PERSPECTIVE };
-
-/* The scene as far as every primitive shares it. */
-typedef struct {
-    int width, height, bits; /* bits < 0: exact coordinates */
-    enum fill_rule rule;
-    enum cull cull;
-    nudge tie;
-    int depth, attributes;
-    int last_provokes; /* flat values from the last vertex (SPEC.md §16.6) */
-    int samples;                  /* spatial samples per pixel */
-    int antialiased;              /* fragments name their sample slot */
-    fx16 offsets[MAX_SAMPLES][2]; /* from the pixel's top-left corner */
-    /* Motion (SPEC.md §12.8); time_samples == 0 in a still scene. */
-    int time_samples;
-    int64_t open, close; /* the shutter, in units of 2^-16 */
-    const json *times;   /* per pixel y·width + x, M·N values of u */
-    char *why;
-    size_t why_size;
-} scene;
+static const char *const INTERPOLATIONS[] = {"flat", "linear", "perspective"};
 
 /* Sets the message; returns `outcome` so callers can `return fail(...)`. */
-static enum outcome fail(scene *s, enum outcome outcome, const char *format, ...) {
+enum outcome fail(scene *s, enum outcome outcome, const char *format, ...) {
     va_list args;
     va_start(args, format);
     vsnprintf(s->why, s->why_size, format, args);
@@ -71,7 +43,7 @@ static enum outcome coordinate(scene *s, const json *exact, const char *path, in
     return DRAWN;
 }
 
-static enum outcome read_vertex(scene *s, const json *v, const char *path, vertex *out) {
+enum outcome read_vertex(scene *s, const json *v, const char *path, vertex *out) {
     const json *exact = json_get(v, "exact"), *to = json_get(json_get(exact, "to"), "x");
     char at[160];
     size_t k;
@@ -97,7 +69,7 @@ static enum outcome read_vertex(scene *s, const json *v, const char *path, verte
 }
 
 /* A still position on the 2^-16 grid. */
-static point still(fx16 x, fx16 y) {
+point still(fx16 x, fx16 y) {
     point p;
     p.x = x.v;
     p.y = y.v;
@@ -116,26 +88,20 @@ static point moving(const vertex *v, i128 t) {
 }
 
 /* The sample s of pixel (x, y) on the 2^-16 grid. */
-static point sample_at(const scene *s, int x, int y, int k) {
+point sample_at(const scene *s, int x, int y, int k) {
     point q;
     q.x = (i128)x * GRID_ONE + s->offsets[k][0].v;
     q.y = (i128)y * GRID_ONE + s->offsets[k][1].v;
     return q;
 }
 
-/* The pixels a set of positions may cover: whole pixels from the one
- * holding the smallest coordinate to the one holding the largest (a sample
- * on the far edge belongs to that pixel), clipped to the canvas. */
-typedef struct {
-    int x0, y0, x1, y1;
-} box;
-
-static int floor_pixel(int64_t v) {
+/* The pixel column (or row) holding a 2^-16 position, held to [-1, 2^20]. */
+int floor_pixel(int64_t v) {
     int64_t p = v >= 0 ? v / GRID_ONE : -((-v + GRID_ONE - 1) / GRID_ONE);
     return p < -1 ? -1 : p > 1 << 20 ? 1 << 20 : (int)p;
 }
 
-static box bounds(const scene *s, const vertex *v, int count) {
+box bounds(const scene *s, const vertex *v, int count) {
     box b = {1 << 20, 1 << 20, -1, -1};
     int i, k;
     for (i = 0; i < count; i++) {
@@ -155,6 +121,56 @@ static box bounds(const scene *s, const vertex *v, int count) {
     return b;
 }
 
+/* A depth as the format stores it (SPEC.md §18.1, §12.10), after the
+ * primitive's offset: clamped to [0, 1] and, under unorm n, the nearest
+ * k/(2^n − 1) given as k; under float32 its nearest f32. */
+void emit_depth(buffer *out, const scene *s, double z) {
+    if (s->depth_format == 0) {
+        buffer_printf(out, ",%.17g", z);
+        return;
+    }
+    z += s->offset;
+    z = z < 0 ? 0 : z > 1 ? 1 : z;
+    if (s->depth_format == 32) buffer_printf(out, ",%.9g", (double)(float)z);
+    else buffer_printf(out, ",%.0f", floor(z * (double)((1L << s->depth_format) - 1) + 0.5));
+}
+
+/* The polygon offset of a triangle whose depth plane has the gradient
+ * (dzdx, dzdy) on the screen and whose largest |depth| is `largest`
+ * (SPEC.md §18.2): o = m·slope + r·constant, clamped. The specifications
+ * let m be anything from max(|dzdx|, |dzdy|) to the gradient's length,
+ * and r anything in a range of the format's; this takes the middle of
+ * each, so that the rounding of doubles never leaves the allowed set. */
+double polygon_offset(const scene *s, double dzdx, double dzdy, double largest) {
+    double ax = fabs(dzdx), ay = fabs(dzdy), m, r, o;
+    int e;
+    if (!s->has_bias || s->ignore_offset) return 0;
+    m = ((ax > ay ? ax : ay) + sqrt(ax * ax + ay * ay)) / 2;
+    if (s->depth_format == 32) {
+        frexp(largest, &e); /* largest = f·2^e, f in [0.5, 1): exponent e − 1 */
+        e = largest == 0 || e - 1 < -126 ? -126 : e - 1;
+        r = 1.5 * ldexp(1, e - 23);
+    } else {
+        r = 1.5 * ldexp(1, -s->depth_format);
+    }
+    o = m * s->bias_slope + r * s->bias_constant;
+    if (s->bias_clamp > 0 && o > s->bias_clamp) o = s->bias_clamp;
+    if (s->bias_clamp < 0 && o < s->bias_clamp) o = s->bias_clamp;
+    return o;
+}
+
+/* The gradient of the plane through three (x, y, z) on the screen. */
+void gradient(const double x[3], const double y[3], const double z[3], double *dzdx,
+                     double *dzdy) {
+    double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+    if (area == 0) {
+        *dzdx = *dzdy = 0;
+        return;
+    }
+    *dzdx = ((z[1] - z[0]) * (y[2] - y[0]) - (z[2] - z[0]) * (y[1] - y[0])) / area;
+    *dzdy = ((x[1] - x[0]) * (z[2] - z[0]) - (x[2] - x[0]) * (z[1] - z[0])) / area;
+}
+
 /* Depth and attributes at weights `b` of the n vertices `v` (SPEC.md
  * §5: barycentric for a triangle, (1 − t, t) along a line), appended to a
  * fragment. */
@@ -163,7 +179,7 @@ static void values(buffer *out, const scene *s, const vertex *v, int n, enum int
     int i, k;
     double z = 0;
     for (i = 0; i < n; i++) z += b[i] * v[i].z;
-    if (s->depth) buffer_printf(out, ",%.17g", z);
+    if (s->depth) emit_depth(out, s, z);
     for (k = 0; k < s->attributes; k++) {
         double a = 0, den = 0;
         if (mode == FLAT) {
@@ -183,18 +199,27 @@ static void values(buffer *out, const scene *s, const vertex *v, int n, enum int
 
 /* Appends "[x,y" (and ",slot" when the answer names slots); the caller
  * closes it. `first` tracks the list's commas. */
-static void open_fragment(buffer *out, int *first, int x, int y, int slot) {
+void open_fragment(buffer *out, int *first, int x, int y, int slot) {
     buffer_printf(out, *first ? "[%d,%d" : ",[%d,%d", x, y);
     if (slot >= 0) buffer_printf(out, ",%d", slot);
     *first = 0;
 }
 
-static void draw_still_triangle(buffer *out, const scene *s, const vertex v[3],
+static void draw_still_triangle(buffer *out, scene *s, const vertex v[3],
                                 enum interpolation mode) {
     point p[3];
     box b = bounds(s, v, 3);
     int x, y, k, first = 1, i;
-    for (i = 0; i < 3; i++) p[i] = still(v[i].x, v[i].y);
+    double px[3], py[3], pz[3], dzdx, dzdy, largest = 0;
+    for (i = 0; i < 3; i++) {
+        p[i] = still(v[i].x, v[i].y);
+        px[i] = (double)v[i].x.v / GRID_ONE;
+        py[i] = (double)v[i].y.v / GRID_ONE;
+        pz[i] = v[i].z;
+        if (fabs(v[i].z) > largest) largest = fabs(v[i].z);
+    }
+    gradient(px, py, pz, &dzdx, &dzdy);
+    s->offset = polygon_offset(s, dzdx, dzdy, largest);
     for (y = b.y0; y <= b.y1; y++)
         for (x = b.x0; x <= b.x1; x++)
             for (k = 0; k < s->samples; k++) {
@@ -446,10 +471,10 @@ static enum outcome read_plan(scene *s, const json *plan) {
     return DRAWN;
 }
 
+
 static const char *const FILL_RULES[] = {"top-left", "bottom-right", "top-right", "bottom-left",
                                          "all-edges"};
 static const char *const CULLS[] = {"none", "cw", "ccw"};
-static const char *const INTERPOLATIONS[] = {"flat", "linear", "perspective"};
 
 enum outcome draw_request(const json *request, const options *opt, buffer *out, char *why,
                           size_t why_size) {
@@ -478,6 +503,12 @@ enum outcome draw_request(const json *request, const options *opt, buffer *out, 
     s.cull = (enum cull)cull;
     s.tie = nudge_of(s.rule, opt->wrong_tie);
     if ((o = read_plan(&s, json_get(request, "plan"))) != DRAWN) return o;
+    if ((o = read_depth_and_clip(&s, request)) != DRAWN) return o;
+    s.ignore_offset = opt->ignore_offset;
+    if (opt->fixed_clip && s.clip_space) {
+        s.clip_xy = 1;
+        s.per_sample_z = 0;
+    }
 
     buffer_printf(out, "\"primitives\":[");
     for (p = 0; p < json_length(primitives); p++) {
@@ -485,7 +516,17 @@ enum outcome draw_request(const json *request, const options *opt, buffer *out, 
         char path[64];
         snprintf(path, sizeof path, "$.primitives[%zu]", p);
         buffer_printf(out, p ? ",{\"fragments\":[" : "{\"fragments\":[");
-        if (triangle) {
+        s.offset = 0;
+        if (triangle && s.clip_space) {
+            int mode = word_index(json_string(json_get(prim, "interpolation"), "perspective"),
+                                  INTERPOLATIONS, 3);
+            if (json_length(triangle) != 3 || mode < 0)
+                return fail(&s, FAILED, "%s is not a triangle with an interpolation mode", path);
+            if ((o = draw_clip_triangle(out, &s, triangle, path, (enum interpolation)mode)) != DRAWN)
+                return o;
+        } else if (json_get(prim, "point")) {
+            if ((o = draw_point(out, &s, prim, path)) != DRAWN) return o;
+        } else if (triangle) {
             vertex v[3];
             int i, moves = json_get(prim, "moves") && json_get(prim, "moves")->boolean;
             int mode = word_index(json_string(json_get(prim, "interpolation"), "perspective"),

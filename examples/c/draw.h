@@ -12,6 +12,9 @@
 
 typedef struct {
     int wrong_tie; /* --wrong-tie: use the opposite tie rule (a planted bug) */
+    int ignore_offset; /* --ignore-offset, --no-offset: draw no polygon offset */
+    int claim_offset;  /* --ignore-offset: and declare it all the same (a planted bug) */
+    int fixed_clip;    /* --fixed-clip: clip-then-snap on all six planes, whatever the case says */
 } options;
 
 enum outcome { DRAWN, UNSUPPORTED, FAILED };

@@ -22,18 +22,33 @@
 //
 // It draws triangles and polygons (nonzero, even-odd), at the pixel centre
 // or at the request's sample offsets, under all five fill rules, and
-// moving triangles at the request's instants. It does not draw lines: its
+// moving triangles at the request's instants; points (SPEC.md §17);
+// clip-space triangles and points (§16, §12.10) under the case's own clip
+// conventions, clipping exactly in 128-bit rationals (rational.c), with
+// depth formats and polygon offset (§18). A piece of a triangle with a
+// vertex behind the eye is tested by §16.4's homogeneous edge functions,
+// and the per-sample depth test is made, in exact rationals too. Where its
+// arithmetic cannot be exact (past 128-bit rationals, a projected point
+// off the 2^-16 grid at exact coordinates) it answers unsupported. It does not draw lines: its
 // hello says so, and rastercheck reports such cases unsupported.
 //
 // Files: main.c (the protocol: hello, one answer line per request, ids),
-// draw.c (a request into fragments), coverage.c (exact coverage tests),
-// fixed.c (exact spellings to fixed point), json.c (a minimal JSON reader),
+// draw.c (a request into fragments), clip.c (clip space and points),
+// scene.h (what draw.c and clip.c share), coverage.c (exact coverage tests),
+// fixed.c (exact spellings to fixed point), rational.c (exact rationals for
+// clip space), json.c (a minimal JSON reader),
 // buffer.c (a growable text buffer). C99 and the standard library, plus
 // GCC/Clang's __int128.
 //
 // Flags: --wrong-tie plants a bug (every tie goes to the opposite edges:
 // bottom-right for a top-left case), for the test that rastercheck catches
-// it; --no-motion declares and draws no moving scenes.
+// it; --no-motion declares and draws no moving scenes; --ignore-offset
+// plants another (it declares polygon offset and draws every depth without
+// it), --no-offset declares no polygon offset; --fixed-clip clips every
+// case before the divide against all six planes (clip_xy and clip_z
+// clip-then-snap), whatever it states, and declares so in its hello's
+// conventions, as a pipeline that cannot choose does (SPEC.md §16.9);
+// --fixed-clip-undeclared clips so without declaring it (a planted bug).
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -47,19 +62,22 @@
 
 /* The hello (SPEC.md §12.7): what this program draws. Cases outside it are
  * reported unsupported by rastercheck and never sent. */
-static void hello(int motion) {
+static void hello(int motion, int offset, int fixed_clip) {
     printf("{\"hello\":{\"protocol\":2,\"name\":\"c-example\",\"version\":\"1\","
-           "\"capabilities\":{\"primitives\":[\"triangles\",\"polygons\",\"lines\"],"
+           "\"capabilities\":{\"primitives\":[\"triangles\",\"polygons\",\"lines\",\"points\"],"
            "\"line_rules\":[\"parallelogram\"],"
            "\"polygon_fills\":[\"nonzero\",\"even-odd\"],"
            "\"fill_rules\":[\"top-left\",\"bottom-right\",\"top-right\",\"bottom-left\",\"all-edges\"],"
            "\"interpolation\":[\"flat\",\"linear\",\"perspective\"],"
            "\"max_subpixel_bits\":16,\"exact_coordinates\":true,"
            "\"antialias\":true,\"max_samples\":256,"
-           "\"depth\":true,\"attributes\":true,\"motion\":%s},"
+           "\"depth\":true,\"attributes\":true,\"motion\":%s,"
+           "\"clip_space\":true,\"depth_formats\":[\"unorm16\",\"unorm24\",\"float32\"],"
+           "\"polygon_offset\":%s},"
            "\"conventions\":{\"arithmetic\":\"exact: 128-bit integers on a 2^-16 pixel grid\","
-           "\"interpolation\":\"doubles\"}}}\n",
-           motion ? "true" : "false");
+           "%s\"interpolation\":\"doubles\"}}}\n",
+           motion ? "true" : "false", offset ? "true" : "false",
+           fixed_clip ? "\"clip_xy\":\"clip-then-snap\",\"clip_z\":\"clip-then-snap\"," : "");
     fflush(stdout);
 }
 
@@ -86,20 +104,25 @@ static char *read_line(char **line, size_t *capacity) {
 
 int main(int argc, char **argv) {
     options opt = {0};
-    int motion = MOTION_BY_DEFAULT, i;
+    int motion = MOTION_BY_DEFAULT, silent_clip = 0, i;
     char *line = NULL, why[512];
     size_t capacity = 0;
     buffer answer = {0}, body = {0};
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--wrong-tie") == 0) opt.wrong_tie = 1;
         else if (strcmp(argv[i], "--no-motion") == 0) motion = 0;
+        else if (strcmp(argv[i], "--ignore-offset") == 0) opt.ignore_offset = opt.claim_offset = 1;
+        else if (strcmp(argv[i], "--no-offset") == 0) opt.ignore_offset = 1;
+        else if (strcmp(argv[i], "--fixed-clip") == 0) opt.fixed_clip = 1;
+        else if (strcmp(argv[i], "--fixed-clip-undeclared") == 0) opt.fixed_clip = silent_clip = 1;
         else {
-            fprintf(stderr, "c_rasterizer: unknown argument %s (known: --wrong-tie, --no-motion)\n",
+            fprintf(stderr, "c_rasterizer: unknown argument %s (known: --wrong-tie, --no-motion, --ignore-offset, --no-offset, --fixed-clip, "
+                    "--fixed-clip-undeclared)\n",
                     argv[i]);
             return 2;
         }
     }
-    hello(motion);
+    hello(motion, !opt.ignore_offset || opt.claim_offset, opt.fixed_clip && !silent_clip);
     while (read_line(&line, &capacity)) {
         size_t error_at = 0;
         json *request;

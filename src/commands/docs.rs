@@ -33,9 +33,13 @@ pub const WRITE_COMMAND: &str = "cargo run --release -- docs --write";
 
 /// Blocks written by a test that already computes their figures:
 /// (block, the command that rewrites it).
-pub const ELSEWHERE: [(&str, &str); 2] = [
+pub const ELSEWHERE: [(&str, &str); 3] = [
     (
         "example-c",
+        "RASTERCHECK_BLESS=1 cargo test --release --test examples",
+    ),
+    (
+        "example-c-3d",
         "RASTERCHECK_BLESS=1 cargo test --release --test examples",
     ),
     (

@@ -13,12 +13,13 @@ use super::hello::Answers;
 use super::limits::{max_output_from_env, timeout_from_env};
 use super::motion;
 use super::protocol::{frame_from_answer, request};
+use super::space::needs_a_hello;
 use super::worker::Worker;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Scene};
+use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
 
 /// A rasterizer that is another program.
 pub struct External {
@@ -76,6 +77,11 @@ impl External {
         self
     }
 
+    /// How the program's answers are shaped, as its hello declared.
+    fn answers(&self) -> Answers {
+        *self.answers.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
     pub(super) fn command(&self) -> Command {
         let mut command = Command::new(&self.program);
         command
@@ -107,16 +113,11 @@ impl Rasterizer for External {
     /// Everything: the program says what it does not do, case by case
     /// (`unsupported`, or its hello). Moving scenes go only to a program
     /// whose version 2 hello declares motion (SPEC.md §12.8); the adapter
-    /// refuses them itself, since only the hello says. The protocol has no
-    /// point (SPEC.md §12), so points are refused.
+    /// refuses them itself, since only the hello says. Clip space, points,
+    /// depth formats and polygon offset likewise go only to a program whose
+    /// hello declares them (SPEC.md §12.10, `space.rs`).
     fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            clip_space: false,
-            // The protocol carries no depth format or offset (SPEC.md §12).
-            depth_attachment: false,
-            points: false,
-            ..Capabilities::everything()
-        }
+        Capabilities::everything()
     }
 
     fn fixed_fill_rule(&self) -> Option<FillRule> {
@@ -124,6 +125,22 @@ impl Rasterizer for External {
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .fill_rule
+    }
+
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        self.answers().clip.rules()
+    }
+
+    fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
+        self.answers().clip.values
+    }
+
+    fn fixed_point_clip(&self) -> Option<PointClip> {
+        self.answers().clip.points
+    }
+
+    fn fixed_point_bounds(&self) -> Option<PointBounds> {
+        self.answers().clip.bounds
     }
 
     fn declared(&self) -> Option<String> {
@@ -152,6 +169,9 @@ impl Rasterizer for External {
                 return Err(RasterError::Unsupported(motion::NOT_DECLARED.to_owned()))
             }
             None => {
+                if let Some(why) = needs_a_hello(scene) {
+                    return Err(RasterError::Unsupported(why));
+                }
                 let request =
                     serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
                 self.one_shot(request, timeout, max_output)?

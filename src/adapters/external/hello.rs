@@ -9,6 +9,8 @@ use serde_json::Value;
 use crate::plan::Plan;
 use crate::scene::{FillRule, Interpolation, LineRule, Primitive, Scene};
 
+use super::space::{Declared3d, FixedClip};
+
 /// What a program declared in its hello. A list left out declares nothing
 /// (everything is asked of it); `None` below means "not declared".
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -39,6 +41,9 @@ pub struct Hello {
     /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
     fill_rule: Option<FillRule>,
+    /// Clip space, points, depth formats and polygon offset, and the clip
+    /// conventions it follows (SPEC.md §12.10): `space.rs`.
+    three_d: Declared3d,
 }
 
 /// How a program's answers are shaped, as its hello declares them
@@ -54,6 +59,9 @@ pub struct Answers {
     /// The fill rule it follows whatever the case states
     /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1).
     pub fill_rule: Option<FillRule>,
+    /// The clip conventions it follows whatever the case states
+    /// (SPEC.md §12.10): cases are judged under them (§16.9).
+    pub clip: FixedClip,
 }
 
 impl Answers {
@@ -70,7 +78,7 @@ const MAX_COVERAGE_BITS: u64 = 24;
 /// The protocol versions this rastercheck speaks.
 pub const VERSIONS: [u64; 2] = [1, 2];
 
-const PRIMITIVES: [&str; 3] = ["triangles", "lines", "polygons"];
+const PRIMITIVES: [&str; 4] = ["triangles", "lines", "polygons", "points"];
 
 /// Whether a line of output is a hello (an object with a `hello` key).
 pub fn is_hello(value: &Value) -> bool {
@@ -123,12 +131,17 @@ impl Hello {
                 }
             };
         }
-        let Some(caps) = hello.get("capabilities") else {
+        let caps = match hello.get("capabilities") {
+            None => None,
+            Some(caps) => Some(
+                caps.as_object()
+                    .ok_or("$.hello.capabilities must be an object")?,
+            ),
+        };
+        out.three_d = Declared3d::parse(caps, out.conventions.as_ref().and_then(Value::as_object))?;
+        let Some(caps) = caps else {
             return Ok(out);
         };
-        let caps = caps
-            .as_object()
-            .ok_or("$.hello.capabilities must be an object")?;
         let words = |key: &str, known: &[&str]| -> Result<Option<Vec<String>>, String> {
             let Some(v) = caps.get(key) else {
                 return Ok(None);
@@ -172,6 +185,10 @@ impl Hello {
         };
         use crate::scene::{Pattern, PolygonFill};
         out.primitives = words("primitives", &PRIMITIVES)?;
+        out.three_d.points = out
+            .primitives
+            .as_ref()
+            .is_some_and(|l| l.iter().any(|w| w == "points"));
         out.line_rules = words("line_rules", &LineRule::NAMES)?;
         out.fill_rules = words("fill_rules", &FillRule::NAMES)?;
         out.polygon_fills = words("polygon_fills", &PolygonFill::NAMES)?;
@@ -216,7 +233,7 @@ impl Hello {
                 Primitive::Polygon(_) => "polygons",
                 Primitive::Point(_) => "points",
             };
-            if lacks(&self.primitives, kind) {
+            if kind != "points" && lacks(&self.primitives, kind) {
                 return Some(format!(
                     "{who} declares no {kind} (its hello's primitives: [{}])",
                     declared(&self.primitives)
@@ -249,6 +266,9 @@ impl Hello {
                     ));
                 }
             }
+        }
+        if let Some(why) = self.three_d.refuses(scene, &who) {
+            return Some(why);
         }
         let fill = scene.rules.fill_rule.name();
         if lacks(&self.fill_rules, fill) {
@@ -327,6 +347,7 @@ impl Hello {
             coverage_only: self.coverage_only == Some(true),
             coverage_bits: self.coverage_bits.map(|b| b as u32),
             fill_rule: self.fill_rule,
+            clip: self.three_d.fixed,
         }
     }
 

@@ -9,7 +9,8 @@
 //! [`Rasterizer`](crate::rasterizer::Rasterizer), under `limits.rs`), then
 //! `one_shot.rs` or `pool.rs` (with `worker.rs`'s persistent processes and
 //! `process.rs`' waiting, killing and reading), whose messages are
-//! `protocol.rs`' (`values.rs`, `motion.rs`, `hello.rs`); `read.rs` reads
+//! `protocol.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
+//! clip space, points and depth formats, declared); `read.rs` reads
 //! one line apart from a process; `messages.rs` quotes values.
 
 mod adapter;
@@ -24,6 +25,7 @@ mod preflight;
 mod process;
 mod protocol;
 mod read;
+mod space;
 mod values;
 mod worker;
 

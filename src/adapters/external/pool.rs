@@ -16,6 +16,7 @@ use super::messages::seconds;
 use super::motion;
 use super::process::{exit_description, failed, kill, kill_group, wait_until, Output};
 use super::protocol::{parse_response, request, request_v2};
+use super::space::needs_a_hello;
 use super::worker::{Exchange, Worker};
 use crate::deadline;
 use crate::plan::Plan;
@@ -74,6 +75,11 @@ impl External {
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
                 return Err(RasterError::Unsupported(why));
             }
+        }
+        if let (None, Some(why)) = (&worker.hello, needs_a_hello(scene)) {
+            // Version 1 carries no clip space, points or depth formats.
+            pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+            return Err(RasterError::Unsupported(why));
         }
         if moving && worker.hello.is_none() {
             // Version 1 carries no moving vertices: never sent.

@@ -13,11 +13,11 @@ use serde_json::{json, Value};
 use crate::frame::{exr, Frame, Parts};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::{LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
+use crate::scene::{DepthFormat, LastPixel, LineParameter, Number, Primitive, Scene, Vertex};
 
 use super::hello::Answers;
 use super::motion;
-use super::values::{exact, float, pixel_of, whole_below};
+use super::values::{exact, float, float_exact, pixel_of, stored_depth, whole_below};
 
 /// The protocol's name and version, sent in every request of v1.
 pub const PROTOCOL: &str = "rastercheck-external/1";
@@ -27,8 +27,20 @@ pub const PROTOCOL: &str = "rastercheck-external/1";
 pub const PROTOCOL_V2: &str = "rastercheck-external/2";
 
 /// A vertex; a moving one (SPEC.md §12.8) also carries `to`, its position
-/// at shutter close, while `x` and `y` are its `from`.
-fn vertex(v: &Vertex) -> Value {
+/// at shutter close, while `x` and `y` are its `from`; a clip-space one
+/// (§12.10) is `clip` and `attributes` alone.
+fn vertex(v: &Vertex, clip_space: bool) -> Value {
+    if clip_space {
+        let clip = [&v.x, &v.y, &v.z, &v.w];
+        return json!({
+            "clip": clip.map(float),
+            "attributes": v.attributes.iter().map(float).collect::<Vec<_>>(),
+            "exact": {
+                "clip": clip.map(exact),
+                "attributes": v.attributes.iter().map(exact).collect::<Vec<_>>(),
+            }
+        });
+    }
     let mut out = json!({
         "x": float(&v.x),
         "y": float(&v.y),
@@ -53,6 +65,8 @@ fn vertex(v: &Vertex) -> Value {
 /// The request for one scene (SPEC.md §12.1); a moving scene's also says
 /// which primitives move and carries `plan.motion` (§12.8).
 pub fn request(scene: &Scene, plan: &Plan) -> Value {
+    let clip_space = scene.in_clip_space();
+    let vertex = |v: &Vertex| vertex(v, clip_space);
     let mut primitives: Vec<Value> = scene
         .primitives
         .iter()
@@ -83,9 +97,11 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
                     .collect::<Vec<_>>(),
                 "fill": polygon.fill.name(),
             }),
-            Primitive::Point(_) => {
-                unreachable!("the protocol has no point: External::rasterize refuses them first")
-            }
+            Primitive::Point(point) => json!({
+                "point": vertex(&point.vertices[0]),
+                "size": float(&point.size),
+                "exact": { "size": exact(&point.size) },
+            }),
         })
         .collect();
     let mut plan_out = plan_json(plan);
@@ -95,7 +111,7 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
         }
         plan_out["motion"] = motion::plan_motion(scene, plan, motion);
     }
-    json!({
+    let mut out = json!({
         "protocol": PROTOCOL,
         "case": scene.name,
         "canvas": { "width": scene.canvas.width, "height": scene.canvas.height },
@@ -107,7 +123,54 @@ pub fn request(scene: &Scene, plan: &Plan) -> Value {
         },
         "plan": plan_out,
         "primitives": primitives,
-    })
+    });
+    depth_and_clip(scene, &mut out);
+    out
+}
+
+/// What SPEC.md §12.10 adds to a request, as the case states it: in clip
+/// space the viewport and the clip conventions; a depth format other than
+/// `exact`; a polygon offset. A scene with none of them is sent as before.
+fn depth_and_clip(scene: &Scene, out: &mut Value) {
+    let numbers = |pairs: &[(&str, &Number)]| {
+        let mut floats = serde_json::Map::new();
+        let mut exacts = serde_json::Map::new();
+        for (key, n) in pairs {
+            let (f, e) = float_exact(n);
+            floats.insert((*key).to_owned(), f);
+            exacts.insert((*key).to_owned(), e);
+        }
+        floats.insert("exact".to_owned(), Value::Object(exacts));
+        Value::Object(floats)
+    };
+    if let Some(v) = &scene.viewport {
+        out["viewport"] = numbers(&[
+            ("x", &v.x),
+            ("y", &v.y),
+            ("width", &v.width),
+            ("height", &v.height),
+            ("min_depth", &v.min_depth),
+            ("max_depth", &v.max_depth),
+        ]);
+        let clip = &scene.rules.clip;
+        let rules = &mut out["rules"];
+        rules["clip_xy"] = json!(clip.xy.name());
+        rules["clip_z"] = json!(clip.z.name());
+        rules["depth"] = json!(clip.depth.name());
+        rules["interpolate_from"] = json!(clip.values.name());
+        rules["clip_points"] = json!(clip.points.name());
+        rules["point_bounds"] = json!(clip.bounds.name());
+    }
+    if scene.rules.depth_format != DepthFormat::Exact {
+        out["rules"]["depth_format"] = json!(scene.rules.depth_format.name());
+    }
+    if let Some(bias) = &scene.rules.depth_bias {
+        out["rules"]["depth_bias"] = numbers(&[
+            ("constant", &bias.constant),
+            ("slope", &bias.slope),
+            ("clamp", &bias.clamp),
+        ]);
+    }
 }
 
 /// The request of protocol v2 (SPEC.md §12.7): v1's, named
@@ -331,7 +394,16 @@ fn compose(
                     format!("{}[{}] must be a finite number", at(), k + 2 + slot_field)
                 })?;
                 match (&mut frame.depth, k) {
-                    (Some(depth), 0) => depth[i] = v,
+                    (Some(depth), 0) => {
+                        depth[i] = stored_depth(v, scene.rules.depth_format).ok_or_else(|| {
+                            format!(
+                                "{}[{}]: {v} is not a {} depth (SPEC §12.10)",
+                                at(),
+                                2 + slot_field,
+                                scene.rules.depth_format.name()
+                            )
+                        })?
+                    }
                     (Some(_), k) => frame.attributes[k - 1][i] = v,
                     (None, k) => frame.attributes[k][i] = v,
                 }
