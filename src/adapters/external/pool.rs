@@ -36,6 +36,17 @@ impl External {
         retried: bool,
     ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
+        if let Some((why, hello)) = &*self.broken.lock().unwrap_or_else(|e| e.into_inner()) {
+            // Its answers cannot be matched to requests: nothing more is
+            // sent, and nothing waited for. What its hello refuses is still
+            // unsupported.
+            if let Some(refused) = hello.as_ref().and_then(|h| h.refuses(scene, plan)) {
+                return Err(RasterError::Unsupported(refused));
+            }
+            return Err(RasterError::Failed(format!(
+                "not sent: {why}; no case is sent to it for the rest of the run"
+            )));
+        }
         let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
         let mut worker = match idle {
             Some(worker) => worker,
@@ -112,6 +123,8 @@ impl External {
                 Err((format!("timed out after {}", seconds(timeout)), true))
             }
             Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
+            // Version 1 matches no ids; only v2 exchanges end so.
+            Err(Exchange::NoId(line)) => Err((format!("an answer without an id: {line:?}"), true)),
             Err(Exchange::Broken(Output::Read(e))) => {
                 Err((format!("reading its output: {e}"), true))
             }
@@ -183,6 +196,13 @@ impl External {
                 keep(worker);
                 return Ok(Err(err));
             }
+            Err(Exchange::NoId(line)) => {
+                let cause = format!(
+                    "its answers carry no `id` (the first, to request {id:?}: {line:?}); \
+                     protocol v2 answers must echo the request's id (SPEC.md §12.7)"
+                );
+                return Ok(Err(self.give_up(worker, cause, mark)));
+            }
             Err(Exchange::TimedOut) => {
                 worker.owe(id.clone());
                 let why = format!(
@@ -194,6 +214,29 @@ impl External {
                         String::new()
                     }
                 );
+                if let Some(other) = &skipped.wrong_id {
+                    let cause = format!(
+                        "answer id {other} for request {id:?}; protocol v2 answers must echo \
+                         the request's id (SPEC.md §12.7)"
+                    );
+                    if self.wrong_ids.fetch_add(1, Ordering::Relaxed) > 0 {
+                        // The second case answered under another id: the
+                        // program does not echo them.
+                        return Ok(Err(self.give_up(
+                            worker,
+                            format!("{cause}, the second time in this run"),
+                            mark,
+                        )));
+                    }
+                    let err = failed(
+                        format!("{why}: {cause}; the process is kept"),
+                        &worker.stderr,
+                        mark,
+                    );
+                    worker.timeouts_in_a_row = 0;
+                    keep(worker);
+                    return Ok(Err(err));
+                }
                 if worker.timeouts_in_a_row < 2 {
                     // It may only be slow: kept, and its late answer is
                     // dropped by its id when it comes.
@@ -235,6 +278,23 @@ impl External {
             _ => why,
         };
         Ok(Err(failed(why, &worker.stderr, mark)))
+    }
+}
+
+impl External {
+    /// Ends `worker` and sends the program no more cases: its answers
+    /// cannot be matched to requests (`cause`). The error for the case in
+    /// flight says so, once; every later case names the cause without
+    /// being sent or waited for.
+    fn give_up(&self, mut worker: Worker, cause: String, mark: u64) -> RasterError {
+        let hello = worker.hello.as_ref().and_then(|h| h.as_ref().ok()).cloned();
+        *self.broken.lock().unwrap_or_else(|e| e.into_inner()) = Some((cause.clone(), hello));
+        worker.end(true);
+        failed(
+            format!("protocol error: {cause}; no case is sent to it for the rest of the run"),
+            &worker.stderr,
+            mark,
+        )
     }
 }
 
