@@ -164,11 +164,11 @@ fn quoted(key: &str) -> String {
 /// The message for a word not among `known` at `path`.
 fn unknown_word(path: &str, word: &str, known: &[&str]) -> String {
     let hint = match closest(word, known) {
-        Some(meant) => format!("; did you mean {meant:?}?"),
+        Some(meant) => format!("did you mean {meant:?}? "),
         None => String::new(),
     };
     format!(
-        "{path} is {}{hint} (known: {})",
+        "{path} is {}; {hint}known: {}",
         quoted(word),
         known.join(", ")
     )
@@ -565,7 +565,7 @@ mod tests {
             ),
             (
                 json!({"protocol": 2, "capabilities": {"primitives": ["triangle"]}}),
-                "$.hello.capabilities.primitives[0] is \"triangle\"; did you mean \"triangles\"? (known: ",
+                "$.hello.capabilities.primitives[0] is \"triangle\"; did you mean \"triangles\"? known: triangles,",
             ),
             (
                 json!({"protocol": 2, "capabilities": {"line_rules": ["diamond"]}}),
