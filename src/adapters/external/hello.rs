@@ -4,6 +4,8 @@
 //! is unsupported, with the declaration as its reason, and is never sent.
 //! A program that sends no hello speaks v1 and is asked everything.
 
+use std::sync::Mutex;
+
 use serde_json::{Map, Value};
 
 use super::messages::shorten;
@@ -154,6 +156,29 @@ const MAX_COVERAGE_BITS: u64 = 24;
 /// Whether a line of output is a hello (an object with a `hello` key).
 pub fn is_hello(value: &Value) -> bool {
     value.as_object().is_some_and(|o| o.contains_key("hello"))
+}
+
+/// The commands (program and arguments) whose hello the preflight read
+/// ([`super::preflight::preflight`]): the run then waits for their hello
+/// up to the case's time limit, not [`super::limits::HELLO_WAIT`], since
+/// it is known to come (a program slow to start under load would
+/// otherwise be taken for version 1 on its first case).
+static SEEN: Mutex<Vec<Vec<String>>> = Mutex::new(Vec::new());
+
+/// Remembers that `command` wrote a hello when the preflight started it.
+pub(super) fn remember(command: &[String]) {
+    let mut seen = SEEN.lock().unwrap_or_else(|e| e.into_inner());
+    if !seen.iter().any(|c| c == command) {
+        seen.push(command.to_vec());
+    }
+}
+
+/// Whether `command` wrote a hello when the preflight started it.
+pub(super) fn seen(command: &[String]) -> bool {
+    SEEN.lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .iter()
+        .any(|c| c == command)
 }
 
 /// `key` quoted for a message: at most 80 characters of it.

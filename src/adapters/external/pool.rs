@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 use serde_json::Value;
 
 use super::adapter::External;
+use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
 use super::messages::seconds;
 use super::motion;
@@ -53,7 +54,16 @@ impl External {
             None => {
                 let mut worker = Worker::start(self.start()?, max_output);
                 if !self.said_no_hello.load(Ordering::Relaxed) {
-                    worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                    // A program whose hello the preflight read is waited
+                    // for until the case's time limit: its hello will come.
+                    let mut command = vec![self.program.clone()];
+                    command.extend_from_slice(&self.args);
+                    let wait = if hello::seen(&command) {
+                        timeout
+                    } else {
+                        HELLO_WAIT.min(timeout)
+                    };
+                    worker.await_hello(Instant::now() + wait);
                     if worker.hello.is_none() {
                         self.said_no_hello.store(true, Ordering::Relaxed);
                     }
@@ -74,12 +84,7 @@ impl External {
             return Err(failed(why, &worker.stderr, mark));
         }
         if let Some(Ok(hello)) = &worker.hello {
-            let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
-            if declared.is_none() {
-                *declared = hello.title();
-            }
-            drop(declared);
-            *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+            self.heard(hello);
             if let Some(why) = hello.refuses(scene, plan) {
                 // Never sent: the program said it cannot draw it.
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
@@ -116,9 +121,32 @@ impl External {
         let mut request =
             serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
         request.push(b'\n');
+        let had_hello = worker.hello.is_some();
         let line = worker.exchange(request, deadline);
+        // A hello that came in place of the answer (a program slow to
+        // start) was written before the program read this request: it
+        // holds for it (SPEC.md §12.7). A malformed one ends the process.
+        let late = match &worker.hello {
+            Some(Ok(hello)) if !had_hello => {
+                self.heard(hello);
+                hello.refuses(scene, plan)
+            }
+            _ => None,
+        };
+        let line = match (&worker.hello, line) {
+            (Some(Err(why)), _) if !had_hello => Err(Exchange::Late(format!(
+                "its hello is not a hello of SPEC.md §12.7: {why}"
+            ))),
+            (_, Ok(_)) if late.is_some() => {
+                // Its answer is read and not judged: its hello refuses the case.
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                return Err(RasterError::Unsupported(late.unwrap_or_default()));
+            }
+            (_, line) => line,
+        };
         let result = match line {
             Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            Err(Exchange::Late(why)) => Err((why, true)),
             Err(Exchange::TimedOut | Exchange::Flood) => {
                 Err((format!("timed out after {}", seconds(timeout)), true))
             }
@@ -196,6 +224,7 @@ impl External {
                 keep(worker);
                 return Ok(Err(err));
             }
+            Err(Exchange::Late(why)) => (why, true),
             Err(Exchange::NoId(line)) => {
                 let cause = format!(
                     "its answers carry no `id` (the first, to request {id:?}: {line:?}); \
@@ -282,6 +311,17 @@ impl External {
 }
 
 impl External {
+    /// Keeps what a hello declares for the cases from now on: its name (the
+    /// first hello's) and how its answers are shaped.
+    fn heard(&self, hello: &Hello) {
+        let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
+        if declared.is_none() {
+            *declared = hello.title();
+        }
+        drop(declared);
+        *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+    }
+
     /// Ends `worker` and sends the program no more cases: its answers
     /// cannot be matched to requests (`cause`). The error for the case in
     /// flight says so, once; every later case names the cause without

@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::adapter::External;
+use super::hello;
 use super::limits::{max_output_from_env, timeout_from_env, HELLO_WAIT};
 use super::messages::shorten;
 use super::names::{command_of, split_name};
@@ -61,7 +62,13 @@ fn hello_of(program: &str, args: &[String]) -> Result<(), String> {
             "{}: its hello is not a hello of SPEC.md §12.7: {why}",
             shorten(program)
         )),
-        _ => Ok(()),
+        Some(Ok(_)) => {
+            let mut command = vec![program.to_owned()];
+            command.extend_from_slice(args);
+            hello::remember(&command);
+            Ok(())
+        }
+        None => Ok(()),
     }
 }
 

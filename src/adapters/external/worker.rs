@@ -24,6 +24,8 @@ pub(super) enum Exchange {
     Flood,
     /// The process closed its stdout (it exited, most likely).
     Closed,
+    /// A malformed hello came in place of the answer (v1), saying why.
+    Late(String),
     /// v2: a line shaped as an answer (§12.2's fields) carried no `id`,
     /// shown here shortened: the program does not echo ids.
     NoId(String),
