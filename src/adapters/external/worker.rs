@@ -241,7 +241,10 @@ impl Worker {
 
     /// Sends a v2 request and reads lines until the one whose `id` is
     /// `id`: the answer. Every other line is skipped and counted: a late
-    /// answer to a request that timed out, or a stray. Past
+    /// answer to a request that timed out, or a stray (an answer under
+    /// another id is noted in [`Skipped::wrong_id`]); a line shaped as an
+    /// answer with no id at all ends the exchange at once
+    /// ([`Exchange::NoId`]: the program does not echo ids). Past
     /// [`MAX_SKIPPED_LINES`] lines or `max_output` bytes skipped, gives up.
     pub(super) fn exchange_v2(
         &mut self,
