@@ -124,7 +124,8 @@ fn an_unknown_convention_is_an_error_naming_its_path() {
     let case = root().join("cases/triangles/shared_edge_diagonal.json");
     let out = rastercheck(&dir, &["run", &case.display().to_string(), "-r", &spec]);
     let printed = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{printed}");
+    // Refused before any case: bad usage (SPEC.md §12.7).
+    assert_eq!(out.status.code(), Some(2), "{printed}");
     assert!(
         printed.contains("$.hello.conventions.fill_rule is \"sideways\"; known: top-left"),
         "{printed}"

@@ -237,7 +237,8 @@ fn a_wrong_coverage_bits_is_an_error_naming_its_path() {
         &["run", &case.display().to_string(), "-r", &spec],
     );
     let printed = text(&out);
-    assert_eq!(out.status.code(), Some(1), "{printed}");
+    // Refused before any case: bad usage (SPEC.md §12.7).
+    assert_eq!(out.status.code(), Some(2), "{printed}");
     assert!(
         printed.contains("$.hello.capabilities.coverage_bits must be from 1 to 24"),
         "{printed}"

@@ -141,16 +141,26 @@ fn a_flood_of_stray_lines_is_cut_short() {
     survives("flood", 5, "more than 1000 lines");
 }
 
-/// A hello that breaks §12.7 is an error naming its JSON path, for every
-/// case (each process says it again), and never a crash or a pass.
+/// A hello that breaks §12.7 is refused before any case (preflight: bad
+/// usage, exit code 2), naming its JSON path; no case is sent, no report
+/// is written, and nothing crashes.
 #[test]
 fn a_malformed_hello_is_an_error() {
-    let (code, report, t, log) = run("bad-hello", "", "--bad-hello", &CASES[..2]);
-    assert_eq!(code, Some(1), "{t}");
-    for v in verdicts(&report) {
-        assert_eq!(v.1, "error", "{v:?}");
-        assert!(v.2.contains("$.hello.capabilities.primitives[1]"), "{v:?}");
-    }
+    let dir = scratch("protocol-bad-hello");
+    let log = dir.join("program.log");
+    let spec = format!(
+        "external-persistent:python3 {} {} --bad-hello",
+        program(),
+        log.display()
+    );
+    let mut argv = vec!["run", "--threads", "1", "-r", &spec];
+    argv.extend(&CASES[..2]);
+    let out = rastercheck_env(&root(), &argv, &[]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{t}");
+    assert!(!t.contains("panicked"), "{t}");
+    assert!(t.contains("$.hello.capabilities.primitives[1]"), "{t}");
+    let log = std::fs::read_to_string(&log).unwrap_or_default();
     assert!(!log.contains("case "), "{log}");
 }
 

@@ -81,13 +81,14 @@ pub(crate) fn check_names(args: &[String]) -> Result<(), Exit> {
 /// when the environment it reads is malformed.
 pub(crate) fn rasterizer_named(name: &str) -> Result<Box<dyn Rasterizer>, Exit> {
     check_names(&[name.to_owned()])?;
-    let found = registry::by_name(name).ok_or_else(|| {
+    environment_for(name)?;
+    // First: a command that cannot be split, or a hello that breaks the
+    // protocol, is said as such, not as an unknown name.
+    startable(name)?;
+    registry::by_name(name).ok_or_else(|| {
         eprintln!("error: {}", unknown_rasterizer(name));
         Exit::BadInput
-    })?;
-    environment_for(name)?;
-    startable(name)?;
-    Ok(found)
+    })
 }
 
 /// An external program that cannot start (`adapters::external::preflight`):

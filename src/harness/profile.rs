@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipRules, DepthMode, FillRule, Primitive, Scene};
+use crate::scene::{ClipRules, DepthMode, FillRule, LineRule, Primitive, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -169,6 +169,17 @@ pub fn cannot_judge_under(scene: &Scene, rule: FillRule) -> Option<String> {
     })
 }
 
+/// Whether the fill rule decides which samples on `primitive`'s border it
+/// covers: triangles, polygons, points (SPEC.md §3, §14.1, §17.1) and
+/// rectangle and parallelogram lines (§4.3, §4.4); midpoint and
+/// diamond-exit lines choose pixels by their own rules (§4.1, §4.2).
+fn uses_fill_rule(primitive: &Primitive) -> bool {
+    match primitive {
+        Primitive::Line(line) => !matches!(line.rule, LineRule::Midpoint | LineRule::DiamondExit),
+        Primitive::Triangle(_) | Primitive::Polygon(_) | Primitive::Point(_) => true,
+    }
+}
+
 /// The conventions a rasterizer is judged under instead of a case's, when
 /// it follows its own (SPEC.md §3.1, §16): its fixed fill rule where the
 /// case states another, and for a clip-space case under depth clip its
@@ -195,9 +206,12 @@ impl OwnConventions {
     /// What `candidate` is judged under on `scene`; the default (nothing)
     /// when it follows the case.
     pub fn of(candidate: &dyn Rasterizer, scene: &Scene) -> OwnConventions {
+        // Only where a fill rule decides a sample: not for a case of
+        // midpoint or diamond-exit lines alone (SPEC.md §3, §4, §17.1).
         let fill_rule = candidate
             .fixed_fill_rule()
-            .filter(|&rule| rule != scene.rules.fill_rule);
+            .filter(|&rule| rule != scene.rules.fill_rule)
+            .filter(|_| scene.primitives.iter().any(uses_fill_rule));
         let stated = scene.rules.clip;
         let mut clip = stated;
         let triangles = scene

@@ -5,11 +5,11 @@
 
 use std::os::unix::process::CommandExt;
 use std::process::{Child, Command, Stdio};
-use std::sync::atomic::{AtomicBool, AtomicU64};
+use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use super::hello::Answers;
+use super::hello::{Answers, Hello};
 use super::limits::{max_output_from_env, timeout_from_env};
 use super::motion;
 use super::protocol::{frame_from_answer, request};
@@ -43,6 +43,12 @@ pub struct External {
     /// How the program's answers are shaped, as its hello declared
     /// (coverage only, quantized coverage: SPEC.md §12.9).
     pub(super) answers: Mutex<Answers>,
+    /// v2: why the program is sent no more cases (its answers carry no
+    /// `id`, or the wrong ones: SPEC.md §12.7), with the hello that still
+    /// refuses cases by what it declares.
+    pub(super) broken: Mutex<Option<(String, Option<Hello>)>>,
+    /// v2: requests that timed out with an answer under another id.
+    pub(super) wrong_ids: AtomicU32,
 }
 
 impl External {
@@ -60,6 +66,8 @@ impl External {
             said_no_hello: AtomicBool::new(false),
             declared: Mutex::new(None),
             answers: Mutex::new(Answers::default()),
+            broken: Mutex::new(None),
+            wrong_ids: AtomicU32::new(0),
         }
     }
 

@@ -43,10 +43,12 @@ pub fn check_name(name: &str) -> Result<(), String> {
 }
 
 /// The adapter for `external:...` and `external-persistent:...` names,
-/// also as `NAME=external…` (then called NAME), or `None` for any other.
+/// also as `NAME=external…` (then called NAME), or `None` for any other,
+/// and for one whose command cannot be split (an unterminated quote: the
+/// preflight says why, [`super::preflight::preflight`]).
 pub fn by_name(arg: &str) -> Option<Box<dyn Rasterizer>> {
     let (name, spec) = split_name(arg).unwrap_or((arg, arg));
-    let (persistent, words) = command_of(spec)?;
+    let (persistent, words) = command_of(spec).ok()??;
     let (program, args) = words.split_first()?;
     Some(Box::new(External::new(
         name,
@@ -57,20 +59,84 @@ pub fn by_name(arg: &str) -> Option<Box<dyn Rasterizer>> {
 }
 
 /// Whether `spec` (`external:…` or `external-persistent:…`, no name) runs
-/// its program persistently, and the program with its arguments; `None`
-/// for any other spec.
-pub(super) fn command_of(spec: &str) -> Option<(bool, Vec<String>)> {
+/// its program persistently, and the program with its arguments, split as
+/// a shell would ([`words`]); `Ok(None)` for any other spec, `Err` for a
+/// command that cannot be split.
+pub(super) fn command_of(spec: &str) -> Result<Option<(bool, Vec<String>)>, String> {
     let (persistent, command) = if let Some(rest) = spec.strip_prefix("external-persistent:") {
         (true, rest)
     } else if let Some(rest) = spec.strip_prefix("external:") {
         (false, rest)
     } else {
-        return None;
+        return Ok(None);
     };
-    Some((
-        persistent,
-        command.split_whitespace().map(str::to_owned).collect(),
-    ))
+    Ok(Some((persistent, words(command)?)))
+}
+
+/// `command` split into words as a POSIX shell splits a simple command
+/// (SPEC.md §12): at unquoted whitespace; `'…'` keeps everything inside as
+/// written; `"…"` keeps everything, a backslash escaping only `"`, `$`, a
+/// backquote, a backslash and a line break; an unquoted backslash keeps
+/// the next character. Nothing is expanded: no variables, no globbing, no
+/// `~`. An unterminated quote, or a lone backslash at the end, is an error.
+pub(super) fn words(command: &str) -> Result<Vec<String>, String> {
+    let mut words = Vec::new();
+    let mut word: Option<String> = None;
+    let mut chars = command.chars();
+    let unterminated = |quote: char| {
+        format!(
+            "the command {:?} has an unterminated {quote} quote; close it, or escape it \
+             with \\",
+            shorten(command)
+        )
+    };
+    while let Some(c) = chars.next() {
+        match c {
+            c if c.is_whitespace() => words.extend(word.take()),
+            '\'' => {
+                let w = word.get_or_insert_with(String::new);
+                loop {
+                    match chars.next() {
+                        Some('\'') => break,
+                        Some(c) => w.push(c),
+                        None => return Err(unterminated('\'')),
+                    }
+                }
+            }
+            '"' => {
+                let w = word.get_or_insert_with(String::new);
+                loop {
+                    match chars.next() {
+                        Some('"') => break,
+                        Some('\\') => match chars.next() {
+                            Some(c @ ('"' | '\\' | '$' | '`')) => w.push(c),
+                            Some('\n') => {}
+                            Some(c) => {
+                                w.push('\\');
+                                w.push(c);
+                            }
+                            None => return Err(unterminated('"')),
+                        },
+                        Some(c) => w.push(c),
+                        None => return Err(unterminated('"')),
+                    }
+                }
+            }
+            '\\' => match chars.next() {
+                Some('\n') => {}
+                Some(c) => word.get_or_insert_with(String::new).push(c),
+                None => {
+                    return Err(format!(
+                        "the command {:?} ends with a lone \\; escape it as \\\\",
+                        shorten(command)
+                    ))
+                }
+            },
+            c => word.get_or_insert_with(String::new).push(c),
+        }
+    }
+    words.extend(word);
+    Ok(words)
 }
 
 #[cfg(test)]
@@ -92,5 +158,37 @@ mod tests {
         for bad in ["", "a b", "a:b", "tab\there"] {
             assert!(check_name(bad).is_err(), "{bad:?}");
         }
+    }
+
+    #[test]
+    fn commands_split_as_a_shell_splits_them() {
+        let split = |c: &str| words(c).unwrap();
+        assert_eq!(split("  prog  -a   b "), ["prog", "-a", "b"]);
+        assert_eq!(
+            split("python3 '/my dir/r.py' --name \"a b\""),
+            ["python3", "/my dir/r.py", "--name", "a b"]
+        );
+        assert_eq!(split("a\\ b c"), ["a b", "c"]);
+        assert_eq!(split("'it''s' x"), ["its", "x"]);
+        assert_eq!(
+            split("'a\\b' \"a\\b\" \"\\\"\\$\\\\\""),
+            ["a\\b", "a\\b", "\"$\\"]
+        );
+        // Empty quotes are a word; nothing is expanded.
+        assert_eq!(split("p '' \"\""), ["p", "", ""]);
+        assert_eq!(split("p $HOME *.json ~"), ["p", "$HOME", "*.json", "~"]);
+        assert_eq!(split("x=\"1 2\"y"), ["x=1 2y"]);
+        assert!(split("").is_empty());
+        for bad in ["prog 'open", "prog \"open", "prog \\"] {
+            let error = words(bad).unwrap_err();
+            assert!(error.contains("the command"), "{bad}: {error}");
+        }
+        assert!(words("p 'x").unwrap_err().contains("unterminated ' quote"));
+        assert_eq!(
+            command_of("external-persistent:p 'a b'"),
+            Ok(Some((true, vec!["p".to_owned(), "a b".to_owned()])))
+        );
+        assert_eq!(command_of("production"), Ok(None));
+        assert!(command_of("external:p \"").is_err());
     }
 }

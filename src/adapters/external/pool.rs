@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 use serde_json::Value;
 
 use super::adapter::External;
+use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
 use super::messages::seconds;
 use super::motion;
@@ -37,13 +38,33 @@ impl External {
         retried: bool,
     ) -> Result<Value, RasterError> {
         let deadline = Instant::now() + timeout;
+        if let Some((why, hello)) = &*self.broken.lock().unwrap_or_else(|e| e.into_inner()) {
+            // Its answers cannot be matched to requests: nothing more is
+            // sent, and nothing waited for. What its hello refuses is still
+            // unsupported.
+            if let Some(refused) = hello.as_ref().and_then(|h| h.refuses(scene, plan)) {
+                return Err(RasterError::Unsupported(refused));
+            }
+            return Err(RasterError::Failed(format!(
+                "not sent: {why}; no case is sent to it for the rest of the run"
+            )));
+        }
         let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
         let mut worker = match idle {
             Some(worker) => worker,
             None => {
                 let mut worker = Worker::start(self.start()?, max_output);
                 if !self.said_no_hello.load(Ordering::Relaxed) {
-                    worker.await_hello(Instant::now() + HELLO_WAIT.min(timeout));
+                    // A program whose hello the preflight read is waited
+                    // for until the case's time limit: its hello will come.
+                    let mut command = vec![self.program.clone()];
+                    command.extend_from_slice(&self.args);
+                    let wait = if hello::seen(&command) {
+                        timeout
+                    } else {
+                        HELLO_WAIT.min(timeout)
+                    };
+                    worker.await_hello(Instant::now() + wait);
                     if worker.hello.is_none() {
                         self.said_no_hello.store(true, Ordering::Relaxed);
                     }
@@ -64,12 +85,7 @@ impl External {
             return Err(failed(why, &worker.stderr, mark));
         }
         if let Some(Ok(hello)) = &worker.hello {
-            let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
-            if declared.is_none() {
-                *declared = hello.title();
-            }
-            drop(declared);
-            *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+            self.heard(hello);
             if let Some(why) = hello.refuses(scene, plan) {
                 // Never sent: the program said it cannot draw it.
                 pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
@@ -111,13 +127,38 @@ impl External {
         let mut request =
             serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
         request.push(b'\n');
+        let had_hello = worker.hello.is_some();
         let line = worker.exchange(request, deadline);
+        // A hello that came in place of the answer (a program slow to
+        // start) was written before the program read this request: it
+        // holds for it (SPEC.md §12.7). A malformed one ends the process.
+        let late = match &worker.hello {
+            Some(Ok(hello)) if !had_hello => {
+                self.heard(hello);
+                hello.refuses(scene, plan)
+            }
+            _ => None,
+        };
+        let line = match (&worker.hello, line) {
+            (Some(Err(why)), _) if !had_hello => Err(Exchange::Late(format!(
+                "its hello is not a hello of SPEC.md §12.7: {why}"
+            ))),
+            (_, Ok(_)) if late.is_some() => {
+                // Its answer is read and not judged: its hello refuses the case.
+                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                return Err(RasterError::Unsupported(late.unwrap_or_default()));
+            }
+            (_, line) => line,
+        };
         let result = match line {
             Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            Err(Exchange::Late(why)) => Err((why, true)),
             Err(Exchange::TimedOut | Exchange::Flood) => {
                 Err((format!("timed out after {}", seconds(timeout)), true))
             }
             Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
+            // Version 1 matches no ids; only v2 exchanges end so.
+            Err(Exchange::NoId(line)) => Err((format!("an answer without an id: {line:?}"), true)),
             Err(Exchange::Broken(Output::Read(e))) => {
                 Err((format!("reading its output: {e}"), true))
             }
@@ -189,6 +230,14 @@ impl External {
                 keep(worker);
                 return Ok(Err(err));
             }
+            Err(Exchange::Late(why)) => (why, true),
+            Err(Exchange::NoId(line)) => {
+                let cause = format!(
+                    "its answers carry no `id` (the first, to request {id:?}: {line:?}); \
+                     protocol v2 answers must echo the request's id (SPEC.md §12.7)"
+                );
+                return Ok(Err(self.give_up(worker, cause, mark)));
+            }
             Err(Exchange::TimedOut) => {
                 worker.owe(id.clone());
                 let why = format!(
@@ -200,6 +249,29 @@ impl External {
                         String::new()
                     }
                 );
+                if let Some(other) = &skipped.wrong_id {
+                    let cause = format!(
+                        "answer id {other} for request {id:?}; protocol v2 answers must echo \
+                         the request's id (SPEC.md §12.7)"
+                    );
+                    if self.wrong_ids.fetch_add(1, Ordering::Relaxed) > 0 {
+                        // The second case answered under another id: the
+                        // program does not echo them.
+                        return Ok(Err(self.give_up(
+                            worker,
+                            format!("{cause}, the second time in this run"),
+                            mark,
+                        )));
+                    }
+                    let err = failed(
+                        format!("{why}: {cause}; the process is kept"),
+                        &worker.stderr,
+                        mark,
+                    );
+                    worker.timeouts_in_a_row = 0;
+                    keep(worker);
+                    return Ok(Err(err));
+                }
                 if worker.timeouts_in_a_row < 2 {
                     // It may only be slow: kept, and its late answer is
                     // dropped by its id when it comes.
@@ -241,6 +313,34 @@ impl External {
             _ => why,
         };
         Ok(Err(failed(why, &worker.stderr, mark)))
+    }
+}
+
+impl External {
+    /// Keeps what a hello declares for the cases from now on: its name (the
+    /// first hello's) and how its answers are shaped.
+    fn heard(&self, hello: &Hello) {
+        let mut declared = self.declared.lock().unwrap_or_else(|e| e.into_inner());
+        if declared.is_none() {
+            *declared = hello.title();
+        }
+        drop(declared);
+        *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+    }
+
+    /// Ends `worker` and sends the program no more cases: its answers
+    /// cannot be matched to requests (`cause`). The error for the case in
+    /// flight says so, once; every later case names the cause without
+    /// being sent or waited for.
+    fn give_up(&self, mut worker: Worker, cause: String, mark: u64) -> RasterError {
+        let hello = worker.hello.as_ref().and_then(|h| h.as_ref().ok()).cloned();
+        *self.broken.lock().unwrap_or_else(|e| e.into_inner()) = Some((cause.clone(), hello));
+        worker.end(true);
+        failed(
+            format!("protocol error: {cause}; no case is sent to it for the rest of the run"),
+            &worker.stderr,
+            mark,
+        )
     }
 }
 

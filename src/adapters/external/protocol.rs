@@ -289,9 +289,10 @@ pub fn frame_from_answer(
 }
 
 fn text_of(value: &Value) -> String {
+    // Quoted in the report: at most 80 characters of it (SPEC.md §8).
     match value {
-        Value::String(s) => s.clone(),
-        other => other.to_string(),
+        Value::String(s) => super::messages::shorten(s),
+        other => super::messages::shorten(&other.to_string()),
     }
 }
 

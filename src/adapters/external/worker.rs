@@ -24,6 +24,11 @@ pub(super) enum Exchange {
     Flood,
     /// The process closed its stdout (it exited, most likely).
     Closed,
+    /// A malformed hello came in place of the answer (v1), saying why.
+    Late(String),
+    /// v2: a line shaped as an answer (§12.2's fields) carried no `id`,
+    /// shown here shortened: the program does not echo ids.
+    NoId(String),
     Broken(Output),
 }
 
@@ -66,6 +71,17 @@ pub(super) struct Skipped {
     pub(super) bytes: u64,
     /// The first stray line, shortened.
     pub(super) first: Option<String>,
+    /// The id of the first stray line shaped as an answer (§12.2's
+    /// fields) whose id is neither the request's nor an owed one, quoted.
+    pub(super) wrong_id: Option<String>,
+}
+
+/// Whether `value` is shaped as an answer: an object with one of
+/// §12.2's fields.
+fn is_answer(value: &Value) -> bool {
+    ["primitives", "error", "unsupported", "exr"]
+        .iter()
+        .any(|key| value.get(key).is_some())
 }
 
 impl Skipped {
@@ -225,7 +241,10 @@ impl Worker {
 
     /// Sends a v2 request and reads lines until the one whose `id` is
     /// `id`: the answer. Every other line is skipped and counted: a late
-    /// answer to a request that timed out, or a stray. Past
+    /// answer to a request that timed out, or a stray (an answer under
+    /// another id is noted in [`Skipped::wrong_id`]); a line shaped as an
+    /// answer with no id at all ends the exchange at once
+    /// ([`Exchange::NoId`]: the program does not echo ids). Past
     /// [`MAX_SKIPPED_LINES`] lines or `max_output` bytes skipped, gives up.
     pub(super) fn exchange_v2(
         &mut self,
@@ -263,6 +282,20 @@ impl Worker {
                     skipped.late += 1;
                 }
                 _ => {
+                    match value.as_ref().filter(|v| is_answer(v)).map(|v| v.get("id")) {
+                        Some(None | Some(Value::Null)) => {
+                            return (Err(Exchange::NoId(shorten(&line))), skipped)
+                        }
+                        Some(Some(Value::String(other))) => {
+                            let other = format!("{:?}", shorten(other));
+                            skipped.wrong_id.get_or_insert(other);
+                        }
+                        Some(Some(other)) => {
+                            let other = shorten(&other.to_string());
+                            skipped.wrong_id.get_or_insert(other);
+                        }
+                        None => {}
+                    }
                     skipped.strays += 1;
                     skipped.first.get_or_insert_with(|| shorten(&line));
                 }

@@ -110,7 +110,8 @@ pub fn closest<'n>(key: &str, allowed: &[&'n str]) -> Option<&'n str> {
         .map(|(_, name)| name)
 }
 
-pub(super) fn edit_distance(a: &str, b: &str) -> usize {
+/// The Levenshtein distance between `a` and `b`, in characters.
+pub fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {

@@ -32,6 +32,6 @@ mod schema;
 mod validate;
 
 pub use error::CaseError;
-pub use json::closest;
+pub use json::{closest, edit_distance};
 pub use limits::Limits;
 pub use parse::parse_case;
