@@ -457,6 +457,8 @@ pub fn assert_judges_at_least_85_percent(candidate: &dyn Rasterizer, known: &[&s
             Verdict::Pass | Verdict::Fail(_) => judged += 1,
             Verdict::Unsupported(why) => unsupported.push(format!("{id}: {why}")),
             Verdict::Error(why) => panic!("{id}: {why}"),
+            // One draw per case here: never flaky.
+            Verdict::Flaky(f) => panic!("{id}: {}", f.summary()),
         }
     }
     for line in &unsupported {
