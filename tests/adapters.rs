@@ -338,6 +338,8 @@ fn adapters_print_family_counts() {
                 Verdict::Fail(_) => 1,
                 Verdict::Unsupported(_) => 2,
                 Verdict::Error(ref why) => panic!("{name} broke on {}: {why}", file.id),
+                // One draw per case here: never flaky.
+                Verdict::Flaky(ref f) => panic!("{name} on {}: {}", file.id, f.summary()),
             };
             count[slot] += 1;
         }

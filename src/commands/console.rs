@@ -96,6 +96,7 @@ pub(crate) fn print_outcome(
             Verdict::Fail(_) => ("FAIL", RED),
             Verdict::Unsupported(_) => ("UNSUPPORTED", YELLOW),
             Verdict::Error(_) => ("ERROR", RED),
+            Verdict::Flaky(_) => ("FLAKY", RED),
         };
         if quiet && matches!(result.verdict, Verdict::Pass | Verdict::Unsupported(_)) {
             continue;
@@ -133,6 +134,14 @@ pub(crate) fn print_outcome(
         if let Verdict::Fail(reasons) = &result.verdict {
             for reason in reasons {
                 outln!("        {reason}");
+            }
+        }
+        if let Verdict::Flaky(flaky) = &result.verdict {
+            for rep in &flaky.outcomes {
+                outln!("        repetition {}: {}", rep.repetition, rep.describe());
+            }
+            for difference in &flaky.differences {
+                outln!("        {}", difference.describe());
             }
         }
     }

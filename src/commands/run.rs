@@ -53,6 +53,12 @@ pub struct RunArgs {
     /// is overridden). Repeat for several rasterizers.
     #[arg(long, value_name = "FILE")]
     pub profile: Vec<PathBuf>,
+    /// Draw each case N times with every rasterizer (the reference once),
+    /// the selection in blocks so that other cases come between a case's
+    /// repetitions; a rasterizer whose frames differ between them is
+    /// FLAKY on the case, a failure (SPEC.md §6.6).
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = super::values::repeat)]
+    pub repeat: usize,
     #[command(flatten)]
     pub limits: LimitArgs,
 }
@@ -70,6 +76,15 @@ fn own_rule(x: &runner::Tally) -> String {
         "; {} judged under its own fill rule, clipping or subpixel precision instead of the case's (SPEC.md §3.1, §3.2, §16)",
         x.own_rule
     )
+}
+
+/// The summary's count of flaky cases (`--repeat`): a failure, counted
+/// apart; said even when none, so a repeated run shows it checked.
+fn flaky(x: &runner::Tally, repeat: usize) -> String {
+    if repeat <= 1 && x.flaky == 0 {
+        return String::new();
+    }
+    format!(", {} flaky over {repeat} repetitions", x.flaky)
 }
 
 pub fn run(args: RunArgs) -> Exit {
@@ -198,12 +213,13 @@ pub fn run(args: RunArgs) -> Exit {
         .report
         .as_deref()
         .map(|dir| report::case_files::CaseWriter::new(dir, &foils));
-    let mut outcomes = runner::run_all(
+    let mut outcomes = runner::run_all_repeated(
         &files,
         &limits,
         &candidates,
         &root,
         args.threads,
+        args.repeat,
         &|k, outcome| {
             let entry = match &writer {
                 Some(writer) => writer.write(outcome),
@@ -260,7 +276,9 @@ pub fn run(args: RunArgs) -> Exit {
     let t = report.totals.clone();
     let failed = t.reference_failed > 0
         || t.golden.differing > 0
-        || t.verdicts.iter().any(|v| v.tally.fail + v.tally.error > 0);
+        || t.verdicts
+            .iter()
+            .any(|v| v.tally.fail + v.tally.error + v.tally.flaky > 0);
     outln!();
     outln!(
         "{} case files, {} unreadable{}",
@@ -276,17 +294,18 @@ pub fn run(args: RunArgs) -> Exit {
         let x = &v.tally;
         if candidate.is_foil() {
             outln!(
-                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors{}",
-                v.rasterizer, x.pass, x.foil, x.unsupported, x.error, own_rule(x)
+                "{}: {} exact, {} departing from the reference (a foil: expected, not a failure), {} unsupported, {} errors{}{}",
+                v.rasterizer, x.pass, x.foil, x.unsupported, x.error, flaky(x, args.repeat), own_rule(x)
             );
         } else {
             outln!(
-                "{}: {} passed, {} failed, {} unsupported, {} errors{}",
+                "{}: {} passed, {} failed, {} unsupported, {} errors{}{}",
                 v.rasterizer,
                 x.pass,
                 x.fail,
                 x.unsupported,
                 x.error,
+                flaky(x, args.repeat),
                 own_rule(x)
             );
         }
@@ -335,7 +354,7 @@ pub fn run(args: RunArgs) -> Exit {
     let judged = t
         .verdicts
         .iter()
-        .any(|v| v.tally.pass + v.tally.fail + v.tally.foil + v.tally.error > 0);
+        .any(|v| v.tally.pass + v.tally.fail + v.tally.foil + v.tally.error + v.tally.flaky > 0);
     if let Some(signal) = stopped {
         Exit::Interrupted(signal)
     } else if bad_input {

@@ -16,6 +16,20 @@ pub(crate) fn threads(text: &str) -> Result<usize, String> {
     }
 }
 
+/// The most repetitions `run --repeat` accepts.
+pub const MAX_REPEAT: usize = 100;
+
+/// A `--repeat` value: 1 to [`MAX_REPEAT`].
+pub(crate) fn repeat(text: &str) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_REPEAT).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "expected a number of repetitions from 1 to {MAX_REPEAT}, got {:?}",
+            shorten(text)
+        )),
+    }
+}
+
 /// `text` cut to about 80 characters, for echoing in a message.
 pub(crate) fn shorten(text: &str) -> String {
     crate::adapters::external::shorten(text)

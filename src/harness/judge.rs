@@ -4,6 +4,7 @@
 
 use std::time::{Duration, Instant};
 
+use super::flaky::Flaky;
 use super::oracle::{catch_oracle_run, primitive_areas, run_reference_planned, ReferenceRun};
 use super::panics::pass_on_deadline;
 use super::profile::{cannot_judge_under, OwnConventions};
@@ -20,6 +21,9 @@ pub enum Verdict {
     Unsupported(String),
     /// The rasterizer broke (crashed, or returned an error).
     Error(String),
+    /// Its repetitions of the case (`run --repeat N`) drew different
+    /// frames: a failure, whatever each repetition's verdict was.
+    Flaky(Box<Flaky>),
 }
 
 impl Verdict {
@@ -32,6 +36,7 @@ impl Verdict {
             Verdict::Fail(_) => "fail",
             Verdict::Unsupported(_) => "unsupported",
             Verdict::Error(_) => "error",
+            Verdict::Flaky(_) => "flaky",
         }
     }
 
@@ -41,6 +46,7 @@ impl Verdict {
             Verdict::Fail(_) => "FAIL",
             Verdict::Unsupported(_) => "UNSUPPORTED",
             Verdict::Error(_) => "ERROR",
+            Verdict::Flaky(_) => "FLAKY",
         }
     }
 }
@@ -296,6 +302,7 @@ pub fn describe(run: &CandidateRun) -> String {
     let Some(m) = &run.metrics else {
         return match &run.verdict {
             Verdict::Unsupported(why) | Verdict::Error(why) => why.clone(),
+            Verdict::Flaky(flaky) => flaky.summary(),
             _ => String::new(),
         };
     };

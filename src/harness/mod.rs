@@ -7,11 +7,13 @@
 //! follows) → [`golden`] (the blessed reference output) → [`baseline`]
 //! (recorded metrics a later run must not get worse than). [`runner`] runs
 //! many cases at once: selection, parallel execution, limits, outcomes in a
-//! fixed order. [`panics`] is the text of a caught panic; [`today`] the
+//! fixed order. [`flaky`] compares a candidate's repetitions of a case (`run --repeat`).
+//! [`panics`] is the text of a caught panic; [`today`] the
 //! date reports are stamped with.
 
 pub mod baseline;
 pub mod discover;
+pub mod flaky;
 pub mod golden;
 pub mod judge;
 pub mod load;

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::harness::discover::CaseFile;
+use crate::harness::flaky::{self, Flaky, Repetition};
 use crate::harness::golden::GoldenStatus;
 use crate::harness::judge::{CandidateRun, Verdict};
 use crate::harness::oracle::ReferenceRun;
@@ -343,6 +344,179 @@ pub fn run_all(
     }
 }
 
+/// How many cases a round of a repeated run holds (`run --repeat N`): each
+/// case of a block of this many is drawn once by every candidate, then the
+/// block again, N times over, so that other cases' draws come between a
+/// case's repetitions, as in a run, while only one block's frames are kept.
+pub const ROUND_CASES: usize = 32;
+
+/// [`run_all`] with each case drawn `repeat` times by every candidate
+/// (`run --repeat N`); the reference draws it once. The selection is taken
+/// in blocks of [`ROUND_CASES`]: every case of a block is run in full
+/// (reference, golden file, the candidates' first repetition), then the
+/// candidates draw the whole block again, in the same order, once per
+/// further repetition, so that a case's repetitions have the other cases
+/// of its block between them (a selection of one case has none). A
+/// candidate whose later frame differs from its first, in any channel, gets
+/// [`Verdict::Flaky`] with every repetition's outcome and the differences;
+/// one whose repetitions agree keeps its first verdict. Pictures, error
+/// maps and the page (`done`) are written from the first repetition's
+/// frames, once the case's last repetition is compared.
+pub fn run_all_repeated(
+    files: &[CaseFile],
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+    root: &Path,
+    threads: Option<usize>,
+    repeat: usize,
+    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
+) -> Vec<CaseOutcome> {
+    if repeat <= 1 {
+        return run_all(files, limits, candidates, root, threads, done);
+    }
+    let stopped = || crate::stop::requested().is_some();
+    let work = || {
+        let mut outcomes = Vec::with_capacity(files.len());
+        for (block, chunk) in files.chunks(ROUND_CASES).enumerate() {
+            let mut firsts: Vec<CaseOutcome> = chunk
+                .par_iter()
+                .map(|file| {
+                    if stopped() {
+                        return CaseOutcome::interrupted(file);
+                    }
+                    run_case(file, limits, candidates, root)
+                })
+                .collect();
+            // Each case's candidates: every repetition's outcome, and
+            // where a later frame differed from the first.
+            let mut kept: Vec<Vec<Repeated>> = firsts
+                .iter()
+                .map(|o| o.candidates.iter().map(Repeated::first).collect())
+                .collect();
+            for repetition in 2..=repeat {
+                let again: Vec<Option<Vec<CandidateRun>>> = firsts
+                    .par_iter()
+                    .map(|o| (!stopped()).then(|| redraw(o, limits, candidates)))
+                    .collect();
+                for ((o, reps), runs) in firsts.iter().zip(&mut kept).zip(again) {
+                    for ((first, rep), run) in
+                        o.candidates.iter().zip(reps).zip(runs.unwrap_or_default())
+                    {
+                        rep.add(first, &run, repetition);
+                    }
+                }
+            }
+            for (k, (mut outcome, reps)) in firsts.drain(..).zip(kept).enumerate() {
+                if stopped() {
+                    outcomes.push(CaseOutcome::interrupted(&outcome.file));
+                    continue;
+                }
+                for (run, rep) in outcome.candidates.iter_mut().zip(reps) {
+                    if let Some(flaky) = rep.flaky() {
+                        run.verdict = Verdict::Flaky(Box::new(flaky));
+                    }
+                }
+                done(block * ROUND_CASES + k, &mut outcome);
+                outcome.release_frames();
+                outcomes.push(outcome);
+            }
+        }
+        outcomes
+    };
+    match rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+    {
+        Ok(pool) => pool.install(work),
+        Err(_) => work(),
+    }
+}
+
+/// Every candidate draws a case it already drew once again, judged against
+/// the same reference (none for a case that did not run).
+fn redraw(
+    outcome: &CaseOutcome,
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+) -> Vec<CandidateRun> {
+    let (Some(scene), Some(reference), None) =
+        (&outcome.scene, &outcome.reference, &outcome.problem)
+    else {
+        return Vec::new();
+    };
+    candidates
+        .iter()
+        .map(|c| {
+            let started = std::time::Instant::now();
+            deadline::within(limits.case_timeout, || {
+                judge::run_candidate(scene, reference, c.as_ref())
+            })
+            .unwrap_or_else(|exceeded| {
+                CandidateRun::without_frame(
+                    c.name().to_owned(),
+                    Verdict::Error(exceeded.to_string()),
+                    started.elapsed(),
+                )
+            })
+        })
+        .collect()
+}
+
+/// One candidate's repetitions of one case, as they come in.
+struct Repeated {
+    outcomes: Vec<Repetition>,
+    differences: Vec<flaky::Difference>,
+}
+
+impl Repeated {
+    fn first(run: &CandidateRun) -> Repeated {
+        Repeated {
+            outcomes: vec![repetition(&run.verdict, 1)],
+            differences: Vec::new(),
+        }
+    }
+
+    /// A later repetition, compared with the first: its frame channel by
+    /// channel, and its verdict (two runs without a frame differ only
+    /// there).
+    fn add(&mut self, first: &CandidateRun, later: &CandidateRun, k: usize) {
+        let mut found = flaky::compare(first.frame.as_ref(), later.frame.as_ref(), k);
+        if found.is_empty() && first.verdict != later.verdict {
+            found.push(flaky::Difference {
+                repetition: k,
+                channel: "verdict".to_owned(),
+                first: None,
+                values: None,
+                count: 0,
+                of: 0,
+            });
+        }
+        self.outcomes.push(repetition(&later.verdict, k));
+        self.differences.extend(found);
+    }
+
+    fn flaky(self) -> Option<Flaky> {
+        (!self.differences.is_empty()).then_some(Flaky {
+            outcomes: self.outcomes,
+            differences: self.differences,
+        })
+    }
+}
+
+/// A verdict as one repetition's outcome.
+fn repetition(verdict: &Verdict, k: usize) -> Repetition {
+    Repetition {
+        repetition: k,
+        verdict: verdict.label().to_owned(),
+        reasons: match verdict {
+            Verdict::Pass => Vec::new(),
+            Verdict::Fail(reasons) => reasons.clone(),
+            Verdict::Unsupported(why) | Verdict::Error(why) => vec![why.clone()],
+            Verdict::Flaky(f) => vec![f.summary()],
+        },
+    }
+}
+
 /// Marks every case whose `name` an earlier case already uses as bad input:
 /// names identify cases in reports and baselines, so they must be unique in
 /// a run. Returns the indices of those marked.
@@ -380,6 +554,10 @@ pub struct Tally {
     pub fail: usize,
     pub unsupported: usize,
     pub error: usize,
+    /// Cases whose repetitions drew different frames (`run --repeat`): a
+    /// failure, counted apart.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub flaky: usize,
     /// Departures of a foil (counted apart from failures).
     pub foil: usize,
     /// Of all these, the results judged under the rasterizer's own fill
@@ -403,6 +581,7 @@ impl Tally {
             Verdict::Fail(_) => self.fail += 1,
             Verdict::Unsupported(_) => self.unsupported += 1,
             Verdict::Error(_) => self.error += 1,
+            Verdict::Flaky(_) => self.flaky += 1,
         }
     }
 }

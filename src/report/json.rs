@@ -6,6 +6,7 @@
 
 use serde::Serialize;
 
+use crate::harness::flaky::Flaky;
 use crate::harness::golden::GoldenStatus;
 use crate::harness::judge::Verdict;
 use crate::harness::runner::{CaseOutcome, Problem, Tally};
@@ -234,9 +235,16 @@ pub struct AntialiasRules {
 #[derive(Clone, Debug, Serialize)]
 pub struct ResultEntry {
     pub rasterizer: String,
-    /// `pass`, `fail`, `foil` (a foil's departure), `unsupported` or `error`.
+    /// `pass`, `fail`, `foil` (a foil's departure), `unsupported`,
+    /// `error`, or `flaky` (its repetitions under `run --repeat` drew
+    /// different frames; `flaky` says how).
     pub verdict: &'static str,
     pub reasons: Vec<String>,
+    /// A flaky result's repetitions: each one's outcome, and where its
+    /// frame differed from the first's (channel, first pixel and sample,
+    /// values, counts).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flaky: Option<Flaky>,
     pub time_ms: f64,
     /// How the rasterizer drew it, when it says (a GPU adapter: "native
     /// MSAA", "shifted passes", "time passes").
@@ -467,6 +475,11 @@ impl CaseEntry {
                     Verdict::Pass => Vec::new(),
                     Verdict::Fail(reasons) => reasons.clone(),
                     Verdict::Unsupported(why) | Verdict::Error(why) => vec![why.clone()],
+                    Verdict::Flaky(flaky) => vec![format!("flaky: {}", flaky.summary())],
+                },
+                flaky: match &run.verdict {
+                    Verdict::Flaky(flaky) => Some((**flaky).clone()),
+                    _ => None,
                 },
                 time_ms: millis(run.elapsed),
                 method: run.method,
@@ -546,6 +559,7 @@ impl Report {
                     "fail" => tally.fail += 1,
                     "foil" => tally.foil += 1,
                     "unsupported" => tally.unsupported += 1,
+                    "flaky" => tally.flaky += 1,
                     _ => tally.error += 1,
                 }
                 tally.own_rule += usize::from(

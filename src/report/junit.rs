@@ -2,7 +2,8 @@
 //! read JUnit. Failures carry the reasons; unsupported cases are skipped;
 //! unreadable cases and broken rasterizers are errors. A foil's departures
 //! are reported as passing testcases with the departure in `system-out`,
-//! since they are expected.
+//! since they are expected. A flaky result (`run --repeat`) is a failure
+//! whose message starts `flaky: `.
 
 use super::escape::escape;
 use super::json::Report;
@@ -10,7 +11,11 @@ use super::json::Report;
 pub fn render(report: &Report) -> String {
     let mut xml = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     let t = &report.totals;
-    let failures: usize = t.verdicts.iter().map(|v| v.tally.fail).sum();
+    let failures: usize = t
+        .verdicts
+        .iter()
+        .map(|v| v.tally.fail + v.tally.flaky)
+        .sum();
     let errors: usize = t.verdicts.iter().map(|v| v.tally.error).sum::<usize>()
         + t.unreadable
         + t.reference_failed
@@ -29,7 +34,7 @@ pub fn render(report: &Report) -> String {
         xml.push_str(&format!(
             "  <testsuite name=\"{}\" tests=\"{suite_tests}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\">\n",
             escape(&rasterizer.name),
-            tally.fail,
+            tally.fail + tally.flaky,
             tally.error + t.unreadable + t.reference_failed + t.limit_exceeded,
             tally.unsupported
         ));
@@ -65,7 +70,7 @@ pub fn render(report: &Report) -> String {
                 "foil" => xml.push_str(&format!(
                     "{open}>\n      <system-out>departs from the reference, as a foil is expected to:\n{body}</system-out>\n    </testcase>\n"
                 )),
-                "fail" => xml.push_str(&format!(
+                "fail" | "flaky" => xml.push_str(&format!(
                     "{open}>\n      <failure message=\"{}\">{body}</failure>\n    </testcase>\n",
                     escape(result.reasons.first().map_or("failed", |r| r.as_str()))
                 )),

@@ -16,12 +16,12 @@ pub fn render(report: &Report) -> String {
         "{} cases; {} unreadable; golden files: {} match, {} differ, {} missing.\n\n",
         t.cases, t.unreadable, t.golden.matching, t.golden.differing, t.golden.missing
     ));
-    md.push_str("| rasterizer | pass | fail | foil departures | unsupported | error |\n|---|---:|---:|---:|---:|---:|\n");
+    md.push_str("| rasterizer | pass | fail | foil departures | unsupported | error | flaky |\n|---|---:|---:|---:|---:|---:|---:|\n");
     for v in &t.verdicts {
         let x = &v.tally;
         md.push_str(&format!(
-            "| {} | {} | {} | {} | {} | {} |\n",
-            v.rasterizer, x.pass, x.fail, x.foil, x.unsupported, x.error
+            "| {} | {} | {} | {} | {} | {} | {} |\n",
+            v.rasterizer, x.pass, x.fail, x.foil, x.unsupported, x.error, x.flaky
         ));
     }
     let problems: Vec<&CaseEntry> = report
@@ -33,7 +33,7 @@ pub fn render(report: &Report) -> String {
         .cases
         .iter()
         .flat_map(|c| c.results.iter().map(move |r| (c, r)))
-        .filter(|(_, r)| matches!(r.verdict, "fail" | "error"))
+        .filter(|(_, r)| matches!(r.verdict, "fail" | "error" | "flaky"))
         .collect();
     if !problems.is_empty() || !failures.is_empty() {
         md.push_str("\n## Failures\n\n");

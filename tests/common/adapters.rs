@@ -463,6 +463,8 @@ pub fn assert_judges_at_least(candidate: &dyn Rasterizer, known: &[&str], bar: f
             Verdict::Pass | Verdict::Fail(_) => judged += 1,
             Verdict::Unsupported(why) => unsupported.push(format!("{id}: {why}")),
             Verdict::Error(why) => panic!("{id}: {why}"),
+            // One draw per case here: never flaky.
+            Verdict::Flaky(f) => panic!("{id}: {}", f.summary()),
         }
     }
     for line in &unsupported {

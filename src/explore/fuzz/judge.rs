@@ -258,6 +258,12 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
             }
             Outcome::Fail(failure)
         }
+        // One draw per scene here: never flaky, but a failure if it were.
+        (Verdict::Flaky(flaky), ..) => Outcome::Fail(Failure {
+            kinds: vec![Kind::Error],
+            reasons: vec![format!("flaky: {}", flaky.summary())],
+            focus: Vec::new(),
+        }),
         (Verdict::Fail(reasons), ..) => Outcome::Fail(Failure {
             kinds: vec![Kind::Error],
             reasons,

@@ -144,6 +144,8 @@ pub fn build(
                 Verdict::Fail(_) => cell.fail += 1,
                 Verdict::Unsupported(_) => cell.unsupported += 1,
                 Verdict::Error(_) => cell.error += 1,
+                // The matrix draws each case once: never flaky.
+                Verdict::Flaky(_) => cell.fail += 1,
             }
             if let Some(m) = &run.metrics {
                 cell.mismatched += m.coverage.mismatched();

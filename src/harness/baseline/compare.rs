@@ -173,12 +173,12 @@ fn compare_entry(
     }
 }
 
-/// How bad a verdict is: pass = foil < fail < error. `None` for
+/// How bad a verdict is: pass = foil < fail = flaky < error. `None` for
 /// `unsupported` (nothing was drawn) and unknown names.
 fn verdict_rank(verdict: &str) -> Option<u8> {
     match verdict {
         "pass" | "foil" => Some(0),
-        "fail" => Some(1),
+        "fail" | "flaky" => Some(1),
         "error" => Some(2),
         _ => None,
     }

@@ -119,7 +119,7 @@ impl SelectionInfo {
     }
 }
 
-const VERDICTS: [&str; 5] = ["pass", "fail", "foil", "unsupported", "error"];
+const VERDICTS: [&str; 6] = ["pass", "fail", "foil", "unsupported", "error", "flaky"];
 
 impl Baseline {
     /// A new baseline from what a run observed, with the default

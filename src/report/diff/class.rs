@@ -13,8 +13,8 @@ pub enum Kind {
 pub fn kind(state: &str) -> Kind {
     match state {
         "pass" | "foil" | "match" => Kind::Good,
-        "fail" | "error" | "unreadable" | "reference-failed" | "limit-exceeded" | "differ"
-        | "missing" => Kind::Failing,
+        "fail" | "flaky" | "error" | "unreadable" | "reference-failed" | "limit-exceeded"
+        | "differ" | "missing" => Kind::Failing,
         // unsupported, not-run, absent
         _ => Kind::Unjudged,
     }

@@ -11,7 +11,7 @@ use crate::harness::load::file_kind;
 use crate::report::json::SCHEMA;
 
 /// The verdicts and case statuses a `rastercheck-report/1` holds.
-const VERDICTS: [&str; 5] = ["pass", "fail", "foil", "unsupported", "error"];
+const VERDICTS: [&str; 6] = ["pass", "fail", "foil", "unsupported", "error", "flaky"];
 const STATUSES: [&str; 5] = [
     "ran",
     "unreadable",

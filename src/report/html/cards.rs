@@ -94,7 +94,7 @@ pub fn cards_of(case: &CaseEntry) -> Vec<Card> {
     }
     for (r, result) in case.results.iter().enumerate() {
         let kind = match result.verdict {
-            "fail" | "error" => Kind::Problem,
+            "fail" | "error" | "flaky" => Kind::Problem,
             "foil" => Kind::Departure,
             "pass" if result.metrics.as_ref().is_some_and(interpolation_error) => {
                 Kind::Interpolation
@@ -220,6 +220,23 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         html.push_str("<ul class=\"reasons\">");
         for reason in &result.reasons {
             let _ = write!(html, "<li>{}</li>", escape(reason));
+        }
+        html.push_str("</ul>");
+    }
+    // A flaky result (`run --repeat`): every repetition's outcome, then
+    // where the frames differed; the pictures below are the first's.
+    if let Some(flaky) = &result.flaky {
+        html.push_str("<p>Its repetitions drew different frames (the pictures are the first repetition's):</p><ul class=\"reasons\">");
+        for rep in &flaky.outcomes {
+            let _ = write!(
+                html,
+                "<li>repetition {}: {}</li>",
+                rep.repetition,
+                escape(&rep.describe())
+            );
+        }
+        for difference in &flaky.differences {
+            let _ = write!(html, "<li>{}</li>", escape(&difference.describe()));
         }
         html.push_str("</ul>");
     }

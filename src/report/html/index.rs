@@ -42,19 +42,20 @@ pub fn render(report: &Report) -> String {
         "<p>Command: <code>rastercheck {}</code></p>",
         escape(&command.join(" "))
     );
-    html.push_str("<div class=\"summary\"><table><tr><th>rasterizer</th><th class=\"n\">pass</th><th class=\"n\">fail</th><th class=\"n\">foil departures</th><th class=\"n\">unsupported</th><th class=\"n\">error</th></tr>");
+    html.push_str("<div class=\"summary\"><table><tr><th>rasterizer</th><th class=\"n\">pass</th><th class=\"n\">fail</th><th class=\"n\">foil departures</th><th class=\"n\">unsupported</th><th class=\"n\">error</th><th class=\"n\">flaky</th></tr>");
     for (v, info) in t.verdicts.iter().zip(&report.rasterizers) {
         let x = &v.tally;
         let _ = write!(
             html,
-            "<tr><td><b>{}</b>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
+            "<tr><td><b>{}</b>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>",
             escape(&v.rasterizer),
             if info.foil { " <span class=\"muted\">(foil)</span>" } else { "" },
             x.pass,
             x.fail,
             x.foil,
             x.unsupported,
-            x.error
+            x.error,
+            x.flaky
         );
     }
     html.push_str("</table>");
@@ -179,7 +180,7 @@ fn family_summary(report: &Report, families: &[&str]) -> String {
         );
         for r in 0..report.rasterizers.len() {
             let mut counts: Vec<(&str, usize)> = Vec::new();
-            for verdict in ["pass", "fail", "foil", "error", "unsupported"] {
+            for verdict in ["pass", "fail", "flaky", "foil", "error", "unsupported"] {
                 let n = members
                     .iter()
                     .filter(|c| c.results.get(r).is_some_and(|x| x.verdict == verdict))

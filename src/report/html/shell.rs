@@ -28,11 +28,11 @@ table.cases { width:100%; } table.cases td { font-size:13px; }
 table.cases td.id { font-family:ui-monospace,Menlo,Consolas,monospace; font-size:12.5px; white-space:nowrap; }
 .badge { display:inline-block; min-width:44px; text-align:center; font-size:11px; font-weight:700; letter-spacing:.03em; color:#fff; border-radius:4px; padding:1px 6px; margin-right:6px; }
 .pass { background:var(--pass); } .fail { background:var(--fail); } .foil { background:var(--foil); }
-.unsupported { background:var(--unsupported); } .error, .unreadable, .reference-failed, .limit-exceeded, .differ { background:var(--error); }
+.unsupported { background:var(--unsupported); } .error, .flaky, .unreadable, .reference-failed, .limit-exceeded, .differ { background:var(--error); }
 .not-run, .missing { background:#8c959f; } .match { background:var(--pass); }
 .metric { color:var(--muted); font-size:12px; }
 .card { background:var(--card); border:1px solid var(--line); border-left:5px solid var(--line); border-radius:8px; padding:14px 16px; margin:16px 0; }
-.card.k-fail, .card.k-error, .card.k-problem { border-left-color:var(--fail); }
+.card.k-fail, .card.k-error, .card.k-flaky, .card.k-problem { border-left-color:var(--fail); }
 .card.k-foil { border-left-color:var(--foil); } .card.k-pass { border-left-color:var(--pass); }
 .card header { display:flex; flex-wrap:wrap; align-items:baseline; gap:8px 12px; }
 .card header .id { font-family:ui-monospace,Menlo,Consolas,monospace; font-size:15px; font-weight:600; }

@@ -205,6 +205,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 rasterizer: r.into(),
                 verdict: "pass",
                 reasons: Vec::new(),
+                flaky: None,
                 time_ms: 0.0,
                 method: None,
                 judged_fill_rule: None,
