@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 
 use super::oracle::{catch_oracle_run, primitive_areas, run_reference_planned, ReferenceRun};
 use super::panics::pass_on_deadline;
-use super::profile::{cannot_judge_under, OwnConventions};
+use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer};
@@ -108,14 +108,12 @@ pub fn run_candidate(
         }
     };
     // A rasterizer that cannot follow the case's fill rule (or, in clip
-    // space, its clip conventions, or its subpixel bits) is judged under the ones it follows,
+    // space, its clip conventions; its snapping, sample positions, y
+    // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
     if own.any() {
-        if let Some(why) = own
-            .fill_rule
-            .and_then(|rule| cannot_judge_under(scene, rule))
-        {
+        if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
         let under = own.restate(scene);
