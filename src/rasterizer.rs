@@ -158,6 +158,72 @@ impl Capabilities {
     }
 }
 
+/// The conventions beyond the fill rule that a rasterizer declares in words
+/// (an external program's hello, `conventions`, SPEC.md §12.7; a profile's
+/// `conventions`, §13): read once here, so both read them alike.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Declaration {
+    pub snapping: Option<Snapping>,
+    pub sample_pattern: Option<Pattern>,
+    pub y: Option<YDirection>,
+    pub pixel_centre: Option<PixelCentre>,
+}
+
+impl Declaration {
+    /// The keys this reads, for a reader that checks for unknown ones.
+    pub const KEYS: [&'static str; 4] = ["snapping", "sample_pattern", "y", "pixel_centre"];
+
+    /// Reads `snapping`, `sample_pattern`, `y` and `pixel_centre` from an
+    /// object at JSON path `at`; other keys are left to the caller. A
+    /// message names the path of the first bad value.
+    pub fn read(
+        object: &serde_json::Map<String, serde_json::Value>,
+        at: &str,
+    ) -> Result<Declaration, String> {
+        let word = |key: &str, known: &[&str]| -> Result<Option<String>, String> {
+            match object.get(key) {
+                None | Some(serde_json::Value::Null) => Ok(None),
+                Some(serde_json::Value::String(w)) if known.contains(&w.as_str()) => {
+                    Ok(Some(w.clone()))
+                }
+                Some(other) => Err(format!(
+                    "{at}.{key} is {other}; known: {}",
+                    known.join(", ")
+                )),
+            }
+        };
+        let snapping = match object.get("snapping") {
+            None | Some(serde_json::Value::Null) => None,
+            Some(value) => Some(Snapping::from_json(value).ok_or_else(|| {
+                format!(
+                    "{at}.snapping is {value}; known: \"none\", \"truncate\" or a number of subpixel bits from 0 to 16"
+                )
+            })?),
+        };
+        let sample_pattern = word("sample_pattern", &["standard"])?.map(|_| Pattern::Standard);
+        let y = word("y", &["down", "up"])?.map(|w| {
+            if w == "up" {
+                YDirection::Up
+            } else {
+                YDirection::Down
+            }
+        });
+        let pixel_centre = word("pixel_centre", &["half", "integer"])?.map(|w| {
+            if w == "integer" {
+                PixelCentre::Integer
+            } else {
+                PixelCentre::Half
+            }
+        });
+        Ok(Declaration {
+            snapping,
+            sample_pattern,
+            y,
+            pixel_centre,
+        })
+    }
+}
+
 /// `Unsupported` for a scene that needs the last vertex to provoke
 /// (`Scene::needs_last_provoking_vertex`), from a rasterizer whose flat
 /// values are always the first vertex's: it answers that it cannot, rather

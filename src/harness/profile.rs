@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{
-    Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
+    Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
 };
 use crate::scene::{ClipRules, Cull, DepthMode, FillRule, Number, Pattern, Primitive, Scene};
 
@@ -27,6 +27,9 @@ pub const SCHEMA: &str = "rastercheck-profile/1";
 pub struct Declared {
     pub rasterizer: String,
     pub fill_rule: FillRule,
+    /// Its optional `conventions`: snapping, sample positions, y direction,
+    /// pixel centre (SPEC.md §13), declared by hand; `probe` writes none.
+    pub conventions: Declaration,
     pub file: String,
 }
 
@@ -70,9 +73,26 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             FillRule::ALL.map(|r| r.name()).join(", ")
         )
     })?;
+    let conventions = match value.get("conventions") {
+        None | Some(Value::Null) => Declaration::default(),
+        Some(Value::Object(object)) => {
+            if let Some(key) = object
+                .keys()
+                .find(|k| !Declaration::KEYS.contains(&k.as_str()))
+            {
+                return Err(format!(
+                    "{shown}: $.conventions.{key}: not a convention a profile declares ({})",
+                    Declaration::KEYS.join(", ")
+                ));
+            }
+            Declaration::read(object, "$.conventions").map_err(|e| format!("{shown}: {e}"))?
+        }
+        Some(_) => return Err(format!("{shown}: $.conventions must be an object")),
+    };
     Ok(Declared {
         rasterizer,
         fill_rule,
+        conventions,
         file: shown,
     })
 }
@@ -80,8 +100,27 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
 impl Declared {
     /// The line `run` prints about the override.
     pub fn note(&self) -> String {
+        let c = &self.conventions;
+        let mut more = Vec::new();
+        if let Some(snapping) = c.snapping {
+            more.push(snapping.words());
+        }
+        if let Some(pattern) = c.sample_pattern {
+            more.push(format!("its {} sample positions", pattern.name()));
+        }
+        if c.y == Some(YDirection::Up) {
+            more.push("y up".to_owned());
+        }
+        if c.pixel_centre == Some(PixelCentre::Integer) {
+            more.push("samples at whole coordinates".to_owned());
+        }
+        let more = if more.is_empty() {
+            String::new()
+        } else {
+            format!(" and {}", more.join(", "))
+        };
         format!(
-            "profile: {} is judged under its declared fill rule {} (from {}) instead of each case's",
+            "profile: {} is judged under its declared fill rule {}{more} (from {}) instead of each case's",
             self.rasterizer, self.fill_rule, self.file
         )
     }
@@ -133,6 +172,9 @@ pub fn for_run(
 pub struct Profiled {
     pub inner: Box<dyn Rasterizer>,
     pub rule: FillRule,
+    /// The profile's other conventions; each one it leaves out is the
+    /// rasterizer's own declaration, if any.
+    pub conventions: Declaration,
 }
 
 impl Rasterizer for Profiled {
@@ -153,6 +195,31 @@ impl Rasterizer for Profiled {
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         Some(self.rule)
+    }
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        match self.conventions.snapping {
+            Some(Snapping::Bits(bits)) => Some(bits),
+            Some(_) => None,
+            None => self.inner.fixed_subpixel_bits(),
+        }
+    }
+    fn fixed_snapping(&self) -> Option<Snapping> {
+        self.conventions
+            .snapping
+            .or_else(|| self.inner.fixed_snapping())
+    }
+    fn fixed_sample_pattern(&self) -> Option<Pattern> {
+        self.conventions
+            .sample_pattern
+            .or_else(|| self.inner.fixed_sample_pattern())
+    }
+    fn fixed_y_direction(&self) -> Option<YDirection> {
+        self.conventions.y.or_else(|| self.inner.fixed_y_direction())
+    }
+    fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
+        self.conventions
+            .pixel_centre
+            .or_else(|| self.inner.fixed_pixel_centre())
     }
 }
 
@@ -459,6 +526,7 @@ pub fn apply(
                 Some(d) => Box::new(Profiled {
                     inner: candidate,
                     rule: d.fill_rule,
+                    conventions: d.conventions,
                 }) as Box<dyn Rasterizer>,
                 None => candidate,
             },

@@ -7,6 +7,7 @@
 use serde_json::Value;
 
 use crate::plan::Plan;
+use crate::rasterizer::Declaration;
 use crate::scene::{FillRule, Interpolation, LineRule, Primitive, Scene};
 
 /// What a program declared in its hello. A list left out declares nothing
@@ -36,6 +37,11 @@ pub struct Hello {
     coverage_only: Option<bool>,
     /// Coverage fractions are multiples of 1/(2^bits − 1) (§12.9).
     coverage_bits: Option<u64>,
+    /// `"fraction"`: multiples of 1/2^bits, capped at 1 − 1/2^bits (§12.9).
+    coverage_fraction: bool,
+    /// `conventions.snapping`, `sample_pattern`, `y`, `pixel_centre`
+    /// (SPEC.md §2.1, §3.2, §14.2.1).
+    declaration: Declaration,
     /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
     fill_rule: Option<FillRule>,
@@ -54,13 +60,29 @@ pub struct Answers {
     /// The fill rule it follows whatever the case states
     /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1).
     pub fill_rule: Option<FillRule>,
+    /// Its coverage encoding is `"fraction"`: steps of 1/2^bits, saturating.
+    pub coverage_fraction: bool,
+    /// Its other conventions (snapping, sample positions, y, pixel centre).
+    pub declaration: Declaration,
 }
 
 impl Answers {
     /// The declared quantization step of coverage fractions; 0 for none.
     pub fn step(&self) -> f64 {
-        self.coverage_bits
-            .map_or(0.0, |bits| 1.0 / (2f64.powi(bits as i32) - 1.0))
+        let steps = |bits: u32| {
+            let whole = 2f64.powi(bits as i32);
+            if self.coverage_fraction {
+                whole
+            } else {
+                whole - 1.0
+            }
+        };
+        self.coverage_bits.map_or(0.0, |bits| 1.0 / steps(bits))
+    }
+
+    /// Whether its coverage encoding saturates at 1 − step (`"fraction"`).
+    pub fn saturates(&self) -> bool {
+        self.coverage_fraction && self.coverage_bits.is_some()
     }
 }
 
@@ -122,6 +144,7 @@ impl Hello {
                     })?)
                 }
             };
+            out.declaration = Declaration::read(conventions, "$.hello.conventions")?;
         }
         let Some(caps) = hello.get("capabilities") else {
             return Ok(out);
@@ -192,6 +215,22 @@ impl Hello {
             return Err(format!(
                 "$.hello.capabilities.coverage_bits must be from 1 to {MAX_COVERAGE_BITS}"
             ));
+        }
+        out.coverage_fraction = match caps.get("coverage_encoding") {
+            None => false,
+            Some(Value::String(w)) if w == "unorm" => false,
+            Some(Value::String(w)) if w == "fraction" => true,
+            Some(other) => {
+                return Err(format!(
+                    "$.hello.capabilities.coverage_encoding is {other}; known: unorm, fraction"
+                ))
+            }
+        };
+        if out.coverage_fraction && out.coverage_bits.is_none() {
+            return Err(
+                "$.hello.capabilities.coverage_encoding needs coverage_bits (the k of 1/2^k)"
+                    .to_owned(),
+            );
         }
         out.motion = flag("motion")?;
         Ok(out)
@@ -327,6 +366,8 @@ impl Hello {
             coverage_only: self.coverage_only == Some(true),
             coverage_bits: self.coverage_bits.map(|b| b as u32),
             fill_rule: self.fill_rule,
+            coverage_fraction: self.coverage_fraction,
+            declaration: self.declaration,
         }
     }
 
