@@ -158,15 +158,15 @@ fn bounds_met_by(mut under: Scene, reference: &ReferenceRun) -> Scene {
     let Some(Ok(areas)) = &reference.areas else {
         return under;
     };
-    if reference.frame.samples == 0 {
+    if reference.frame.samples == 0 || reference.time.is_some() {
         return under;
     }
     let known = metrics::Known {
-        interior: None,
+        interior: reference.interior.as_deref(),
         classes: Some(areas.classes.as_slice()),
         whole_time: None,
         part_areas: None,
-        depth_allowed: None,
+        depth_allowed: reference.depth_allowed.as_deref(),
     };
     let own = metrics::measure_known(&under, &reference.frame, &reference.frame, &known);
     let Some(aa) = own.antialias else {
