@@ -89,7 +89,10 @@ fn a_4_bit_foil_passes_declaring_4_and_is_caught_declaring_8() {
     let ids = bundled();
     let honest = by_name("foil-snap4").unwrap();
     let (pass, fail, unsupported) = tally(&ids, honest.as_ref());
-    eprintln!("foil-snap4: {pass} pass, {} fail, {unsupported} unsupported", fail.len());
+    eprintln!(
+        "foil-snap4: {pass} pass, {} fail, {unsupported} unsupported",
+        fail.len()
+    );
     assert!(fail.is_empty(), "{fail:#?}");
     assert!(pass > 400, "{pass}");
     let liar = by_name("foil-snap4-as-8").unwrap();
@@ -200,7 +203,10 @@ fn an_integer_pixel_centre_is_judged_as_declared() {
     );
     assert!(fails.is_empty(), "{fails:#?}");
     assert!(named > 0);
-    assert!(printed.contains("samples at whole coordinates"), "{printed}");
+    assert!(
+        printed.contains("samples at whole coordinates"),
+        "{printed}"
+    );
     let (fails, _, _) = client(
         "centre-undeclared",
         "--centre integer --undeclared",
@@ -287,7 +293,11 @@ fn probe_checks_each_declared_precision() {
     let liar = probe(by_name("foil-snap4-as-8").unwrap().as_ref()).unwrap();
     let words = "declares 8 subpixel bits; measured 4";
     assert_eq!(liar.declared_snapping.as_deref(), Some(words));
-    assert!(liar.departures.iter().any(|d| d == words), "{:?}", liar.departures);
+    assert!(
+        liar.departures.iter().any(|d| d == words),
+        "{:?}",
+        liar.departures
+    );
     let production = probe(&Production).unwrap();
     assert_eq!(production.declared_snapping, None);
 }

@@ -136,7 +136,10 @@ pub(crate) fn print_outcome(
         }
         if let (Some(pattern), Some(aa)) = (
             result.judged.sample_pattern,
-            outcome.scene.as_ref().and_then(|s| s.effects.antialias.as_ref()),
+            outcome
+                .scene
+                .as_ref()
+                .and_then(|s| s.effects.antialias.as_ref()),
         ) {
             method.push_str(&format!(
                 " (judged under its own {}{} sample positions; the case states {}{})",
@@ -147,10 +150,14 @@ pub(crate) fn print_outcome(
             ));
         }
         if result.judged.y_up {
-            method.push_str(" (judged with its own y axis up: the case's cull and fill rule read mirrored)");
+            method.push_str(
+                " (judged with its own y axis up: the case's cull and fill rule read mirrored)",
+            );
         }
         if result.judged.integer_centre {
-            method.push_str(" (judged with its own samples at whole coordinates: the case moved by (½, ½))");
+            method.push_str(
+                " (judged with its own samples at whole coordinates: the case moved by (½, ½))",
+            );
         }
         outln!(
             "{} {id:width$}  {}{method}  {}",

@@ -214,7 +214,9 @@ impl Rasterizer for Profiled {
             .or_else(|| self.inner.fixed_sample_pattern())
     }
     fn fixed_y_direction(&self) -> Option<YDirection> {
-        self.conventions.y.or_else(|| self.inner.fixed_y_direction())
+        self.conventions
+            .y
+            .or_else(|| self.inner.fixed_y_direction())
     }
     fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
         self.conventions

@@ -9,10 +9,10 @@ use serde::Serialize;
 use crate::harness::golden::GoldenStatus;
 use crate::harness::judge::Verdict;
 use crate::harness::runner::{CaseOutcome, Problem, Tally};
-use crate::rasterizer::Snapping;
 use crate::metrics::antialias::AntialiasMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
+use crate::rasterizer::Snapping;
 use crate::scene::{ClipRules, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";

@@ -17,9 +17,7 @@ use super::worker::Worker;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{
-    Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
-};
+use crate::rasterizer::{Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection};
 use crate::scene::{FillRule, Pattern, Scene};
 
 /// A rasterizer that is another program.
@@ -129,19 +127,35 @@ impl Rasterizer for External {
     }
 
     fn fixed_snapping(&self) -> Option<Snapping> {
-        self.answers.lock().unwrap_or_else(|e| e.into_inner()).declaration.snapping
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .snapping
     }
 
     fn fixed_sample_pattern(&self) -> Option<Pattern> {
-        self.answers.lock().unwrap_or_else(|e| e.into_inner()).declaration.sample_pattern
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .sample_pattern
     }
 
     fn fixed_y_direction(&self) -> Option<YDirection> {
-        self.answers.lock().unwrap_or_else(|e| e.into_inner()).declaration.y
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .y
     }
 
     fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
-        self.answers.lock().unwrap_or_else(|e| e.into_inner()).declaration.pixel_centre
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .pixel_centre
     }
 
     fn declared(&self) -> Option<String> {
