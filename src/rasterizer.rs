@@ -5,7 +5,65 @@ use std::fmt;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
+use crate::scene::{
+    ClipXy, ClipZ, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+};
+
+/// Where a rasterizer puts a vertex before it rasterizes (SPEC.md §3.2): its
+/// snapping, as a rasterizer that cannot choose it declares it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Snapping {
+    /// Vertices are used exactly as given: judged as a case with
+    /// `subpixel_bits: null`.
+    None,
+    /// Each coordinate is truncated to a whole pixel, ⌊c⌋ (towards −∞),
+    /// in screen space.
+    Truncate,
+    /// Each coordinate is rounded to the nearest multiple of 2^-bits, ties
+    /// to even (SPEC.md §2).
+    Bits(u32),
+}
+
+impl Snapping {
+    /// Reads a declaration: `"none"`, `"truncate"` or a number of bits (0
+    /// to 16).
+    pub fn from_json(value: &serde_json::Value) -> Option<Snapping> {
+        match value {
+            serde_json::Value::String(s) if s == "none" => Some(Snapping::None),
+            serde_json::Value::String(s) if s == "truncate" => Some(Snapping::Truncate),
+            serde_json::Value::Number(n) => n
+                .as_u64()
+                .filter(|&b| b <= 16)
+                .map(|b| Snapping::Bits(b as u32)),
+            _ => None,
+        }
+    }
+
+    /// The words reports use: "no snapping", "truncation to whole pixels",
+    /// "8 subpixel bits".
+    pub fn words(self) -> String {
+        match self {
+            Snapping::None => "no snapping".to_owned(),
+            Snapping::Truncate => "truncation to whole pixels".to_owned(),
+            Snapping::Bits(bits) => format!("{bits} subpixel bits"),
+        }
+    }
+}
+
+/// Which way a rasterizer's y axis points (SPEC.md §2.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum YDirection {
+    Down,
+    Up,
+}
+
+/// Where a rasterizer's pixel (x, y) has its sample (SPEC.md §2.1): at
+/// (x + ½, y + ½), or at (x, y).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelCentre {
+    Half,
+    Integer,
+}
 
 /// What a rasterizer can be asked to do. A case outside its capabilities is
 /// reported as unsupported, never as passed or failed.
@@ -97,6 +155,72 @@ impl Capabilities {
             return Some("this rasterizer does not draw moving primitives".to_owned());
         }
         None
+    }
+}
+
+/// The conventions beyond the fill rule that a rasterizer declares in words
+/// (an external program's hello, `conventions`, SPEC.md §12.7; a profile's
+/// `conventions`, §13): read once here, so both read them alike.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Declaration {
+    pub snapping: Option<Snapping>,
+    pub sample_pattern: Option<Pattern>,
+    pub y: Option<YDirection>,
+    pub pixel_centre: Option<PixelCentre>,
+}
+
+impl Declaration {
+    /// The keys this reads, for a reader that checks for unknown ones.
+    pub const KEYS: [&'static str; 4] = ["snapping", "sample_pattern", "y", "pixel_centre"];
+
+    /// Reads `snapping`, `sample_pattern`, `y` and `pixel_centre` from an
+    /// object at JSON path `at`; other keys are left to the caller. A
+    /// message names the path of the first bad value.
+    pub fn read(
+        object: &serde_json::Map<String, serde_json::Value>,
+        at: &str,
+    ) -> Result<Declaration, String> {
+        let word = |key: &str, known: &[&str]| -> Result<Option<String>, String> {
+            match object.get(key) {
+                None | Some(serde_json::Value::Null) => Ok(None),
+                Some(serde_json::Value::String(w)) if known.contains(&w.as_str()) => {
+                    Ok(Some(w.clone()))
+                }
+                Some(other) => Err(format!(
+                    "{at}.{key} is {other}; known: {}",
+                    known.join(", ")
+                )),
+            }
+        };
+        let snapping = match object.get("snapping") {
+            None | Some(serde_json::Value::Null) => None,
+            Some(value) => Some(Snapping::from_json(value).ok_or_else(|| {
+                format!(
+                    "{at}.snapping is {value}; known: \"none\", \"truncate\" or a number of subpixel bits from 0 to 16"
+                )
+            })?),
+        };
+        let sample_pattern = word("sample_pattern", &["standard"])?.map(|_| Pattern::Standard);
+        let y = word("y", &["down", "up"])?.map(|w| {
+            if w == "up" {
+                YDirection::Up
+            } else {
+                YDirection::Down
+            }
+        });
+        let pixel_centre = word("pixel_centre", &["half", "integer"])?.map(|w| {
+            if w == "integer" {
+                PixelCentre::Integer
+            } else {
+                PixelCentre::Half
+            }
+        });
+        Ok(Declaration {
+            snapping,
+            sample_pattern,
+            y,
+            pixel_centre,
+        })
     }
 }
 
@@ -242,6 +366,40 @@ pub trait Rasterizer: Send + Sync {
     /// stated (its vertices lie on this finer grid). `None` for a
     /// rasterizer that follows each case's bits.
     fn fixed_subpixel_bits(&self) -> Option<u32> {
+        None
+    }
+
+    /// How this rasterizer snaps vertices whatever a case states (SPEC.md
+    /// §3.2): its fixed bits ([`Rasterizer::fixed_subpixel_bits`]) by
+    /// default; a library that does not snap, or truncates to whole
+    /// pixels, says so here. `None` for a rasterizer that follows each
+    /// case's bits.
+    fn fixed_snapping(&self) -> Option<Snapping> {
+        self.fixed_subpixel_bits().map(Snapping::Bits)
+    }
+
+    /// The sample positions this rasterizer uses whatever an antialiased
+    /// case states (SPEC.md §14.2.1): `Pattern::Standard` for a device
+    /// that has only its standard positions. A case stating another
+    /// pattern is judged against the reference drawn at these, with the
+    /// same sample count, and reported as such. `None` for a rasterizer
+    /// that draws each case's positions.
+    fn fixed_sample_pattern(&self) -> Option<Pattern> {
+        None
+    }
+
+    /// Which way this rasterizer's y axis points, when it is not SPEC's
+    /// down and no adapter turns it round (SPEC.md §2.1): a case is then
+    /// judged with its y-dependent words mirrored. `None` (or `Down`) for
+    /// one that reads coordinates as the case does.
+    fn fixed_y_direction(&self) -> Option<YDirection> {
+        None
+    }
+
+    /// Where this rasterizer's pixel has its sample, when it is not SPEC's
+    /// (x + ½, y + ½) and no adapter moves it (SPEC.md §2.1): a case is then
+    /// judged moved by (½, ½). `None` (or `Half`) for SPEC's centre.
+    fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
         None
     }
 

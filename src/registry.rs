@@ -11,7 +11,8 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    AnyCoverage, AreaSampler, DdaF32, DdaF64, FloatF32, FloatF64, OffsetSampler,
+    AnyCoverage, AreaSampler, DdaF32, DdaF64, FloatF32, FloatF64, GridSamples, OffsetSampler,
+    Snap4, Snap4As8,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -167,6 +168,15 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-any-coverage", Kind::Foil, true,
         "a pixel drawn by every triangle touching it (conservative rasterization)",
         || boxed(AnyCoverage)),
+    row("foil-snap4", Kind::Foil, false,
+        "production snapping to 4 subpixel bits, and declaring them",
+        || boxed(Snap4)),
+    row("foil-snap4-as-8", Kind::Foil, false,
+        "production snapping to 4 subpixel bits while declaring 8",
+        || boxed(Snap4As8)),
+    row("foil-grid-samples", Kind::Foil, false,
+        "production sampling on a k×k grid while declaring the standard positions",
+        || boxed(GridSamples)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -439,7 +449,8 @@ mod tests {
     #[test]
     fn the_names_accepted_before_are_rows_and_the_matrix_rows_are_kept() {
         let before = "reference production dda-f32 dda-f64 float-f32 float-f64 \
-            foil-offset-sampler foil-area-sampler foil-any-coverage polygon-convex \
+            foil-offset-sampler foil-area-sampler foil-any-coverage foil-snap4 foil-snap4-as-8 \
+            foil-grid-samples polygon-convex \
             polygon-tessellate flood-fill adaptive-refine area-f32 adaptive-resolve \
             production-tiled mutant:flipped-ties mutant:closed-edges mutant:vertex-nudge \
             mutant:shrunk mutant:no-perspective mutant:thick-lines \

@@ -125,6 +125,41 @@ pub(crate) fn print_outcome(
                 " (judged under its own {bits} subpixel bits; the case states {stated})"
             ));
         }
+        if let (Some(snapping), Some(scene)) = (result.judged.snapping, &outcome.scene) {
+            let stated = scene
+                .rules
+                .subpixel_bits
+                .map_or("no snapping".to_owned(), |b| format!("{b} subpixel bits"));
+            method.push_str(&format!(
+                " (judged under its own {}; the case states {stated})",
+                snapping.words()
+            ));
+        }
+        if let (Some(pattern), Some(aa)) = (
+            result.judged.sample_pattern,
+            outcome
+                .scene
+                .as_ref()
+                .and_then(|s| s.effects.antialias.as_ref()),
+        ) {
+            method.push_str(&format!(
+                " (judged under its own {}{} sample positions; the case states {}{})",
+                pattern.name(),
+                aa.samples,
+                aa.pattern.name(),
+                aa.samples
+            ));
+        }
+        if result.judged.y_up {
+            method.push_str(
+                " (judged with its own y axis up: the case's cull and fill rule read mirrored)",
+            );
+        }
+        if result.judged.integer_centre {
+            method.push_str(
+                " (judged with its own samples at whole coordinates: the case moved by (½, ½))",
+            );
+        }
         outln!(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),

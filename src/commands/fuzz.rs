@@ -204,6 +204,7 @@ fn profiled(
     Ok(Box::new(crate::harness::profile::Profiled {
         inner: candidate,
         rule: declared.fill_rule,
+        conventions: declared.conventions,
     }))
 }
 

@@ -11,4 +11,8 @@ pub struct Parts {
     /// The quantization the rasterizer declares: its fractions are
     /// multiples of `step` (1/255 for 8 bits); 0 when it declares none.
     pub step: f64,
+    /// The coverage encoding saturates (`coverage_encoding: "fraction"`,
+    /// SPEC.md §12.9): fractions are multiples of `step` = 1/2^k capped at
+    /// 1 − step, which then stands for a whole pixel as well as 1 does.
+    pub saturates: bool,
 }

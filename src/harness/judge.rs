@@ -7,10 +7,10 @@ use std::time::{Duration, Instant};
 use super::flaky::Flaky;
 use super::oracle::{catch_oracle_run, primitive_areas, run_reference_planned, ReferenceRun};
 use super::panics::pass_on_deadline;
-use super::profile::{cannot_judge_under, OwnConventions};
+use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
-use crate::rasterizer::{RasterError, Rasterizer};
+use crate::rasterizer::{RasterError, Rasterizer, Snapping};
 use crate::scene::Scene;
 
 /// How a candidate did on a case.
@@ -114,21 +114,29 @@ pub fn run_candidate(
         }
     };
     // A rasterizer that cannot follow the case's fill rule (or, in clip
-    // space, its clip conventions, or its subpixel bits) is judged under the ones it follows,
+    // space, its clip conventions; its snapping, sample positions, y
+    // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
     if own.any() {
-        if let Some(why) = own
-            .fill_rule
-            .and_then(|rule| cannot_judge_under(scene, rule))
-        {
+        if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
         let under = own.restate(scene);
-        // Restating changes rules only, never what the plan reads.
-        let reference = catch_oracle_run(|| run_reference_planned(&under, reference.plan.clone()));
+        // Restating changes rules only, and what the plan reads only when
+        // it moves the samples (another pattern) or may stop a vertex
+        // (truncation): then the restated case is planned anew.
+        let plan = if own.sample_pattern.is_some() || own.snapping == Some(Snapping::Truncate) {
+            crate::plan::Plan::for_scene(&under)
+        } else {
+            reference.plan.clone()
+        };
+        let reference = catch_oracle_run(|| run_reference_planned(&under, plan));
         let mut run = match reference {
-            Ok(reference) => judge(&under, &reference, frame, name, elapsed),
+            Ok(reference) => {
+                let under = bounds_met_by(under, &reference);
+                judge(&under, &reference, frame, name, elapsed)
+            }
             Err(why) => {
                 let why = format!(
                     "the reference under {} it follows failed: {why}",
@@ -141,6 +149,60 @@ pub fn run_candidate(
         return run;
     }
     judge(scene, reference, frame, name, elapsed)
+}
+
+/// The restated case with its antialiasing bounds (`max_coverage_error`,
+/// `max_coverage_rms`, SPEC.md §14.3) raised to what the reference's own
+/// exact mask under the restated conventions achieves (box-resolved), where
+/// that mask breaks them: bounds written for the case's precision or sample
+/// positions (an edge's RMS over 4-bit snapped vertices is not its RMS over
+/// 8-bit ones) must not fail a rasterizer for its convention (SPEC.md
+/// §3.2). Nothing is loosened for a candidate: its mask is still held to
+/// the exact mask sample by sample, and a bound the exact mask meets is
+/// kept as written.
+fn bounds_met_by(mut under: Scene, reference: &ReferenceRun) -> Scene {
+    let Some(Ok(areas)) = &reference.areas else {
+        return under;
+    };
+    if reference.frame.samples == 0 || reference.time.is_some() {
+        return under;
+    }
+    let known = metrics::Known {
+        interior: reference.interior.as_deref(),
+        classes: Some(areas.classes.as_slice()),
+        whole_time: None,
+        part_areas: None,
+        depth_allowed: reference.depth_allowed.as_deref(),
+    };
+    // The exact mask, box-resolved: what a rasterizer exact at these
+    // conventions resolves (the reference's own resolved value is the
+    // exact area, which meets every bound).
+    let n = reference.frame.samples as usize;
+    let mut boxed = reference.frame.clone();
+    boxed.resolved = Some(
+        boxed
+            .coverage
+            .chunks(n)
+            .map(|slots| slots.iter().map(|&c| f64::from(c)).sum::<f64>() / n as f64)
+            .collect(),
+    );
+    let own = metrics::measure_known(&under, &reference.frame, &boxed, &known);
+    let Some(aa) = own.antialias else {
+        return under;
+    };
+    let (error, rms) = metrics::antialias::bounds(
+        under.expect.max_coverage_error,
+        under.expect.max_coverage_rms,
+        reference.frame.samples,
+        false,
+    );
+    if error.is_some_and(|bound| aa.max_error > bound) {
+        under.expect.max_coverage_error = Some(aa.max_error);
+    }
+    if rms.is_some_and(|bound| aa.rms_edge > bound) {
+        under.expect.max_coverage_rms = Some(aa.rms_edge);
+    }
+    under
 }
 
 /// Judges a candidate's frame against the reference's answer.

@@ -14,8 +14,12 @@ use serde_json::Value;
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipRules, DepthMode, FillRule, LineRule, Primitive, Scene};
+use crate::rasterizer::{
+    Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
+};
+use crate::scene::{
+    ClipRules, Cull, DepthMode, FillRule, LineRule, Number, Pattern, Primitive, Scene,
+};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -25,6 +29,9 @@ pub const SCHEMA: &str = "rastercheck-profile/1";
 pub struct Declared {
     pub rasterizer: String,
     pub fill_rule: FillRule,
+    /// Its optional `conventions`: snapping, sample positions, y direction,
+    /// pixel centre (SPEC.md §13), declared by hand; `probe` writes none.
+    pub conventions: Declaration,
     pub file: String,
 }
 
@@ -68,9 +75,26 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             FillRule::ALL.map(|r| r.name()).join(", ")
         )
     })?;
+    let conventions = match value.get("conventions") {
+        None | Some(Value::Null) => Declaration::default(),
+        Some(Value::Object(object)) => {
+            if let Some(key) = object
+                .keys()
+                .find(|k| !Declaration::KEYS.contains(&k.as_str()))
+            {
+                return Err(format!(
+                    "{shown}: $.conventions.{key}: not a convention a profile declares ({})",
+                    Declaration::KEYS.join(", ")
+                ));
+            }
+            Declaration::read(object, "$.conventions").map_err(|e| format!("{shown}: {e}"))?
+        }
+        Some(_) => return Err(format!("{shown}: $.conventions must be an object")),
+    };
     Ok(Declared {
         rasterizer,
         fill_rule,
+        conventions,
         file: shown,
     })
 }
@@ -78,8 +102,27 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
 impl Declared {
     /// The line `run` prints about the override.
     pub fn note(&self) -> String {
+        let c = &self.conventions;
+        let mut more = Vec::new();
+        if let Some(snapping) = c.snapping {
+            more.push(snapping.words());
+        }
+        if let Some(pattern) = c.sample_pattern {
+            more.push(format!("its {} sample positions", pattern.name()));
+        }
+        if c.y == Some(YDirection::Up) {
+            more.push("y up".to_owned());
+        }
+        if c.pixel_centre == Some(PixelCentre::Integer) {
+            more.push("samples at whole coordinates".to_owned());
+        }
+        let more = if more.is_empty() {
+            String::new()
+        } else {
+            format!(" and {}", more.join(", "))
+        };
         format!(
-            "profile: {} is judged under its declared fill rule {} (from {}) instead of each case's",
+            "profile: {} is judged under its declared fill rule {}{more} (from {}) instead of each case's",
             self.rasterizer, self.fill_rule, self.file
         )
     }
@@ -131,6 +174,9 @@ pub fn for_run(
 pub struct Profiled {
     pub inner: Box<dyn Rasterizer>,
     pub rule: FillRule,
+    /// The profile's other conventions; each one it leaves out is the
+    /// rasterizer's own declaration, if any.
+    pub conventions: Declaration,
 }
 
 impl Rasterizer for Profiled {
@@ -154,6 +200,33 @@ impl Rasterizer for Profiled {
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         Some(self.rule)
+    }
+    fn fixed_subpixel_bits(&self) -> Option<u32> {
+        match self.conventions.snapping {
+            Some(Snapping::Bits(bits)) => Some(bits),
+            Some(_) => None,
+            None => self.inner.fixed_subpixel_bits(),
+        }
+    }
+    fn fixed_snapping(&self) -> Option<Snapping> {
+        self.conventions
+            .snapping
+            .or_else(|| self.inner.fixed_snapping())
+    }
+    fn fixed_sample_pattern(&self) -> Option<Pattern> {
+        self.conventions
+            .sample_pattern
+            .or_else(|| self.inner.fixed_sample_pattern())
+    }
+    fn fixed_y_direction(&self) -> Option<YDirection> {
+        self.conventions
+            .y
+            .or_else(|| self.inner.fixed_y_direction())
+    }
+    fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
+        self.conventions
+            .pixel_centre
+            .or_else(|| self.inner.fixed_pixel_centre())
     }
 }
 
@@ -192,24 +265,44 @@ fn uses_fill_rule(primitive: &Primitive) -> bool {
 /// judged under the driver's own `clip_points` and `point_bounds` and
 /// nothing else.
 ///
-/// Its fixed subpixel bits ([`Rasterizer::fixed_subpixel_bits`]) where the
-/// case states more bits or none (SPEC.md §3.2): a case at fewer bits is
-/// drawn as stated.
+/// Its fixed snapping ([`Rasterizer::fixed_snapping`], SPEC.md §3.2): its
+/// subpixel bits where the case states more bits or none (a case at fewer
+/// bits is drawn as stated), no snapping where the case snaps, truncation
+/// to whole pixels always. Its fixed sample positions where an antialiased
+/// case states others (§14.2.1); its y direction and pixel centre where
+/// they are not SPEC's (§2.1).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
+    /// The fill rule judged, in SPEC's y-down terms (a y-up rasterizer's
+    /// own words mirrored).
     pub fill_rule: Option<FillRule>,
     pub clip: Option<ClipRules>,
+    /// Its own subpixel bits ([`Snapping::Bits`]).
     pub subpixel_bits: Option<u32>,
+    /// Its own snapping when it is not a number of bits:
+    /// [`Snapping::None`] or [`Snapping::Truncate`].
+    pub snapping: Option<Snapping>,
+    /// Its own sample positions, for an antialiased case stating others.
+    pub sample_pattern: Option<Pattern>,
+    /// Its y axis points up: the case's cull and fill rule are read
+    /// mirrored.
+    pub y_up: bool,
+    /// Its samples lie at whole coordinates: the case is judged moved by
+    /// (½, ½).
+    pub integer_centre: bool,
 }
 
 impl OwnConventions {
     /// What `candidate` is judged under on `scene`; the default (nothing)
     /// when it follows the case.
     pub fn of(candidate: &dyn Rasterizer, scene: &Scene) -> OwnConventions {
+        let y_up = candidate.fixed_y_direction() == Some(YDirection::Up);
         // Only where a fill rule decides a sample: not for a case of
         // midpoint or diamond-exit lines alone (SPEC.md §3, §4, §17.1).
         let fill_rule = candidate
             .fixed_fill_rule()
+            .map(|rule| if y_up { mirrored(rule) } else { rule })
+            .or_else(|| y_up.then(|| mirrored(scene.rules.fill_rule)))
             .filter(|&rule| rule != scene.rules.fill_rule)
             .filter(|_| scene.primitives.iter().any(uses_fill_rule));
         let stated = scene.rules.clip;
@@ -241,25 +334,96 @@ impl OwnConventions {
             }
         }
         let clip = (clip != stated).then_some(clip);
-        let subpixel_bits = candidate
-            .fixed_subpixel_bits()
-            .filter(|&own| scene.rules.subpixel_bits.is_none_or(|bits| bits > own));
+        let case_bits = scene.rules.subpixel_bits;
+        let (subpixel_bits, snapping) = match candidate.fixed_snapping() {
+            Some(Snapping::Bits(own)) => (
+                Some(own).filter(|&own| case_bits.is_none_or(|bits| bits > own)),
+                None,
+            ),
+            Some(Snapping::None) => (None, case_bits.map(|_| Snapping::None)),
+            Some(Snapping::Truncate) => (None, Some(Snapping::Truncate)),
+            None => (None, None),
+        };
+        let sample_pattern = match (candidate.fixed_sample_pattern(), &scene.effects.antialias) {
+            (Some(own), Some(aa)) if own != aa.pattern => Some(own),
+            _ => None,
+        };
         OwnConventions {
             fill_rule,
             clip,
             subpixel_bits,
+            snapping,
+            sample_pattern,
+            y_up,
+            integer_centre: candidate.fixed_pixel_centre() == Some(PixelCentre::Integer),
         }
     }
 
     pub fn any(&self) -> bool {
-        self.fill_rule.is_some() || self.clip.is_some() || self.subpixel_bits.is_some()
+        self.fill_rule.is_some()
+            || self.clip.is_some()
+            || self.subpixel_bits.is_some()
+            || self.snapping.is_some()
+            || self.sample_pattern.is_some()
+            || self.y_up
+            || self.integer_centre
+    }
+
+    /// Why `scene` cannot be judged under these conventions, if it cannot
+    /// (SPEC.md §2.1, §3.2, §14.1, §14.2.1): the case is then unsupported
+    /// with this reason, never judged under other conventions.
+    pub fn cannot_judge(&self, scene: &Scene) -> Option<String> {
+        if let Some(why) = self
+            .fill_rule
+            .and_then(|rule| cannot_judge_under(scene, rule))
+        {
+            return Some(why);
+        }
+        if let (Some(own), Some(aa)) = (self.sample_pattern, &scene.effects.antialias) {
+            if let Err(why) = own.check_count(aa.samples) {
+                return Some(format!(
+                    "its own sample positions are the {} pattern, and the case asks for {} samples: {why} (SPEC.md §14.2.1)",
+                    own.name(),
+                    aa.samples
+                ));
+            }
+        }
+        if self.snapping == Some(Snapping::Truncate) && scene.in_clip_space() {
+            return Some(
+                "it truncates vertices to whole pixels, which SPEC.md §3.2 defines for screen-space cases only".to_owned(),
+            );
+        }
+        if self.y_up {
+            let mirrored_rules = scene
+                .primitives
+                .iter()
+                .any(|p| matches!(p, Primitive::Line(_) | Primitive::Point(_)));
+            let why = if scene.in_clip_space() {
+                Some("a clip-space case's y direction is its viewport's, which an adapter turns round")
+            } else if mirrored_rules {
+                Some("a line's or a point's rule read with y up is no rule a case can state")
+            } else if scene.effects.antialias.is_some() {
+                Some("sample positions read with y up are no pattern a case can state")
+            } else {
+                None
+            };
+            if let Some(why) = why {
+                return Some(format!("its y axis points up: {why} (SPEC.md §2.1)"));
+            }
+        }
+        if self.integer_centre && scene.in_clip_space() {
+            return Some(
+                "its samples lie at whole coordinates, which SPEC.md §2.1 restates for screen-space cases only".to_owned(),
+            );
+        }
+        None
     }
 
     /// The case restated under these conventions. The pins
     /// `samples_covered` and `time_coverage` (whose riding samples fall by
     /// the tie rule) describe the case's own, so they are dropped; so is
-    /// `area` (the exact area of the snapped primitives) when the bits
-    /// change.
+    /// `area` (the exact area of the snapped primitives) when the vertices
+    /// move (other bits, no snapping, truncation, another pixel centre).
     pub fn restate(&self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
         if let Some(rule) = self.fill_rule {
@@ -270,6 +434,40 @@ impl OwnConventions {
         }
         if let Some(bits) = self.subpixel_bits {
             s.rules.subpixel_bits = Some(bits);
+            s.expect.area = None;
+        }
+        match self.snapping {
+            Some(Snapping::None) => {
+                s.rules.subpixel_bits = None;
+                s.expect.area = None;
+            }
+            Some(Snapping::Truncate) => {
+                s.rules.subpixel_bits = None;
+                s.expect.area = None;
+                each_coordinate(&mut s, |c| *c = floor(c));
+            }
+            _ => {}
+        }
+        if let (Some(pattern), Some(aa)) = (self.sample_pattern, s.effects.antialias.as_mut()) {
+            aa.pattern = pattern;
+        }
+        if self.y_up {
+            s.rules.cull = match s.rules.cull {
+                Cull::Clockwise => Cull::CounterClockwise,
+                Cull::CounterClockwise => Cull::Clockwise,
+                Cull::None => Cull::None,
+            };
+        }
+        if self.integer_centre {
+            // Snapped first, on the grid the case states (or the one just
+            // restated), then moved: ½ is exact, and a coarse grid's ties
+            // fall as they would have.
+            let half = Number::ratio(1, 2);
+            let bits = s.rules.subpixel_bits.take();
+            each_coordinate(&mut s, |c| {
+                let snapped = bits.map_or_else(|| c.clone(), |b| c.snapped(b));
+                *c = &snapped + &half;
+            });
             s.expect.area = None;
         }
         s.expect.samples_covered = None;
@@ -289,8 +487,50 @@ impl OwnConventions {
         if let Some(bits) = self.subpixel_bits {
             words.push(format!("{bits} subpixel bits"));
         }
+        if let Some(snapping) = self.snapping {
+            words.push(snapping.words());
+        }
+        if let Some(pattern) = self.sample_pattern {
+            words.push(format!("its {} sample positions", pattern.name()));
+        }
+        if self.y_up {
+            words.push("y up".to_owned());
+        }
+        if self.integer_centre {
+            words.push("samples at whole coordinates".to_owned());
+        }
         words.join(" and ")
     }
+}
+
+/// A fill rule read with y up, in SPEC's y-down terms: top and bottom
+/// change places (SPEC.md §2.1).
+pub fn mirrored(rule: FillRule) -> FillRule {
+    match rule {
+        FillRule::TopLeft => FillRule::BottomLeft,
+        FillRule::BottomLeft => FillRule::TopLeft,
+        FillRule::TopRight => FillRule::BottomRight,
+        FillRule::BottomRight => FillRule::TopRight,
+        FillRule::AllEdges => FillRule::AllEdges,
+    }
+}
+
+/// Every x and y of every vertex, at both ends of a moving one.
+fn each_coordinate(scene: &mut Scene, mut f: impl FnMut(&mut Number)) {
+    for v in scene.primitives.iter_mut().flat_map(|p| p.vertices_mut()) {
+        f(&mut v.x);
+        f(&mut v.y);
+        if let Some(to) = v.to.as_mut() {
+            for c in to.iter_mut() {
+                f(c);
+            }
+        }
+    }
+}
+
+/// ⌊c⌋, exactly: truncation to a whole pixel towards −∞ (SPEC.md §3.2).
+fn floor(c: &Number) -> Number {
+    Number::from_rbig(dashu_ratio::RBig::from(c.as_rbig().floor()))
 }
 
 /// The candidates of `run --profile`, each one a profile names wrapped in
@@ -307,6 +547,7 @@ pub fn apply(
                 Some(d) => Box::new(Profiled {
                     inner: candidate,
                     rule: d.fill_rule,
+                    conventions: d.conventions,
                 }) as Box<dyn Rasterizer>,
                 None => candidate,
             },

@@ -131,6 +131,7 @@ mod tests {
         }
         let mut f = Frame::resolved_only(2, 1, resolved);
         f.parts = Some(Parts {
+            saturates: false,
             coverage: vec![fractions, vec![]],
             step,
         });

@@ -13,6 +13,7 @@ use crate::harness::runner::{CaseOutcome, Problem, Tally};
 use crate::metrics::antialias::AntialiasMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
+use crate::rasterizer::Snapping;
 use crate::scene::{ClipRules, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
@@ -263,6 +264,21 @@ pub struct ResultEntry {
     /// the case's (`rules.subpixel_bits`, SPEC.md §3.2).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub judged_subpixel_bits: Option<u32>,
+    /// Its own snapping when it is not a number of bits: `"none"` or
+    /// `"truncate"` (SPEC.md §3.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_snapping: Option<&'static str>,
+    /// The sample pattern it was judged at, when that is its own and not
+    /// the case's (`rules.antialias.pattern`, SPEC.md §14.2.1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_sample_pattern: Option<&'static str>,
+    /// `"up"` when it was judged with its y axis up (SPEC.md §2.1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_y: Option<&'static str>,
+    /// `"integer"` when it was judged with its samples at whole
+    /// coordinates (SPEC.md §2.1).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub judged_pixel_centre: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -486,6 +502,13 @@ impl CaseEntry {
                 judged_fill_rule: run.judged.fill_rule.map(|r| r.name()),
                 judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
                 judged_subpixel_bits: run.judged.subpixel_bits,
+                judged_snapping: run.judged.snapping.map(|s| match s {
+                    Snapping::Truncate => "truncate",
+                    _ => "none",
+                }),
+                judged_sample_pattern: run.judged.sample_pattern.map(|p| p.name()),
+                judged_y: run.judged.y_up.then_some("up"),
+                judged_pixel_centre: run.judged.integer_centre.then_some("integer"),
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })
@@ -565,7 +588,11 @@ impl Report {
                 tally.own_rule += usize::from(
                     result.judged_fill_rule.is_some()
                         || result.judged_clip.is_some()
-                        || result.judged_subpixel_bits.is_some(),
+                        || result.judged_subpixel_bits.is_some()
+                        || result.judged_snapping.is_some()
+                        || result.judged_sample_pattern.is_some()
+                        || result.judged_y.is_some()
+                        || result.judged_pixel_centre.is_some(),
                 );
             }
         }

@@ -112,6 +112,13 @@ pub fn assert_probe_diagnosis(candidate: &dyn Rasterizer, rule: &str) {
         "{}",
         p.subpixel
     );
+    // What the adapter declares (SPEC.md §3.2) is what probe measures.
+    let declared = p.declared_snapping.as_deref().unwrap_or("declares nothing");
+    assert!(
+        declared.ends_with("(agrees)"),
+        "{}: {declared}",
+        candidate.name()
+    );
 }
 
 /// The ids (`family/stem`) of the bundled cases of `family` whose file stem

@@ -18,8 +18,10 @@ use super::worker::Worker;
 use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
+use crate::rasterizer::{Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection};
+use crate::scene::{
+    ClipXy, ClipZ, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+};
 
 /// A rasterizer that is another program.
 pub struct External {
@@ -149,6 +151,38 @@ impl Rasterizer for External {
 
     fn fixed_point_bounds(&self) -> Option<PointBounds> {
         self.answers().clip.bounds
+    }
+
+    fn fixed_snapping(&self) -> Option<Snapping> {
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .snapping
+    }
+
+    fn fixed_sample_pattern(&self) -> Option<Pattern> {
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .sample_pattern
+    }
+
+    fn fixed_y_direction(&self) -> Option<YDirection> {
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .y
+    }
+
+    fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
+        self.answers
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .declaration
+            .pixel_centre
     }
 
     fn declared(&self) -> Option<String> {

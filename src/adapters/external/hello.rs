@@ -12,6 +12,7 @@ use super::messages::shorten;
 use crate::scene::case::{closest, edit_distance};
 
 use crate::plan::Plan;
+use crate::rasterizer::Declaration;
 use crate::scene::{
     ClipXy, ClipZ, FillRule, InterpolateFrom, Interpolation, LineRule, Pattern, PointBounds,
     PointClip, PolygonFill, Primitive, Scene,
@@ -46,6 +47,11 @@ pub struct Hello {
     coverage_only: Option<bool>,
     /// Coverage fractions are multiples of 1/(2^bits − 1) (§12.9).
     coverage_bits: Option<u64>,
+    /// `"fraction"`: multiples of 1/2^bits, capped at 1 − 1/2^bits (§12.9).
+    coverage_fraction: bool,
+    /// `conventions.snapping`, `sample_pattern`, `y`, `pixel_centre`
+    /// (SPEC.md §2.1, §3.2, §14.2.1).
+    declaration: Declaration,
     /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
     fill_rule: Option<FillRule>,
@@ -70,13 +76,29 @@ pub struct Answers {
     /// The clip conventions it follows whatever the case states
     /// (SPEC.md §12.10): cases are judged under them (§16.9).
     pub clip: FixedClip,
+    /// Its coverage encoding is `"fraction"`: steps of 1/2^bits, saturating.
+    pub coverage_fraction: bool,
+    /// Its other conventions (snapping, sample positions, y, pixel centre).
+    pub declaration: Declaration,
 }
 
 impl Answers {
     /// The declared quantization step of coverage fractions; 0 for none.
     pub fn step(&self) -> f64 {
-        self.coverage_bits
-            .map_or(0.0, |bits| 1.0 / (2f64.powi(bits as i32) - 1.0))
+        let steps = |bits: u32| {
+            let whole = 2f64.powi(bits as i32);
+            if self.coverage_fraction {
+                whole
+            } else {
+                whole - 1.0
+            }
+        };
+        self.coverage_bits.map_or(0.0, |bits| 1.0 / steps(bits))
+    }
+
+    /// Whether its coverage encoding saturates at 1 − step (`"fraction"`).
+    pub fn saturates(&self) -> bool {
+        self.coverage_fraction && self.coverage_bits.is_some()
     }
 }
 
@@ -104,6 +126,9 @@ enum Kind {
     Word(&'static [&'static str]),
     /// A list of these words.
     Words(&'static [&'static str]),
+    /// A value its own reader checks (`snapping`: a word or a number of
+    /// bits, `rasterizer::Declaration::read`).
+    Read,
 }
 
 /// Every key a hello may hold (SPEC.md §12.7, §12.9), as (the object it
@@ -170,6 +195,21 @@ const KEYS: &[(&str, &str, Kind)] = &[
         "conventions",
         "point_bounds",
         Kind::Word(&PointBounds::NAMES),
+    ),
+    // The conventions of SPEC.md §2.1, §3.2 and §14.2.1
+    // (`rasterizer::Declaration`) and the coverage encoding of §12.9.
+    ("conventions", "snapping", Kind::Read),
+    ("conventions", "sample_pattern", Kind::Word(&["standard"])),
+    ("conventions", "y", Kind::Word(&["down", "up"])),
+    (
+        "conventions",
+        "pixel_centre",
+        Kind::Word(&["half", "integer"]),
+    ),
+    (
+        "capabilities",
+        "coverage_encoding",
+        Kind::Word(&["unorm", "fraction"]),
     ),
 ];
 
@@ -299,6 +339,7 @@ fn check_object(object: &Map<String, Value>, at: &str) -> Result<(), String> {
                 }
             }
             (Kind::Words(_), _) => return Err(format!("{path} must be a list of words")),
+            (Kind::Read, _) => {}
         }
     }
     Ok(())
@@ -394,6 +435,18 @@ impl Hello {
             conventions.and_then(Value::as_object),
         )?;
         three_d.points = words("primitives").is_some_and(|l| l.iter().any(|w| w == "points"));
+        let declaration = match conventions.and_then(Value::as_object) {
+            Some(c) => Declaration::read(c, "$.hello.conventions")?,
+            None => Declaration::default(),
+        };
+        if cap("coverage_encoding").and_then(Value::as_str) == Some("fraction")
+            && cap("coverage_bits").is_none()
+        {
+            return Err(
+                "$.hello.capabilities.coverage_encoding needs coverage_bits (the k of 1/2^k)"
+                    .to_owned(),
+            );
+        }
         Ok(Hello {
             protocol,
             name: text("name"),
@@ -417,6 +470,8 @@ impl Hello {
                 .and_then(|c| c.get("fill_rule"))
                 .and_then(Value::as_str)
                 .and_then(FillRule::from_name),
+            coverage_fraction: cap("coverage_encoding").and_then(Value::as_str) == Some("fraction"),
+            declaration,
             conventions: conventions.cloned(),
             three_d,
         })
@@ -563,6 +618,8 @@ impl Hello {
             coverage_bits: self.coverage_bits.map(|b| b as u32),
             fill_rule: self.fill_rule,
             clip: self.three_d.fixed,
+            coverage_fraction: self.coverage_fraction,
+            declaration: self.declaration,
         }
     }
 

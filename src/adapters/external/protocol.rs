@@ -328,7 +328,7 @@ fn compose(
         if with_coverage != list.len() {
             return Err("give coverage for every primitive or fragments for every one".into());
         }
-        return sum_coverage(list, width, height, answers.step());
+        return sum_coverage(list, width, height, answers.step(), answers.saturates());
     }
     // The values a coverage-only program does not give are not judged; the
     // result says so.
@@ -425,11 +425,18 @@ pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged"
 /// fraction of the pixels it touches, summed into a frame without samples,
 /// and kept per primitive to be judged per primitive (§12.9); `step` is the
 /// quantization the program declared (0 for none).
-fn sum_coverage(list: &[Value], width: u32, height: u32, step: f64) -> Result<Frame, String> {
+fn sum_coverage(
+    list: &[Value],
+    width: u32,
+    height: u32,
+    step: f64,
+    saturates: bool,
+) -> Result<Frame, String> {
     let mut resolved = vec![0.0; width as usize * height as usize];
     let mut parts = Parts {
         coverage: Vec::with_capacity(list.len()),
         step,
+        saturates,
     };
     for (p, entry) in list.iter().enumerate() {
         let mut given = Vec::new();

@@ -4,7 +4,7 @@
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{FillRule, Scene};
+use crate::scene::{FillRule, Pattern, Scene};
 
 use super::prepared;
 use super::refusals::{accepted, DRIVER_BITS};
@@ -36,6 +36,13 @@ impl Rasterizer for Lavapipe {
     /// judged at 8.
     fn fixed_subpixel_bits(&self) -> Option<u32> {
         Some(DRIVER_BITS)
+    }
+
+    /// wgpu's 4× MSAA, at Vulkan's standard positions and no others
+    /// (SPEC.md §14.2.1): a 4-sample case at other positions is judged at
+    /// these.
+    fn fixed_sample_pattern(&self) -> Option<Pattern> {
+        Some(Pattern::Standard)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

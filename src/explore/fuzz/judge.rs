@@ -179,10 +179,7 @@ pub fn as_judged<'a>(
     if !own.any() {
         return Ok(Cow::Borrowed(scene));
     }
-    match own
-        .fill_rule
-        .and_then(|rule| profile::cannot_judge_under(scene, rule))
-    {
+    match own.cannot_judge(scene) {
         Some(why) => Err(why),
         None => Ok(Cow::Owned(own.restate(scene))),
     }

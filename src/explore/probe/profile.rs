@@ -40,6 +40,13 @@ pub struct Profile {
     pub subpixel: String,
     /// Bits resolved along x and along y.
     pub subpixel_resolved: Resolved,
+    /// What the rasterizer declares about its snapping
+    /// ([`crate::rasterizer::Rasterizer::fixed_snapping`]) against what was
+    /// measured: "declares 4 subpixel bits; measured 4 (agrees)", or, when
+    /// they disagree, "declares 8 subpixel bits; measured 4" (also a
+    /// departure). Absent when it declares nothing.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub declared_snapping: Option<String>,
     /// "centre", "(x, y) in the pixel", "(1, 1) of the pixel, outside it
     /// ...", "several: ...", "none found" or "not applicable (...)".
     pub sample_position: String,

@@ -75,7 +75,7 @@ use super::infer::{probe_axis, probe_interpolation, probe_y};
 use super::points::probe_points;
 use super::profile::Profile;
 use crate::harness::profile::SCHEMA;
-use crate::rasterizer::Rasterizer;
+use crate::rasterizer::{Rasterizer, Snapping};
 
 /// Probes a rasterizer. `Err` when it draws none of the probe scenes.
 pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
@@ -114,6 +114,9 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         (Err(e), _) | (_, Err(e)) if e.starts_with("not ") => (None, e.clone()),
         (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
     };
+    let declared_snapping = candidate
+        .fixed_snapping()
+        .map(|declared| against_declared(declared, subpixel_bits, &subpixel));
     let interpolation = probe_interpolation(candidate);
     let mut profile = Profile {
         schema: SCHEMA,
@@ -134,6 +137,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
             x: x_bits.ok(),
             y: y_bits.ok(),
         },
+        declared_snapping: declared_snapping.clone(),
         sample_position: d.sample_position,
         sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
         interpolation,
@@ -142,5 +146,31 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);
+    if let Some(words) = declared_snapping.filter(|w| !w.ends_with("(agrees)")) {
+        profile.departures.push(words);
+    }
     Ok(profile)
+}
+
+/// A declared snapping against the measured one (`measured`: the bits kept,
+/// `None` when exact or unmeasured; `words`: probe's account): "declares 8
+/// subpixel bits; measured 4", ending "(agrees)" when they agree. Truncation
+/// to whole pixels keeps 0 bits; no snapping keeps all the probe states.
+pub fn against_declared(declared: Snapping, measured: Option<u32>, words: &str) -> String {
+    let exact = measured.is_none() && words.starts_with("exact");
+    let agrees = match declared {
+        Snapping::Bits(bits) => measured == Some(bits) || exact && bits >= PROBE_BITS,
+        Snapping::Truncate => measured == Some(0),
+        Snapping::None => exact,
+    };
+    let measured = match measured {
+        Some(bits) => bits.to_string(),
+        None => words.to_owned(),
+    };
+    let declared = match declared {
+        Snapping::Bits(bits) => format!("{bits} subpixel bits"),
+        other => other.words(),
+    };
+    let verdict = if agrees { " (agrees)" } else { "" };
+    format!("declares {declared}; measured {measured}{verdict}")
 }

@@ -2,20 +2,27 @@
 //! what the exact reference catches that a looser check would not. They are
 //! not candidates for correctness; each documents where it departs from
 //! SPEC.md. Each is declared by `declare.rs`'s `foil!`; `samplers.rs` names
-//! the three that do not sample at the pixel centre.
+//! the three that do not sample at the pixel centre. `coarse_snap.rs` and
+//! `grid_samples.rs` hold conventions they cannot change (4 subpixel bits,
+//! grid sample positions) and declare them, truly or not (SPEC.md §3.2,
+//! §14.2.1).
 
 mod declare;
 
 pub mod any_coverage;
 pub mod area_sampler;
+pub mod coarse_snap;
 pub mod dda;
 pub mod float_edges;
+pub mod grid_samples;
 pub mod offset_sampler;
 pub mod samplers;
 
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
+pub use coarse_snap::{Snap4, Snap4As8};
 pub use dda::{DdaF32, DdaF64};
 pub use float_edges::{FloatF32, FloatF64};
+pub use grid_samples::GridSamples;
 pub use offset_sampler::OffsetSampler;
 pub use samplers::SAMPLER_FOILS;

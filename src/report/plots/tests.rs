@@ -211,6 +211,10 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 judged_fill_rule: None,
                 judged_clip: None,
                 judged_subpixel_bits: None,
+                judged_snapping: None,
+                judged_sample_pattern: None,
+                judged_y: None,
+                judged_pixel_centre: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })
