@@ -10,6 +10,7 @@ use super::profile::{cannot_judge_under, OwnConventions};
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer};
+use crate::reference::{self, TieSet};
 use crate::scene::Scene;
 
 /// How a candidate did on a case.
@@ -111,7 +112,7 @@ pub fn run_candidate(
     // space, its clip conventions, or its subpixel bits) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
-    if own.any() {
+    if own.any() || own.no_tie_rule {
         if let Some(why) = own
             .fill_rule
             .and_then(|rule| cannot_judge_under(scene, rule))
@@ -119,22 +120,41 @@ pub fn run_candidate(
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
         let under = own.restate(scene);
+        // With no tie rule the oracle also gives its tie set (SPEC.md
+        // §3.1.1); its failure is the reference's, as below.
+        let ties = match own.no_tie_rule && reference.plan.motion.is_none() {
+            true => Some(
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    reference::tie_set(&under, &reference.plan)
+                }))
+                .map_err(|panic| pass_on_deadline(panic, "panicked")),
+            ),
+            false => None,
+        };
         // Restating changes rules only, never what the plan reads.
-        let reference = catch_oracle_run(|| run_reference_planned(&under, reference.plan.clone()));
-        let mut run = match reference {
-            Ok(reference) => judge(&under, &reference, frame, name, elapsed),
-            Err(why) => {
+        let restated = match own.any() {
+            true => Some(catch_oracle_run(|| {
+                run_reference_planned(&under, reference.plan.clone())
+            })),
+            false => None,
+        };
+        let mut run = match (restated, ties.transpose()) {
+            (Some(Err(why)), _) | (_, Err(why)) => {
                 let why = format!(
                     "the reference under {} it follows failed: {why}",
                     own.describe()
                 );
                 CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
             }
+            (Some(Ok(restated)), Ok(ties)) => {
+                judge(&under, &restated, frame, name, elapsed, ties.as_ref())
+            }
+            (None, Ok(ties)) => judge(&under, reference, frame, name, elapsed, ties.as_ref()),
         };
         run.judged = own;
         return run;
     }
-    judge(scene, reference, frame, name, elapsed)
+    judge(scene, reference, frame, name, elapsed, None)
 }
 
 /// Judges a candidate's frame against the reference's answer.
@@ -144,6 +164,7 @@ fn judge(
     frame: Frame,
     name: String,
     elapsed: Duration,
+    ties: Option<&TieSet>,
 ) -> CandidateRun {
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
@@ -183,6 +204,7 @@ fn judge(
         whole_time: time.map(|t| t.whole.as_slice()),
         part_areas: part_areas.as_deref(),
         depth_allowed: reference.depth_allowed.as_deref(),
+        ties,
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the

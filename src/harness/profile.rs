@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipRules, DepthMode, FillRule, Primitive, Scene};
+use crate::scene::{ClipRules, DeclaredRule, DepthMode, FillRule, Primitive, Scene};
 
 /// The schema of a profile file, written by `probe` and read here.
 pub const SCHEMA: &str = "rastercheck-profile/1";
@@ -24,7 +24,8 @@ pub const SCHEMA: &str = "rastercheck-profile/1";
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Declared {
     pub rasterizer: String,
-    pub fill_rule: FillRule,
+    /// A fill rule, or `none` (no tie rule, SPEC.md §3.1.1).
+    pub fill_rule: DeclaredRule,
     pub file: String,
 }
 
@@ -62,10 +63,10 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             };
             format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")
         })?;
-    let fill_rule = FillRule::from_name(rule).ok_or_else(|| {
+    let fill_rule = DeclaredRule::from_name(rule).ok_or_else(|| {
         format!(
-            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state ({})",
-            FillRule::ALL.map(|r| r.name()).join(", ")
+            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state, nor none ({})",
+            DeclaredRule::NAMES.join(", ")
         )
     })?;
     Ok(Declared {
@@ -78,6 +79,12 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
 impl Declared {
     /// The line `run` prints about the override.
     pub fn note(&self) -> String {
+        if self.fill_rule == DeclaredRule::NoTieRule {
+            return format!(
+                "profile: {} declares no tie rule (from {}): judged exactly off the ties, its tie samples counted apart",
+                self.rasterizer, self.file
+            );
+        }
         format!(
             "profile: {} is judged under its declared fill rule {} (from {}) instead of each case's",
             self.rasterizer, self.fill_rule, self.file
@@ -130,7 +137,7 @@ pub fn for_run(
 /// §3.1). `fuzz --profile` searches with it.
 pub struct Profiled {
     pub inner: Box<dyn Rasterizer>,
-    pub rule: FillRule,
+    pub rule: DeclaredRule,
 }
 
 impl Rasterizer for Profiled {
@@ -150,7 +157,10 @@ impl Rasterizer for Profiled {
         self.inner.declared()
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        Some(self.rule)
+        self.rule.fill_rule()
+    }
+    fn no_tie_rule(&self) -> bool {
+        self.rule == DeclaredRule::NoTieRule
     }
 }
 
@@ -184,6 +194,9 @@ pub fn cannot_judge_under(scene: &Scene, rule: FillRule) -> Option<String> {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OwnConventions {
     pub fill_rule: Option<FillRule>,
+    /// It declares no tie rule (SPEC.md §3.1.1): judged under the case's
+    /// rule off the ties, which the judge then asks the reference for.
+    pub no_tie_rule: bool,
     pub clip: Option<ClipRules>,
     pub subpixel_bits: Option<u32>,
 }
@@ -229,11 +242,14 @@ impl OwnConventions {
             .filter(|&own| scene.rules.subpixel_bits.is_none_or(|bits| bits > own));
         OwnConventions {
             fill_rule,
+            no_tie_rule: candidate.no_tie_rule(),
             clip,
             subpixel_bits,
         }
     }
 
+    /// Whether the case is restated (the tie set of a rasterizer with no
+    /// tie rule restates nothing).
     pub fn any(&self) -> bool {
         self.fill_rule.is_some() || self.clip.is_some() || self.subpixel_bits.is_some()
     }
@@ -265,6 +281,9 @@ impl OwnConventions {
         let mut words = Vec::new();
         if let Some(rule) = self.fill_rule {
             words.push(format!("the {rule} rule"));
+        }
+        if self.no_tie_rule {
+            words.push("no tie rule".to_owned());
         }
         if let Some(clip) = self.clip {
             words.push(clip.words());

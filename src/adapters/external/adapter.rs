@@ -18,7 +18,7 @@ use crate::deadline;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{FillRule, Scene};
+use crate::scene::{DeclaredRule, FillRule, Scene};
 
 /// A rasterizer that is another program.
 pub struct External {
@@ -124,6 +124,12 @@ impl Rasterizer for External {
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .fill_rule
+            .and_then(DeclaredRule::fill_rule)
+    }
+
+    fn no_tie_rule(&self) -> bool {
+        let answers = self.answers.lock().unwrap_or_else(|e| e.into_inner());
+        answers.fill_rule == Some(DeclaredRule::NoTieRule)
     }
 
     fn declared(&self) -> Option<String> {

@@ -7,7 +7,7 @@
 use serde_json::Value;
 
 use crate::plan::Plan;
-use crate::scene::{FillRule, Interpolation, LineRule, Primitive, Scene};
+use crate::scene::{DeclaredRule, FillRule, Interpolation, LineRule, Primitive, Scene};
 
 /// What a program declared in its hello. A list left out declares nothing
 /// (everything is asked of it); `None` below means "not declared".
@@ -38,7 +38,7 @@ pub struct Hello {
     coverage_bits: Option<u64>,
     /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
-    fill_rule: Option<FillRule>,
+    fill_rule: Option<DeclaredRule>,
 }
 
 /// How a program's answers are shaped, as its hello declares them
@@ -52,8 +52,9 @@ pub struct Answers {
     /// 1/(2^bits − 1), judged per primitive within one such step.
     pub coverage_bits: Option<u32>,
     /// The fill rule it follows whatever the case states
-    /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1).
-    pub fill_rule: Option<FillRule>,
+    /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1),
+    /// or off the ties for `none` (§3.1.1).
+    pub fill_rule: Option<DeclaredRule>,
 }
 
 impl Answers {
@@ -114,10 +115,10 @@ impl Hello {
             out.fill_rule = match conventions.get("fill_rule") {
                 None => None,
                 Some(rule) => {
-                    Some(rule.as_str().and_then(FillRule::from_name).ok_or_else(|| {
+                    Some(rule.as_str().and_then(DeclaredRule::from_name).ok_or_else(|| {
                         format!(
                             "$.hello.conventions.fill_rule is {rule}; known: {}",
-                            FillRule::NAMES.join(", ")
+                            DeclaredRule::NAMES.join(", ")
                         )
                     })?)
                 }

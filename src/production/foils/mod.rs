@@ -2,7 +2,8 @@
 //! what the exact reference catches that a looser check would not. They are
 //! not candidates for correctness; each documents where it departs from
 //! SPEC.md. Each is declared by `declare.rs`'s `foil!`; `samplers.rs` names
-//! the three that do not sample at the pixel centre.
+//! the three that do not sample at the pixel centre; `slope_ties.rs` has a
+//! tie rule that depends on each edge's slope.
 
 mod declare;
 
@@ -12,6 +13,7 @@ pub mod dda;
 pub mod float_edges;
 pub mod offset_sampler;
 pub mod samplers;
+pub mod slope_ties;
 
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
@@ -19,3 +21,4 @@ pub use dda::{DdaF32, DdaF64};
 pub use float_edges::{FloatF32, FloatF64};
 pub use offset_sampler::OffsetSampler;
 pub use samplers::SAMPLER_FOILS;
+pub use slope_ties::SlopeTies;

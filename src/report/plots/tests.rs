@@ -207,6 +207,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 time_ms: 0.0,
                 method: None,
                 judged_fill_rule: None,
+                ties: None,
                 judged_clip: None,
                 judged_subpixel_bits: None,
                 metrics: Some(m),
