@@ -222,6 +222,11 @@ fn judge(
         failures.extend(check.broken_promises.iter().cloned());
     }
     failures.extend(broken_time_oracle);
+    // Where it differs at samples exactly on an edge, the ties are named.
+    if !failures.is_empty() && m.coverage.mismatched() > 0 && ties.is_none() && time.is_none() {
+        let set = reference::tie_set(scene, &reference.plan);
+        failures.extend(metrics::ties::named(&set, &m.coverage.mask));
+    }
     let verdict = if failures.is_empty() {
         Verdict::Pass
     } else {

@@ -6,6 +6,7 @@
 
 use serde::Serialize;
 
+use super::coverage::SampleDiff;
 use crate::frame::Frame;
 use crate::reference::{TieOutcome, TieSet};
 
@@ -26,6 +27,10 @@ pub struct TieMetrics {
     /// Tie samples whose outcome no choice of sides gives (judged as any
     /// other sample, so already among the coverage failures).
     pub not_allowed: u64,
+    /// Tie samples the reference covers under the case's rule: a candidate
+    /// that draws nothing fails (SPEC.md §6.1) only where the reference
+    /// covers more than these.
+    pub reference_covered: u64,
 }
 
 impl TieMetrics {
@@ -83,6 +88,7 @@ pub fn measure(ties: &TieSet, reference: &Frame, candidate: &Frame) -> Option<Ti
             continue;
         }
         m.tie_samples += 1;
+        m.reference_covered += u64::from(reference.coverage[i] > 0);
         let (count, last) = (candidate.coverage[i], candidate.last[i]);
         match tie.outcome(count, last) {
             TieOutcome::Allowed { overdrawn, hole } => {
@@ -95,6 +101,29 @@ pub fn measure(ties: &TieSet, reference: &Frame, candidate: &Frame) -> Option<Ti
         }
     }
     Some(m)
+}
+
+/// For a candidate judged under a tie rule whose coverage differs: how
+/// many of the differing samples are ties (lie exactly on an edge), in a
+/// sentence, or `None` when none is. A rule that differs only there is
+/// another rule, or none (SPEC.md §3.1.1); the sentence says so.
+pub fn named(ties: &TieSet, mask: &[SampleDiff]) -> Option<String> {
+    let differing = mask.iter().filter(|d| **d != SampleDiff::Same).count();
+    let tied = ties
+        .samples
+        .keys()
+        .filter(|&&i| mask.get(i).is_some_and(|d| *d != SampleDiff::Same))
+        .count();
+    (tied > 0).then(|| {
+        let all = if tied == differing {
+            "; it differs only at ties, so it follows another tie rule than it is judged under, or none (a library with no tie rule declares fill_rule \"none\", SPEC.md §3.1.1)"
+        } else {
+            ""
+        };
+        format!(
+            "ties: {tied} of the {differing} differing samples lie exactly on an edge{all}"
+        )
+    })
 }
 
 #[cfg(test)]
@@ -137,6 +166,7 @@ mod tests {
                 overdrawn: 1,
                 holes: 1,
                 not_allowed: 0,
+                reference_covered: 4,
             }
         );
         assert_eq!(
