@@ -63,6 +63,10 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             };
             format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")
         })?;
+    // A probe that found ties going by slope names the nearest rule and
+    // the verdict `inconsistent`: it has no tie rule (SPEC.md §3.1.1).
+    let by_slope = value.get("tie_verdict").and_then(Value::as_str) == Some("inconsistent");
+    let rule = if by_slope { DeclaredRule::NONE } else { rule };
     let fill_rule = DeclaredRule::from_name(rule).ok_or_else(|| {
         format!(
             "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state, nor none ({})",
