@@ -106,9 +106,8 @@ pub fn measure_known(
 ) -> Metrics {
     let (interior, classes) = (known.interior, known.classes);
     let coverage = coverage::compare_off_ties(reference, candidate, known.ties);
-    let watertight = interior.and_then(|inside| {
-        watertight::measure_off_ties(inside, reference, candidate, known.ties)
-    });
+    let watertight = interior
+        .and_then(|inside| watertight::measure_off_ties(inside, reference, candidate, known.ties));
     let ties = known
         .ties
         .and_then(|set| ties::measure(set, reference, candidate));
@@ -134,6 +133,9 @@ pub fn measure_known(
         ),
         parts.as_ref().map(|p| p.slack.as_slice()),
     );
+    if let Some(aa) = &mut antialias {
+        aa.pixel_areas = area::pixel_areas(reference, candidate);
+    }
     if let (Some(aa), Some(p)) = (&mut antialias, parts) {
         aa.nothing_drawn = area::nothing_drawn(candidate, &p.areas);
         aa.primitives = Some(p.metrics);

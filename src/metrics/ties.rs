@@ -36,9 +36,8 @@ pub struct TieMetrics {
 impl TieMetrics {
     /// The console's and the case page's line.
     pub fn line(&self) -> String {
-        let plural = |n: u64, one: &str, many: &str| {
-            format!("{n} {}", if n == 1 { one } else { many })
-        };
+        let plural =
+            |n: u64, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
         let mut line = format!(
             "judged off the ties: {}, {} overdrawn, {}",
             plural(self.tie_samples, "tie sample", "tie samples"),

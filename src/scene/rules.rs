@@ -412,11 +412,20 @@ mod declared_rule_tests {
 
     #[test]
     fn every_fill_rule_word_then_none() {
-        assert_eq!(&DeclaredRule::NAMES[..FillRule::NAMES.len()], &FillRule::NAMES[..]);
+        assert_eq!(
+            &DeclaredRule::NAMES[..FillRule::NAMES.len()],
+            &FillRule::NAMES[..]
+        );
         for name in DeclaredRule::NAMES {
-            assert_eq!(DeclaredRule::from_name(name).map(DeclaredRule::name), Some(name));
+            assert_eq!(
+                DeclaredRule::from_name(name).map(DeclaredRule::name),
+                Some(name)
+            );
         }
-        assert_eq!(DeclaredRule::from_name("none"), Some(DeclaredRule::NoTieRule));
+        assert_eq!(
+            DeclaredRule::from_name("none"),
+            Some(DeclaredRule::NoTieRule)
+        );
         assert_eq!(DeclaredRule::NoTieRule.fill_rule(), None);
     }
 }

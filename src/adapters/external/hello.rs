@@ -114,14 +114,14 @@ impl Hello {
                 .ok_or("$.hello.conventions must be an object")?;
             out.fill_rule = match conventions.get("fill_rule") {
                 None => None,
-                Some(rule) => {
-                    Some(rule.as_str().and_then(DeclaredRule::from_name).ok_or_else(|| {
+                Some(rule) => Some(rule.as_str().and_then(DeclaredRule::from_name).ok_or_else(
+                    || {
                         format!(
                             "$.hello.conventions.fill_rule is {rule}; known: {}",
                             DeclaredRule::NAMES.join(", ")
                         )
-                    })?)
-                }
+                    },
+                )?),
             };
         }
         let Some(caps) = hello.get("capabilities") else {

@@ -113,7 +113,10 @@ impl Diagnosis {
         let rule = match (&self.fill_rule, self.fill_rule_consistent) {
             (None, _) => "tie rule not measured".to_owned(),
             (Some(r), false) if !self.tie_slopes.is_empty() => {
-                format!("tie rule inconsistent ({r} but {})", slope_list(&self.tie_slopes))
+                format!(
+                    "tie rule inconsistent ({r} but {})",
+                    slope_list(&self.tie_slopes)
+                )
             }
             (Some(r), true) => format!("tie rule {r}"),
             (Some(r), false) => format!("tie rule nearest {r}, not consistent"),

@@ -195,7 +195,11 @@ pub(super) fn slope_findings(
             .iter()
             .filter(|e| e.slope.as_deref() == Some(slope))
             .collect();
-        let explains = |k: usize| meshes.iter().all(|e| e.explained[k].samples == e.tie_samples);
+        let explains = |k: usize| {
+            meshes
+                .iter()
+                .all(|e| e.explained[k].samples == e.tie_samples)
+        };
         if explains(k_nearest) {
             continue;
         }

@@ -74,7 +74,11 @@ impl Edge {
 /// states.
 fn edges(scene: &Scene) -> Vec<Edge> {
     let bits = scene.rules.subpixel_bits;
-    let exact = |n: &Number| bits.map_or_else(|| n.clone(), |b| n.snapped(b)).as_rbig().clone();
+    let exact = |n: &Number| {
+        bits.map_or_else(|| n.clone(), |b| n.snapped(b))
+            .as_rbig()
+            .clone()
+    };
     let mut out = Vec::new();
     for p in &scene.primitives {
         let Primitive::Triangle(t) = p else { continue };

@@ -130,6 +130,7 @@ fn aa(samples: u32, rms_edge: f64) -> AntialiasMetrics {
         candidate_pixels: 0,
         primitives: None,
         nothing_drawn: None,
+        pixel_areas: None,
         allowed_error: None,
         allowed_rms: None,
     }
