@@ -302,7 +302,7 @@ fn bad_profiles_are_bad_input() {
         ("not json", "not JSON"),
         (r#"{"schema": "other"}"#, "$.schema"),
         (
-            r#"{"schema": "rastercheck-profile/1", "rasterizer": "production", "fill_rule": "none"}"#,
+            r#"{"schema": "rastercheck-profile/1", "rasterizer": "production", "fill_rule": "nothing"}"#,
             "$.fill_rule",
         ),
     ] {
