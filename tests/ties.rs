@@ -7,7 +7,8 @@ mod common;
 
 use std::path::Path;
 
-use common::{rastercheck, read_json, scratch, text, verdicts};
+use common::cli::{read_json, run_client, scratch, verdicts};
+use common::{rastercheck, text};
 use rastercheck::explore::probe::{self, Profile};
 use rastercheck::registry;
 
@@ -181,7 +182,7 @@ fn a_probes_inconsistent_profile_judges_off_the_ties() {
 #[test]
 fn a_program_declaring_none_in_its_hello_is_judged_off_the_ties() {
     // It follows bottom-right, and says only that it has no tie rule.
-    let (report, shown) = common::run_client(
+    let (report, shown) = run_client(
         "ties-hello",
         "area8.py",
         "lib",

@@ -225,7 +225,9 @@ fn judge(
     // Where it differs at samples exactly on an edge, the ties are named.
     if !failures.is_empty() && m.coverage.mismatched() > 0 && ties.is_none() && time.is_none() {
         let set = reference::tie_set(scene, &reference.plan);
-        failures.extend(metrics::ties::named(&set, &m.coverage.mask));
+        let mask = &m.coverage.mask;
+        let differs = |i: usize| mask[i] != metrics::SampleDiff::Same;
+        failures.extend(metrics::ties::named(&set, mask.len(), differs));
     }
     let verdict = if failures.is_empty() {
         Verdict::Pass

@@ -6,7 +6,6 @@
 
 use serde::Serialize;
 
-use super::coverage::SampleDiff;
 use crate::frame::Frame;
 use crate::reference::{TieOutcome, TieSet};
 
@@ -103,15 +102,16 @@ pub fn measure(ties: &TieSet, reference: &Frame, candidate: &Frame) -> Option<Ti
 }
 
 /// For a candidate judged under a tie rule whose coverage differs: how
-/// many of the differing samples are ties (lie exactly on an edge), in a
+/// many of the differing samples (`differs`, of `slots`) are ties (lie
+/// exactly on an edge), in a
 /// sentence, or `None` when none is. A rule that differs only there is
 /// another rule, or none (SPEC.md §3.1.1); the sentence says so.
-pub fn named(ties: &TieSet, mask: &[SampleDiff]) -> Option<String> {
-    let differing = mask.iter().filter(|d| **d != SampleDiff::Same).count();
+pub fn named(ties: &TieSet, slots: usize, differs: impl Fn(usize) -> bool) -> Option<String> {
+    let differing = (0..slots).filter(|&i| differs(i)).count();
     let tied = ties
         .samples
         .keys()
-        .filter(|&&i| mask.get(i).is_some_and(|d| *d != SampleDiff::Same))
+        .filter(|&&i| i < slots && differs(i))
         .count();
     (tied > 0).then(|| {
         let all = if tied == differing {
@@ -175,5 +175,13 @@ mod tests {
         assert!(forgiven(Some(&ties), &candidate, 2));
         assert!(!forgiven(Some(&ties), &candidate, 4));
         assert!(!forgiven(None, &candidate, 0));
+        let one_of_two = named(&ties, 6, |i| i == 1 || i == 4).expect("slot 1 is a tie");
+        assert!(
+            one_of_two.starts_with("ties: 1 of the 2 differing"),
+            "{one_of_two}"
+        );
+        assert!(named(&ties, 6, |i| i == 4).is_none());
+        let only = named(&ties, 6, |i| i == 1).expect("a tie");
+        assert!(only.contains("differs only at ties"), "{only}");
     }
 }

@@ -54,18 +54,22 @@ impl TieSample {
     pub fn outcome(&self, count: u16, last: u32) -> TieOutcome {
         let most_possible = usize::from(self.inside) + self.on_edge.len();
         let count_ok = count >= self.inside && usize::from(count) <= most_possible;
+        // The chosen edge primitives S, |S| = count − inside, and the owner
+        // is the latest of the inside ones and S.
+        let chosen = usize::from(count.saturating_sub(self.inside));
+        let before = |p: u32| self.on_edge.iter().filter(|&&q| q < p).count();
         let owner_ok = if count == 0 {
             last == 0
-        } else if count == self.inside {
-            last == self.last_inside
+        } else if last == self.last_inside && last > 0 {
+            // S drawn before the last inside primitive.
+            before(self.last_inside) >= chosen
         } else {
-            // At least one edge primitive chosen: the owner is the latest
-            // chosen, which is an edge primitive drawn after every inside one.
-            last == self.last_inside
-                || self
-                    .on_edge
-                    .iter()
-                    .any(|&p| p == last && p > self.last_inside)
+            // S holds `last`, drawn after every inside primitive, and
+            // chosen − 1 others drawn before it.
+            chosen > 0
+                && last > self.last_inside
+                && self.on_edge.contains(&last)
+                && before(last) >= chosen - 1
         };
         if count_ok && owner_ok {
             TieOutcome::Allowed {
