@@ -346,6 +346,15 @@ pub trait Rasterizer: Send + Sync {
         None
     }
 
+    /// Whether this rasterizer declares no tie rule at all (`fill_rule:
+    /// "none"`, SPEC.md §3.1.1): a sample exactly on an edge may go to
+    /// either side. It is judged exactly off the ties, its tie samples
+    /// counted apart. Asked, like [`Rasterizer::fixed_fill_rule`], after it
+    /// has drawn the case.
+    fn no_tie_rule(&self) -> bool {
+        false
+    }
+
     /// The clip-space conventions (`clip_xy`, `clip_z`) this rasterizer
     /// follows whatever a case states, when it cannot follow the case's: a
     /// driver clips as its hardware or its software pipeline does (SPEC.md

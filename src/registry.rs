@@ -12,7 +12,7 @@
 use crate::adapters::external;
 use crate::production::foils::{
     AnyCoverage, AreaSampler, DdaF32, DdaF64, FloatF32, FloatF64, GridSamples, OffsetSampler,
-    Snap4, Snap4As8,
+    SlopeTies, Snap4, Snap4As8,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -177,6 +177,9 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-grid-samples", Kind::Foil, false,
         "production sampling on a k×k grid while declaring the standard positions",
         || boxed(GridSamples)),
+    row("foil-slope-ties", Kind::Foil, false,
+        "production with ties by slope: bottom-right, but top-left on slopes 3, 3/2, -3, -1/3, -2/3",
+        || boxed(SlopeTies)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -456,7 +459,7 @@ mod tests {
             mutant:shrunk mutant:no-perspective mutant:thick-lines \
             mutant:midpoint-for-diamond mutant:shifted-samples mutant:coarse-resolve \
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
-            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu";
+            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

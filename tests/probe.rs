@@ -49,11 +49,17 @@ fn mutants_show_their_tie_rules() {
 
 #[cfg(feature = "tiny-skia")]
 #[test]
-fn tiny_skia_is_bottom_right_on_a_64th_grid() {
+fn tiny_skia_is_bottom_right_on_most_slopes_on_a_64th_grid() {
     let p = probe_of("tiny-skia");
     assert_eq!(p.sampler, SamplerKind::Point);
     assert_eq!(p.fill_rule.as_deref(), Some("bottom-right"));
-    assert!(p.fill_rule_consistent);
+    // Its edges step in fixed point: on slopes ±3/2 and ±3 ties go the
+    // other way (the tie meshes of every slope, SPEC.md §13).
+    assert!(!p.fill_rule_consistent);
+    assert_eq!(p.tie_verdict, "inconsistent");
+    let mut slopes: Vec<&str> = p.tie_slopes.iter().map(|s| s.slope.as_str()).collect();
+    slopes.sort_unstable();
+    assert_eq!(slopes, ["-3", "-3/2", "3", "3/2"]);
     assert_eq!(p.subpixel_bits, Some(6), "{}", p.subpixel);
     assert_eq!(p.y_down, Some(true));
     assert_eq!(p.sample_position, "centre");
@@ -238,7 +244,12 @@ fn run_with_a_profile_judges_tiny_skia_by_its_own_rule() {
         ],
     );
     assert_eq!(judged.status.code(), Some(0), "{}", text(&judged));
-    assert!(text(&judged).contains("declared fill rule bottom-right"));
+    // Its ties go by slope, so the profile declares no tie rule.
+    assert!(
+        text(&judged).contains("declares no tie rule"),
+        "{}",
+        text(&judged)
+    );
     assert!(text(&judged).contains("PASS"), "{}", text(&judged));
     // Without -r, the profile's rasterizer is run; production is untouched
     // when it runs beside it.
@@ -302,7 +313,7 @@ fn bad_profiles_are_bad_input() {
         ("not json", "not JSON"),
         (r#"{"schema": "other"}"#, "$.schema"),
         (
-            r#"{"schema": "rastercheck-profile/1", "rasterizer": "production", "fill_rule": "none"}"#,
+            r#"{"schema": "rastercheck-profile/1", "rasterizer": "production", "fill_rule": "nothing"}"#,
             "$.fill_rule",
         ),
     ] {

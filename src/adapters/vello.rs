@@ -26,7 +26,7 @@ use vello_cpu::peniko::Fill;
 use vello_cpu::{Pixmap, RenderContext, Resources};
 
 use super::float_input::{coverage_only, fill_paths, path_fill_capabilities, to_f64};
-use crate::frame::Frame;
+use crate::frame::{Frame, Parts};
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::Scene;
@@ -53,16 +53,27 @@ impl Rasterizer for VelloCpu {
             ));
         }
         let mut resolved = vec![0.0; scene.canvas.pixel_count()];
+        let mut parts = Vec::new();
         for coverage in area_coverage(scene)? {
-            for (sum, c) in resolved.iter_mut().zip(coverage) {
-                *sum += f64::from(c);
+            for (sum, c) in resolved.iter_mut().zip(&coverage) {
+                *sum += f64::from(*c);
             }
+            parts.push(
+                (0u32..)
+                    .zip(coverage)
+                    .filter(|&(_, c)| c != 0.0)
+                    .map(|(p, c)| (p, f64::from(c)))
+                    .collect(),
+            );
         }
-        Ok(Frame::resolved_only(
-            scene.canvas.width,
-            scene.canvas.height,
-            resolved,
-        ))
+        let mut frame = Frame::resolved_only(scene.canvas.width, scene.canvas.height, resolved);
+        // An area method, judged as one per primitive (SPEC.md §14.4):
+        // its fractions are multiples of 1/255.
+        frame.parts = Some(Parts {
+            coverage: parts,
+            step: 1.0 / 255.0,
+        });
+        Ok(frame)
     }
 }
 

@@ -166,6 +166,10 @@ pub(crate) fn print_outcome(
             result.rasterizer,
             judge::describe(result)
         );
+        // No tie rule (SPEC.md §3.1.1): its ties counted apart, never hidden.
+        if let Some(ties) = result.metrics.as_ref().and_then(|m| m.ties.as_ref()) {
+            outln!("        {}", ties.line());
+        }
         if let Verdict::Fail(reasons) = &result.verdict {
             for reason in reasons {
                 outln!("        {reason}");

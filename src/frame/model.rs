@@ -46,6 +46,11 @@ pub struct Frame {
     /// gives it (an external program answering `coverage`, SPEC.md §12.9):
     /// judged primitive by primitive against the exact areas (§14.3).
     pub parts: Option<Parts>,
+    /// An area method that gives no coverage per primitive (`area-f32`,
+    /// `vello-cpu`): its resolved value claims each pixel's exact area
+    /// within this step, 0 for the default step (SPEC.md §14.4). `None`
+    /// for a sample method, resolved or not, and a frame that gives parts.
+    pub area_step: Option<f64>,
     /// The rasterizer answers coverage only: whatever the plan asks, the
     /// frame has no depth and no attributes, and they are not judged
     /// (SPEC.md §12.9).
@@ -126,6 +131,7 @@ impl Frame {
             sample_tests: None,
             method: None,
             parts: None,
+            area_step: None,
             coverage_only: false,
         }
     }

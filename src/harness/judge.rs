@@ -11,6 +11,7 @@ use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
+use crate::reference::{self, TieSet};
 use crate::scene::Scene;
 
 /// How a candidate did on a case.
@@ -118,7 +119,7 @@ pub fn run_candidate(
     // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
-    if own.any() {
+    if own.any() || own.no_tie_rule {
         if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
@@ -131,24 +132,41 @@ pub fn run_candidate(
         } else {
             reference.plan.clone()
         };
-        let reference = catch_oracle_run(|| run_reference_planned(&under, plan));
-        let mut run = match reference {
-            Ok(reference) => {
-                let under = bounds_met_by(under, &reference);
-                judge(&under, &reference, frame, name, elapsed)
-            }
-            Err(why) => {
+        // With no tie rule the oracle also gives its tie set (SPEC.md
+        // §3.1.1); its failure is the reference's, as below.
+        let ties = match own.no_tie_rule && plan.motion.is_none() {
+            true => Some(
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    reference::tie_set(&under, &plan)
+                }))
+                .map_err(|panic| pass_on_deadline(panic, "panicked")),
+            ),
+            false => None,
+        };
+        let restated = match own.any() {
+            true => Some(catch_oracle_run(|| {
+                run_reference_planned(&under, plan.clone())
+            })),
+            false => None,
+        };
+        let mut run = match (restated, ties.transpose()) {
+            (Some(Err(why)), _) | (_, Err(why)) => {
                 let why = format!(
                     "the reference under {} it follows failed: {why}",
                     own.describe()
                 );
                 CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
             }
+            (Some(Ok(restated)), Ok(ties)) => {
+                let under = bounds_met_by(under, &restated);
+                judge(&under, &restated, frame, name, elapsed, ties.as_ref())
+            }
+            (None, Ok(ties)) => judge(&under, reference, frame, name, elapsed, ties.as_ref()),
         };
         run.judged = own;
         return run;
     }
-    judge(scene, reference, frame, name, elapsed)
+    judge(scene, reference, frame, name, elapsed, None)
 }
 
 /// The restated case with its antialiasing bounds (`max_coverage_error`,
@@ -173,6 +191,7 @@ fn bounds_met_by(mut under: Scene, reference: &ReferenceRun) -> Scene {
         whole_time: None,
         part_areas: None,
         depth_allowed: reference.depth_allowed.as_deref(),
+        ties: None,
     };
     // The exact mask, box-resolved: what a rasterizer exact at these
     // conventions resolves (the reference's own resolved value is the
@@ -212,6 +231,7 @@ fn judge(
     frame: Frame,
     name: String,
     elapsed: Duration,
+    ties: Option<&TieSet>,
 ) -> CandidateRun {
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
@@ -251,6 +271,7 @@ fn judge(
         whole_time: time.map(|t| t.whole.as_slice()),
         part_areas: part_areas.as_deref(),
         depth_allowed: reference.depth_allowed.as_deref(),
+        ties,
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the
@@ -268,6 +289,13 @@ fn judge(
         failures.extend(check.broken_promises.iter().cloned());
     }
     failures.extend(broken_time_oracle);
+    // Where it differs at samples exactly on an edge, the ties are named.
+    if !failures.is_empty() && m.coverage.mismatched() > 0 && ties.is_none() && time.is_none() {
+        let set = reference::tie_set(scene, &reference.plan);
+        let mask = &m.coverage.mask;
+        let differs = |i: usize| mask[i] != metrics::SampleDiff::Same;
+        failures.extend(metrics::ties::named(&set, mask.len(), differs));
+    }
     let verdict = if failures.is_empty() {
         Verdict::Pass
     } else {

@@ -18,7 +18,7 @@ use crate::rasterizer::{
     Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
 };
 use crate::scene::{
-    ClipRules, Cull, DepthMode, FillRule, LineRule, Number, Pattern, Primitive, Scene,
+    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineRule, Number, Pattern, Primitive, Scene,
 };
 
 /// The schema of a profile file, written by `probe` and read here.
@@ -28,7 +28,8 @@ pub const SCHEMA: &str = "rastercheck-profile/1";
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Declared {
     pub rasterizer: String,
-    pub fill_rule: FillRule,
+    /// A fill rule, or `none` (no tie rule, SPEC.md §3.1.1).
+    pub fill_rule: DeclaredRule,
     /// Its optional `conventions`: snapping, sample positions, y direction,
     /// pixel centre (SPEC.md §13), declared by hand; `probe` writes none.
     pub conventions: Declaration,
@@ -69,10 +70,14 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
             };
             format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")
         })?;
-    let fill_rule = FillRule::from_name(rule).ok_or_else(|| {
+    // A probe that found ties going by slope names the nearest rule and
+    // the verdict `inconsistent`: it has no tie rule (SPEC.md §3.1.1).
+    let by_slope = value.get("tie_verdict").and_then(Value::as_str) == Some("inconsistent");
+    let rule = if by_slope { DeclaredRule::NONE } else { rule };
+    let fill_rule = DeclaredRule::from_name(rule).ok_or_else(|| {
         format!(
-            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state ({})",
-            FillRule::ALL.map(|r| r.name()).join(", ")
+            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state, nor none ({})",
+            DeclaredRule::NAMES.join(", ")
         )
     })?;
     let conventions = match value.get("conventions") {
@@ -102,6 +107,12 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
 impl Declared {
     /// The line `run` prints about the override.
     pub fn note(&self) -> String {
+        if self.fill_rule == DeclaredRule::NoTieRule {
+            return format!(
+                "profile: {} declares no tie rule (from {}): judged exactly off the ties, its tie samples counted apart",
+                self.rasterizer, self.file
+            );
+        }
         let c = &self.conventions;
         let mut more = Vec::new();
         if let Some(snapping) = c.snapping {
@@ -173,7 +184,7 @@ pub fn for_run(
 /// §3.1). `fuzz --profile` searches with it.
 pub struct Profiled {
     pub inner: Box<dyn Rasterizer>,
-    pub rule: FillRule,
+    pub rule: DeclaredRule,
     /// The profile's other conventions; each one it leaves out is the
     /// rasterizer's own declaration, if any.
     pub conventions: Declaration,
@@ -199,7 +210,10 @@ impl Rasterizer for Profiled {
         self.inner.api_record()
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        Some(self.rule)
+        self.rule.fill_rule()
+    }
+    fn no_tie_rule(&self) -> bool {
+        self.rule == DeclaredRule::NoTieRule
     }
     fn fixed_subpixel_bits(&self) -> Option<u32> {
         match self.conventions.snapping {
@@ -276,6 +290,9 @@ pub struct OwnConventions {
     /// The fill rule judged, in SPEC's y-down terms (a y-up rasterizer's
     /// own words mirrored).
     pub fill_rule: Option<FillRule>,
+    /// It declares no tie rule (SPEC.md §3.1.1): judged under the case's
+    /// rule off the ties, which the judge then asks the reference for.
+    pub no_tie_rule: bool,
     pub clip: Option<ClipRules>,
     /// Its own subpixel bits ([`Snapping::Bits`]).
     pub subpixel_bits: Option<u32>,
@@ -350,6 +367,7 @@ impl OwnConventions {
         };
         OwnConventions {
             fill_rule,
+            no_tie_rule: candidate.no_tie_rule(),
             clip,
             subpixel_bits,
             snapping,
@@ -359,6 +377,8 @@ impl OwnConventions {
         }
     }
 
+    /// Whether the case is restated (the tie set of a rasterizer with no
+    /// tie rule restates nothing).
     pub fn any(&self) -> bool {
         self.fill_rule.is_some()
             || self.clip.is_some()
@@ -480,6 +500,9 @@ impl OwnConventions {
         let mut words = Vec::new();
         if let Some(rule) = self.fill_rule {
             words.push(format!("the {rule} rule"));
+        }
+        if self.no_tie_rule {
+            words.push("no tie rule".to_owned());
         }
         if let Some(clip) = self.clip {
             words.push(clip.words());

@@ -24,7 +24,7 @@
 
 use serde::Serialize;
 
-use super::area::NothingDrawn;
+use super::area::{NothingDrawn, PixelAreas};
 use super::error_bounds::{within, ErrorBounds};
 use super::parts::PartMetrics;
 use crate::frame::Frame;
@@ -120,6 +120,10 @@ pub struct AntialiasMetrics {
     /// exceeds one step (`area.rs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nothing_drawn: Option<NothingDrawn>,
+    /// An area method without coverage per primitive: each pixel's total
+    /// against its exact area, within one step (`area.rs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pixel_areas: Option<PixelAreas>,
 }
 
 fn is_zero(n: &u64) -> bool {
@@ -221,6 +225,7 @@ pub fn measure_with_slack(
         allowed_rms: bounds.1,
         primitives: None,
         nothing_drawn: None,
+        pixel_areas: None,
     };
     let (mut sum_sq_edge, mut sum_sq_all, mut sum_edge) = (0f64, 0f64, 0f64);
     let errors = signed_errors(reference, candidate);
@@ -325,6 +330,9 @@ pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
     }
     if let Some(nothing) = &m.nothing_drawn {
         out.push(super::area::failure(nothing));
+    }
+    if let Some(pixels) = &m.pixel_areas {
+        out.extend(super::area::pixel_failures(pixels));
     }
     if let Some(parts) = &m.primitives {
         out.extend(super::parts::failures(parts));

@@ -15,9 +15,15 @@
 //! stays passable by an empty answer: that answer is within the step
 //! everywhere.
 //!
-//! A frame without samples and without parts (production's `area-f32`,
-//! `adaptive-resolve`, the library adapters) is not told apart here from
-//! a sample method resolved without its mask: `adaptive-resolve` is one.
+//! An area method that gives no coverage per primitive says so in its
+//! frame ([`Frame::area_step`]: `area-f32`, `vello-cpu`): each pixel's
+//! resolved value, the total of its primitives' areas, is held to the
+//! reference's exact area of the pixel within one step, and drawing
+//! nothing where a pixel's exact area exceeds one step fails the same way
+//! ([`PixelAreas`]). A frame without samples that says neither
+//! (`adaptive-resolve`, the box resolve of N samples without its mask;
+//! `tiny-skia`, whose antialiasing is 4 sub-scanlines per pixel) is a
+//! sample method and keeps the sample bounds.
 
 use serde::Serialize;
 
@@ -35,9 +41,90 @@ pub const FLOAT_SLACK: f64 = 1e-9;
 pub const DEFAULT_STEP: f64 = 1.0 / 256.0;
 
 /// Whether a frame is an area method's answer, judged as such: no samples,
-/// and coverage per primitive.
+/// and coverage per primitive or a claimed step per pixel
+/// ([`Frame::area_step`]).
 pub fn is_area_answer(frame: &Frame) -> bool {
-    frame.samples == 0 && frame.parts.is_some()
+    frame.samples == 0 && (frame.parts.is_some() || frame.area_step.is_some())
+}
+
+/// An area method without coverage per primitive, each pixel's total held
+/// to the pixel's exact area within one step: `report.json`'s
+/// `metrics.antialias.pixel_areas`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelAreas {
+    /// The step claimed; 0 for none (the default applies).
+    pub step: f64,
+    /// Pixels judged, and those whose total is more than one step off.
+    pub pixels: u64,
+    pub over_step: u64,
+    /// The largest |total − exact area|, and where (x, y).
+    pub max_error: f64,
+    pub worst_pixel: [u32; 2],
+    /// It drew nothing, while this many pixels' exact area exceeds one
+    /// step (0 when it drew something, or when none does).
+    pub nothing_drawn_over_step: u64,
+}
+
+/// [`PixelAreas`] of `candidate` against the reference's exact area per
+/// pixel (its resolved value, the exact area rounded once); `None` unless
+/// the candidate claims a step per pixel and both have resolved coverage
+/// of the canvas's size.
+pub fn pixel_areas(reference: &Frame, candidate: &Frame) -> Option<PixelAreas> {
+    let step = candidate.area_step.filter(|_| candidate.parts.is_none())?;
+    let (exact, total) = (reference.resolved.as_ref()?, candidate.resolved.as_ref()?);
+    if exact.len() != total.len() || exact.len() != candidate.pixel_count() {
+        return None;
+    }
+    let bound = if step > 0.0 { step } else { DEFAULT_STEP } + FLOAT_SLACK;
+    let width = candidate.width.max(1) as usize;
+    let mut m = PixelAreas {
+        step,
+        pixels: exact.len() as u64,
+        over_step: 0,
+        max_error: 0.0,
+        worst_pixel: [0, 0],
+        nothing_drawn_over_step: 0,
+    };
+    for (p, (&e, &t)) in exact.iter().zip(total).enumerate() {
+        // A value that is not a number is off by more than any step.
+        let error = if t.is_finite() {
+            (t - e).abs()
+        } else {
+            f64::INFINITY
+        };
+        if error > m.max_error {
+            m.max_error = error;
+            m.worst_pixel = [(p % width) as u32, (p / width) as u32];
+        }
+        m.over_step += u64::from(error > bound);
+    }
+    if total.iter().all(|&t| t == 0.0) {
+        m.nothing_drawn_over_step = exact.iter().filter(|&&e| e > bound).count() as u64;
+    }
+    Some(m)
+}
+
+/// Why a [`PixelAreas`] fails a case; empty when it passes.
+pub fn pixel_failures(m: &PixelAreas) -> Vec<String> {
+    let step = if m.step > 0.0 { m.step } else { DEFAULT_STEP };
+    let mut out = Vec::new();
+    if m.nothing_drawn_over_step > 0 {
+        out.push(format!(
+            "antialias: drew nothing where the exact area of {} pixels exceeds {step:.3e} ({}) (SPEC.md §6.1)",
+            m.nothing_drawn_over_step,
+            whose_step(m.step)
+        ));
+    } else if m.over_step > 0 {
+        let [x, y] = m.worst_pixel;
+        out.push(format!(
+            "antialias: {} of {} pixels are more than {step:.3e} ({}) from their exact area; the largest error, {:.3e}, is at ({x}, {y}) (SPEC.md §14.4)",
+            m.over_step,
+            m.pixels,
+            whose_step(m.step),
+            m.max_error
+        ));
+    }
+    out
 }
 
 /// The step a primitive's coverage is held to: the declared one, else the
@@ -164,5 +251,32 @@ mod tests {
         );
         let bare = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
         assert_eq!(nothing_drawn(&bare, &seen(1, 0.5)), None);
+    }
+
+    #[test]
+    fn an_area_method_without_parts_is_held_to_each_pixel_area() {
+        let reference = Frame::resolved_only(2, 1, vec![0.5, 0.003]);
+        let mut close = Frame::resolved_only(2, 1, vec![0.5 + 1.0 / 512.0, 0.0]);
+        // Unclaimed: a resolved sample method, not judged here.
+        assert_eq!(pixel_areas(&reference, &close), None);
+        close.area_step = Some(0.0);
+        let m = pixel_areas(&reference, &close).unwrap();
+        assert_eq!((m.over_step, m.nothing_drawn_over_step), (0, 0));
+        assert!(pixel_failures(&m).is_empty());
+        let mut far = Frame::resolved_only(2, 1, vec![0.45, 0.003]);
+        far.area_step = Some(0.0);
+        let m = pixel_areas(&reference, &far).unwrap();
+        assert_eq!((m.over_step, m.worst_pixel), (1, [0, 0]));
+        assert!(pixel_failures(&m)[0].contains("default step 2^-8"));
+        let mut nothing = Frame::resolved_only(2, 1, vec![0.0, 0.0]);
+        nothing.area_step = Some(0.0);
+        let m = pixel_areas(&reference, &nothing).unwrap();
+        // 0.5 is over one step, 0.003 is not.
+        assert_eq!(m.nothing_drawn_over_step, 1);
+        assert!(pixel_failures(&m)[0].contains("drew nothing"));
+        // Where no pixel's area exceeds a step, nothing is within it.
+        let tiny = Frame::resolved_only(2, 1, vec![0.003, 0.0]);
+        let m = pixel_areas(&tiny, &nothing).unwrap();
+        assert!(pixel_failures(&m).is_empty());
     }
 }

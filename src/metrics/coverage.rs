@@ -4,7 +4,9 @@
 //! `samples` = 0), or one whose slots do not line up with the reference's,
 //! has no samples to compare: `samples` is then 0 and the mask empty.
 
+use super::ties::forgiven;
 use crate::frame::Frame;
+use crate::reference::TieSet;
 
 /// How one sample of a candidate differs from the reference.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,6 +57,17 @@ pub fn comparable(reference: &Frame, candidate: &Frame) -> bool {
 }
 
 pub fn compare(reference: &Frame, candidate: &Frame) -> CoverageMetrics {
+    compare_off_ties(reference, candidate, None)
+}
+
+/// [`compare`], for a candidate with no tie rule judged off `ties`: a tie
+/// sample whose outcome a choice of sides gives is the same (it is counted
+/// apart, `ties.rs`).
+pub fn compare_off_ties(
+    reference: &Frame,
+    candidate: &Frame,
+    ties: Option<&TieSet>,
+) -> CoverageMetrics {
     let mut m = CoverageMetrics {
         samples: reference.sample_count() as u64,
         reference_covered: reference.covered_samples(),
@@ -70,7 +83,9 @@ pub fn compare(reference: &Frame, candidate: &Frame) -> CoverageMetrics {
     }
     for i in 0..reference.sample_count() {
         let (r, c) = (reference.coverage[i], candidate.coverage[i]);
-        let diff = if c < r {
+        let diff = if forgiven(ties, candidate, i) {
+            SampleDiff::Same
+        } else if c < r {
             m.missing += 1;
             SampleDiff::Missing
         } else if c > r {

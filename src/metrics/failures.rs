@@ -21,7 +21,10 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
             expect.max_mismatched_samples
         ));
     }
-    if c.has_mask() && c.reference_covered > 0 && c.candidate_covered == 0 {
+    // With no tie rule (SPEC.md §3.1.1), drawing nothing is a choice of
+    // sides where the reference covers only tie samples.
+    let tied = m.ties.as_ref().map_or(0, |t| t.reference_covered);
+    if c.has_mask() && c.reference_covered > tied && c.candidate_covered == 0 {
         out.push(
             "coverage: the candidate drew nothing where the reference draws something".to_owned(),
         );

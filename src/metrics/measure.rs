@@ -8,9 +8,11 @@ use super::depth;
 use super::interpolation::{self, ChannelError};
 use super::line::{self, LineMetrics};
 use super::parts;
+use super::ties::{self, TieMetrics};
 use super::time::{self, TimeMetrics};
 use super::watertight::{self, WatertightMetrics};
 use crate::frame::Frame;
+use crate::reference::TieSet;
 use crate::scene::{DepthFormat, Number, Scene};
 
 /// The default interpolation bound, relative to the channel's largest vertex
@@ -32,6 +34,9 @@ pub struct Metrics {
     /// time coverage (SPEC.md §15.4). Such frames have no samples, so this
     /// is then the only metric with anything in it.
     pub time: Option<TimeMetrics>,
+    /// A candidate with no tie rule (SPEC.md §3.1.1): its tie samples,
+    /// and the overdraw and holes they got, counted apart.
+    pub ties: Option<TieMetrics>,
 }
 
 /// What the oracle knows exactly beyond the reference's frame, for the
@@ -53,6 +58,9 @@ pub struct Known<'a> {
     /// a depth format (`reference::render_judged`): required for such a
     /// scene (the metrics never draw the reference themselves).
     pub depth_allowed: Option<&'a [[f64; 2]]>,
+    /// The samples exactly on an edge, for a candidate that declares no
+    /// tie rule (`reference::tie_set`): judged off them.
+    pub ties: Option<&'a TieSet>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -97,8 +105,12 @@ pub fn measure_known(
     known: &Known,
 ) -> Metrics {
     let (interior, classes) = (known.interior, known.classes);
-    let coverage = coverage::compare(reference, candidate);
-    let watertight = interior.and_then(|inside| watertight::measure(inside, reference, candidate));
+    let coverage = coverage::compare_off_ties(reference, candidate, known.ties);
+    let watertight = interior
+        .and_then(|inside| watertight::measure_off_ties(inside, reference, candidate, known.ties));
+    let ties = known
+        .ties
+        .and_then(|set| ties::measure(set, reference, candidate));
     let time = time::measure(reference, candidate, known.whole_time, time::bounds(scene));
     let parts = match (&candidate.parts, known.part_areas) {
         (Some(given), Some(exact)) => Some(parts::measure(
@@ -121,6 +133,9 @@ pub fn measure_known(
         ),
         parts.as_ref().map(|p| p.slack.as_slice()),
     );
+    if let Some(aa) = &mut antialias {
+        aa.pixel_areas = area::pixel_areas(reference, candidate);
+    }
     if let (Some(aa), Some(p)) = (&mut antialias, parts) {
         aa.nothing_drawn = area::nothing_drawn(candidate, &p.areas);
         aa.primitives = Some(p.metrics);
@@ -134,6 +149,7 @@ pub fn measure_known(
             channels,
             antialias,
             time,
+            ties,
         };
     }
     let expect = &scene.expect;
@@ -192,6 +208,7 @@ pub fn measure_known(
         channels,
         antialias,
         time,
+        ties,
     }
 }
 

@@ -4,7 +4,8 @@
 //! `measure.rs` measures a candidate with every metric that applies
 //! (`coverage.rs`, `watertight.rs`, `line.rs`, `interpolation.rs` and
 //! `depth.rs`, `antialias.rs` and `parts.rs` (an area method judged as one:
-//! `area.rs`), `time.rs`; the per-pixel ones
+//! `area.rs`), `time.rs`, `ties.rs` (a candidate with no tie rule judged off
+//! the ties); the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
 //! candidate fails.
@@ -20,6 +21,7 @@ pub mod interpolation;
 pub mod line;
 pub mod measure;
 pub mod parts;
+pub mod ties;
 pub mod time;
 pub mod watertight;
 
@@ -31,5 +33,6 @@ pub use line::LineMetrics;
 pub use measure::{
     measure, measure_known, measure_with_areas, Known, Metrics, DEFAULT_RELATIVE_BOUND,
 };
+pub use ties::TieMetrics;
 pub use time::TimeMetrics;
 pub use watertight::WatertightMetrics;

@@ -1,6 +1,8 @@
 //! Watertightness of a mesh: no hole inside it, no sample covered twice.
 
+use super::ties::forgiven;
 use crate::frame::Frame;
+use crate::reference::TieSet;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct WatertightMetrics {
@@ -26,6 +28,18 @@ pub fn measure(
     reference: &Frame,
     candidate: &Frame,
 ) -> Option<WatertightMetrics> {
+    measure_off_ties(interior, reference, candidate, None)
+}
+
+/// [`measure`], for a candidate with no tie rule: the holes and overdraw
+/// a choice of sides gives at a tie sample are counted with the ties
+/// (`ties.rs`), not here.
+pub fn measure_off_ties(
+    interior: &[bool],
+    reference: &Frame,
+    candidate: &Frame,
+    ties: Option<&TieSet>,
+) -> Option<WatertightMetrics> {
     if candidate.samples == 0
         || interior.len() != candidate.sample_count()
         || interior.len() != reference.sample_count()
@@ -40,6 +54,9 @@ pub fn measure(
     for (i, &inside) in interior.iter().enumerate() {
         let c = candidate.coverage[i];
         m.interior += u64::from(inside);
+        if forgiven(ties, candidate, i) {
+            continue;
+        }
         m.holes += u64::from(inside && c == 0);
         m.overdraw += u64::from(c > 1 && reference.coverage[i] <= 1);
     }

@@ -14,7 +14,8 @@
 //! when the plan antialiases.
 //!
 //! `visit.rs` is that traversal; `render.rs` writes the exact frame from
-//! it, `coverage.rs` counts coverage under any rule and the mesh interior;
+//! it, `coverage.rs` counts coverage under any rule and the mesh interior,
+//! `ties.rs` the samples exactly on an edge (for a rasterizer with no tie rule);
 //! `rasterizer.rs` is the reference behind the one trait.
 
 pub mod area;
@@ -29,6 +30,7 @@ pub mod point;
 pub mod polygon;
 pub mod rasterizer;
 pub mod render;
+pub mod ties;
 pub mod triangle;
 pub mod values;
 mod visit;
@@ -37,4 +39,5 @@ pub use area::{exact_areas, primitive_area, primitive_pixel_areas};
 pub use coverage::{coverage_under, mesh_interior};
 pub use rasterizer::Reference;
 pub use render::{depth_allowed, render, render_judged, render_with};
+pub use ties::{tie_set, TieOutcome, TieSample, TieSet};
 pub use visit::Arithmetic;

@@ -11,10 +11,11 @@ use crate::harness::golden::GoldenStatus;
 use crate::harness::judge::Verdict;
 use crate::harness::runner::{CaseOutcome, Problem, Tally};
 use crate::metrics::antialias::AntialiasMetrics;
+use crate::metrics::ties::TieMetrics;
 use crate::metrics::time::TimeMetrics;
 use crate::metrics::Metrics;
 use crate::rasterizer::Snapping;
-use crate::scene::{ClipRules, Scene};
+use crate::scene::{ClipRules, DeclaredRule, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
@@ -253,9 +254,14 @@ pub struct ResultEntry {
     pub method: Option<&'static str>,
     /// The fill rule it was judged under, when that is its own and not the
     /// case's (`rules.fill_rule`): a rasterizer that cannot follow the
-    /// case's rule, or a profile's.
+    /// case's rule, or a profile's; `none` for one that declares no tie
+    /// rule (SPEC.md §3.1.1), judged off the ties.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub judged_fill_rule: Option<&'static str>,
+    /// With no tie rule: its tie samples, and the overdraw and holes they
+    /// got, counted apart (never a failure).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ties: Option<TieMetrics>,
     /// The clip conventions it was judged under, when they are its own and
     /// not the case's (`rules.clip`, SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -499,7 +505,11 @@ impl CaseEntry {
                 },
                 time_ms: millis(run.elapsed),
                 method: run.method,
-                judged_fill_rule: run.judged.fill_rule.map(|r| r.name()),
+                judged_fill_rule: match run.judged.no_tie_rule {
+                    true => Some(DeclaredRule::NONE),
+                    false => run.judged.fill_rule.map(|r| r.name()),
+                },
+                ties: run.metrics.as_ref().and_then(|m| m.ties.clone()),
                 judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
                 judged_subpixel_bits: run.judged.subpixel_bits,
                 judged_snapping: run.judged.snapping.map(|s| match s {

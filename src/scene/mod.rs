@@ -36,7 +36,7 @@ pub use model::{Canvas, Effects, Scene};
 pub use number::Number;
 pub use primitive::{Line, Point, Polygon, Primitive, Triangle, Vertex};
 pub use rules::{
-    Cull, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
+    Cull, DeclaredRule, FillRule, Interpolation, LastPixel, LineParameter, LineRule, PolygonFill,
     ProvokingVertex, Rules,
 };
 pub use samples::{Antialias, Pattern};

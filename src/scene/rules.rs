@@ -91,6 +91,65 @@ impl FillRule {
     }
 }
 
+/// The tie rule a rasterizer declares it follows whatever a case states
+/// (a program's `conventions.fill_rule`, a profile's `fill_rule`): one of
+/// the fill rules, or `none`, no consistent rule at all (SPEC.md §3.1.1).
+///
+/// `none` is a declaration, not a rule a case can state: a sample exactly
+/// on an edge may go to either side, so the reference decides no tie for
+/// such a rasterizer; it is judged exactly everywhere else, and its ties
+/// are counted apart.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DeclaredRule {
+    Fill(FillRule),
+    /// No consistent tie rule (libraries whose ties go by slope, or by
+    /// float rounding of an exact zero).
+    NoTieRule,
+}
+
+impl DeclaredRule {
+    /// The word for [`DeclaredRule::NoTieRule`].
+    pub const NONE: &'static str = "none";
+
+    /// Every word a declaration may use: the fill rules', then `none`.
+    pub const NAMES: [&'static str; FillRule::NAMES.len() + 1] = [
+        "top-left",
+        "bottom-right",
+        "top-right",
+        "bottom-left",
+        "all-edges",
+        DeclaredRule::NONE,
+    ];
+
+    pub fn from_name(name: &str) -> Option<DeclaredRule> {
+        if name == DeclaredRule::NONE {
+            return Some(DeclaredRule::NoTieRule);
+        }
+        FillRule::from_name(name).map(DeclaredRule::Fill)
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            DeclaredRule::Fill(rule) => rule.name(),
+            DeclaredRule::NoTieRule => DeclaredRule::NONE,
+        }
+    }
+
+    /// The fill rule it names; `None` for `none`.
+    pub fn fill_rule(self) -> Option<FillRule> {
+        match self {
+            DeclaredRule::Fill(rule) => Some(rule),
+            DeclaredRule::NoTieRule => None,
+        }
+    }
+}
+
+impl fmt::Display for DeclaredRule {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 impl fmt::Display for FillRule {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -345,4 +404,28 @@ pub mod limits {
     pub const MAX_POLYGON_VERTICES: usize = 4096;
 
     const _: () = assert!(MAX_CANVAS_SIDE as i64 <= COORD_LIMIT);
+}
+
+#[cfg(test)]
+mod declared_rule_tests {
+    use super::{DeclaredRule, FillRule};
+
+    #[test]
+    fn every_fill_rule_word_then_none() {
+        assert_eq!(
+            &DeclaredRule::NAMES[..FillRule::NAMES.len()],
+            &FillRule::NAMES[..]
+        );
+        for name in DeclaredRule::NAMES {
+            assert_eq!(
+                DeclaredRule::from_name(name).map(DeclaredRule::name),
+                Some(name)
+            );
+        }
+        assert_eq!(
+            DeclaredRule::from_name("none"),
+            Some(DeclaredRule::NoTieRule)
+        );
+        assert_eq!(DeclaredRule::NoTieRule.fill_rule(), None);
+    }
 }

@@ -20,7 +20,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection};
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, DeclaredRule, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
 };
 
 /// A rasterizer that is another program.
@@ -135,6 +135,12 @@ impl Rasterizer for External {
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .fill_rule
+            .and_then(DeclaredRule::fill_rule)
+    }
+
+    fn no_tie_rule(&self) -> bool {
+        let answers = self.answers.lock().unwrap_or_else(|e| e.into_inner());
+        answers.fill_rule == Some(DeclaredRule::NoTieRule)
     }
 
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {

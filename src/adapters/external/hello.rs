@@ -14,8 +14,8 @@ use crate::scene::case::{closest, edit_distance};
 use crate::plan::Plan;
 use crate::rasterizer::Declaration;
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, Interpolation, LineRule, Pattern, PointBounds,
-    PointClip, PolygonFill, Primitive, Scene,
+    ClipXy, ClipZ, DeclaredRule, FillRule, InterpolateFrom, Interpolation, LineRule, Pattern,
+    PointBounds, PointClip, PolygonFill, Primitive, Scene,
 };
 
 use super::space::{Declared3d, FixedClip, DEPTH_FORMATS};
@@ -54,7 +54,7 @@ pub struct Hello {
     declaration: Declaration,
     /// Declared conventions, kept as written; `fill_rule` is judged.
     pub conventions: Option<Value>,
-    fill_rule: Option<FillRule>,
+    fill_rule: Option<DeclaredRule>,
     /// Clip space, points, depth formats and polygon offset, and the clip
     /// conventions it follows (SPEC.md §12.10): `space.rs`.
     three_d: Declared3d,
@@ -71,8 +71,9 @@ pub struct Answers {
     /// 1/(2^bits − 1), judged per primitive within one such step.
     pub coverage_bits: Option<u32>,
     /// The fill rule it follows whatever the case states
-    /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1).
-    pub fill_rule: Option<FillRule>,
+    /// (`conventions.fill_rule`): cases are judged under it (SPEC.md §3.1),
+    /// or off the ties for `none` (§3.1.1).
+    pub fill_rule: Option<DeclaredRule>,
     /// The clip conventions it follows whatever the case states
     /// (SPEC.md §12.10): cases are judged under them (§16.9).
     pub clip: FixedClip,
@@ -177,7 +178,7 @@ const KEYS: &[(&str, &str, Kind)] = &[
         "coverage_bits",
         Kind::Count(1, MAX_COVERAGE_BITS),
     ),
-    ("conventions", "fill_rule", Kind::Word(&FillRule::NAMES)),
+    ("conventions", "fill_rule", Kind::Word(&DeclaredRule::NAMES)),
     // Clip space, points, depth formats and polygon offset (§12.10,
     // space.rs).
     ("capabilities", "clip_space", Kind::Flag),
@@ -469,7 +470,7 @@ impl Hello {
             fill_rule: conventions
                 .and_then(|c| c.get("fill_rule"))
                 .and_then(Value::as_str)
-                .and_then(FillRule::from_name),
+                .and_then(DeclaredRule::from_name),
             coverage_fraction: cap("coverage_encoding").and_then(Value::as_str) == Some("fraction"),
             declaration,
             conventions: conventions.cloned(),
@@ -533,7 +534,7 @@ impl Hello {
         if let Some(why) = self.three_d.refuses(scene, &who) {
             return Some(why);
         }
-        if self.fill_rule == Some(FillRule::AllEdges) && scene.has_polygons() {
+        if self.fill_rule == Some(DeclaredRule::Fill(FillRule::AllEdges)) && scene.has_polygons() {
             return Some(format!(
                 "{who} follows all-edges whatever the case states (its hello's \
                  conventions.fill_rule), and all-edges is not defined for polygons \
@@ -764,7 +765,7 @@ mod tests {
                             "interpolation": "doubles", "ties": "inclusive"},
         }}))
         .unwrap();
-        assert_eq!(hello.fill_rule, Some(FillRule::TopLeft));
+        assert_eq!(hello.fill_rule, Some(DeclaredRule::Fill(FillRule::TopLeft)));
         assert_eq!(hello.answers().coverage_bits, Some(8));
     }
 

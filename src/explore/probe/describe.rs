@@ -1,7 +1,7 @@
 //! The profile in words: its departures from D3D11 and Vulkan as
 //! sentences, the human-readable account `probe` prints, and its JSON.
 
-use super::diagnosis::SamplerKind;
+use super::diagnosis::{slope_list, SamplerKind};
 use super::evidence::{PROBE_BITS, RULE_NAMES};
 use super::profile::Profile;
 
@@ -76,6 +76,11 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
         return out;
     }
     match p.fill_rule.as_deref() {
+        Some(rule) if p.tie_verdict == "inconsistent" => out.push(format!(
+            "It has no consistent tie rule: tie samples go {rule} on most slopes, but otherwise by slope ({}; {}). D3D11 (functional spec §3.4.2.1) and Vulkan give every sample on a shared edge to the same side whatever the slope. Declared as fill_rule \"none\" it is judged exactly off the ties (SPEC.md §3.1.1).",
+            slope_list(&p.tie_slopes),
+            p.ties_measured_on
+        )),
         None => out.push("It drew none of the fill-rule meshes, so its tie rule is unknown.".to_owned()),
         Some("top-left") => {}
         Some("all-edges") => out.push(
@@ -95,7 +100,7 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
             ));
         }
     }
-    if p.fill_rule.is_some() && !p.fill_rule_consistent {
+    if p.fill_rule.is_some() && !p.fill_rule_consistent && p.tie_verdict != "inconsistent" {
         out.push(format!(
             "Its tie rule is not consistent: no single fill rule explains every tie sample ({}).",
             inconsistencies(p).join("; ")
@@ -172,15 +177,19 @@ impl Profile {
             },
             match (&self.fill_rule, self.fill_rule_consistent) {
                 (None, _) => String::new(),
-                (Some(_), true) => format!(
-                    " (explains all {ties} tie samples of {} meshes)",
-                    self.fill_rule_evidence.len()
+                (Some(_), true) => format!(" (explains all {})", self.ties_measured_on),
+                (Some(_), false) if self.tie_verdict == "inconsistent" => format!(
+                    " on most slopes; inconsistent: {} ({})",
+                    slope_list(&self.tie_slopes),
+                    self.ties_measured_on
                 ),
-                (Some(_), false) => ", inconsistent".to_owned(),
+                (Some(_), false) => format!(", inconsistent ({ties} tie samples)"),
             }
         );
-        for line in inconsistencies(self) {
-            s += &format!("                      {line}\n");
+        if self.tie_verdict != "inconsistent" {
+            for line in inconsistencies(self) {
+                s += &format!("                      {line}\n");
+            }
         }
         let off: usize = self
             .fill_rule_evidence

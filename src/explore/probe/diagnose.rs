@@ -4,7 +4,7 @@
 
 use super::diagnosis::{Diagnosis, SamplerKind};
 use super::evidence::MeshEvidence;
-use super::infer::{nearest_rule, probe_fill_rule, probe_sample_position};
+use super::infer::{nearest_rule, probe_fill_rule, probe_sample_position, slope_findings};
 use super::sampler;
 use crate::rasterizer::Rasterizer;
 
@@ -38,6 +38,8 @@ pub(super) fn diagnose_with_evidence(
         offset: None,
         fill_rule: None,
         fill_rule_consistent: false,
+        tie_slopes: Vec::new(),
+        ties_measured_on: String::new(),
         sampler,
     };
     if d.sampler.kind != SamplerKind::Point {
@@ -62,5 +64,12 @@ pub(super) fn diagnose_with_evidence(
     let rule = nearest_rule(&evidence);
     d.fill_rule = rule.as_ref().map(|r| r.0.clone());
     d.fill_rule_consistent = rule.as_ref().is_some_and(|r| r.1);
+    if let Some((nearest, consistent)) = &rule {
+        let (slopes, measured_on) = slope_findings(&evidence, nearest);
+        d.ties_measured_on = measured_on;
+        if !consistent {
+            d.tie_slopes = slopes.unwrap_or_default();
+        }
+    }
     Ok((d, evidence))
 }

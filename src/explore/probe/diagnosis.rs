@@ -9,6 +9,8 @@
 
 use serde::Serialize;
 
+use super::evidence::SlopeRule;
+
 /// How a rasterizer decides coverage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -75,6 +77,14 @@ pub struct Diagnosis {
     pub fill_rule: Option<String>,
     /// Whether that rule explains every tie sample.
     pub fill_rule_consistent: bool,
+    /// When no one rule explains every tie sample but each slope's ties
+    /// follow a consistent rule: the slopes the nearest rule does not
+    /// explain, each with the rules it follows (the verdict is then
+    /// "inconsistent": a rule by slope). Empty otherwise.
+    pub tie_slopes: Vec<SlopeRule>,
+    /// What the tie rule was measured on: "N tie samples over M slopes
+    /// (K meshes)"; empty when it was not measured.
+    pub ties_measured_on: String,
 }
 
 /// What the matrix saw on a row's mesh cases, for [`Diagnosis::cause`].
@@ -102,6 +112,12 @@ impl Diagnosis {
         };
         let rule = match (&self.fill_rule, self.fill_rule_consistent) {
             (None, _) => "tie rule not measured".to_owned(),
+            (Some(r), false) if !self.tie_slopes.is_empty() => {
+                format!(
+                    "tie rule inconsistent ({r} but {})",
+                    slope_list(&self.tie_slopes)
+                )
+            }
             (Some(r), true) => format!("tie rule {r}"),
             (Some(r), false) => format!("tie rule nearest {r}, not consistent"),
         };
@@ -136,6 +152,13 @@ impl Diagnosis {
                 self.sample_position
             );
         };
+        if !self.tie_slopes.is_empty() {
+            return format!(
+                "{probe} point-sampled with no consistent tie rule: {rule} on most slopes, but {} ({}); declared fill_rule \"none\" it is judged off the ties (SPEC.md §3.1.1).",
+                slope_list(&self.tie_slopes),
+                self.ties_measured_on
+            );
+        }
         let consistent = if self.fill_rule_consistent {
             "consistently"
         } else {
@@ -148,4 +171,13 @@ impl Diagnosis {
             (_, r) => format!("{probe} point-sampled with the {r} tie rule ({consistent}), which does not do this: its snapping, clipping or float arithmetic moves those edges."),
         }
     }
+}
+
+/// The slopes that disagree, as "slope 3: top-left, slope -1/3: top-left".
+pub fn slope_list(slopes: &[SlopeRule]) -> String {
+    slopes
+        .iter()
+        .map(|s| format!("slope {}: {}", s.slope, s.follows.join(" or ")))
+        .collect::<Vec<_>>()
+        .join(", ")
 }

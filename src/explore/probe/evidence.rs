@@ -16,6 +16,11 @@ pub struct Resolved {
 #[derive(Clone, Debug, Serialize)]
 pub struct MeshEvidence {
     pub mesh: String,
+    /// The slope (dy/dx, y down) of its shared edge, for a tie mesh of
+    /// one slope (`scenes::tie_slope_meshes`); only the samples on that
+    /// edge are its tie samples.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slope: Option<String>,
     pub tie_samples: usize,
     /// Tie samples each rule explains, in the order top-left, bottom-right,
     /// top-right, bottom-left, all-edges, none.
@@ -25,6 +30,14 @@ pub struct MeshEvidence {
     /// Why the rasterizer drew nothing, when it did not.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+}
+
+/// A slope whose tie samples the nearest rule does not explain, and the
+/// consistent rules that explain every one of them.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct SlopeRule {
+    pub slope: String,
+    pub follows: Vec<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]

@@ -13,9 +13,12 @@ use crate::reference;
 use crate::scene::{FillRule, Number, Scene};
 
 use super::evidence::{
-    ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, PROBE_BITS, RULE_NAMES,
+    ChannelProbe, InterpolationProbe, MeshEvidence, RuleCount, SlopeRule, PROBE_BITS, RULE_NAMES,
 };
-use super::scenes::{fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, tri};
+use super::scenes::{
+    fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, slope_words,
+    tie_slope_meshes, tri, TIE_CENTRE,
+};
 
 /// Draws a scene, catching panics.
 pub(super) fn draw(candidate: &dyn Rasterizer, scene: &Scene) -> Result<Frame, RasterError> {
@@ -55,59 +58,94 @@ fn draw_for(candidate: &dyn Rasterizer, scene: &Scene, o: Eighths) -> Result<Fra
     draw(candidate, &moved(scene, o))
 }
 
-/// Runs the fill-rule meshes, moved for a sample at `o`; returns the
+/// Runs the fill-rule meshes, then the tie meshes of every slope
+/// (`scenes::tie_slope_meshes`), moved for a sample at `o`; returns the
 /// evidence per mesh.
 pub(super) fn probe_fill_rule(candidate: &dyn Rasterizer, o: Eighths) -> Vec<MeshEvidence> {
-    fill_rule_meshes()
+    let general = fill_rule_meshes()
         .into_iter()
-        .map(|(label, s)| {
-            let plan = Plan::for_scene(&s);
-            let refs: Vec<Frame> = FillRule::ALL
-                .iter()
-                .map(|&r| reference::render(&s.with_fill_rule(r), &plan))
-                .collect();
-            let n = refs[0].sample_count();
-            let key = |f: &Frame, i: usize| (f.coverage[i], f.last[i]);
-            let ties: Vec<usize> = (0..n)
-                .filter(|&i| refs.iter().any(|f| key(f, i) != key(&refs[0], i)))
-                .collect();
-            let mut evidence = MeshEvidence {
-                mesh: label,
-                tie_samples: ties.len(),
-                explained: Vec::new(),
-                off_edge_differences: 0,
-                error: None,
-            };
-            let frame = match draw_for(candidate, &s, o) {
-                Ok(f) if f.sample_count() == n => f,
-                Ok(_) => {
-                    evidence.error = Some("returned a frame of the wrong size".to_owned());
-                    return evidence;
-                }
-                Err(e) => {
-                    evidence.error = Some(e.to_string());
-                    return evidence;
-                }
-            };
-            for (k, name) in RULE_NAMES.iter().enumerate() {
-                let samples = ties
-                    .iter()
-                    .filter(|&&i| match refs.get(k) {
-                        Some(r) => key(r, i) == key(&frame, i),
-                        None => frame.coverage[i] == 0,
-                    })
-                    .count();
-                evidence.explained.push(RuleCount {
-                    rule: (*name).to_owned(),
-                    samples,
-                });
-            }
-            evidence.off_edge_differences = (0..n)
-                .filter(|i| !ties.contains(i) && key(&refs[0], *i) != key(&frame, *i))
-                .count();
-            evidence
-        })
+        .map(|(label, s)| (label, None, s));
+    let sloped = tie_slope_meshes()
+        .into_iter()
+        .map(|(label, slope, s)| (label, Some(slope), s));
+    general
+        .chain(sloped)
+        .map(|(label, slope, s)| mesh_evidence(candidate, o, label, slope, &s))
         .collect()
+}
+
+/// Whether pixel `i`'s centre lies strictly inside the shared edge of the
+/// tie mesh of `slope` (exactly: twice every coordinate is an integer).
+fn on_shared_edge(i: usize, width: usize, (dy, dx): (i64, i64)) -> bool {
+    let (x, y) = ((i % width) as i64, (i / width) as i64);
+    let (cx, cy) = (x - TIE_CENTRE.0, y - TIE_CENTRE.1);
+    let reach = 9 / dy.abs().max(dx.abs());
+    let t = if dx != 0 { cx / dx } else { cy / dy };
+    cx * dy == cy * dx && t.abs() < reach && (t * dx, t * dy) == (cx, cy)
+}
+
+/// One mesh drawn by the reference under every rule and by the candidate:
+/// which rule explains its tie samples.
+fn mesh_evidence(
+    candidate: &dyn Rasterizer,
+    o: Eighths,
+    label: String,
+    slope: Option<(i64, i64)>,
+    s: &Scene,
+) -> MeshEvidence {
+    let plan = Plan::for_scene(s);
+    let refs: Vec<Frame> = FillRule::ALL
+        .iter()
+        .map(|&r| reference::render(&s.with_fill_rule(r), &plan))
+        .collect();
+    let n = refs[0].sample_count();
+    let width = refs[0].width as usize;
+    let key = |f: &Frame, i: usize| (f.coverage[i], f.last[i]);
+    let differ: Vec<usize> = (0..n)
+        .filter(|&i| refs.iter().any(|f| key(f, i) != key(&refs[0], i)))
+        .collect();
+    // A tie mesh of one slope keeps only the samples on its shared edge.
+    let ties: Vec<usize> = differ
+        .iter()
+        .copied()
+        .filter(|&i| slope.is_none_or(|slope| on_shared_edge(i, width, slope)))
+        .collect();
+    let mut evidence = MeshEvidence {
+        mesh: label,
+        slope: slope.map(slope_words),
+        tie_samples: ties.len(),
+        explained: Vec::new(),
+        off_edge_differences: 0,
+        error: None,
+    };
+    let frame = match draw_for(candidate, s, o) {
+        Ok(f) if f.sample_count() == n => f,
+        Ok(_) => {
+            evidence.error = Some("returned a frame of the wrong size".to_owned());
+            return evidence;
+        }
+        Err(e) => {
+            evidence.error = Some(e.to_string());
+            return evidence;
+        }
+    };
+    for (k, name) in RULE_NAMES.iter().enumerate() {
+        let samples = ties
+            .iter()
+            .filter(|&&i| match refs.get(k) {
+                Some(r) => key(r, i) == key(&frame, i),
+                None => frame.coverage[i] == 0,
+            })
+            .count();
+        evidence.explained.push(RuleCount {
+            rule: (*name).to_owned(),
+            samples,
+        });
+    }
+    evidence.off_edge_differences = (0..n)
+        .filter(|i| !differ.contains(i) && key(&refs[0], *i) != key(&frame, *i))
+        .count();
+    evidence
 }
 
 /// The rule that explains the most tie samples over all meshes, and
@@ -126,6 +164,60 @@ pub(super) fn nearest_rule(evidence: &[MeshEvidence]) -> Option<(String, bool)> 
         RULE_NAMES[best].to_owned(),
         score(best) == total && drawn.len() == evidence.len(),
     ))
+}
+
+/// What the tie probe found beyond the nearest rule: the slopes whose tie
+/// samples `nearest` does not explain, each with the consistent rules
+/// that explain all of them, when every slope follows one (then its ties
+/// are inconsistent: a rule by slope, not one rule); and what that was
+/// measured on, "N tie samples over M slopes (K meshes)".
+pub(super) fn slope_findings(
+    evidence: &[MeshEvidence],
+    nearest: &str,
+) -> (Option<Vec<SlopeRule>>, String) {
+    let drawn: Vec<&MeshEvidence> = evidence.iter().filter(|e| e.error.is_none()).collect();
+    let samples: usize = drawn.iter().map(|e| e.tie_samples).sum();
+    let mut slopes: Vec<&str> = Vec::new();
+    for e in &drawn {
+        if let Some(s) = e.slope.as_deref().filter(|s| !slopes.contains(s)) {
+            slopes.push(s);
+        }
+    }
+    let measured_on = format!(
+        "{samples} tie samples over {} slopes ({} meshes)",
+        slopes.len(),
+        drawn.len()
+    );
+    let k_nearest = RULE_NAMES.iter().position(|r| *r == nearest).unwrap_or(0);
+    let mut disagree = Vec::new();
+    for slope in &slopes {
+        let meshes: Vec<&&MeshEvidence> = drawn
+            .iter()
+            .filter(|e| e.slope.as_deref() == Some(slope))
+            .collect();
+        let explains = |k: usize| {
+            meshes
+                .iter()
+                .all(|e| e.explained[k].samples == e.tie_samples)
+        };
+        if explains(k_nearest) {
+            continue;
+        }
+        // The four consistent rules only: a slope whose ties go to both
+        // sides or neither follows no rule, and is no slope-dependent rule.
+        let follows: Vec<String> = (0..FillRule::CONSISTENT.len())
+            .filter(|&k| explains(k))
+            .map(|k| RULE_NAMES[k].to_owned())
+            .collect();
+        if follows.is_empty() {
+            return (None, measured_on);
+        }
+        disagree.push(SlopeRule {
+            slope: (*slope).to_owned(),
+            follows,
+        });
+    }
+    (Some(disagree).filter(|d| !d.is_empty()), measured_on)
 }
 
 /// y direction: a triangle over the top half.

@@ -35,7 +35,8 @@ pub use convention::{Convention, ConventionProbe};
 pub use diagnose::diagnose;
 pub use diagnosis::{Diagnosis, Sampler, SamplerKind};
 pub use evidence::{
-    ChannelProbe, InterpolationProbe, MeshEvidence, Resolved, RuleCount, PROBE_BITS, RULE_NAMES,
+    ChannelProbe, InterpolationProbe, MeshEvidence, Resolved, RuleCount, SlopeRule, PROBE_BITS,
+    RULE_NAMES,
 };
 pub use points::{probe_points, PointProbe};
 pub use profile::Profile;

@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::clip::ClipProbe;
 use super::diagnosis::SamplerKind;
-use super::evidence::{InterpolationProbe, MeshEvidence, Resolved};
+use super::evidence::{InterpolationProbe, MeshEvidence, Resolved, SlopeRule};
 use super::points::PointProbe;
 
 /// What a probe found.
@@ -28,6 +28,20 @@ pub struct Profile {
     pub fill_rule: Option<String>,
     /// Whether that rule explains every tie sample.
     pub fill_rule_consistent: bool,
+    /// `consistent` (one rule explains every tie sample), `inconsistent`
+    /// (no one rule does, but each slope's ties follow a consistent rule:
+    /// `tie_slopes` names those the nearest rule does not explain; `run
+    /// --profile` then judges it as declaring no tie rule, `none`, SPEC.md
+    /// §3.1.1), `unexplained` (some ties follow no consistent rule), or
+    /// `not measured`.
+    pub tie_verdict: &'static str,
+    /// The slopes whose ties the nearest rule does not explain, each with
+    /// the consistent rules that do, when the verdict is `inconsistent`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub tie_slopes: Vec<SlopeRule>,
+    /// What the tie rule was measured on: "N tie samples over M slopes
+    /// (K meshes)".
+    pub ties_measured_on: String,
     /// One entry per probe mesh.
     pub fill_rule_evidence: Vec<MeshEvidence>,
     /// `true` when y points down on screen (a triangle in the top half is

@@ -127,6 +127,18 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         rasterizer: candidate.name().to_owned(),
         sampler: d.sampler.kind,
         sampler_evidence: d.sampler.evidence,
+        tie_verdict: match (
+            &d.fill_rule,
+            d.fill_rule_consistent,
+            d.tie_slopes.is_empty(),
+        ) {
+            (None, _, _) => "not measured",
+            (Some(_), true, _) => "consistent",
+            (Some(_), false, false) => "inconsistent",
+            (Some(_), false, true) => "unexplained",
+        },
+        tie_slopes: d.tie_slopes,
+        ties_measured_on: d.ties_measured_on,
         fill_rule: d.fill_rule,
         fill_rule_consistent: d.fill_rule_consistent,
         fill_rule_evidence: evidence,

@@ -121,6 +121,80 @@ pub(super) fn fill_rule_meshes() -> Vec<(String, Scene)> {
         .collect()
 }
 
+/// The slopes dy/dx (y down) of the tie meshes, as (dy, dx): horizontal,
+/// vertical, and ±1/3, ±1/2, ±2/3, ±1, ±3/2, ±2, ±3, so that every octant
+/// holds steep and shallow edges and each slope's reciprocal.
+pub(super) const TIE_SLOPES: [(i64, i64); 16] = [
+    (0, 1),
+    (1, 0),
+    (1, 3),
+    (1, 2),
+    (2, 3),
+    (1, 1),
+    (3, 2),
+    (2, 1),
+    (3, 1),
+    (-1, 3),
+    (-1, 2),
+    (-2, 3),
+    (-1, 1),
+    (-3, 2),
+    (-2, 1),
+    (-3, 1),
+];
+
+/// The centre of the tie meshes' shared edge: a pixel centre.
+pub(super) const TIE_CENTRE: (i64, i64) = (12, 12);
+
+/// A slope in words: "3", "-1/3", "0 (horizontal)", "vertical".
+pub(super) fn slope_words((dy, dx): (i64, i64)) -> String {
+    match (dy, dx) {
+        (0, _) => "0 (horizontal)".to_owned(),
+        (_, 0) => "vertical".to_owned(),
+        (dy, 1) => dy.to_string(),
+        (dy, dx) => format!("{dy}/{dx}"),
+    }
+}
+
+/// The tie meshes: for each of [`TIE_SLOPES`], two triangles sharing an
+/// edge of that slope through the centres of pixel [`TIE_CENTRE`] and of
+/// the pixels a whole step (dx, dy) along it, each pair drawn as written,
+/// with windings reversed, and in the other order. Their other vertices
+/// sit off the pixel-centre lattice by (5/16, 3/16), so that the tie
+/// samples `infer.rs` reads are those on the shared edge (it keeps only
+/// those, by an exact test).
+pub(super) fn tie_slope_meshes() -> Vec<(String, (i64, i64), Scene)> {
+    let mut out = Vec::new();
+    for slope in TIE_SLOPES {
+        let (dy, dx) = slope;
+        let reach = 9 / dy.abs().max(dx.abs());
+        let c = (TIE_CENTRE.0 as f64 + 0.5, TIE_CENTRE.1 as f64 + 0.5);
+        let along = |t: i64| (c.0 + (t * dx) as f64, c.1 + (t * dy) as f64);
+        let (a, b) = (along(-reach), along(reach));
+        // Apexes on either side, along the normal (−dy, dx), off-lattice.
+        let side = |k: f64| {
+            let n = (-dy as f64, dx as f64);
+            let scale = 6.0 / dy.abs().max(dx.abs()) as f64;
+            (
+                c.0 + k * n.0 * scale + 0.3125,
+                c.1 + k * n.1 * scale + 0.1875,
+            )
+        };
+        let (p, q) = ([a, b, side(1.0)], [b, a, side(-1.0)]);
+        let rev = |t: [(f64, f64); 3]| [t[2], t[1], t[0]];
+        let words = slope_words(slope);
+        for (how, triangles) in [
+            ("", vec![tri(p), tri(q)]),
+            (", windings reversed", vec![tri(rev(p)), tri(rev(q))]),
+            (", drawn in the other order", vec![tri(q), tri(p)]),
+        ] {
+            let s = mesh_scene("probe_tie_slopes", 25, 25, 8, triangles);
+            out.push((format!("shared edge of slope {words}{how}"), slope, s));
+        }
+    }
+    out
+}
+
 /// One precision cell: its sample, and the two positions of B.
 pub(super) struct Step {
     pub(super) k: u32,

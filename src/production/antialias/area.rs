@@ -68,7 +68,11 @@ impl Rasterizer for AreaF32 {
                 &mut resolved,
             );
         }
-        Ok(Frame::resolved_only(canvas.width, canvas.height, resolved))
+        let mut frame = Frame::resolved_only(canvas.width, canvas.height, resolved);
+        // An area method: each pixel's total claims its exact area within
+        // the default step (SPEC.md §14.4).
+        frame.area_step = Some(0.0);
+        Ok(frame)
     }
 }
 

@@ -5,7 +5,8 @@
 //! the three that do not sample at the pixel centre. `coarse_snap.rs` and
 //! `grid_samples.rs` hold conventions they cannot change (4 subpixel bits,
 //! grid sample positions) and declare them, truly or not (SPEC.md §3.2,
-//! §14.2.1).
+//! §14.2.1); `slope_ties.rs` has a tie rule that depends on each
+//! edge's slope.
 
 mod declare;
 
@@ -17,6 +18,7 @@ pub mod float_edges;
 pub mod grid_samples;
 pub mod offset_sampler;
 pub mod samplers;
+pub mod slope_ties;
 
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
@@ -26,3 +28,4 @@ pub use float_edges::{FloatF32, FloatF64};
 pub use grid_samples::GridSamples;
 pub use offset_sampler::OffsetSampler;
 pub use samplers::SAMPLER_FOILS;
+pub use slope_ties::SlopeTies;

@@ -240,6 +240,10 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         }
         html.push_str("</ul>");
     }
+    // No tie rule (SPEC.md §3.1.1): its ties counted apart, never hidden.
+    if let Some(ties) = &result.ties {
+        let _ = write!(html, "<p class=\"ties\">{}</p>", escape(&ties.line()));
+    }
 
     // An antialiased case: its resolved coverage, drawn from the frames; a
     // moving scene: its time coverage, likewise.

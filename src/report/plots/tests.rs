@@ -131,6 +131,7 @@ fn aa(samples: u32, rms_edge: f64) -> AntialiasMetrics {
         candidate_pixels: 0,
         primitives: None,
         nothing_drawn: None,
+        pixel_areas: None,
         allowed_error: None,
         allowed_rms: None,
     }
@@ -209,6 +210,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 time_ms: 0.0,
                 method: None,
                 judged_fill_rule: None,
+                ties: None,
                 judged_clip: None,
                 judged_subpixel_bits: None,
                 judged_snapping: None,
