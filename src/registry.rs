@@ -11,8 +11,8 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    AnyCoverage, AreaSampler, DdaF32, DdaF64, FloatF32, FloatF64, GridSamples, OffsetSampler,
-    SlopeTies, Snap4, Snap4As8,
+    AnyCoverage, AreaSampler, CoarseSnap, DdaF32, DdaF64, FloatF32, FloatF64, GridSamples,
+    OffsetSampler, SlopeTies,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -170,10 +170,10 @@ pub const ENTRIES: &[Entry] = &[
         || boxed(AnyCoverage)),
     row("foil-snap4", Kind::Foil, false,
         "production snapping to 4 subpixel bits, and declaring them",
-        || boxed(Snap4)),
+        || boxed(CoarseSnap::HONEST)),
     row("foil-snap4-as-8", Kind::Foil, false,
         "production snapping to 4 subpixel bits while declaring 8",
-        || boxed(Snap4As8)),
+        || boxed(CoarseSnap::AS_8)),
     row("foil-grid-samples", Kind::Foil, false,
         "production sampling on a k×k grid while declaring the standard positions",
         || boxed(GridSamples)),

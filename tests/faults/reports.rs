@@ -149,11 +149,25 @@ impl Drop for Cleanup {
     }
 }
 
-/// Runs 6 cases on one thread against `reports_slow.py`, which answers
-/// the first 2 and sleeps on the third; sends `signal` once it sleeps.
-/// Asserts the exit code, the partial report and that the program is gone.
-fn stopped_by(signal: &str, code: i32) {
-    let (dir, ids) = with_cases(&format!("signal-{signal}"), 6);
+/// A command stopped by a signal while `reports_slow.py` sleeps on its
+/// third case; `_cleanup` kills what is left when the test ends (kept
+/// alive until then, so that it cannot make the program look gone).
+struct Stopped {
+    dir: PathBuf,
+    ids: Vec<String>,
+    pids: PathBuf,
+    status: std::process::ExitStatus,
+    took: Duration,
+    log: String,
+    sleeper: u32,
+    _cleanup: Cleanup,
+}
+
+/// Runs `args` (a command over `count` cases, one thread) with `-r` the
+/// program `reports_slow.py`, which answers the first 2 cases and sleeps on
+/// the third; sends `signal` once it sleeps.
+fn stopped_while_sleeping(tag: &str, count: usize, args: &[&str], signal: &str) -> Stopped {
+    let (dir, ids) = with_cases(tag, count);
     let pids = dir.join("pids");
     std::fs::create_dir_all(&pids).unwrap();
     let program = manifest().join("tests/faults/programs/reports_slow.py");
@@ -164,7 +178,8 @@ fn stopped_by(signal: &str, code: i32) {
     );
     let log = std::fs::File::create(dir.join("log.txt")).unwrap();
     let child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(["run", "cases", "--report", "out", "--threads", "1", "-r"])
+        .args(args)
+        .arg("-r")
         .arg(&rasterizer)
         .current_dir(&dir)
         .env("RASTERCHECK_EXTERNAL_TIMEOUT", "600")
@@ -188,8 +203,39 @@ fn stopped_by(signal: &str, code: i32) {
         sleeping().is_some() || child.try_wait().unwrap().is_some()
     });
     let sleeper = sleeping().expect("the third case's program sleeps");
-    let (status, _) = signal_and_wait(child, signal);
+    let (status, took) = signal_and_wait(child, signal);
     let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
+    Stopped {
+        dir,
+        ids,
+        pids,
+        status,
+        took,
+        log,
+        sleeper,
+        _cleanup: run,
+    }
+}
+
+/// `run` over 6 cases, stopped by `signal` on the third. Asserts the exit
+/// code, the partial report and that the program is gone.
+fn stopped_by(signal: &str, code: i32) {
+    let stopped = stopped_while_sleeping(
+        &format!("signal-{signal}"),
+        6,
+        &["run", "cases", "--report", "out", "--threads", "1"],
+        signal,
+    );
+    let Stopped {
+        dir,
+        ids,
+        pids,
+        status,
+        log,
+        sleeper,
+        ..
+    } = &stopped;
+    let (dir, ids, pids, sleeper) = (dir.as_path(), ids, pids.as_path(), *sleeper);
     assert_eq!(status.code(), Some(code), "{log}");
     assert!(!log.contains("panicked"), "{log}");
     assert!(log.contains("cases did not run"), "{log}");
@@ -306,59 +352,25 @@ fn sigterm_stops_the_reference_in_the_middle_of_a_case() {
 /// the program is killed with it (before, only `run` installed the handler,
 /// and the program, in a process group of its own, kept sleeping).
 fn baseline_stopped_by(signal: &str, code: i32) {
-    let (dir, _) = with_cases(&format!("baseline-signal-{signal}"), 4);
-    let pids = dir.join("pids");
-    std::fs::create_dir_all(&pids).unwrap();
-    let program = manifest().join("tests/faults/programs/reports_slow.py");
-    let rasterizer = format!(
-        "external:python3 {} {} 2",
-        program.display(),
-        pids.display()
+    let stopped = stopped_while_sleeping(
+        &format!("baseline-signal-{signal}"),
+        4,
+        &["baseline", "save", "base.json", "cases", "--threads", "1"],
+        signal,
     );
-    let log = std::fs::File::create(dir.join("log.txt")).unwrap();
-    let child = Command::new(env!("CARGO_BIN_EXE_rastercheck"))
-        .args([
-            "baseline",
-            "save",
-            "base.json",
-            "cases",
-            "--threads",
-            "1",
-            "-r",
-        ])
-        .arg(&rasterizer)
-        .current_dir(&dir)
-        .env("RASTERCHECK_EXTERNAL_TIMEOUT", "600")
-        .stdin(Stdio::null())
-        .stdout(log.try_clone().unwrap())
-        .stderr(log)
-        .spawn()
-        .unwrap();
-    let mut run = Cleanup {
-        child,
-        pids: pids.clone(),
-    };
-    let child = &mut run.child;
-    let sleeping = || -> Option<u32> {
-        std::fs::read_dir(&pids).ok()?.find_map(|e| {
-            let name = e.ok()?.file_name().to_string_lossy().into_owned();
-            name.strip_suffix(".sleeping")?.parse().ok()
-        })
-    };
-    wait_for("the program to sleep on the third case", || {
-        sleeping().is_some() || child.try_wait().unwrap().is_some()
-    });
-    let sleeper = sleeping().expect("the third case's program sleeps");
-    let (status, took) = signal_and_wait(child, signal);
-    let log = std::fs::read_to_string(dir.join("log.txt")).unwrap();
-    assert_eq!(status.code(), Some(code), "{log}");
-    assert!(took < Duration::from_secs(5), "{took:?}: {log}");
+    let log = &stopped.log;
+    assert_eq!(stopped.status.code(), Some(code), "{log}");
+    assert!(
+        stopped.took < Duration::from_secs(5),
+        "{:?}: {log}",
+        stopped.took
+    );
     assert!(!log.contains("panicked"), "{log}");
     wait_for("the sleeping program to be gone", || {
-        matches!(process_state(sleeper), None | Some('Z'))
+        matches!(process_state(stopped.sleeper), None | Some('Z'))
     });
     // No baseline half-written.
-    assert!(!dir.join("base.json").exists(), "{log}");
+    assert!(!stopped.dir.join("base.json").exists(), "{log}");
 }
 
 #[test]

@@ -22,7 +22,7 @@ pub mod slope_ties;
 
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
-pub use coarse_snap::{Snap4, Snap4As8};
+pub use coarse_snap::CoarseSnap;
 pub use dda::{DdaF32, DdaF64};
 pub use float_edges::{FloatF32, FloatF64};
 pub use grid_samples::GridSamples;
