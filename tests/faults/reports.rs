@@ -245,7 +245,7 @@ fn stopped_by(signal: &str, code: i32) {
         matches!(process_state(sleeper), None | Some('Z'))
     });
     // No case started after the signal: 3 processes in all.
-    let started = std::fs::read_dir(&pids)
+    let started = std::fs::read_dir(pids)
         .unwrap()
         .filter(|e| {
             let e = e.as_ref().unwrap();
