@@ -15,7 +15,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use common::cli::{rastercheck, read_json, scratch, text};
+use common::cli::{case_entry, rastercheck, read_json, scratch, text};
 use serde_json::Value;
 
 fn root() -> PathBuf {
@@ -165,11 +165,7 @@ fn polygons_under_an_all_edges_rule_are_unsupported_not_judged_otherwise() {
     let printed = text(&out);
     let report = read_json(&report.join("report.json"));
     let result = |id: &str| {
-        report["cases"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|c| c["id"] == id)
+        case_entry(&report, id)
             .map(|c| c["results"][0].clone())
             .unwrap_or_else(|| panic!("{id}: {printed}"))
     };

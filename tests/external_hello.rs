@@ -12,7 +12,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use common::cli::{rastercheck, rastercheck_env, read_json, scratch, text, verdicts};
+use common::cli::{case_entry, rastercheck, rastercheck_env, read_json, scratch, text, verdicts};
 use serde_json::Value;
 
 fn root() -> PathBuf {
@@ -225,11 +225,7 @@ fn what_a_declaration_rules_out_is_never_sent_and_results_name_what_applies() {
     );
     let report = r.report.expect("a report");
     let result = |id: &str| {
-        report["cases"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|c| c["id"] == id)
+        case_entry(&report, id)
             .map(|c| c["results"][0].clone())
             .unwrap_or_else(|| panic!("{id}: {}", r.printed))
     };

@@ -115,10 +115,13 @@ def coverage(pts, width, height):
     return out
 
 
-def covers(pts, sx, sy, rule):
+def covers(pts, sx, sy, rule, y_up=False):
     """An edge owns a sample on it when the sample nudged as the rule says
-    is inside (SPEC.md §3): top-left nudges it right by e and down by e^2."""
+    is inside (SPEC.md §3): top-left nudges it right by e and down by e^2
+    (up on screen for a rasterizer whose y axis points up, `y_up`)."""
     nx, ny = NUDGE[rule]
+    if y_up:
+        ny = -ny
     a, b, c = pts
     sign = 1 if twice_area(a, b, c) > 0 else -1
     for p, q in ((a, b), (b, c), (c, a)):
@@ -173,6 +176,13 @@ def main():
         caps["coverage_only"] = True
     if "--no-bits" not in FLAGS:
         caps["coverage_bits"] = 8
+    serve(hello, answer)
+
+
+def serve(hello, answer):
+    """Protocol v2 (SPEC.md §12.7): the hello, then answer(request) for each
+    request line, its id echoed, until "bye". The other clients here serve
+    through it too."""
     print(json.dumps({"hello": hello}), flush=True)
     for line in sys.stdin:
         if not line.strip():

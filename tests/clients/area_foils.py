@@ -13,7 +13,6 @@ Without antialiasing it draws as tests/clients/area8.py does (exact point
 sampling), so only its antialiased answers are wrong.
 """
 
-import json
 import os
 import sys
 
@@ -53,17 +52,7 @@ def main():
             "fill_rules": ["top-left"], "polygon_fills": ["nonzero", "even-odd"],
             "coverage_only": True}
     hello = {"protocol": 2, "name": "area_foils", "version": "1", "capabilities": caps}
-    print(json.dumps({"hello": hello}), flush=True)
-    for line in sys.stdin:
-        if not line.strip():
-            continue
-        req = json.loads(line)
-        if req.get("bye"):
-            break
-        reply = answer(req)
-        if "id" in req:
-            reply["id"] = req["id"]
-        print(json.dumps(reply), flush=True)
+    area8.serve(hello, answer)
 
 
 if __name__ == "__main__":

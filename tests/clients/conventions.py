@@ -24,10 +24,13 @@ It reads every request in its own terms and declares them in its hello's
 Triangles only; exact throughout (fractions).
 """
 
-import json
+import os
 import sys
 from fractions import Fraction
 from math import floor
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import area8  # noqa: E402  (beside this file: exact areas, boxes, ties, the loop)
 
 ARGS = sys.argv[1:]
 FLAGS = set(ARGS)
@@ -41,9 +44,6 @@ CENTRE = option("--centre") or "half"
 Y = option("--y") or "down"
 SNAP = option("--snap")
 ENCODING = option("--encoding") or "unorm"
-# The nudge of SPEC.md §3 in y-down numbers: a sample on an edge is inside
-# when the sample moved by (sx e, sy e^2) is.
-NUDGE = {"top-left": (1, 1), "bottom-right": (-1, -1), "top-right": (-1, 1), "bottom-left": (1, -1)}
 
 
 def snap(v, bits):
@@ -59,68 +59,11 @@ def snap(v, bits):
     return Fraction(round(v * scale), scale)  # half-even
 
 
-def twice_area(a, b, c):
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-
-
 def culled(pts, cull):
-    area = twice_area(*pts)
+    area = area8.twice_area(*pts)
     if Y == "up":  # clockwise read with y up is counter-clockwise on screen
         area = -area
     return area == 0 or (cull == "cw" and area > 0) or (cull == "ccw" and area < 0)
-
-
-def covers(pts, sx, sy, rule):
-    nx, ny = NUDGE[rule]
-    if Y == "up":  # "down" in its terms is up on screen
-        ny = -ny
-    a, b, c = pts
-    sign = 1 if twice_area(a, b, c) > 0 else -1
-    for p, q in ((a, b), (b, c), (c, a)):
-        dx, dy = -(q[1] - p[1]) * sign, (q[0] - p[0]) * sign
-        e = dx * (sx - p[0]) + dy * (sy - p[1])
-        if e < 0 or (e == 0 and not (nx * dx > 0 or (dx == 0 and ny * dy > 0))):
-            return False
-    return True
-
-
-def clip(poly, inside, cross):
-    out = []
-    for i, p in enumerate(poly):
-        q = poly[(i + 1) % len(poly)]
-        if inside(p):
-            out.append(p)
-            if not inside(q):
-                out.append(cross(p, q))
-        elif inside(q):
-            out.append(cross(p, q))
-    return out
-
-
-def square_area(pts, x0, y0):
-    poly = list(pts)
-    for axis, bound, keep_above in ((0, x0, True), (0, x0 + 1, False), (1, y0, True), (1, y0 + 1, False)):
-        def inside(p, axis=axis, bound=bound, keep_above=keep_above):
-            return p[axis] >= bound if keep_above else p[axis] <= bound
-
-        def cross(p, q, axis=axis, bound=bound):
-            t = (bound - p[axis]) / (q[axis] - p[axis])
-            return (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
-
-        poly = clip(poly, inside, cross)
-        if not poly:
-            return Fraction(0)
-    s = sum(poly[i][0] * poly[(i + 1) % len(poly)][1] - poly[(i + 1) % len(poly)][0] * poly[i][1]
-            for i in range(len(poly)))
-    return abs(s) / 2
-
-
-def box(pts, width, height):
-    xs = [p[0] for p in pts]
-    ys = [p[1] for p in pts]
-    x0, x1 = max(0, floor(min(xs)) - 1), min(width, floor(max(xs)) + 2)
-    y0, y1 = max(0, floor(min(ys)) - 1), min(height, floor(max(ys)) + 2)
-    return range(x0, x1), range(y0, y1)
 
 
 def encode(area):
@@ -147,10 +90,10 @@ def answer(req):
         for t in tris:
             cov = []
             if t:
-                xs, ys = box(t, width, height)
+                xs, ys = area8.box(t, width, height)
                 for y in ys:
                     for x in xs:
-                        a = square_area(t, x + c - Fraction(1, 2), y + c - Fraction(1, 2))
+                        a = area8.pixel_area(t, x + c - Fraction(1, 2), y + c - Fraction(1, 2))
                         if a:
                             cov.append([x, y, encode(a)])
             out.append({"coverage": cov})
@@ -159,10 +102,10 @@ def answer(req):
     for t in tris:
         frags = []
         if t:
-            xs, ys = box(t, width, height)
+            xs, ys = area8.box(t, width, height)
             for y in ys:
                 for x in xs:
-                    if covers(t, x + c, y + c, rule):
+                    if area8.covers(t, x + c, y + c, rule, y_up=Y == "up"):
                         frags.append([x, y])
         out.append({"fragments": frags})
     return {"primitives": out}
@@ -183,17 +126,7 @@ def main():
     hello = {"protocol": 2, "name": "conventions", "version": "1", "capabilities": caps}
     if "--undeclared" not in FLAGS:
         hello["conventions"] = conventions
-    print(json.dumps({"hello": hello}), flush=True)
-    for line in sys.stdin:
-        if not line.strip():
-            continue
-        req = json.loads(line)
-        if req.get("bye"):
-            break
-        reply = answer(req)
-        if "id" in req:
-            reply["id"] = req["id"]
-        print(json.dumps(reply), flush=True)
+    area8.serve(hello, answer)
 
 
 if __name__ == "__main__":

@@ -52,17 +52,7 @@ def answer(req):
 def main():
     caps = {"primitives": ["triangles"], "fill_rules": ["top-left"], "coverage_only": True}
     hello = {"protocol": 2, "name": "flaky", "version": "1", "capabilities": caps}
-    print(json.dumps({"hello": hello}), flush=True)
-    for line in sys.stdin:
-        if not line.strip():
-            continue
-        req = json.loads(line)
-        if req.get("bye"):
-            break
-        reply = answer(req)
-        if "id" in req:
-            reply["id"] = req["id"]
-        print(json.dumps(reply), flush=True)
+    area8.serve(hello, answer)
 
 
 if __name__ == "__main__":

@@ -176,6 +176,11 @@ pub fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
+/// The report's entry for case `id`, if it has one.
+pub fn case_entry<'a>(report: &'a serde_json::Value, id: &str) -> Option<&'a serde_json::Value> {
+    report["cases"].as_array()?.iter().find(|c| c["id"] == id)
+}
+
 /// Each case's (id, verdict, reasons joined by "; ") for the report's
 /// first candidate, in the report's order.
 pub fn verdicts(report: &serde_json::Value) -> Vec<(String, String, String)> {

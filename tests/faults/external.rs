@@ -86,12 +86,7 @@ fn run(dir: &Path, rasterizer: &str, args: &[&str], env: &[(&str, &str)]) -> Mea
 
 /// The report's entry for case `id`.
 fn entry<'a>(report: &'a Value, id: &str) -> &'a Value {
-    report["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["id"] == id)
-        .unwrap_or_else(|| panic!("no case {id} in {report}"))
+    crate::common::cli::case_entry(report, id).unwrap_or_else(|| panic!("no case {id} in {report}"))
 }
 
 /// The one rasterizer's verdict on `id`, with its reasons joined.

@@ -131,16 +131,11 @@ impl Rasterizer for External {
     }
 
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        self.answers
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .fill_rule
-            .and_then(DeclaredRule::fill_rule)
+        self.answers().fill_rule.and_then(DeclaredRule::fill_rule)
     }
 
     fn no_tie_rule(&self) -> bool {
-        let answers = self.answers.lock().unwrap_or_else(|e| e.into_inner());
-        answers.fill_rule == Some(DeclaredRule::NoTieRule)
+        self.answers().fill_rule == Some(DeclaredRule::NoTieRule)
     }
 
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
@@ -160,35 +155,19 @@ impl Rasterizer for External {
     }
 
     fn fixed_snapping(&self) -> Option<Snapping> {
-        self.answers
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .declaration
-            .snapping
+        self.answers().declaration.snapping
     }
 
     fn fixed_sample_pattern(&self) -> Option<Pattern> {
-        self.answers
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .declaration
-            .sample_pattern
+        self.answers().declaration.sample_pattern
     }
 
     fn fixed_y_direction(&self) -> Option<YDirection> {
-        self.answers
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .declaration
-            .y
+        self.answers().declaration.y
     }
 
     fn fixed_pixel_centre(&self) -> Option<PixelCentre> {
-        self.answers
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .declaration
-            .pixel_centre
+        self.answers().declaration.pixel_centre
     }
 
     fn declared(&self) -> Option<String> {
@@ -226,7 +205,7 @@ impl Rasterizer for External {
             }
             Some(pool) => self.persistent(pool, scene, plan, timeout, max_output, false)?,
         };
-        let answers = *self.answers.lock().unwrap_or_else(|e| e.into_inner());
+        let answers = self.answers();
         frame_from_answer(&response, scene, plan, answers)
     }
 }

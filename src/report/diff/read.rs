@@ -106,11 +106,11 @@ pub fn read(path: &Path) -> Result<Side, String> {
         ));
     }
     check_schema(&file).map_err(|e| format!("{shown}: {e}"))?;
-    let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
+    let text = std::fs::read_to_string(&file).map_err(|e| format!("{shown}: {e}"))?;
     let value: Value =
-        serde_json::from_str(&text).map_err(|e| format!("{}: not JSON: {e}", file.display()))?;
+        serde_json::from_str(&text).map_err(|e| format!("{shown}: not JSON: {e}"))?;
     parse(&value)
-        .map_err(|e| format!("{}: {e}", file.display()))
+        .map_err(|e| format!("{shown}: {e}"))
         .map(|(complete, rasterizers, cases)| Side {
             file,
             complete,
