@@ -1,44 +1,44 @@
-//! Determinism of the real drivers (SPEC.md §6.6): every bundled case run
-//! twice (`run --repeat 2`, other cases between a case's repetitions) on
-//! each implementation here: lavapipe through `-r vulkan`, SwiftShader
-//! through `-r vulkan` with `VK_DRIVER_FILES` on its ICD file (from
-//! Debian's chromium), llvmpipe through `-r gl`. A test fails on a FLAKY
-//! case that [`KNOWN`] does not name with its reason. Without a driver
-//! each test says loudly that it skipped; under `CI=true` a missing driver
-//! fails it instead (`tests/common/adapters.rs`).
+//! The real drivers over every bundled case, twice (`run --repeat 2`,
+//! other cases between a case's repetitions), on each implementation here:
+//! lavapipe through `-r vulkan`, SwiftShader through `-r vulkan` with
+//! `VK_DRIVER_FILES` on its ICD file (from Debian's chromium), llvmpipe
+//! through `-r gl`. Two things are held:
+//!
+//! - determinism (SPEC.md §6.6): a FLAKY case fails the test unless a
+//!   departure marked `Flaky: yes` names it;
+//! - named departures (issue 35): every case that fails is named by a
+//!   departure in `docs/drivers/departures/<implementation>/`, and every
+//!   named case fails (`tests/common/departures.rs`).
+//!
+//! Without a driver each test says loudly that it skipped; under `CI=true`
+//! a missing driver fails it instead (`tests/common/adapters.rs`).
 //!
 //! A case drawn through one adapter never depends on the case drawn
 //! before it: a difference here is either state that survived from one
 //! case to the next inside an adapter (ours to fix) or the driver's own
-//! nondeterminism (documented in `docs/drivers/`, then named in
-//! [`KNOWN`]).
+//! nondeterminism (written as a departure marked `Flaky: yes`).
 #![cfg(any(feature = "vulkan", feature = "gl"))]
 
 mod common;
 
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
 use common::cli::{rastercheck_env, read_json, scratch, text};
+use common::departures;
 
 /// SwiftShader's Vulkan ICD, as Debian's chromium package installs it.
 const SWIFTSHADER_ICD: &str = "/usr/lib/chromium/vk_swiftshader_icd.json";
-
-/// Flaky cases known to be the driver's own, as (implementation, case id,
-/// why), each documented in docs/drivers/ ("Determinism").
-const KNOWN: &[(&str, &str, &str)] = &[(
-    "swiftshader",
-    "depth/offset_line_ignored",
-    "SwiftShader carries an earlier triangle draw's depth bias into a later line draw whose pipeline enables depth bias, depending on the history of draws and on timing (docs/drivers/vulkan.md, Determinism)",
-)];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// Runs every bundled case twice through `rasterizer` under `env`, and
-/// fails on a flaky case [`KNOWN`] does not name for `implementation`.
-/// Says SKIPPED (or fails, under CI) when the binary found no such driver.
+/// fails on a flaky case no flaky departure of `implementation` names, or
+/// on a failure no departure names. Says SKIPPED (or fails, under CI) when
+/// the binary found no such driver.
 fn every_case_twice(implementation: &str, rasterizer: &str, env: &[(&str, &str)]) {
     let dir = scratch(&format!("driver-repeat-{implementation}"));
     let report = dir.join("report");
@@ -75,21 +75,18 @@ fn every_case_twice(implementation: &str, rasterizer: &str, env: &[(&str, &str)]
     assert_eq!(json["complete"], true, "{printed}");
     let mut unknown = Vec::new();
     let mut judged = 0;
+    let mut verdicts = BTreeMap::new();
     for case in json["cases"].as_array().unwrap() {
         let id = case["id"].as_str().unwrap();
         let result = &case["results"][0];
-        judged += usize::from(!matches!(
-            result["verdict"].as_str(),
-            Some("unsupported") | None
-        ));
-        if result["verdict"] != "flaky" {
+        let verdict = result["verdict"].as_str().unwrap_or("not run");
+        verdicts.insert(id.to_string(), verdict.to_string());
+        judged += usize::from(!matches!(verdict, "unsupported" | "not run"));
+        if verdict != "flaky" {
             continue;
         }
-        match KNOWN
-            .iter()
-            .find(|(who, case, _)| *who == implementation && *case == id)
-        {
-            Some((_, _, why)) => eprintln!("known flaky case {id} on {implementation}: {why}"),
+        match departures::flaky(implementation, id) {
+            Some(why) => eprintln!("known flaky case {id} on {implementation}: {why}"),
             None => unknown.push(format!("{id}: {}", result["reasons"][0])),
         }
     }
@@ -104,17 +101,18 @@ fn every_case_twice(implementation: &str, rasterizer: &str, env: &[(&str, &str)]
         unknown.join("\n")
     );
     assert!(printed.contains(" flaky over 2 repetitions"), "{printed}");
+    departures::assert_every_failure_is_named(implementation, &verdicts);
 }
 
 #[cfg(feature = "vulkan")]
 #[test]
-fn lavapipe_draws_every_case_the_same_twice() {
+fn lavapipe_draws_every_case_the_same_twice_and_fails_only_named_departures() {
     every_case_twice("lavapipe", "vulkan", &[]);
 }
 
 #[cfg(feature = "vulkan")]
 #[test]
-fn swiftshader_draws_every_case_the_same_twice() {
+fn swiftshader_draws_every_case_the_same_twice_and_fails_only_named_departures() {
     if !std::path::Path::new(SWIFTSHADER_ICD).exists() {
         common::adapters::skipped(
             "SwiftShader Vulkan ICD",
@@ -132,6 +130,6 @@ fn swiftshader_draws_every_case_the_same_twice() {
 
 #[cfg(feature = "gl")]
 #[test]
-fn llvmpipe_draws_every_case_the_same_twice() {
+fn llvmpipe_draws_every_case_the_same_twice_and_fails_only_named_departures() {
     every_case_twice("llvmpipe", "gl", &[]);
 }

@@ -8,6 +8,7 @@
 pub mod adapters;
 pub mod cli;
 pub mod clip_drivers;
+pub mod departures;
 pub mod depth_drivers;
 pub mod point_drivers;
 pub mod sample_drivers;
