@@ -336,6 +336,21 @@ fn bad_baseline_files_exit_2_naming_the_file() {
     ]);
     assert_eq!(code(&out), 2, "{}", text(&out));
     assert!(!dir.join("x.json").exists());
+
+    // A program held to a recorded name whose command cannot be split is
+    // said as such, not as an unknown rasterizer.
+    let file = save_dda(&dir);
+    let out = rastercheck(&[
+        "baseline",
+        "check",
+        file.to_str().unwrap(),
+        "-r",
+        "external:python3 'open=dda-f32",
+    ]);
+    let t = text(&out);
+    assert_eq!(code(&out), 2, "{t}");
+    assert!(t.contains("has an unterminated ' quote"), "{t}");
+    assert!(!t.contains("unknown rasterizer"), "{t}");
 }
 
 /// An antialiased triangle whose resolved coverage has error at 16

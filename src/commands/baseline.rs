@@ -235,16 +235,15 @@ fn baseline_check(
             );
             return Exit::BadInput;
         }
+        // First: a command that cannot be split, or a program that cannot
+        // start, is said as such, not as an unknown name.
+        if let Err(exit) =
+            super::names::environment_for(run).and_then(|()| super::names::startable(run))
+        {
+            return exit;
+        }
         match registry::by_name(run) {
-            Some(r) => {
-                if let Err(exit) = super::names::environment_for(run) {
-                    return exit;
-                }
-                if let Err(exit) = super::names::startable(run) {
-                    return exit;
-                }
-                candidates.push(r)
-            }
+            Some(r) => candidates.push(r),
             None if names.is_empty() => {
                 eprintln!(
                     "error: {shown}: the baseline records {}",

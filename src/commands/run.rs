@@ -65,15 +65,16 @@ pub struct RunArgs {
 
 /// `rastercheck run`: every selected case through the reference and the
 /// candidates, one line each, a summary, and the report folder.
-/// The summary's note on the results judged under a rasterizer's own fill
-/// rule, clipping or subpixel precision (SPEC.md §3.1, §3.2, §16): counted
-/// among the verdicts, and named apart.
+/// The summary's note on the results judged under a rasterizer's own
+/// conventions (fill rule, subpixel precision, sample positions, y
+/// direction, pixel centre, clipping: SPEC.md §3, §16): counted among the
+/// verdicts, and named apart, each result's line saying which.
 fn own_rule(x: &runner::Tally) -> String {
     if x.own_rule == 0 {
         return String::new();
     }
     format!(
-        "; {} judged under its own fill rule, clipping or subpixel precision instead of the case's (SPEC.md §3.1, §3.2, §16)",
+        "; {} judged under its own conventions instead of the case's, each line naming which (SPEC.md §3, §16)",
         x.own_rule
     )
 }
