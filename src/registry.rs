@@ -247,11 +247,11 @@ pub const ENTRIES: &[Entry] = &[
         "vello_cpu 0.3's antialiased path fill",
         vello_cpu),
     featured("vulkan", Kind::Driver, "vulkan", true,
-        "any Vulkan driver through ash (lavapipe, or a GPU's own)",
-        || vulkan(false)),
+        "any Vulkan driver through ash (lavapipe, or a GPU's own); `vulkan@DEVICE` draws on the device whose name contains DEVICE",
+        || vulkan(false, None)),
     featured("vulkan-passes", Kind::Driver, "vulkan", false,
-        "the vulkan adapter drawing every sample pattern by shifted passes",
-        || vulkan(true)),
+        "the vulkan adapter drawing every sample pattern by shifted passes (`vulkan-passes@DEVICE` too)",
+        || vulkan(true, None)),
     featured("lavapipe", Kind::Driver, "lavapipe", true,
         "Mesa's Vulkan rasterizer on the CPU, through wgpu",
         lavapipe),
@@ -284,14 +284,27 @@ fn vello_cpu() -> Option<Box<dyn Rasterizer>> {
     None
 }
 
-fn vulkan(passes_only: bool) -> Option<Box<dyn Rasterizer>> {
+fn vulkan(passes_only: bool, on: Option<&'static str>) -> Option<Box<dyn Rasterizer>> {
     #[cfg(feature = "vulkan")]
-    return boxed(crate::adapters::vulkan::Vulkan { passes_only });
+    return boxed(crate::adapters::vulkan::Vulkan { passes_only, on });
     #[cfg(not(feature = "vulkan"))]
     {
-        let _ = passes_only;
+        let _ = (passes_only, on);
         None
     }
+}
+
+/// `vulkan@DEVICE` or `vulkan-passes@DEVICE`: the row's adapter on the
+/// device whose name contains DEVICE; `None` for any other name.
+fn on_device(name: &str) -> Option<(&'static Entry, bool)> {
+    let (row, device) = name.split_once('@')?;
+    let passes_only = match row {
+        "vulkan" => false,
+        "vulkan-passes" => true,
+        _ => return None,
+    };
+    let ok = !device.trim().is_empty() && !device.contains('@');
+    ok.then(|| (entry(row).expect("a row"), passes_only))
 }
 
 fn lavapipe() -> Option<Box<dyn Rasterizer>> {
@@ -367,6 +380,13 @@ pub enum Missing {
 /// A rasterizer by name: a built-in one, or an external program
 /// (`external:…`, `external-persistent:…`, or either as `NAME=…`).
 pub fn resolve(name: &str) -> Result<Box<dyn Rasterizer>, Missing> {
+    if let Some((e, passes_only)) = on_device(name) {
+        // The name lives as long as the process, as the rows' names do.
+        let on: &'static str = Box::leak(name.to_owned().into_boxed_str());
+        return vulkan(passes_only, Some(on)).ok_or(Missing::NotCompiled {
+            feature: e.feature.unwrap_or_default(),
+        });
+    }
     if let Some(e) = entry(name) {
         return e.make().ok_or(Missing::NotCompiled {
             feature: e.feature.unwrap_or_default(),
@@ -395,9 +415,17 @@ pub fn matrix_default_rows() -> Vec<String> {
             rows.push(PYTHON_EXAMPLE.to_owned());
         }
         rows.push(e.name.to_owned());
+        if e.name == "vulkan" {
+            rows.push(SWIFTSHADER_ROW.to_owned());
+        }
     }
     rows
 }
+
+/// The matrix's row for Google's SwiftShader beside the default Vulkan
+/// device: a row that says why where SwiftShader's ICD is not given to
+/// the loader (`VK_ADD_DRIVER_FILES`, docs/drivers.md).
+pub const SWIFTSHADER_ROW: &str = "vulkan@swiftshader";
 
 /// The built-in name nearest to a mistyped one, if one is plausibly meant.
 pub fn suggestion(name: &str) -> Option<&'static str> {
@@ -480,6 +508,7 @@ mod tests {
                 "euc",
                 PYTHON_EXAMPLE,
                 "vulkan",
+                SWIFTSHADER_ROW,
                 "lavapipe",
                 "gl",
             ]
@@ -497,6 +526,25 @@ mod tests {
         for name in crate::production::foils::SAMPLER_FOILS {
             assert_eq!(entry(name).map(|e| e.kind), Some(Kind::Foil));
         }
+    }
+
+    #[test]
+    fn a_vulkan_device_is_named_after_an_at() {
+        for (name, device_named) in [
+            ("vulkan@swiftshader", true),
+            ("vulkan-passes@llvmpipe", true),
+            ("vulkan@", false),
+            ("vulkan@a@b", false),
+            ("gl@llvmpipe", false),
+        ] {
+            assert_eq!(on_device(name).is_some(), device_named, "{name}");
+        }
+        #[cfg(feature = "vulkan")]
+        assert_eq!(
+            by_name("vulkan@swiftshader").map(|r| r.name().to_owned()),
+            Some("vulkan@swiftshader".to_owned())
+        );
+        assert_eq!(resolve("gl@llvmpipe").err(), Some(Missing::Unknown));
     }
 
     #[test]

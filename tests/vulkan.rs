@@ -23,7 +23,10 @@ use rastercheck::scene::{PolygonFill, Primitive, Scene};
 
 /// The adapter as `-r vulkan` makes it: native MSAA where the device has
 /// the pattern, shifted passes otherwise.
-const VULKAN: Vulkan = Vulkan { passes_only: false };
+const VULKAN: Vulkan = Vulkan {
+    passes_only: false,
+    on: None,
+};
 
 mod common;
 use common::adapters::{
@@ -234,7 +237,10 @@ fn each_probe_lights_exactly_the_probed_slot() {
     let Some(_record) = available() else {
         return;
     };
-    let passes = Vulkan { passes_only: true };
+    let passes = Vulkan {
+        passes_only: true,
+        on: None,
+    };
     for (pattern, n) in [(N_ROOKS_8, 8), (STANDARD_4, 4)] {
         for candidate in [&VULKAN, &passes] {
             assert_each_probe_lights_its_slot(candidate, pattern, n);
@@ -251,7 +257,12 @@ fn standard_4x_is_drawn_natively_where_offered() {
     };
     let declared = VULKAN.declared().unwrap();
     eprintln!("{declared}");
-    let passes = Vulkan { passes_only: true }.declared().unwrap();
+    let passes = Vulkan {
+        passes_only: true,
+        on: None,
+    }
+    .declared()
+    .unwrap();
     assert!(passes.contains("shifted passes only"), "{passes}");
     if vulkan::device_description().is_ok_and(|d| d.contains("llvmpipe")) {
         assert!(

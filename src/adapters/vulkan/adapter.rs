@@ -25,14 +25,32 @@ pub const PASSES_NAME: &str = "vulkan-passes";
 pub struct Vulkan {
     /// Shifted passes even where the device multisamples the pattern.
     pub passes_only: bool,
+    /// The whole name `vulkan@DEVICE` (or `vulkan-passes@DEVICE`) when a
+    /// device was named: the device whose name contains DEVICE
+    /// (case-insensitive). `None`: the default device.
+    pub on: Option<&'static str>,
+}
+
+impl Vulkan {
+    /// The device asked for: DEVICE of `vulkan@DEVICE`.
+    fn wanted(&self) -> Option<&str> {
+        self.on
+            .and_then(|name| name.split_once('@'))
+            .map(|(_, device)| device)
+    }
+
+    /// The shared device this adapter draws on.
+    fn shared(&self) -> Result<&'static std::sync::Mutex<Shared>, &'static String> {
+        shared(self.wanted())
+    }
 }
 
 impl Rasterizer for Vulkan {
     fn name(&self) -> &str {
-        if self.passes_only {
-            PASSES_NAME
-        } else {
-            NAME
+        match self.on {
+            Some(name) => name,
+            None if self.passes_only => PASSES_NAME,
+            None => NAME,
         }
     }
 
@@ -86,13 +104,15 @@ impl Rasterizer for Vulkan {
     /// bits, or unsnapped, is judged at the device's. `None` where the
     /// device cannot be made (nothing is drawn then).
     fn fixed_subpixel_bits(&self) -> Option<u32> {
-        let shared = shared().ok()?;
+        let shared = self.shared().ok()?;
         let bits = lock(shared).device.offers.subpixel_bits;
         Some(bits)
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let shared = shared().map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
+        let shared = self
+            .shared()
+            .map_err(|why| RasterError::Failed(format!("vulkan: {why}")))?;
         let mut shared = lock(shared);
         let Shared {
             device,
@@ -154,7 +174,7 @@ impl Rasterizer for Vulkan {
     /// (`messenger.rs`): every case's, of both adapters on the shared
     /// device.
     fn api_record(&self) -> Option<ApiRecord> {
-        let shared = shared().ok()?;
+        let shared = self.shared().ok()?;
         let record = lock(shared).device.api_record();
         Some(record)
     }
@@ -162,7 +182,7 @@ impl Rasterizer for Vulkan {
     /// The device, its driver and version, once the device is made, and
     /// how samples and instants are drawn.
     fn declared(&self) -> Option<String> {
-        let shared = shared().ok()?;
+        let shared = self.shared().ok()?;
         let shared = lock(shared);
         let offers = &shared.device.offers;
         let sampling = if self.passes_only {

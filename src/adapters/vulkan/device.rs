@@ -118,7 +118,7 @@ pub(super) const INSTALL_HINT: &str =
 impl Device {
     /// The device, with the Khronos validation layer enabled where this
     /// process asks for it (`messenger::asked`) or `validate` insists.
-    pub(super) fn new(validate: bool) -> Result<Device, String> {
+    pub(super) fn new(validate: bool, wanted: Option<&str>) -> Result<Device, String> {
         gpu::quiet_mesa();
         // SAFETY: loading libvulkan runs its initialisers, as any Vulkan
         // program does.
@@ -152,7 +152,7 @@ impl Device {
         };
         let made = messenger.and_then(|messenger| {
             // SAFETY: a valid instance; the messenger is destroyed with it.
-            match unsafe { Self::on(entry.clone(), instance.clone()) } {
+            match unsafe { Self::on(entry.clone(), instance.clone(), wanted) } {
                 Ok(device) => Ok((device, messenger)),
                 Err(e) => {
                     if let Some(m) = &messenger {
@@ -183,8 +183,12 @@ impl Device {
 
     /// The device on `instance`, without its messenger and record (`new`
     /// gives it them).
-    unsafe fn on(entry: ash::Entry, instance: ash::Instance) -> Result<Device, String> {
-        let physical = choose(&instance)?;
+    unsafe fn on(
+        entry: ash::Entry,
+        instance: ash::Instance,
+        wanted: Option<&str>,
+    ) -> Result<Device, String> {
+        let physical = choose(&instance, wanted)?;
         let properties = instance.get_physical_device_properties(physical);
         let name = properties
             .device_name_as_c_str()
@@ -404,10 +408,14 @@ impl Drop for Device {
     }
 }
 
-/// The physical device: the one whose name contains
-/// `RASTERCHECK_VULKAN_DEVICE` (case-insensitive), else the first that is
-/// not a CPU, else the first.
-unsafe fn choose(instance: &ash::Instance) -> Result<vk::PhysicalDevice, String> {
+/// The physical device: the one whose name contains `wanted` (the
+/// `DEVICE` of `-r vulkan@DEVICE`), else `RASTERCHECK_VULKAN_DEVICE`
+/// (either case-insensitive), else the first that is not a CPU, else the
+/// first.
+unsafe fn choose(
+    instance: &ash::Instance,
+    wanted: Option<&str>,
+) -> Result<vk::PhysicalDevice, String> {
     let devices = instance
         .enumerate_physical_devices()
         .map_err(|e| format!("listing Vulkan devices: {e}"))?;
@@ -422,7 +430,13 @@ unsafe fn choose(instance: &ash::Instance) -> Result<vk::PhysicalDevice, String>
             (d, name, p.device_type)
         })
         .collect();
-    if let Ok(wanted) = std::env::var("RASTERCHECK_VULKAN_DEVICE") {
+    let asked = match wanted {
+        Some(w) => Some((w.to_owned(), format!("-r vulkan@{w}"))),
+        None => std::env::var("RASTERCHECK_VULKAN_DEVICE")
+            .ok()
+            .map(|w| (w.clone(), format!("RASTERCHECK_VULKAN_DEVICE={w}"))),
+    };
+    if let Some((wanted, said)) = asked {
         let lower = wanted.to_lowercase();
         return named
             .iter()
@@ -430,7 +444,10 @@ unsafe fn choose(instance: &ash::Instance) -> Result<vk::PhysicalDevice, String>
             .map(|(d, _, _)| *d)
             .ok_or_else(|| {
                 let all: Vec<&str> = named.iter().map(|(_, n, _)| n.as_str()).collect();
-                format!("RASTERCHECK_VULKAN_DEVICE={wanted} names none of the devices {all:?}")
+                format!(
+                    "{said} names none of the devices {all:?} (a driver outside the \
+                     loader's search path is added with VK_ADD_DRIVER_FILES=ICD.json)"
+                )
             });
     }
     named

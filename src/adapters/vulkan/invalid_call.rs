@@ -19,7 +19,7 @@ pub const INVALID_CALL_VUID: &str = "VUID-VkSamplerCreateInfo-anisotropyEnable-0
 /// on, and every driver here draws anisotropically anyway), destroys it
 /// and the device, and returns what that device's messenger heard.
 pub fn invalid_call_record() -> Result<ApiRecord, String> {
-    let device = Device::new(true)?;
+    let device = Device::new(true, None)?;
     let info = vk::SamplerCreateInfo::default()
         .anisotropy_enable(true)
         .max_anisotropy(4.0)

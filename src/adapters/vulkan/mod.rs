@@ -28,4 +28,4 @@ mod unpack;
 pub use adapter::{Vulkan, NAME, PASSES_NAME};
 pub use invalid_call::{invalid_call_record, INVALID_CALL_VUID};
 pub use messenger::ask_for_validation;
-pub use shared::device_description;
+pub use shared::{device_description, device_description_of};
