@@ -759,3 +759,29 @@ fn agree(got: &Frame, want: &Frame, m: f64) -> Result<(), String> {
     }
     Ok(())
 }
+
+/// `interpolate_from: unsnapped` reads the unsnapped piece's values at
+/// samples outside it, wherever its coarser-snapped twin covers. Found by
+/// `rastercheck fuzz -r production --family clip --seed 7` (case 2482,
+/// shrunk): a vertex at w = 0 and one at w = 979000, snapped at 1 bit.
+/// Production shaded that piece by the screen path's f32 set-up, whose
+/// bound holds inside a triangle only: attribute 0 was off by 4.4e-4
+/// against a bound of 1.5e-5 before it took the exact path there.
+#[test]
+fn values_read_outside_the_unsnapped_piece_are_within_the_bound() {
+    let s = scene(
+        r#"{"name": "fuzz_production_interpolation_7_2482", "canvas": {"width": 19, "height": 16},
+  "rules": {"subpixel_bits": 1, "provoking_vertex": "last", "clip_xy": "clip-then-snap",
+            "clip_z": "per-sample", "depth": "clip", "interpolate_from": "unsnapped"},
+  "viewport": {"x": 8.5, "y": 5.5, "width": 29, "height": 23, "min_depth": 0, "max_depth": 1},
+  "primitives": [{"triangle": [{"clip": [-1, -0.25, 0, 0], "attributes": [1]},
+    {"clip": [0, -61184, 0, 979000], "attributes": [0]}, {"clip": [1, 0, 0, 3], "attributes": [0]}]}]}"#,
+    );
+    let (_, run) = common::run(&s, &Production);
+    assert_eq!(
+        run.verdict,
+        rastercheck::harness::judge::Verdict::Pass,
+        "{:?}",
+        run.verdict
+    );
+}

@@ -146,7 +146,7 @@ impl Draw<'_> {
         let Some(piece) = Piece::new(h, rules.fill_rule) else {
             return;
         };
-        let values_of = |piece: &Piece, h: &[Projected; 3], mapping: &Mapping| {
+        let values_of = |piece: &Piece, h: &[Projected; 3], mapping: &Mapping, extrapolated| {
             let values = Values::new(
                 piece,
                 h,
@@ -155,6 +155,7 @@ impl Draw<'_> {
                 flat,
                 self.plan,
                 mapping,
+                extrapolated,
             );
             match &rules.depth_bias {
                 Some(bias) if self.plan.depth => {
@@ -163,12 +164,12 @@ impl Draw<'_> {
                 _ => values,
             }
         };
-        let values = values_of(&piece, h, self.mapping);
+        let values = values_of(&piece, h, self.mapping, false);
         let unsnapped = exact.and_then(|h| {
             let mapping = self
                 .unsnapped
                 .expect("exact positions come with their mapping");
-            Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h, mapping), p))
+            Piece::new(h, rules.fill_rule).map(|p| (values_of(&p, h, mapping, true), p))
         });
         let depth_test = rules.clip.depth == DepthMode::Clip && rules.clip.z == ClipZ::PerSample;
         let [[x0, x1], [y0, y1]] = homogeneous::region(h, self.limit);

@@ -68,7 +68,12 @@ enum Attribute {
 impl Values {
     /// Sets up the values of `piece`, whose vertices are `vertices`
     /// (projected as `h`); `flat` holds the original triangle's provoking
-    /// vertex's attributes.
+    /// vertex's attributes. `extrapolated`: the values are also read at
+    /// samples outside the piece (the unsnapped piece of `interpolate_from:
+    /// unsnapped`, read wherever its snapped twin covers), where the
+    /// screen path's f32 set-up, bounded inside a triangle, is not: such a
+    /// piece takes the exact path.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         piece: &Piece,
         h: &[Projected; 3],
@@ -77,6 +82,7 @@ impl Values {
         flat: &[RBig],
         plan: &Plan,
         mapping: &Mapping,
+        extrapolated: bool,
     ) -> Values {
         let weights: [RBig; 3] = [0, 1, 2].map(|i| &piece.scale[i] * &h[i].k);
         let (depth, q) = integers(&[0, 1, 2].map(|i| &weights[i] * &vertices[i].clip[2]));
@@ -84,7 +90,10 @@ impl Values {
         let (weight, q_weight) = integers(&weights);
         let how = if !plan.interpolates() {
             How::None
-        } else if piece.in_front && matches!(piece.edges, super::homogeneous::Edges::Small(_)) {
+        } else if piece.in_front
+            && !extrapolated
+            && matches!(piece.edges, super::homogeneous::Edges::Small(_))
+        {
             How::Screen(screen_shading(
                 piece,
                 vertices,
