@@ -355,6 +355,18 @@ pub trait Rasterizer: Send + Sync {
         false
     }
 
+    /// Whether this rasterizer draws `diamond-exit` lines with the latitude
+    /// its API allows instead of the exact rule (SPEC.md §4.2.1): Vulkan's
+    /// Bresenham lines and GL's aliased lines may move a fragment by one
+    /// unit, change the count by one, and so on. A case's diamond-exit
+    /// lines are then judged under those rules against the exact
+    /// diamond-exit fragments, the fragments that used the latitude
+    /// counted apart, and the result says so. `false` for a rasterizer
+    /// that draws the exact rule.
+    fn diamond_exit_latitude(&self) -> bool {
+        false
+    }
+
     /// The clip-space conventions (`clip_xy`, `clip_z`) this rasterizer
     /// follows whatever a case states, when it cannot follow the case's: a
     /// driver clips as its hardware or its software pipeline does (SPEC.md

@@ -170,6 +170,10 @@ pub(crate) fn print_outcome(
         if let Some(ties) = result.metrics.as_ref().and_then(|m| m.ties.as_ref()) {
             outln!("        {}", ties.line());
         }
+        // The latitude for diamond-exit lines (SPEC.md §4.2.1): what used it.
+        if let Some(lines) = result.metrics.as_ref().and_then(|m| m.latitude.as_ref()) {
+            outln!("        {}", lines.line());
+        }
         if let Verdict::Fail(reasons) = &result.verdict {
             for reason in reasons {
                 outln!("        {reason}");

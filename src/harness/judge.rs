@@ -11,7 +11,7 @@ use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
-use crate::reference::{self, TieSet};
+use crate::reference::{self, DiamondLine, TieSet};
 use crate::scene::Scene;
 
 /// How a candidate did on a case.
@@ -119,7 +119,7 @@ pub fn run_candidate(
     // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
-    if own.any() || own.no_tie_rule {
+    if own.any() || own.no_tie_rule || own.line_latitude {
         if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
@@ -143,30 +143,58 @@ pub fn run_candidate(
             ),
             false => None,
         };
+        // Under the latitude for diamond-exit lines (SPEC.md §4.2.1) the
+        // oracle also gives each line's own fragments, drawn as restated.
+        let lines = match own.line_latitude {
+            true => std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                reference::diamond_lines(&under, &plan)
+            }))
+            .map_err(|panic| pass_on_deadline(panic, "panicked")),
+            false => Ok(None),
+        };
         let restated = match own.any() {
             true => Some(catch_oracle_run(|| {
                 run_reference_planned(&under, plan.clone())
             })),
             false => None,
         };
-        let mut run = match (restated, ties.transpose()) {
-            (Some(Err(why)), _) | (_, Err(why)) => {
+        let mut run = match (restated, ties.transpose(), lines) {
+            (Some(Err(why)), _, _) | (_, Err(why), _) | (_, _, Err(why)) => {
                 let why = format!(
                     "the reference under {} it follows failed: {why}",
                     own.describe()
                 );
                 CandidateRun::without_frame(name, Verdict::Error(why), elapsed)
             }
-            (Some(Ok(restated)), Ok(ties)) => {
+            (Some(Ok(restated)), Ok(ties), Ok(lines)) => {
                 let under = bounds_met_by(under, &restated);
-                judge(&under, &restated, frame, name, elapsed, ties.as_ref())
+                let oracle = Oracle {
+                    ties: ties.as_ref(),
+                    lines: lines.as_deref(),
+                };
+                judge(&under, &restated, frame, name, elapsed, oracle)
             }
-            (None, Ok(ties)) => judge(&under, reference, frame, name, elapsed, ties.as_ref()),
+            (None, Ok(ties), Ok(lines)) => {
+                let oracle = Oracle {
+                    ties: ties.as_ref(),
+                    lines: lines.as_deref(),
+                };
+                judge(&under, reference, frame, name, elapsed, oracle)
+            }
         };
         run.judged = own;
         return run;
     }
-    judge(scene, reference, frame, name, elapsed, None)
+    judge(scene, reference, frame, name, elapsed, Oracle::default())
+}
+
+/// What the oracle gives beyond its frame for a candidate judged under a
+/// convention that restates nothing: its tie set (no tie rule, SPEC.md
+/// §3.1.1) and each diamond-exit line's fragments (the latitude, §4.2.1).
+#[derive(Clone, Copy, Default)]
+struct Oracle<'a> {
+    ties: Option<&'a TieSet>,
+    lines: Option<&'a [DiamondLine]>,
 }
 
 /// The restated case with its antialiasing bounds (`max_coverage_error`,
@@ -192,6 +220,7 @@ fn bounds_met_by(mut under: Scene, reference: &ReferenceRun) -> Scene {
         part_areas: None,
         depth_allowed: reference.depth_allowed.as_deref(),
         ties: None,
+        latitude: None,
     };
     // The exact mask, box-resolved: what a rasterizer exact at these
     // conventions resolves (the reference's own resolved value is the
@@ -231,8 +260,9 @@ fn judge(
     frame: Frame,
     name: String,
     elapsed: Duration,
-    ties: Option<&TieSet>,
+    oracle: Oracle,
 ) -> CandidateRun {
+    let ties = oracle.ties;
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return CandidateRun {
@@ -272,6 +302,7 @@ fn judge(
         part_areas: part_areas.as_deref(),
         depth_allowed: reference.depth_allowed.as_deref(),
         ties,
+        latitude: oracle.lines,
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the

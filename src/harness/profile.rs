@@ -209,6 +209,9 @@ impl Rasterizer for Profiled {
     fn api_record(&self) -> Option<crate::rasterizer::ApiRecord> {
         self.inner.api_record()
     }
+    fn diamond_exit_latitude(&self) -> bool {
+        self.inner.diamond_exit_latitude()
+    }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         self.rule.fill_rule()
     }
@@ -307,6 +310,11 @@ pub struct OwnConventions {
     /// Its samples lie at whole coordinates: the case is judged moved by
     /// (½, ½).
     pub integer_centre: bool,
+    /// It draws diamond-exit lines with its API's latitude and the case
+    /// has some (screen space, not antialiased): they are judged under
+    /// the latitude against the exact fragments (SPEC.md §4.2.1), which
+    /// restates nothing.
+    pub line_latitude: bool,
 }
 
 impl OwnConventions {
@@ -374,6 +382,13 @@ impl OwnConventions {
             sample_pattern,
             y_up,
             integer_centre: candidate.fixed_pixel_centre() == Some(PixelCentre::Integer),
+            line_latitude: candidate.diamond_exit_latitude()
+                && !scene.in_clip_space()
+                && scene.effects.antialias.is_none()
+                && scene
+                    .primitives
+                    .iter()
+                    .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::DiamondExit)),
         }
     }
 
@@ -521,6 +536,9 @@ impl OwnConventions {
         }
         if self.integer_centre {
             words.push("samples at whole coordinates".to_owned());
+        }
+        if self.line_latitude {
+            words.push("the latitude for diamond-exit lines".to_owned());
         }
         words.join(" and ")
     }

@@ -29,6 +29,9 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
             "coverage: the candidate drew nothing where the reference draws something".to_owned(),
         );
     }
+    if let Some(l) = &m.latitude {
+        out.extend(l.failures());
+    }
     if let Some(w) = &m.watertight {
         if !w.is_watertight() {
             out.push(format!(

@@ -6,13 +6,14 @@ use super::area;
 use super::coverage::{self, CoverageMetrics};
 use super::depth;
 use super::interpolation::{self, ChannelError};
+use super::latitude::{self, LatitudeMetrics};
 use super::line::{self, LineMetrics};
 use super::parts;
 use super::ties::{self, TieMetrics};
 use super::time::{self, TimeMetrics};
 use super::watertight::{self, WatertightMetrics};
 use crate::frame::Frame;
-use crate::reference::TieSet;
+use crate::reference::{DiamondLine, TieSet};
 use crate::scene::{DepthFormat, Number, Scene};
 
 /// The default interpolation bound, relative to the channel's largest vertex
@@ -37,6 +38,9 @@ pub struct Metrics {
     /// A candidate with no tie rule (SPEC.md §3.1.1): its tie samples,
     /// and the overdraw and holes they got, counted apart.
     pub ties: Option<TieMetrics>,
+    /// A candidate that draws diamond-exit lines with its API's latitude
+    /// (SPEC.md §4.2.1): its lines judged under it, what used it counted.
+    pub latitude: Option<LatitudeMetrics>,
 }
 
 /// What the oracle knows exactly beyond the reference's frame, for the
@@ -61,6 +65,10 @@ pub struct Known<'a> {
     /// The samples exactly on an edge, for a candidate that declares no
     /// tie rule (`reference::tie_set`): judged off them.
     pub ties: Option<&'a TieSet>,
+    /// Each diamond-exit line's exact fragments, for a candidate that
+    /// draws them with its API's latitude (`reference::diamond_lines`):
+    /// judged under it.
+    pub latitude: Option<&'a [DiamondLine]>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -105,7 +113,10 @@ pub fn measure_known(
     known: &Known,
 ) -> Metrics {
     let (interior, classes) = (known.interior, known.classes);
-    let coverage = coverage::compare_off_ties(reference, candidate, known.ties);
+    let mut coverage = coverage::compare_off_ties(reference, candidate, known.ties);
+    let latitude = known
+        .latitude
+        .and_then(|lines| latitude::measure(lines, reference, candidate, &mut coverage));
     let watertight = interior
         .and_then(|inside| watertight::measure_off_ties(inside, reference, candidate, known.ties));
     let ties = known
@@ -150,6 +161,7 @@ pub fn measure_known(
             antialias,
             time,
             ties,
+            latitude,
         };
     }
     let expect = &scene.expect;
@@ -209,6 +221,7 @@ pub fn measure_known(
         antialias,
         time,
         ties,
+        latitude,
     }
 }
 

@@ -3,7 +3,8 @@
 //!
 //! `measure.rs` measures a candidate with every metric that applies
 //! (`coverage.rs`, `watertight.rs`, `line.rs`, `interpolation.rs` and
-//! `depth.rs`, `antialias.rs` and `parts.rs` (an area method judged as one:
+//! `depth.rs`, `latitude.rs` (diamond-exit lines under their API's latitude),
+//! `antialias.rs` and `parts.rs` (an area method judged as one:
 //! `area.rs`), `time.rs`, `ties.rs` (a candidate with no tie rule judged off
 //! the ties); the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
@@ -18,6 +19,7 @@ pub(crate) mod difference;
 pub mod error_bounds;
 pub mod failures;
 pub mod interpolation;
+pub mod latitude;
 pub mod line;
 pub mod measure;
 pub mod parts;
@@ -29,6 +31,7 @@ pub use antialias::{AntialiasMetrics, AreaClass};
 pub use coverage::{CoverageMetrics, SampleDiff};
 pub use failures::failures;
 pub use interpolation::ChannelError;
+pub use latitude::LatitudeMetrics;
 pub use line::LineMetrics;
 pub use measure::{
     measure, measure_known, measure_with_areas, Known, Metrics, DEFAULT_RELATIVE_BOUND,

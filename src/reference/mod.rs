@@ -15,7 +15,9 @@
 //!
 //! `visit.rs` is that traversal; `render.rs` writes the exact frame from
 //! it, `coverage.rs` counts coverage under any rule and the mesh interior,
-//! `ties.rs` the samples exactly on an edge (for a rasterizer with no tie rule);
+//! `ties.rs` the samples exactly on an edge (for a rasterizer with no tie rule),
+//! `latitude.rs` each diamond-exit line's own fragments (for one that draws
+//! them with its API's latitude);
 //! `rasterizer.rs` is the reference behind the one trait.
 
 pub mod area;
@@ -24,6 +26,7 @@ pub mod coverage;
 pub mod depth;
 pub mod exact;
 pub mod grid;
+pub mod latitude;
 pub mod line;
 pub mod motion;
 pub mod point;
@@ -37,6 +40,7 @@ mod visit;
 
 pub use area::{exact_areas, primitive_area, primitive_pixel_areas};
 pub use coverage::{coverage_under, mesh_interior};
+pub use latitude::{diamond_lines, DiamondLine};
 pub use rasterizer::Reference;
 pub use render::{depth_allowed, render, render_judged, render_with};
 pub use ties::{tie_set, TieOutcome, TieSample, TieSet};

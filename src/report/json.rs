@@ -262,6 +262,10 @@ pub struct ResultEntry {
     /// got, counted apart (never a failure).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ties: Option<TieMetrics>,
+    /// Diamond-exit lines judged under the latitude its API allows
+    /// (SPEC.md §4.2.1): the fragments and lines that used it, counted.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub line_latitude: Option<crate::metrics::LatitudeMetrics>,
     /// The clip conventions it was judged under, when they are its own and
     /// not the case's (`rules.clip`, SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -510,6 +514,7 @@ impl CaseEntry {
                     false => run.judged.fill_rule.map(|r| r.name()),
                 },
                 ties: run.metrics.as_ref().and_then(|m| m.ties.clone()),
+                line_latitude: run.metrics.as_ref().and_then(|m| m.latitude.clone()),
                 judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
                 judged_subpixel_bits: run.judged.subpixel_bits,
                 judged_snapping: run.judged.snapping.map(|s| match s {

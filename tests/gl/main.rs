@@ -387,10 +387,12 @@ fn each_polygon_starts_from_a_clear_stencil() {
     assert!(!frame.coverage.contains(&3));
 }
 
-/// `diamond-exit` lines are drawn with `GL_LINES` at width 1 and judged:
-/// lines with no sample, diamond corner or endpoint on a tie match the
-/// reference; the worked example, all ties, is judged too (GL breaks ties
-/// by its own perturbation, in y-up window coordinates), and fails.
+/// `diamond-exit` lines are drawn with `GL_LINES` at width 1 and judged
+/// under the latitude GL 4.6 §14.5.1 allows (SPEC.md §4.2.1): lines with
+/// no sample, diamond corner or endpoint on a tie match the reference; the
+/// worked example, all ties, departs from the exact rule (GL breaks ties
+/// by its own perturbation, in y-up window coordinates) within the
+/// latitude, and passes with its moved fragments counted.
 #[test]
 fn diamond_exit_lines_are_drawn_and_judged() {
     let Some(_record) = available() else {
@@ -413,8 +415,10 @@ fn diamond_exit_lines_are_drawn_and_judged() {
     );
     assert!(reference.frame.covered_samples() > 60);
     let (reference, r) = run(&case("lines/diamond_exit_worked_example"));
-    eprintln!("{}", report("diamond_exit_worked_example", &reference, &r));
-    assert!(matches!(r.verdict, Verdict::Fail(_)), "{:?}", r.verdict);
+    let shown = report("diamond_exit_worked_example", &reference, &r);
+    assert_eq!(r.verdict, Verdict::Pass, "{shown}");
+    let latitude = r.metrics.as_ref().and_then(|m| m.latitude.as_ref());
+    assert!(latitude.is_some_and(|l| l.moved > 0), "{shown}");
 }
 
 /// The line rules GL does not draw are refused with the reason

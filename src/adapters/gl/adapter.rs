@@ -67,6 +67,13 @@ impl Rasterizer for Gl {
         }
     }
 
+    /// GL's aliased lines, which draw `diamond-exit`, may depart from the
+    /// diamond-exit rule within the latitude GL 4.6 §14.5.1 allows: judged
+    /// under it (SPEC.md §4.2.1).
+    fn diamond_exit_latitude(&self) -> bool {
+        true
+    }
+
     /// GL lets the driver choose. llvmpipe clips against all six planes
     /// before the divide and snaps the new vertices (Mesa's draw module;
     /// measured on scenes that separate the conventions, `tests/gl/`: 6

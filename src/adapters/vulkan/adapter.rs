@@ -68,6 +68,14 @@ impl Rasterizer for Vulkan {
         Some(FillRule::TopLeft)
     }
 
+    /// Vulkan's Bresenham lines, which draw `diamond-exit`, may depart from
+    /// the diamond-exit rule within the latitude the spec allows
+    /// ("Bresenham Line Segment Rasterization"): judged under it (SPEC.md
+    /// §4.2.1).
+    fn diamond_exit_latitude(&self) -> bool {
+        true
+    }
+
     /// Vulkan lets the device choose. lavapipe clips against all six planes
     /// before the divide and snaps the new vertices (measured on scenes
     /// that separate the conventions, `tests/vulkan.rs`: 6 samples depart

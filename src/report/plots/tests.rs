@@ -211,6 +211,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 method: None,
                 judged_fill_rule: None,
                 ties: None,
+                line_latitude: None,
                 judged_clip: None,
                 judged_subpixel_bits: None,
                 judged_snapping: None,
