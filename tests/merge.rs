@@ -123,7 +123,9 @@ fn four_shards_merged_are_the_unsharded_run() {
     assert_eq!(judged(&a), judged(&b));
     assert!(b["totals"]["cases"].as_u64().unwrap() > 400);
     assert_eq!(b["sources"].as_array().unwrap().len(), 4);
-    assert_eq!(b["sources"][0]["machine"]["host"], "runner-4");
+    // The sources in shard order, each naming the machine it ran on.
+    assert_eq!(b["sources"][0]["machine"]["host"], "runner-1");
+    assert_eq!(b["sources"][3]["shard"], "4/4");
     assert_eq!(b["machine"]["host"], "merger");
     assert!(a["cases"][0]["hash"]
         .as_str()

@@ -97,8 +97,9 @@ fn holds(out: &Path, dir: &Path) -> bool {
 
 fn print(inputs: &[Input], runs: usize, totals: &crate::report::json::Totals) {
     outln!(
-        "merged {} reports ({runs} runs, {} rows): {} cases",
+        "merged {} reports ({runs} run{}, {} rows): {} cases",
         inputs.len(),
+        if runs == 1 { "" } else { "s" },
         totals.verdicts.len(),
         totals.cases
     );
