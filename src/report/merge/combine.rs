@@ -471,3 +471,125 @@ fn sum_records(records: &[&ApiRecord]) -> Option<ApiRecord> {
             .or_else(|| first.first.clone()),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::harness::discover::CaseFile;
+    use crate::report::json::{LimitsInfo, ResultEntry};
+
+    /// A report of `ids` judged `pass` by production, as shard `shard` on `host`.
+    fn input(ids: &[&str], shard: Option<&str>, host: &str) -> Input {
+        let mut report = Report::new(
+            vec!["run".into()],
+            vec![RasterizerInfo {
+                name: "production".into(),
+                foil: false,
+                declared: None,
+                api_record: None,
+            }],
+            LimitsInfo::of(&crate::scene::Limits::default()),
+        );
+        report.shard = shard.map(str::to_owned);
+        report.machine.host = host.into();
+        report.cases = ids
+            .iter()
+            .map(|id| {
+                let mut case = CaseEntry::not_run(&CaseFile {
+                    id: (*id).into(),
+                    path: PathBuf::from(format!("cases/{id}.json")),
+                });
+                case.status = "ran";
+                case.results.push(ResultEntry {
+                    rasterizer: "production".into(),
+                    verdict: "pass",
+                    reasons: Vec::new(),
+                    flaky: None,
+                    time_ms: 0.0,
+                    method: None,
+                    judged_fill_rule: None,
+                    ties: None,
+                    judged_clip: None,
+                    judged_subpixel_bits: None,
+                    judged_snapping: None,
+                    judged_sample_pattern: None,
+                    judged_y: None,
+                    judged_pixel_centre: None,
+                    metrics: None,
+                    files: Vec::new(),
+                });
+                case
+            })
+            .collect();
+        Input {
+            file: PathBuf::from(format!("{host}-{}", shard.unwrap_or("whole"))),
+            dir: PathBuf::from("."),
+            report,
+        }
+    }
+
+    fn ids(merged: &Merged) -> Vec<&str> {
+        merged.report.cases.iter().map(|c| c.id.as_str()).collect()
+    }
+
+    #[test]
+    fn shards_go_back_into_the_order_they_were_dealt_from() {
+        // a b c d e dealt to 2 shards: a c e, b d; given in either order.
+        let one = input(&["a", "c", "e"], Some("1/2"), "x");
+        let two = input(&["b", "d"], Some("2/2"), "y");
+        let merged = merge(&[two.clone(), one.clone()], Vec::new()).unwrap();
+        assert_eq!(ids(&merged), ["a", "b", "c", "d", "e"]);
+        assert_eq!(merged.report.rasterizers.len(), 1);
+        // A foil of the merge: the shards' cases one after the other are
+        // not the run's order.
+        let concatenated: Vec<&str> = one
+            .report
+            .cases
+            .iter()
+            .chain(&two.report.cases)
+            .map(|c| c.id.as_str())
+            .collect();
+        assert_ne!(ids(&merged), concatenated);
+    }
+
+    #[test]
+    fn shards_that_were_not_dealt_from_one_selection_are_refused() {
+        let one = input(&["a", "c", "e"], Some("1/2"), "x");
+        let two = input(&["b"], Some("2/2"), "y");
+        let errors = merge(&[one, two], Vec::new()).unwrap_err();
+        assert!(
+            errors[0].contains("not the shards of one selection"),
+            "{errors:?}"
+        );
+    }
+
+    #[test]
+    fn one_rasterizer_on_two_hosts_is_two_rows() {
+        let a = input(&["a", "b"], None, "board-a");
+        let b = input(&["a", "b"], None, "board-b");
+        let merged = merge(&[a, b], Vec::new()).unwrap();
+        let rows: Vec<&str> = merged
+            .report
+            .rasterizers
+            .iter()
+            .map(|r| r.name.as_str())
+            .collect();
+        assert_eq!(rows, ["production on board-a", "production on board-b"]);
+        assert_eq!(
+            merged.report.cases[1].results[1].rasterizer,
+            "production on board-b"
+        );
+        assert_eq!(merged.runs, 2);
+    }
+
+    #[test]
+    fn a_path_out_of_the_report_folder_is_refused() {
+        let mut a = input(&["a"], None, "h");
+        a.report.cases[0].page = Some("../../etc/passwd".into());
+        let errors = merge(&[a], Vec::new()).unwrap_err();
+        assert!(
+            errors[0].contains("not a path inside the report folder"),
+            "{errors:?}"
+        );
+    }
+}
