@@ -24,7 +24,10 @@ trap 'rm -rf "$corpus"' EXIT
 env -u RUSTFLAGS -u CARGO_BUILD_RUSTFLAGS cargo run --quiet --release \
     --manifest-path "$root/Cargo.toml" --target-dir "$root/target" -- \
     fuzz --corpus "$corpus" --corpus-cases "$root/cases"
-for t in case_json scene_reference_vs_production protocol_response exact_arithmetic; do
+# Every target cargo-fuzz knows (fuzz/Cargo.toml's [[bin]]s), so that a new
+# one is built and shipped without an edit here.
+targets="$(cargo fuzz list)"
+for t in $targets; do
     cp "target/$triple/release/$t" "$out/"
     rm -f "$out/${t}_seed_corpus.zip"
     python3 - "$corpus/$t" "$out/${t}_seed_corpus.zip" <<'PY'

@@ -10,8 +10,8 @@ use clap::{Parser, Subcommand};
 
 use rastercheck::commands::{
     self, baseline::BaselineCommand, bench::BenchArgs, bless::BlessArgs, diff::DiffArgs,
-    docs::DocsArgs, fuzz::FuzzArgs, matrix::MatrixArgs, probe::ProbeArgs, run::RunArgs,
-    show::ShowArgs, Exit,
+    docs::DocsArgs, fuzz::FuzzArgs, matrix::MatrixArgs, merge::MergeArgs, probe::ProbeArgs,
+    run::RunArgs, show::ShowArgs, Exit,
 };
 
 /// The system allocator, counting only while `bench` measures a method's
@@ -63,6 +63,10 @@ enum Command {
     /// fixed, added and removed cases, metric deltas worst first; exit 1
     /// on a regression.
     Diff(DiffArgs),
+    /// Merge reports (report.json, or report folders) from the shards of
+    /// one run, or from the same cases on other rasterizers or machines,
+    /// into one report folder; disagreeing reports exit 2.
+    Merge(MergeArgs),
     /// Check (or with --write rewrite) the generated blocks of README.md
     /// and docs/: tables and figures taken from the code and the cases.
     Docs(DocsArgs),
@@ -95,6 +99,7 @@ fn main() -> ExitCode {
         Command::Probe(args) => commands::probe::probe(args),
         Command::Bench(args) => commands::bench::bench(args),
         Command::Diff(args) => commands::diff::diff(args),
+        Command::Merge(args) => commands::merge::merge(args),
         Command::Docs(args) => commands::docs::docs(args),
         Command::Rasterizers => commands::list_rasterizers(),
     };

@@ -244,7 +244,7 @@ pub fn refuse_last_provoking(scene: &Scene, who: &str) -> Result<(), RasterError
 /// Khronos validation layer through a debug-utils messenger, or GL's
 /// KHR_debug. A verdict drawn by invalid calls may rest on undefined
 /// behaviour, so a record that is not clean is reported beside them.
-#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct ApiRecord {
     /// What checked the calls ("the Khronos validation layer", "KHR_debug");
     /// `None` where only the driver's own messages were counted.

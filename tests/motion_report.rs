@@ -63,6 +63,7 @@ fn outcomes(dir: &Path, slides: &[Slide]) -> Vec<CaseOutcome> {
                 reference: Some(reference),
                 golden: Some(GoldenStatus::Matches),
                 candidates: runs,
+                hash: None,
             }
         })
         .collect()

@@ -18,6 +18,7 @@ pub mod exit;
 pub mod fuzz;
 pub mod limits;
 pub mod matrix;
+pub mod merge;
 pub mod names;
 pub mod probe;
 pub mod rasterizers;

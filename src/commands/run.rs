@@ -170,6 +170,7 @@ pub fn run(args: RunArgs) -> Exit {
             .collect(),
         LimitsInfo::of(&limits),
     );
+    report.shard = shard.map(|(i, n)| format!("{i}/{n}"));
     report.cases = files.iter().map(CaseEntry::not_run).collect();
     // Held (locked) until the run returns.
     let mut _claimed = None;

@@ -16,7 +16,7 @@ use serde::Serialize;
 use crate::frame::Frame;
 
 /// One repetition's outcome, as reports name it.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct Repetition {
     /// Which repetition, from 1.
     pub repetition: usize,
@@ -38,7 +38,7 @@ impl Repetition {
 }
 
 /// A sample (or a pixel, in a per-pixel channel) of a frame.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct At {
     pub x: u32,
     pub y: u32,
@@ -49,7 +49,7 @@ pub struct At {
 
 /// How one channel of a later repetition's frame differs from the first
 /// repetition's.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct Difference {
     /// The later repetition (the first is what it is compared with).
     pub repetition: usize,
@@ -92,7 +92,7 @@ impl Difference {
 
 /// A candidate whose repetitions of a case did not agree: every
 /// repetition's outcome, and where the frames differed.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct Flaky {
     pub outcomes: Vec<Repetition>,
     pub differences: Vec<Difference>,

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use super::case_hash::case_hash;
 use super::discover::CaseFile;
 use crate::scene::{parse_case, CaseError, Limits, Scene};
 
@@ -26,8 +27,24 @@ pub enum LoadError {
 /// regular file (symbolic links followed) is opened, so a FIFO or a device
 /// cannot hang the run, and its size is checked before a byte is read.
 pub fn load_checked(file: &CaseFile, limits: &Limits) -> Result<Scene, LoadError> {
-    let text = read_case_text(&file.path, limits.max_case_bytes)?;
-    parse_case(&text, &file.path.display().to_string(), limits).map_err(|e| {
+    load_hashed(file, limits).1
+}
+
+/// [`load_checked`], and the hash of the file's bytes when they could be
+/// read ([`case_hash`]), whether or not they parse.
+pub fn load_hashed(file: &CaseFile, limits: &Limits) -> (Option<String>, Result<Scene, LoadError>) {
+    let text = match read_case_text(&file.path, limits.max_case_bytes) {
+        Ok(text) => text,
+        Err(e) => return (None, Err(e)),
+    };
+    (
+        Some(case_hash(text.as_bytes())),
+        parse_text(file, &text, limits),
+    )
+}
+
+fn parse_text(file: &CaseFile, text: &str, limits: &Limits) -> Result<Scene, LoadError> {
+    parse_case(text, &file.path.display().to_string(), limits).map_err(|e| {
         if e.over_limit {
             LoadError::OverLimit(e)
         } else {

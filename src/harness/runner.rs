@@ -104,6 +104,8 @@ pub struct CaseOutcome {
     pub reference: Option<ReferenceRun>,
     pub golden: Option<GoldenStatus>,
     pub candidates: Vec<CandidateRun>,
+    /// The case file's bytes hashed (`case_hash`), when they could be read.
+    pub hash: Option<String>,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -150,6 +152,7 @@ impl CaseOutcome {
             reference: None,
             golden: None,
             candidates: Vec::new(),
+            hash: None,
         }
     }
 
@@ -194,8 +197,11 @@ pub fn run_case(
         reference: None,
         golden: None,
         candidates: Vec::new(),
+        hash: None,
     };
-    let scene = match load::load_checked(file, limits) {
+    let (hash, loaded) = load::load_hashed(file, limits);
+    outcome.hash = hash;
+    let scene = match loaded {
         Ok(scene) => scene,
         Err(load::LoadError::Unreadable(e)) => {
             outcome.problem = Some(Problem::Unreadable(e.to_string()));
@@ -548,7 +554,7 @@ pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
 }
 
 /// Counts of verdicts for one rasterizer.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Tally {
     pub pass: usize,
     pub fail: usize,
@@ -556,7 +562,7 @@ pub struct Tally {
     pub error: usize,
     /// Cases whose repetitions drew different frames (`run --repeat`): a
     /// failure, counted apart.
-    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub flaky: usize,
     /// Departures of a foil (counted apart from failures).
     pub foil: usize,
@@ -565,7 +571,7 @@ pub struct Tally {
     /// ([`crate::Rasterizer::fixed_fill_rule`], a profile,
     /// [`crate::Rasterizer::fixed_subpixel_bits`]): conventions, named
     /// apart in every summary.
-    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub own_rule: usize,
 }
 

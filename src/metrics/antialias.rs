@@ -64,7 +64,7 @@ pub fn default_rms_bound(samples: u32) -> f64 {
 
 /// Also `report.json`'s `metrics.antialias` (SPEC.md §10): the fields not
 /// skipped, in this order, the bounds only when there are some.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct AntialiasMetrics {
     /// The candidate's samples per pixel; 0 for an area method.
     pub samples: u32,
@@ -90,7 +90,7 @@ pub struct AntialiasMetrics {
     pub piglit_violations: u64,
     /// Of those, the pixels resolved within the slack of a declared
     /// quantization instead (`parts.rs`): not violations.
-    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub piglit_within_quantization: u64,
     /// The first violation (x, y), when there is one.
     #[serde(skip)]

@@ -50,7 +50,7 @@ pub fn is_area_answer(frame: &Frame) -> bool {
 /// An area method without coverage per primitive, each pixel's total held
 /// to the pixel's exact area within one step: `report.json`'s
 /// `metrics.antialias.pixel_areas`.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct PixelAreas {
     /// The step claimed; 0 for none (the default applies).
     pub step: f64,
@@ -166,7 +166,7 @@ pub struct AreasSeen {
 /// pixel exceeds one step: `report.json`'s `metrics.antialias.nothing_drawn`.
 /// Judged per primitive, as the step is: two primitives of 1/256 each in a
 /// pixel may both round to 0.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct NothingDrawn {
     /// (primitive, pixel) pairs whose exact area exceeds one step.
     pub pairs: u64,

@@ -36,7 +36,7 @@ use super::area::{self, AreasSeen};
 
 /// What the per-primitive comparison found; `report.json`'s
 /// `metrics.antialias.primitives` (SPEC.md §10.1).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct PartMetrics {
     /// (primitive, pixel) pairs where the exact area or the fraction given
     /// is not 0.

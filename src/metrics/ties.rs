@@ -10,7 +10,7 @@ use crate::frame::Frame;
 use crate::reference::{TieOutcome, TieSet};
 
 /// What a candidate with no tie rule made of the tie samples.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct TieMetrics {
     /// Samples lying exactly on an edge of some primitive.
     pub tie_samples: u64,

@@ -54,7 +54,7 @@ pub fn bounds(scene: &Scene) -> (Option<f64>, Option<f64>) {
 /// Also `report.json`'s `metrics.time` (SPEC.md §10): the fields not
 /// skipped, in this order, the sample tests and the bounds only when there
 /// are some.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct TimeMetrics {
     pub pixels: u64,
     /// Pixels whose exact time coverage is not a whole number, or whose
@@ -85,8 +85,10 @@ pub struct TimeMetrics {
     pub candidate_pixels: u64,
     /// What the candidate spent on its time loop, when it counts it.
     #[serde(
+        default,
         skip_serializing_if = "Option::is_none",
-        serialize_with = "serialize_sample_tests"
+        serialize_with = "serialize_sample_tests",
+        deserialize_with = "deserialize_sample_tests"
     )]
     pub sample_tests: Option<SampleTests>,
     /// The bounds this case holds the candidate to.
@@ -125,6 +127,23 @@ fn serialize_sample_tests<S: Serializer>(
     entry.serialize_field("covered", &t.covered)?;
     entry.serialize_field("efficiency", &t.efficiency())?;
     entry.end()
+}
+
+/// `metrics.time.sample_tests` read back from a `report.json` (its
+/// `efficiency` is derived, and ignored).
+fn deserialize_sample_tests<'de, D: serde::Deserializer<'de>>(
+    d: D,
+) -> Result<Option<SampleTests>, D::Error> {
+    #[derive(serde::Deserialize)]
+    struct Counts {
+        tests: u64,
+        covered: u64,
+    }
+    let counts: Option<Counts> = serde::Deserialize::deserialize(d)?;
+    Ok(counts.map(|c| SampleTests {
+        tests: c.tests,
+        covered: c.covered,
+    }))
 }
 
 /// The signed error per pixel, candidate − reference time coverage (a NaN

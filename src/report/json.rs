@@ -4,7 +4,10 @@
 //! summary, the HTML page) is written from this model, so they cannot
 //! disagree.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
+
+use super::interned::{maybe_name, name, Word};
+use super::machine::Machine;
 
 use crate::harness::flaky::Flaky;
 use crate::harness::golden::GoldenStatus;
@@ -19,15 +22,28 @@ use crate::scene::{ClipRules, DeclaredRule, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Report {
-    pub schema: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub schema: Word,
     pub tool: Tool,
     /// False while the run is under way, or when it was cut short: cases
     /// with status `not-run` did not run.
     pub complete: bool,
     /// The command line, for reproducing the run.
     pub command: Vec<String>,
+    /// The host it ran on and the day (SPEC.md §10); empty in a report
+    /// written before it was recorded.
+    #[serde(default)]
+    pub machine: Machine,
+    /// `K/N` when the run was the K-th of N shards of its suite
+    /// (`run --shard K/N`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shard: Option<String>,
+    /// A merged report's inputs (`rastercheck merge`, SPEC.md §10.3): each
+    /// report's file, machine and shard, and the rows it gave.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub sources: Vec<Source>,
     pub rasterizers: Vec<RasterizerInfo>,
     pub limits: LimitsInfo,
     /// Random seeds the run used (none yet: every case is deterministic).
@@ -36,13 +52,27 @@ pub struct Report {
     pub cases: Vec<CaseEntry>,
 }
 
-#[derive(Clone, Debug, Serialize)]
-pub struct Tool {
-    pub name: &'static str,
-    pub version: &'static str,
+/// One report that went into a merged one.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Source {
+    /// Its `report.json`, as named on the command line.
+    pub report: String,
+    pub machine: Machine,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shard: Option<String>,
+    /// The merged report's rasterizer rows its results went into.
+    pub rows: Vec<String>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Tool {
+    #[serde(deserialize_with = "name")]
+    pub name: Word,
+    #[serde(deserialize_with = "name")]
+    pub version: Word,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RasterizerInfo {
     pub name: String,
     pub foil: bool,
@@ -56,7 +86,7 @@ pub struct RasterizerInfo {
     pub api_record: Option<crate::rasterizer::ApiRecord>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LimitsInfo {
     pub max_canvas_pixels: u64,
     pub max_primitives: usize,
@@ -80,7 +110,7 @@ impl LimitsInfo {
     }
 }
 
-#[derive(Clone, Debug, Default, Serialize)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct Totals {
     pub cases: usize,
     pub unreadable: usize,
@@ -93,21 +123,21 @@ pub struct Totals {
     pub golden: GoldenTotals,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RasterizerTotals {
     pub rasterizer: String,
     #[serde(flatten)]
     pub tally: Tally,
 }
 
-#[derive(Clone, Debug, Default, Serialize)]
+#[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct GoldenTotals {
     pub matching: usize,
     pub differing: usize,
     pub missing: usize,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct CaseEntry {
     pub id: String,
     pub path: String,
@@ -115,7 +145,8 @@ pub struct CaseEntry {
     pub family: String,
     /// `ran`, `unreadable`, `reference-failed`, `limit-exceeded` or
     /// `not-run`.
-    pub status: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub status: Word,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -126,7 +157,13 @@ pub struct CaseEntry {
     pub rules: Option<RulesInfo>,
     /// `match`, `differ` or `missing`.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub golden: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub golden: Option<Word>,
+    /// The case file's bytes hashed (`fnv1a64:` and 16 hex digits), so
+    /// that reports merged by case id can tell two different files behind
+    /// one id; absent when the file could not be read.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hash: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub golden_detail: Option<String>,
     pub reference_ms: f64,
@@ -138,16 +175,22 @@ pub struct CaseEntry {
 }
 
 /// A clip-space case's `clip_xy`, `clip_z` and `depth`.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ClipInfo {
-    pub clip_xy: &'static str,
-    pub clip_z: &'static str,
-    pub depth: &'static str,
-    pub interpolate_from: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub clip_xy: Word,
+    #[serde(deserialize_with = "name")]
+    pub clip_z: Word,
+    #[serde(deserialize_with = "name")]
+    pub depth: Word,
+    #[serde(deserialize_with = "name")]
+    pub interpolate_from: Word,
     /// What the side planes do to points (SPEC.md §17).
-    pub clip_points: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub clip_points: Word,
     /// What limits a kept point's square (SPEC.md §17.2).
-    pub point_bounds: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub point_bounds: Word,
 }
 
 impl ClipInfo {
@@ -165,14 +208,15 @@ impl ClipInfo {
 
 /// A case's `rules.depth_format` and `rules.depth_bias`, the bias's
 /// numbers as the exact fractions the case gives.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct DepthInfo {
-    pub depth_format: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub depth_format: Word,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub depth_bias: Option<DepthBiasInfo>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct DepthBiasInfo {
     pub constant: String,
     pub slope: String,
@@ -192,13 +236,16 @@ impl DepthInfo {
     }
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct RulesInfo {
     pub canvas: [u32; 2],
     pub subpixel_bits: Option<u32>,
-    pub fill_rule: &'static str,
-    pub cull: &'static str,
-    pub provoking_vertex: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub fill_rule: Word,
+    #[serde(deserialize_with = "name")]
+    pub cull: Word,
+    #[serde(deserialize_with = "name")]
+    pub provoking_vertex: Word,
     /// Clip-space cases only: their clip rules (SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clip: Option<ClipInfo>,
@@ -214,33 +261,36 @@ pub struct RulesInfo {
     pub motion_blur: Option<MotionBlurRules>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct MotionBlurRules {
     /// [open, close] in [0, 1].
     pub shutter: [f64; 2],
     pub samples: u32,
-    pub pattern: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub pattern: Word,
     pub seed: u64,
     /// Primitives that move; 0: the scene is drawn as a static one.
     pub moving: usize,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct AntialiasRules {
     pub samples: u32,
-    pub pattern: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub pattern: Word,
     pub seed: u64,
     pub adaptive: bool,
     pub position_bits: u32,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ResultEntry {
     pub rasterizer: String,
     /// `pass`, `fail`, `foil` (a foil's departure), `unsupported`,
     /// `error`, or `flaky` (its repetitions under `run --repeat` drew
     /// different frames; `flaky` says how).
-    pub verdict: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub verdict: Word,
     pub reasons: Vec<String>,
     /// A flaky result's repetitions: each one's outcome, and where its
     /// frame differed from the first's (channel, first pixel and sample,
@@ -251,13 +301,15 @@ pub struct ResultEntry {
     /// How the rasterizer drew it, when it says (a GPU adapter: "native
     /// MSAA", "shifted passes", "time passes").
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub method: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub method: Option<Word>,
     /// The fill rule it was judged under, when that is its own and not the
     /// case's (`rules.fill_rule`): a rasterizer that cannot follow the
     /// case's rule, or a profile's; `none` for one that declares no tie
     /// rule (SPEC.md §3.1.1), judged off the ties.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub judged_fill_rule: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_fill_rule: Option<Word>,
     /// With no tie rule: its tie samples, and the overdraw and holes they
     /// got, counted apart (never a failure).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -277,26 +329,30 @@ pub struct ResultEntry {
     /// Its own snapping when it is not a number of bits: `"none"` or
     /// `"truncate"` (SPEC.md §3.2).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub judged_snapping: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_snapping: Option<Word>,
     /// The sample pattern it was judged at, when that is its own and not
     /// the case's (`rules.antialias.pattern`, SPEC.md §14.2.1).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub judged_sample_pattern: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_sample_pattern: Option<Word>,
     /// `"up"` when it was judged with its y axis up (SPEC.md §2.1).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub judged_y: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_y: Option<Word>,
     /// `"integer"` when it was judged with its samples at whole
     /// coordinates (SPEC.md §2.1).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub judged_pixel_centre: Option<&'static str>,
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_pixel_centre: Option<Word>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub files: Vec<String>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct MetricsEntry {
     pub coverage: CoverageEntry,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -315,7 +371,7 @@ pub struct MetricsEntry {
     pub time: Option<TimeMetrics>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct CoverageEntry {
     pub samples: u64,
     pub reference_covered: u64,
@@ -326,20 +382,20 @@ pub struct CoverageEntry {
     pub mismatched: u64,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct WatertightEntry {
     pub interior: u64,
     pub holes: u64,
     pub overdraw: u64,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LinesEntry {
     pub lines: u64,
     pub crowded_steps: u64,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ChannelEntry {
     pub channel: String,
     pub samples: u64,
@@ -355,9 +411,10 @@ pub struct ChannelEntry {
     pub depth_set: Option<DepthSetEntry>,
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct DepthSetEntry {
-    pub format: &'static str,
+    #[serde(deserialize_with = "name")]
+    pub format: Word,
     pub off_grid: u64,
     pub outside: u64,
 }
@@ -457,6 +514,7 @@ impl CaseEntry {
             description: None,
             rules: None,
             golden: None,
+            hash: None,
             golden_detail: None,
             reference_ms: 0.0,
             page: None,
@@ -476,6 +534,7 @@ impl CaseEntry {
             Some(Problem::Interrupted) => return entry,
         };
         entry.error = outcome.problem.as_ref().map(Problem::message);
+        entry.hash = outcome.hash.clone();
         if let Some(scene) = &outcome.scene {
             entry.name = Some(scene.name.clone());
             entry.description = Some(scene.description.clone());
@@ -554,6 +613,9 @@ impl Report {
             },
             complete: false,
             command,
+            machine: Machine::here(),
+            shard: None,
+            sources: Vec::new(),
             rasterizers,
             limits,
             seeds: Vec::new(),

@@ -27,6 +27,11 @@
 //! it is judged, while its frames are in memory (`case_files.rs`); the rest
 //! at the end, from `report.json`'s model alone.
 //!
+//! `report.json` names the machine it was made on (`machine.rs`: host and
+//! day) and reads back into its model (`interned.rs`: the model's words),
+//! so that `merge/` can put the reports of shards and of other machines
+//! together and write them with the same writers.
+//!
 //! Every file is written whole or not at all (`files.rs`'s [`write_file`]:
 //! a temporary name, then a rename). A run writes only into a folder it
 //! claims (`folder.rs`: new, empty, or marked by an earlier run; locked
@@ -40,9 +45,12 @@ pub mod exr;
 pub mod files;
 pub mod folder;
 pub mod html;
+pub mod interned;
 pub mod json;
 pub mod junit;
 pub mod limits;
+pub mod machine;
+pub mod merge;
 pub mod plots;
 pub mod png;
 pub mod summary;

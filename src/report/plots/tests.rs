@@ -197,6 +197,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
         description: None,
         rules: Some(rules),
         golden: None,
+        hash: None,
         golden_detail: None,
         reference_ms: 0.0,
         page: None,
