@@ -5,6 +5,7 @@
 //! (SPEC.md §16). Which conventions a driver follows stays in its test.
 
 use rastercheck::frame::Frame;
+use rastercheck::harness::profile::OwnConventions;
 use rastercheck::plan::Plan;
 use rastercheck::rasterizer::{RasterError, Rasterizer};
 use rastercheck::scene::{ClipRules, ClipXy, ClipZ, DepthMode, FillRule, InterpolateFrom, Scene};
@@ -355,7 +356,9 @@ pub fn assert_inside_the_volume_passes(candidate: &dyn Rasterizer) {
 /// cover a sample with the same primitive, the reference drawn under
 /// `values`.
 fn value_departure(candidate: &dyn Rasterizer, scene: &Scene, values: InterpolateFrom) -> f64 {
-    let mut scene = scene.clone();
+    // At the driver's own subpixel bits and clipping (SwiftShader snaps to
+    // 4), as a run judges it.
+    let mut scene = OwnConventions::of(candidate, scene).restate(scene);
     scene.rules.clip.values = values;
     let reference = rastercheck::reference::render(&scene, &Plan::for_scene(&scene));
     let got = drawn(candidate, &scene);

@@ -18,34 +18,69 @@ pub const STANDARD_4: &str = r#"{"samples": 4, "pattern": "standard"}"#;
 /// A tiny square around each sample of `pattern` (n samples), in pixel
 /// (i, 0) for sample i: the adapter must light exactly slot i of pixel i.
 pub fn probe_scene(pattern: &str, n: u32) -> Scene {
+    probe_scene_at(pattern, n, 8)
+}
+
+/// [`probe_scene`] for a driver that snaps to `bits` subpixel bits: below
+/// 5 the square's ±1/32 would snap away (SwiftShader snaps to 4), so each
+/// sample gets instead the smallest triangle of the driver's grid that
+/// holds it strictly inside, with no other point of the grid inside or on
+/// its edges but its corners (Pick: area 3/2 steps², 3 boundary points,
+/// 1 inside), turned so that its one corner off the sample's row and
+/// column is no other sample's position.
+pub fn probe_scene_at(pattern: &str, n: u32, bits: u32) -> Scene {
     let probe = inline(&format!(
         r#"{{"name": "offsets", "canvas": {{"width": {n}, "height": 1}},
             "effects": {{"antialias": {pattern}}},
             "primitives": [{{"triangle": [[0, 0], [1, 0], [0, 1]]}}]}}"#
     ));
     let offsets = Plan::for_scene(&probe).antialias.unwrap().offsets;
-    let squares: Vec<String> = offsets
+    let unit = if pattern.contains("position_bits") {
+        16.0
+    } else {
+        256.0
+    };
+    let at: Vec<(f64, f64)> = offsets
+        .iter()
+        .map(|[sx, sy]| (f64::from(*sx) / unit, f64::from(*sy) / unit))
+        .collect();
+    let squares: Vec<String> = at
         .iter()
         .enumerate()
-        .flat_map(|(i, [sx, sy])| {
-            let unit = if pattern.contains("position_bits") {
-                16.0
-            } else {
-                256.0
+        .flat_map(|(i, &(sx, sy))| {
+            let (cx, cy) = (i as f64 + sx, sy);
+            if bits >= 5 {
+                let (l, r, t, b) = (cx - 0.03125, cx + 0.03125, cy - 0.03125, cy + 0.03125);
+                return vec![
+                    format!(r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#),
+                    format!(r#"{{"triangle": [[{l}, {t}], [{r}, {b}], [{l}, {b}]]}}"#),
+                ];
+            }
+            let g = f64::from(bits).exp2().recip();
+            let taken = |dx: f64, dy: f64| {
+                at.iter().any(|&(x, y)| {
+                    (x - (sx + dx * g)).abs() < 1e-9 && (y - (sy + dy * g)).abs() < 1e-9
+                })
             };
-            let (cx, cy) = (i as f64 + f64::from(*sx) / unit, f64::from(*sy) / unit);
-            let (l, r, t, b) = (cx - 0.03125, cx + 0.03125, cy - 0.03125, cy + 0.03125);
-            [
-                format!(r#"{{"triangle": [[{l}, {t}], [{r}, {t}], [{r}, {b}]]}}"#),
-                format!(r#"{{"triangle": [[{l}, {t}], [{r}, {b}], [{l}, {b}]]}}"#),
-            ]
+            // (-1, -1), (1, 0), (0, 1), turned by quarter turns.
+            let turn = |(x, y): (f64, f64)| (-y, x);
+            let mut corners = [(-1.0, -1.0), (1.0, 0.0), (0.0, 1.0)];
+            for _ in 0..4 {
+                if !taken(corners[0].0, corners[0].1) {
+                    break;
+                }
+                corners = corners.map(turn);
+            }
+            let [a, b, c] = corners.map(|(dx, dy)| format!("[{}, {}]", cx + dx * g, cy + dy * g));
+            vec![format!(r#"{{"triangle": [{a}, {b}, {c}]}}"#)]
         })
         .collect();
     inline(&format!(
         r#"{{"name": "probe", "canvas": {{"width": {n}, "height": 1}},
-            "rules": {{"subpixel_bits": 8}}, "effects": {{"antialias": {pattern}}},
+            "rules": {{"subpixel_bits": {}}}, "effects": {{"antialias": {pattern}}},
             "primitives": [{}],
             "expect": {{"max_coverage_error": 0.25, "max_coverage_rms": 0.25}}}}"#,
+        bits.min(8),
         squares.join(", ")
     ))
 }
@@ -58,7 +93,8 @@ pub fn assert_each_probe_lights_its_slot(
     pattern: &str,
     n: u32,
 ) -> (ReferenceRun, CandidateRun) {
-    let scene = probe_scene(pattern, n);
+    let bits = candidate.fixed_subpixel_bits().unwrap_or(8);
+    let scene = probe_scene_at(pattern, n, bits);
     let (reference, run) = run(&scene, candidate);
     let frame = run
         .frame

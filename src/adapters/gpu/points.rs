@@ -3,7 +3,9 @@
 //! Mesa's llvmpipe and lavapipe, SPEC.md §17.4):
 //!
 //! - the size must be one the driver draws: in its range, on its
-//!   granularity from the range's low end, an f32, and 1 without large
+//!   granularity from the range's low end (a granularity of 0 is no step:
+//!   SwiftShader reports 0 and draws any size of its range, its point
+//!   set-up taking the size unrounded), an f32, and 1 without large
 //!   points;
 //! - at least one pixel: Mesa draws a smaller point one pixel wide (its
 //!   rasterizer takes the size as at least 1), where the rule's square
@@ -50,11 +52,15 @@ pub(crate) fn refusal(scene: &Scene, point: &Point, offers: &PointOffers) -> Opt
     let s = f32_of(size);
     let exact = RBig::try_from(s).is_ok_and(|back| &back == size.as_rbig());
     let [lo, hi] = offers.range;
-    let steps = (s - lo) / offers.granularity.max(f32::MIN_POSITIVE);
-    if !exact || s < lo || s > hi || steps.fract() != 0.0 || (s != 1.0 && !offers.large) {
+    let on_step = offers.granularity == 0.0 || ((s - lo) / offers.granularity).fract() == 0.0;
+    if !exact || s < lo || s > hi || !on_step || (s != 1.0 && !offers.large) {
+        let steps = if offers.granularity == 0.0 {
+            ", any size between (pointSizeGranularity 0)".to_owned()
+        } else {
+            format!(" in steps of {}", offers.granularity)
+        };
         return Some(format!(
-            "point size {shown}: the driver draws sizes {lo} to {hi} in steps of {}{}",
-            offers.granularity,
+            "point size {shown}: the driver draws sizes {lo} to {hi}{steps}{}",
             if offers.large {
                 ""
             } else {
@@ -227,6 +233,22 @@ mod tests {
         assert!(refusal(&scene, p, &offers)
             .unwrap()
             .contains("off the driver's grid"));
+        // A granularity of 0 is no step: any size in range on the grid.
+        let continuous = PointOffers {
+            large: true,
+            range: [1.0, 1024.0],
+            granularity: 0.0,
+            subpixel_bits: 4,
+            pops: false,
+        };
+        for (num, den, refused) in [(5, 2, false), (7, 1, false), (1, 2, true)] {
+            let at = self::scene(false, [8, 8, 1], Number::ratio(num, den));
+            let Primitive::Point(p) = &at.primitives[0] else {
+                unreachable!()
+            };
+            let got = refusal(&at, p, &continuous);
+            assert_eq!(got.is_some(), refused, "{num}/{den}: {got:?}");
+        }
     }
 
     #[test]

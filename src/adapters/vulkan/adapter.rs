@@ -85,13 +85,18 @@ impl Rasterizer for Vulkan {
         Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
     }
 
-    /// lavapipe sets its planes up in floating point from the divided,
-    /// unsnapped vertices, and snaps only the edges (SPEC.md §16.10: on
-    /// the bundled clip-space cases its depth and attributes depart from
-    /// the snapped positions' values by up to 1.3e-3, and from the
-    /// unsnapped positions' by at most 2.3e-6).
+    /// The device's own ([`super::device::interpolate_from`], by its
+    /// driver): lavapipe sets its planes up in floating point from the
+    /// divided, unsnapped vertices, and snaps only the edges (SPEC.md
+    /// §16.10: on the bundled clip-space cases its depth and attributes
+    /// depart from the snapped positions' values by up to 1.3e-3, and from
+    /// the unsnapped positions' by at most 2.3e-6); SwiftShader sets them
+    /// up from its snapped fixed-point vertices. `None` where the device
+    /// cannot be made (nothing is drawn then).
     fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
-        Some(InterpolateFrom::Unsnapped)
+        let shared = shared().ok()?;
+        let from = lock(shared).device.offers.interpolate_from;
+        Some(from)
     }
 
     /// Vulkan lets the device choose. lavapipe pops no point: it draws one

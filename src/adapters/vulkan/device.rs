@@ -11,7 +11,7 @@ use ash::vk;
 use super::messenger::{self, Listening, Messenger, Record};
 use crate::adapters::gpu;
 use crate::rasterizer::ApiRecord;
-use crate::scene::DepthFormat;
+use crate::scene::{DepthFormat, InterpolateFrom};
 
 /// What the device offers that decides what it can draw.
 #[derive(Clone)]
@@ -70,6 +70,23 @@ pub(super) struct Offers {
     /// `viewportBoundsRange` and `maxViewportDimensions`.
     pub viewport_bounds: [f32; 2],
     pub max_viewport: [u32; 2],
+    /// The positions the driver sets its depth and attribute planes up
+    /// from (SPEC.md §16.5, §16.10), known per driver
+    /// ([`interpolate_from`]).
+    pub interpolate_from: InterpolateFrom,
+}
+
+/// The positions a driver interpolates from, by its `driverID`:
+/// SwiftShader sets its planes up from the snapped vertices (its
+/// `SetupRoutine` builds them from the fixed-point positions, measured:
+/// `tests/vulkan.rs`); Mesa's lavapipe, and any other driver, from the
+/// divided, unsnapped ones (measured on lavapipe). A driver that departs
+/// from its declaration is judged under it and shows it.
+pub(super) fn interpolate_from(driver: vk::DriverId) -> InterpolateFrom {
+    match driver {
+        vk::DriverId::GOOGLE_SWIFTSHADER => InterpolateFrom::Snapped,
+        _ => InterpolateFrom::Unsnapped,
+    }
 }
 
 /// The attachment formats of `unorm16`, `unorm24` and `float32`.
@@ -355,6 +372,7 @@ impl Device {
             independent_blend,
             viewport_bounds: limits.viewport_bounds_range,
             max_viewport: limits.max_viewport_dimensions,
+            interpolate_from: interpolate_from(driver.driver_id),
         };
         Ok(Device {
             _entry: entry,
@@ -456,4 +474,25 @@ unsafe fn choose(
         .or(named.first())
         .map(|(d, _, _)| *d)
         .ok_or_else(|| format!("no Vulkan device: {INSTALL_HINT}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// SwiftShader is declared to interpolate from the snapped positions,
+    /// Mesa's lavapipe (and any driver not known otherwise) from the
+    /// unsnapped ones; `tests/vulkan.rs` checks each declaration against
+    /// the driver's frames (`clip_space_values_come_from_the_declared_positions`).
+    #[test]
+    fn each_driver_declares_its_own_positions() {
+        assert_eq!(
+            interpolate_from(vk::DriverId::GOOGLE_SWIFTSHADER),
+            InterpolateFrom::Snapped
+        );
+        assert_eq!(
+            interpolate_from(vk::DriverId::MESA_LLVMPIPE),
+            InterpolateFrom::Unsnapped
+        );
+    }
 }
