@@ -647,13 +647,11 @@ const FAILING_ON_SWIFTSHADER: &[(&str, &str)] = &[
     ("clip_space_values_come_from_the_declared_positions", "clip/spec_interpolate_snapped departs 3.7e-4 from the unsnapped positions' values the adapter declares for every device (measured on lavapipe)"),
     ("each_probe_lights_exactly_the_probed_slot", "8x n-rooks at 4 position bits by shifted passes lights no slot"),
     ("depth_formats_and_offset_pass", "unorm24 unsupported (a device limit); depth/offset_line_ignored and depth/offset_negative_standard4 fail on depth"),
-    ("interpolation_is_within_the_bound", "triangles/interp_perspective_fan: 95 of 289 samples differ, attributes off by up to 134"),
     ("multisampled_depth_is_read_back_sample_by_sample", "depth/offset_negative_standard4: 100 samples outside the float32 depths allowed (1.17e-2)"),
     ("multisampled_points_follow_the_rule", "sample offsets at 8 bits are off the device's 4-bit grid: refused"),
     ("point_squares_are_cut_at_the_viewport", "pointSizeGranularity 0: every size above 1 refused ('steps of 0')"),
     ("points_follow_the_rule_in_screen_space", "a size-1 point at (8.0039, 7.9961): 2 samples depart from the point rule"),
     ("points_the_driver_cannot_draw_exactly_are_refused", "refused for pointSizeGranularity 0 before the reason the test wants"),
-    ("polygons_by_stencil_then_cover_match_the_reference", "polygons/circle_64_aa_grid64 and concave_arrow_aa_standard16 differ by tens of samples"),
     ("probe_finds_the_declared_point_clipping", "2 of 5 probe points drawn (the others refused for pointSizeGranularity 0)"),
     (
         "judges_at_least_85_percent_of_the_bundled_cases",
