@@ -660,9 +660,8 @@ fn a_run_reports_its_api_record() {
 const FAILING_ON_SWIFTSHADER: &[(&str, &str)] = &[
     ("clip_space_values_come_from_the_declared_positions", "clip/interp_perspective_clipped_gb_cts departs 9.7e-3 from the snapped positions' values it declares: SwiftShader sets a clipped piece's planes up from the whole triangle's snapped vertices (departure swiftshader/clipped-piece-values-from-the-whole-triangle; the unclipped clip/spec_interpolate_snapped matches)"),
     ("depth_formats_and_offset_pass", "depth/offset_negative_standard4 (departure swiftshader/multisampled-depth-at-mirrored-x) and, in some runs, depth/offset_line_ignored (departure swiftshader/line-depth-offset-from-an-earlier-draw) fail on depth; unorm24 is left out as a device limit"),
-    ("interpolation_is_within_the_bound", "triangles/interp_perspective_fan: the case's 8-bit vertex 2.84375 on a tie of SwiftShader's 4-bit grid, rounded by the device the other way: the adapter's double snap, fixed on branch ssfill (vertices snapped to the device's grid before it sees them)"),
     ("multisampled_depth_is_read_back_sample_by_sample", "depth/offset_negative_standard4: 100 samples outside the float32 depths allowed (1.17e-2 = 2 x 0.375 px x dz/dx 1/64): departure swiftshader/multisampled-depth-at-mirrored-x"),
-    ("polygons_by_stencil_then_cover_match_the_reference", "polygons/circle_64_aa_grid64 and concave_arrow_aa_standard16 differ by tens of samples (fixed on branch ssfill)"),
+    ("polygons_by_stencil_then_cover_match_the_reference", "every judged polygon case passes; polygons/circle_64_aa_stratified256 is unsupported (its offsets are off the 4-bit grid, a device limit), which the test does not allow"),
     (
         "judges_at_least_85_percent_of_the_bundled_cases",
         "79.0 % of the triangles, lines, hard, antialias, motion and polygons cases judged (279 of 353; issue 35's bar for SwiftShader is 80 %); every other one refused for a device limit (no wide lines, antialias offsets off its 4-bit grid)",

@@ -94,7 +94,7 @@ impl Rasterizer for Vulkan {
     /// up from its snapped fixed-point vertices. `None` where the device
     /// cannot be made (nothing is drawn then).
     fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
-        let shared = shared().ok()?;
+        let shared = self.shared().ok()?;
         let from = lock(shared).device.offers.interpolate_from;
         Some(from)
     }
