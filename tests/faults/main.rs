@@ -33,6 +33,7 @@ mod exit_codes;
 mod external;
 mod input;
 mod memory;
+mod persistent;
 mod reports;
 mod soak;
 
