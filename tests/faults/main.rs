@@ -20,7 +20,8 @@
 //! | `show` at `--scale 64`, lowered to 7 (exit_codes) | 492 MiB | 1024 MiB | pictures of 70400×64000 pixels, 17 GiB each |
 //! | a case whose frames would take 27 GiB (memory) | 15 MiB | 200 MiB | the 27 GiB, allocated or aborted |
 //! | six cases of 156 MiB of frames, one thread (memory) | 363 MiB | 450 MiB | 1064 MiB: every case's frames kept to the end |
-//! | every other run (external, input, exit_codes, answers, reports); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–20 MiB | 64 MiB | |
+//! | a v2 program writing 256 MiB to stdout between requests (persistent) | 17 MiB | 64 MiB | 188 MiB here, 2.6 GB for the 2 GB: the reader kept what an idle program wrote |
+//! | every other run (external, input, exit_codes, answers, reports, persistent); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–32 MiB | 64 MiB | |
 //!
 //! One bound for all but two: three to four times the largest measured,
 //! and far under what any of the guarded faults would cost.
@@ -33,6 +34,7 @@ mod exit_codes;
 mod external;
 mod input;
 mod memory;
+mod persistent;
 mod reports;
 mod soak;
 

@@ -88,7 +88,7 @@ impl External {
     }
 
     /// How the program's answers are shaped, as its hello declared.
-    fn answers(&self) -> Answers {
+    pub(super) fn answers(&self) -> Answers {
         *self.answers.lock().unwrap_or_else(|e| e.into_inner())
     }
 
@@ -203,7 +203,8 @@ impl Rasterizer for External {
                     serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
                 self.one_shot(request, timeout, max_output)?
             }
-            Some(pool) => self.persistent(pool, scene, plan, timeout, max_output, false)?,
+            // Read into a frame there, before the process is reused.
+            Some(pool) => return self.persistent(pool, scene, plan, timeout, max_output, false),
         };
         let answers = self.answers();
         frame_from_answer(&response, scene, plan, answers)

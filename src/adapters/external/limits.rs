@@ -18,6 +18,12 @@ pub(super) const HELLO_WAIT: Duration = Duration::from_secs(1);
 /// the output limit too.
 pub(super) const MAX_SKIPPED_LINES: usize = 1000;
 
+/// How long a look for what a persistent process wrote unasked
+/// ([`Worker::unread`](super::worker::Worker::unread)) waits for the end of
+/// a line whose bytes it found in the pipe: a blank line is forgiven, and
+/// anything else is a program out of step.
+pub(super) const UNREAD_GRACE: Duration = Duration::from_millis(200);
+
 /// How many ids of requests that timed out a v2 process remembers, so
 /// that their late answers are told apart from stray lines.
 pub(super) const OWED_IDS: usize = 64;

@@ -1,6 +1,9 @@
 //! The pool of persistent processes (`external-persistent:…`): a line to
 //! an idle process and a line back, in the version it speaks (v2's ids
-//! keep the stream in step), a stuck process retired and its case sent
+//! keep the stream in step; under v1 a process that writes anything but
+//! one line per request is replaced, and an answer that does not fit its
+//! request retires it), an idle process that exited or wrote unasked
+//! never reused, a stuck or vanished process retired and its case sent
 //! once more, and every process said goodbye to when the adapter is
 //! dropped.
 
@@ -13,21 +16,24 @@ use serde_json::Value;
 use super::adapter::External;
 use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
-use super::messages::seconds;
+use super::messages::{seconds, shorten};
 use super::motion;
 use super::process::{exit_description, failed, kill, kill_group, wait_until, Output};
-use super::protocol::{parse_response, request, request_v2};
+use super::protocol::{frame_from_answer, parse_response, request, request_v2};
 use super::space::needs_a_hello;
-use super::worker::{Exchange, Worker};
+use super::worker::{Exchange, Unread, Worker};
 use crate::deadline;
+use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::Scene;
 
 impl External {
-    /// A line to a process of the pool, and a line back. The request is
-    /// written in the version the process speaks: v2 (an id, the answer
-    /// found by it) when its first line was a hello of version 2, else v1.
+    /// A line to a process of the pool, and a line back, read into a
+    /// frame. The request is written in the version the process speaks: v2
+    /// (an id, the answer found by it) when its first line was a hello of
+    /// version 2, else v1. An idle process is sent nothing if it exited or
+    /// wrote unasked ([`Worker::unfit`]): it is ended, and another taken.
     pub(super) fn persistent(
         &self,
         pool: &Mutex<Vec<Worker>>,
@@ -36,7 +42,7 @@ impl External {
         timeout: Duration,
         max_output: u64,
         retried: bool,
-    ) -> Result<Value, RasterError> {
+    ) -> Result<Frame, RasterError> {
         let deadline = Instant::now() + timeout;
         if let Some((why, hello)) = &*self.broken.lock().unwrap_or_else(|e| e.into_inner()) {
             // Its answers cannot be matched to requests: nothing more is
@@ -49,7 +55,16 @@ impl External {
                 "not sent: {why}; no case is sent to it for the rest of the run"
             )));
         }
-        let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
+        let idle = loop {
+            let idle = pool.lock().unwrap_or_else(|e| e.into_inner()).pop();
+            let Some(mut worker) = idle else { break None };
+            if worker.unfit().is_none() {
+                break Some(worker);
+            }
+            // Out of step or gone: never sent this case, which goes to the
+            // next idle process or a fresh one.
+            worker.end(true);
+        };
         let mut worker = match idle {
             Some(worker) => worker,
             None => {
@@ -109,18 +124,11 @@ impl External {
             return match self
                 .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
             {
-                Ok(result) => result,
-                // The process was stuck on an earlier case, and is gone:
-                // this case is sent once more, to a fresh one, with a
-                // fresh time limit (within the case's deadline).
-                Err(_) if !retried => {
-                    let timeout = match (self.timeout.clone(), deadline::remaining()) {
-                        (Ok(t), Some(left)) => t.min(left),
-                        (Ok(t), None) => t,
-                        (Err(why), _) => return Err(RasterError::Failed(why)),
-                    };
-                    self.persistent(pool, scene, plan, timeout, max_output, true)
-                }
+                Ok(result) => frame_from_answer(&result?, scene, plan, self.answers()),
+                // The process was stuck on an earlier case, or vanished or
+                // flooded before answering this one, and is gone: this
+                // case is sent once more, to a fresh one.
+                Err(_) if !retried => self.retry(pool, scene, plan, max_output),
                 Err(why) => Err(why),
             };
         }
@@ -128,6 +136,7 @@ impl External {
             serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
         request.push(b'\n');
         let had_hello = worker.hello.is_some();
+        let reused = worker.sent > 0;
         let line = worker.exchange(request, deadline);
         // A hello that came in place of the answer (a program slow to
         // start) was written before the program read this request: it
@@ -151,10 +160,40 @@ impl External {
             (_, line) => line,
         };
         let result = match line {
-            Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            // Version 1 carries no ids: one line per request, and a second
+            // one already written means the answer cannot be told apart.
+            Ok(line) => match worker.unread() {
+                Unread::Nothing => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+                Unread::Line(Ok(next)) => Err((
+                    format!(
+                        "it wrote more than one line for one request (protocol v1 carries no \
+                         ids, so its answers cannot be told apart): {:?}, then {:?}; the \
+                         process was replaced",
+                        shorten(&line),
+                        shorten(&next)
+                    ),
+                    true,
+                )),
+                Unread::Line(Err(_)) | Unread::Bytes => Err((
+                    format!(
+                        "it wrote more than its answer to one request (protocol v1 carries no \
+                         ids, so its answers cannot be told apart): {:?}, then more; the \
+                         process was replaced",
+                        shorten(&line)
+                    ),
+                    true,
+                )),
+            },
             Err(Exchange::Late(why)) => Err((why, true)),
             Err(Exchange::TimedOut | Exchange::Flood) => {
                 Err((format!("timed out after {}", seconds(timeout)), true))
+            }
+            // A process reused after an earlier answer that vanished before
+            // writing anything: the case is not the culprit, and is sent
+            // once more, to a fresh process.
+            Err(Exchange::Closed) if reused && !retried => {
+                worker.end(false);
+                return self.retry(pool, scene, plan, max_output);
             }
             Err(Exchange::Closed) => Err(("closed its output".to_owned(), false)),
             // Version 1 matches no ids; only v2 exchanges end so.
@@ -171,10 +210,25 @@ impl External {
             )),
         };
         match result {
-            Ok(value) => {
-                pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
-                Ok(value)
-            }
+            Ok(value) => match frame_from_answer(&value, scene, plan, self.answers()) {
+                Err(RasterError::Failed(why)) if value.get("error").is_none() => {
+                    // An answer that does not fit its request may be
+                    // another request's: the process is never reused.
+                    worker.end(true);
+                    Err(failed(
+                        format!(
+                            "{why}; the process was replaced (under protocol v1 an answer \
+                             that does not fit its request may be another request's)"
+                        ),
+                        &worker.stderr,
+                        mark,
+                    ))
+                }
+                judged => {
+                    pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
+                    judged
+                }
+            },
             Err((why, kill_now)) => {
                 // The stream is out of step, or the process is gone: it is
                 // not used again, and a later case starts a fresh one.
@@ -191,8 +245,10 @@ impl External {
     /// the request's id. Stray lines make this case a protocol error and
     /// nothing else; late answers to requests that timed out are dropped;
     /// a timeout keeps the process unless it is its second in a row: the
-    /// process is then stuck on the earlier request, and is killed;
-    /// `Err` says so, for the caller to send the case to a fresh process.
+    /// process is then stuck on the earlier request, and is killed. A
+    /// reused process that closes its output before a byte of its answer
+    /// (it exited after the last one), or floods, is ended too. `Err`
+    /// says so, for the caller to send the case to a fresh process.
     #[allow(clippy::too_many_arguments)]
     fn persistent_v2(
         &self,
@@ -213,9 +269,19 @@ impl External {
         let mut request =
             serde_json::to_vec(&request_v2(scene, plan, &id)).expect("a JSON value serializes");
         request.push(b'\n');
+        let reused = worker.sent > 0;
         let (answer, skipped) = worker.exchange_v2(request, &id, deadline, max_output);
         let keep = |worker: Worker| pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
         let strays = skipped.describe();
+        // A reused process that vanished before writing anything but late
+        // answers, or flooded (its flood may have begun while it was
+        // idle): the case is sent once more, to a fresh process.
+        let retry = reused
+            && match &answer {
+                Err(Exchange::Closed) => skipped.strays == 0,
+                Err(Exchange::Flood) => true,
+                _ => false,
+            };
         let (why, kill_now) = match answer {
             Ok(value) if skipped.strays == 0 => {
                 keep(worker);
@@ -312,11 +378,33 @@ impl External {
             Some(status) if !kill_now => format!("{why}: {}", exit_description(status)),
             _ => why,
         };
-        Ok(Err(failed(why, &worker.stderr, mark)))
+        let err = failed(why, &worker.stderr, mark);
+        if retry {
+            return Err(err);
+        }
+        Ok(Err(err))
     }
 }
 
 impl External {
+    /// Sends the case once more, to a fresh process (the pool's idle ones
+    /// are looked at first), with a fresh time limit within the case's
+    /// deadline.
+    fn retry(
+        &self,
+        pool: &Mutex<Vec<Worker>>,
+        scene: &Scene,
+        plan: &Plan,
+        max_output: u64,
+    ) -> Result<Frame, RasterError> {
+        let timeout = match (self.timeout.clone(), deadline::remaining()) {
+            (Ok(t), Some(left)) => t.min(left),
+            (Ok(t), None) => t,
+            (Err(why), _) => return Err(RasterError::Failed(why)),
+        };
+        self.persistent(pool, scene, plan, timeout, max_output, true)
+    }
+
     /// Keeps what a hello declares for the cases from now on: its name (the
     /// first hello's) and how its answers are shaped.
     fn heard(&self, hello: &Hello) {

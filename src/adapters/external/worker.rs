@@ -1,19 +1,25 @@
 //! One process of a persistent adapter (SPEC.md §12.4, §12.7): started in
 //! its own process group, fed one request a line, and read until the line
 //! that answers the request in flight; under version 2 by its id, stray
-//! and late lines skipped and counted.
+//! and late lines skipped and counted. Its stdout is read one line at a
+//! time (the reader waits while a line is unread, and the program on its
+//! full pipe), and what it wrote that no exchange has read yet can be
+//! looked at ([`Worker::unread`]): the sign of a program out of step.
 
 use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, Read, Write};
+use std::os::fd::{AsFd, AsRawFd, OwnedFd};
 use std::process::{Child, ChildStdin, ExitStatus};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender, TryRecvError};
+use std::sync::Arc;
 use std::thread::{self, JoinHandle};
 use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
 use super::hello::{self, Hello};
-use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE};
+use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE, UNREAD_GRACE};
 use super::messages::shorten;
 use super::process::*;
 
@@ -58,6 +64,59 @@ pub(super) struct Worker {
     pub(super) owed: VecDeque<String>,
     /// v2: timeouts since its last answer.
     pub(super) timeouts_in_a_row: u32,
+    /// Requests sent to it: 0 for a fresh process.
+    pub(super) sent: u64,
+    /// How much of its stdout the reader has taken from the pipe and
+    /// handed on.
+    flow: Arc<Flow>,
+    /// Its stdout's pipe (a duplicate of the reader's descriptor), to
+    /// look for bytes written and not yet read.
+    pipe: Option<OwnedFd>,
+}
+
+/// The bytes of a process's stdout its reader thread has taken from the
+/// pipe, and those it has handed on as lines (counted before the line is
+/// handed on): the difference is a line the reader is reading.
+#[derive(Default)]
+struct Flow {
+    from_pipe: AtomicU64,
+    handed: AtomicU64,
+}
+
+/// A process's stdout, counting the bytes read from it into [`Flow`].
+struct Counted<R> {
+    inner: R,
+    flow: Arc<Flow>,
+}
+
+impl<R: Read> Read for Counted<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        self.flow.from_pipe.fetch_add(n as u64, Ordering::SeqCst);
+        Ok(n)
+    }
+}
+
+/// What a process wrote that no exchange has read yet (blank lines aside).
+pub(super) enum Unread {
+    Nothing,
+    /// A line (or why it could not be read).
+    Line(Result<String, Output>),
+    /// Bytes of a line not yet ended, after [`UNREAD_GRACE`].
+    Bytes,
+}
+
+/// How many bytes wait in the pipe `fd` (`FIONREAD`); 0 when it cannot say.
+fn bytes_in_pipe(fd: &OwnedFd) -> u64 {
+    let mut n: libc::c_int = 0;
+    // SAFETY: FIONREAD writes one int through the pointer, which lives
+    // across the call; the descriptor is open while `fd` is.
+    let ok = unsafe { libc::ioctl(fd.as_raw_fd(), libc::FIONREAD, &mut n as *mut libc::c_int) };
+    if ok == 0 {
+        u64::try_from(n).unwrap_or(0)
+    } else {
+        0
+    }
 }
 
 /// What a v2 exchange skipped on the way to its answer.
@@ -124,11 +183,24 @@ impl Worker {
             }
         });
         let stdout = child.stdout.take().expect("stdout is piped");
-        let (send, lines) = mpsc::channel();
+        let pipe = stdout.as_fd().try_clone_to_owned().ok();
+        let flow = Arc::new(Flow::default());
+        // No line waits in the channel: the reader holds the next one until
+        // it is taken, and the program then waits on its full pipe, so that
+        // what a program writes while no request is in flight costs one
+        // line (at most the output limit), never more.
+        let (send, lines) = mpsc::sync_channel(0);
+        let counted = Counted {
+            inner: stdout,
+            flow: flow.clone(),
+        };
+        let handed = flow.clone();
         let reader = thread::spawn(move || {
-            let mut stdout = BufReader::new(stdout);
+            let mut stdout = BufReader::new(counted);
             loop {
-                let line = read_line(&mut stdout, max_output);
+                let mut consumed = 0;
+                let line = read_line(&mut stdout, max_output, &mut consumed);
+                handed.handed.fetch_add(consumed, Ordering::SeqCst);
                 let stop = !matches!(line, Ok(Some(_)));
                 let Some(line) = line.transpose() else { break };
                 if send.send(line).is_err() || stop {
@@ -151,6 +223,99 @@ impl Worker {
             rewaited: false,
             owed: VecDeque::new(),
             timeouts_in_a_row: 0,
+            sent: 0,
+            flow,
+            pipe,
+        }
+    }
+
+    /// Whether the process has exited (or cannot be waited for): an idle
+    /// one is then not reused.
+    pub(super) fn exited(&mut self) -> bool {
+        !matches!(self.child.try_wait(), Ok(None))
+    }
+
+    /// Why this idle process is not to be sent the next request, if it is
+    /// not: it has exited, or, having been sent requests, it wrote a line
+    /// that none asked for while it was idle (a late answer to a request
+    /// that timed out aside, under version 2, dropped by its id). Under
+    /// version 1, whose answers carry no id, bytes of a line not yet ended
+    /// count too: nothing may come but the answer to the next request.
+    pub(super) fn unfit(&mut self) -> Option<String> {
+        if self.exited() {
+            return Some("it exited".to_owned());
+        }
+        if self.sent == 0 {
+            return None;
+        }
+        loop {
+            match self.unread() {
+                Unread::Nothing => return None,
+                Unread::Bytes if self.speaks_v2() => return None,
+                Unread::Bytes => return Some("it was writing a line no request asked for".into()),
+                Unread::Line(Err(_)) => return Some("its output broke".to_owned()),
+                Unread::Line(Ok(line)) => {
+                    let value = serde_json::from_str::<Value>(&line).ok();
+                    let id = value
+                        .as_ref()
+                        .and_then(|v| v.get("id"))
+                        .and_then(Value::as_str);
+                    match id {
+                        Some(id) if self.speaks_v2() && self.owed.iter().any(|o| o == id) => {
+                            self.owed.retain(|o| o != id);
+                            self.timeouts_in_a_row = 0;
+                        }
+                        _ => {
+                            return Some(format!(
+                                "it wrote a line no request asked for: {:?}",
+                                shorten(&line)
+                            ))
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// How long to wait for a line: [`UNREAD_GRACE`] when bytes are in
+    /// its pipe or in the reader (a line on its way), else none.
+    fn unread_wait(&self) -> Duration {
+        let in_pipe = self.pipe.as_ref().map_or(0, bytes_in_pipe);
+        let in_reader =
+            self.flow.from_pipe.load(Ordering::SeqCst) > self.flow.handed.load(Ordering::SeqCst);
+        if in_pipe > 0 || in_reader {
+            UNREAD_GRACE
+        } else {
+            Duration::ZERO
+        }
+    }
+
+    /// What it wrote that no exchange has read yet, blank lines skipped: a
+    /// line already read (kept from the hello's wait, or handed on by the
+    /// reader), or bytes still in its pipe or in the reader, waited for
+    /// [`UNREAD_GRACE`] to end their line. Looked at upstream first (the
+    /// pipe, then the reader, then the channel), so that a byte moving on
+    /// between two looks is seen by the later one.
+    pub(super) fn unread(&mut self) -> Unread {
+        let mut wait = self.unread_wait();
+        loop {
+            let line = match self.pending.take() {
+                Some(line) => Ok(line),
+                None if wait.is_zero() => self.lines.try_recv(),
+                None => self.lines.recv_timeout(wait).map_err(|e| match e {
+                    RecvTimeoutError::Timeout => TryRecvError::Empty,
+                    RecvTimeoutError::Disconnected => TryRecvError::Disconnected,
+                }),
+            };
+            match line {
+                Ok(Ok(line)) if line.trim().is_empty() => {
+                    // A blank line: what follows it is looked at anew.
+                    wait = self.unread_wait();
+                }
+                Ok(line) => return Unread::Line(line),
+                Err(TryRecvError::Empty) if !wait.is_zero() => return Unread::Bytes,
+                Err(_) => return Unread::Nothing,
+            }
         }
     }
 
@@ -256,6 +421,7 @@ impl Worker {
         if let Some(requests) = &self.requests {
             let _ = requests.send(request);
         }
+        self.sent += 1;
         let mut skipped = Skipped::default();
         loop {
             let line = match self.next_line(deadline) {
@@ -307,8 +473,10 @@ impl Worker {
         }
     }
 
-    /// Joins its threads, once its group is gone and its pipes closed.
+    /// Joins its threads, once its group is gone and its pipes closed
+    /// (nothing more is read from it).
     pub(super) fn join(&mut self) {
+        self.stop_reading();
         join_within(std::mem::take(&mut self.threads), PIPE_GRACE);
     }
 
@@ -323,6 +491,7 @@ impl Worker {
             // the read below then finds the output closed.
             let _ = requests.send(request);
         }
+        self.sent += 1;
         loop {
             match self.next_line(deadline)? {
                 Ok(line) if line.trim().is_empty() => continue,
@@ -357,6 +526,13 @@ impl Worker {
         self.join();
         status
     }
+
+    /// Lets the reader go: a line it holds for the channel is dropped, and
+    /// it ends once the pipe closes.
+    fn stop_reading(&mut self) {
+        drop(std::mem::replace(&mut self.lines, mpsc::sync_channel(0).1));
+        self.pipe = None;
+    }
 }
 
 impl Drop for Worker {
@@ -370,13 +546,18 @@ impl Drop for Worker {
 }
 
 /// One line of at most `max` bytes (without its line break), or `None` at
-/// the end of the output.
-pub(super) fn read_line(stdout: &mut impl BufRead, max: u64) -> Result<Option<String>, Output> {
+/// the end of the output; the bytes it took are added to `consumed`.
+fn read_line(
+    stdout: &mut impl BufRead,
+    max: u64,
+    consumed: &mut u64,
+) -> Result<Option<String>, Output> {
     let mut bytes = Vec::new();
-    let n = stdout
+    let read = stdout
         .take(max.saturating_add(2))
-        .read_until(b'\n', &mut bytes)
-        .map_err(Output::Read)?;
+        .read_until(b'\n', &mut bytes);
+    *consumed += bytes.len() as u64;
+    let n = read.map_err(Output::Read)?;
     if n == 0 {
         return Ok(None);
     }
