@@ -29,6 +29,7 @@
 mod common;
 
 mod answers;
+mod bounded;
 mod exit_codes;
 mod external;
 mod input;

@@ -8,15 +8,14 @@ use std::sync::atomic::Ordering;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use serde_json::Value;
-
 use super::adapter::External;
+use super::answer::check_json;
 use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
 use super::messages::seconds;
 use super::motion;
 use super::process::{exit_description, failed, kill, kill_group, wait_until, Output};
-use super::protocol::{parse_response, request, request_v2};
+use super::protocol::{Outgoing, Request};
 use super::space::needs_a_hello;
 use super::worker::{Exchange, Worker};
 use crate::deadline;
@@ -36,7 +35,7 @@ impl External {
         timeout: Duration,
         max_output: u64,
         retried: bool,
-    ) -> Result<Value, RasterError> {
+    ) -> Result<String, RasterError> {
         let deadline = Instant::now() + timeout;
         if let Some((why, hello)) = &*self.broken.lock().unwrap_or_else(|e| e.into_inner()) {
             // Its answers cannot be matched to requests: nothing more is
@@ -124,9 +123,7 @@ impl External {
                 Err(why) => Err(why),
             };
         }
-        let mut request =
-            serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
-        request.push(b'\n');
+        let request = Outgoing::Request(Box::new(Request::v1(scene, plan)));
         let had_hello = worker.hello.is_some();
         let line = worker.exchange(request, deadline);
         // A hello that came in place of the answer (a program slow to
@@ -151,7 +148,9 @@ impl External {
             (_, line) => line,
         };
         let result = match line {
-            Ok(line) => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+            Ok(line) => check_json(line.as_bytes())
+                .map(|()| line)
+                .map_err(|why| (why, true)),
             Err(Exchange::Late(why)) => Err((why, true)),
             Err(Exchange::TimedOut | Exchange::Flood) => {
                 Err((format!("timed out after {}", seconds(timeout)), true))
@@ -203,16 +202,14 @@ impl External {
         deadline: Instant,
         timeout: Duration,
         max_output: u64,
-    ) -> Result<Result<Value, RasterError>, RasterError> {
+    ) -> Result<Result<String, RasterError>, RasterError> {
         let id = format!(
             "{}#{}",
             scene.name,
             self.next_id.fetch_add(1, Ordering::Relaxed)
         );
         let mark = worker.stderr.written();
-        let mut request =
-            serde_json::to_vec(&request_v2(scene, plan, &id)).expect("a JSON value serializes");
-        request.push(b'\n');
+        let request = Outgoing::Request(Box::new(Request::v2(scene, plan, &id)));
         let (answer, skipped) = worker.exchange_v2(request, &id, deadline, max_output);
         let keep = |worker: Worker| pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
         let strays = skipped.describe();
