@@ -24,11 +24,11 @@ use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::Scene;
 
+use super::envelope::not_json;
 use super::hello::Answers;
-use super::messages::shorten;
 use super::motion::TimeAnswer;
 use super::protocol::{PROTOCOL, PROTOCOL_V2};
-use super::values::{pixel_of, stored_depth, whole_below, Scalar, ScalarVisitor, NUMBER_TOKEN};
+use super::values::{pixel_of, stored_depth, whole_below, Scalar, Text, NUMBER_TOKEN};
 
 /// The method a coverage-only frame of a scene with values names: what the
 /// reports show beside its verdict.
@@ -129,19 +129,6 @@ pub fn frame_from_answer(
 ) -> Result<Frame, RasterError> {
     let line = serde_json::to_vec(response).expect("a JSON value serializes");
     frame_from_line(&line, scene, plan, answers)
-}
-
-/// Why a line is not JSON at all, quoting at most 80 characters of it.
-pub(super) fn not_json(bytes: &[u8], e: &serde_json::Error) -> String {
-    let text = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
-    if text.trim().is_empty() && bytes.len() <= 4096 {
-        return "printed no response".to_owned();
-    }
-    let shown: String = text.chars().take(80).collect();
-    format!(
-        "printed something that is not a JSON response ({e}): {shown:?}{}",
-        if bytes.len() > shown.len() { "…" } else { "" }
-    )
 }
 
 /// What a response said, read key by key.
@@ -454,6 +441,37 @@ impl Build {
     }
 }
 
+/// The scalar visits of a visitor that takes none of them: each gives
+/// `$body` (`$this` is the visitor).
+macro_rules! scalars {
+    ($value:ty, |$this:ident| $body:expr) => {
+        fn visit_bool<E: de::Error>(self, _: bool) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+        fn visit_i64<E: de::Error>(self, _: i64) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+        fn visit_u64<E: de::Error>(self, _: u64) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+        fn visit_f64<E: de::Error>(self, _: f64) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+        fn visit_str<E: de::Error>(self, _: &str) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+        fn visit_unit<E: de::Error>(self) -> Result<$value, E> {
+            let $this = self;
+            Ok($body)
+        }
+    };
+}
+
 // ---------------------------------------------------------------------------
 // The serde side: the response object, `$.primitives`, an entry, its items.
 
@@ -471,24 +489,7 @@ impl<'de> Visitor<'de> for &mut Reader<'_> {
     fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str("a response object")
     }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<(), E> {
-        Ok(())
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<(), E> {
-        Ok(())
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<(), E> {
-        Ok(())
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<(), E> {
-        Ok(())
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<(), E> {
-        Ok(())
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<(), E> {
-        Ok(())
-    }
+    scalars!((), |_this| ());
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
         while seq.next_element::<IgnoredAny>()?.is_some() {}
         Ok(())
@@ -522,51 +523,6 @@ impl<'de> Visitor<'de> for &mut Reader<'_> {
             }
         }
         Ok(())
-    }
-}
-
-/// A value quoted in a message: a string as it is, anything else as
-/// [`Scalar`] shows it; cut at about 80 characters (SPEC.md §8). The
-/// second field keeps a string whole (an EXR path).
-struct Text(String, Option<String>);
-
-impl<'de> serde::Deserialize<'de> for Text {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Text, D::Error> {
-        struct V;
-        fn other(s: Scalar) -> Text {
-            Text(s.to_string(), None)
-        }
-        impl<'de> Visitor<'de> for V {
-            type Value = Text;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a JSON value")
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<Text, E> {
-                Ok(Text(shorten(v), Some(v.to_owned())))
-            }
-            fn visit_bool<E: de::Error>(self, v: bool) -> Result<Text, E> {
-                ScalarVisitor.visit_bool(v).map(other)
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Text, E> {
-                ScalarVisitor.visit_i64(v).map(other)
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Text, E> {
-                ScalarVisitor.visit_u64(v).map(other)
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Text, E> {
-                ScalarVisitor.visit_f64(v).map(other)
-            }
-            fn visit_unit<E: de::Error>(self) -> Result<Text, E> {
-                ScalarVisitor.visit_unit().map(other)
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Text, A::Error> {
-                ScalarVisitor.visit_seq(seq).map(other)
-            }
-            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Text, A::Error> {
-                ScalarVisitor.visit_map(map).map(other)
-            }
-        }
-        deserializer.deserialize_any(V)
     }
 }
 
@@ -610,30 +566,9 @@ impl<'de> Visitor<'de> for Entries<'_, '_> {
         self.0.not_an_array();
         Ok(())
     }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<(), E> {
-        self.0.not_an_array();
-        Ok(())
-    }
+    scalars!((), |this| {
+        this.0.not_an_array();
+    });
 }
 
 impl Reader<'_> {
@@ -709,30 +644,9 @@ impl<'de> Visitor<'de> for Entry<'_, '_> {
         self.not_an_object();
         Ok(())
     }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<(), E> {
-        self.not_an_object();
-        Ok(())
-    }
+    scalars!((), |this| {
+        this.not_an_object();
+    });
 }
 
 /// An entry's array of items, each applied to the frame as it is read.
@@ -784,30 +698,9 @@ impl<'de> Visitor<'de> for Items<'_, '_> {
         self.not_an_array();
         Ok(())
     }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<(), E> {
-        self.not_an_array();
-        Ok(())
-    }
+    scalars!((), |this| {
+        this.not_an_array();
+    });
 }
 
 impl Items<'_, '_> {
@@ -851,146 +744,7 @@ impl<'de> Visitor<'de> for Item<'_> {
         while map.next_entry::<IgnoredAny, IgnoredAny>()?.is_some() {}
         Ok(None)
     }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<Option<usize>, E> {
-        Ok(None)
-    }
-}
-
-// ---------------------------------------------------------------------------
-// A line's envelope: its id, and whether it is shaped as an answer.
-
-/// What an exchange looks at in each line before the answer is read: its
-/// `id`, whether it carries one of an answer's fields (§12.2's
-/// `primitives`, `error`, `unsupported`, `exr`), whether it is a hello
-/// (§12.7). Read without keeping the rest of the line. `None` from
-/// [`Envelope::read`]: not a JSON object.
-pub(super) struct Envelope {
-    pub(super) id: Id,
-    pub(super) answer: bool,
-    pub(super) hello: bool,
-}
-
-/// An envelope's `id`.
-pub(super) enum Id {
-    Missing,
-    Null,
-    Text(String),
-    /// Not a string, as [`Scalar`] shows it.
-    Other(String),
-}
-
-impl Envelope {
-    pub(super) fn read(line: &str) -> Option<Envelope> {
-        let mut de = serde_json::Deserializer::from_str(line);
-        let envelope = EnvelopeSeed.deserialize(&mut de).ok()?;
-        de.end().ok()?;
-        envelope
-    }
-
-    /// The id, when it is a string.
-    pub(super) fn id_text(&self) -> Option<&str> {
-        match &self.id {
-            Id::Text(id) => Some(id),
-            _ => None,
-        }
-    }
-}
-
-struct EnvelopeSeed;
-
-impl<'de> DeserializeSeed<'de> for EnvelopeSeed {
-    type Value = Option<Envelope>;
-    fn deserialize<D: Deserializer<'de>>(self, deserializer: D) -> Result<Self::Value, D::Error> {
-        deserializer.deserialize_any(self)
-    }
-}
-
-impl<'de> Visitor<'de> for EnvelopeSeed {
-    type Value = Option<Envelope>;
-    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("a JSON line")
-    }
-    fn visit_bool<E: de::Error>(self, _: bool) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_i64<E: de::Error>(self, _: i64) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_u64<E: de::Error>(self, _: u64) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_f64<E: de::Error>(self, _: f64) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_str<E: de::Error>(self, _: &str) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
-        Ok(None)
-    }
-    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
-        while seq.next_element::<IgnoredAny>()?.is_some() {}
-        Ok(None)
-    }
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
-        let mut out = Envelope {
-            id: Id::Missing,
-            answer: false,
-            hello: false,
-        };
-        while let Some(key) = map.next_key::<String>()? {
-            match key.as_str() {
-                // A number, as `serde_json` hands one over: not an object.
-                NUMBER_TOKEN => {
-                    map.next_value::<IgnoredAny>()?;
-                    return Ok(None);
-                }
-                "hello" => {
-                    out.hello = true;
-                    map.next_value::<IgnoredAny>()?;
-                }
-                "id" => {
-                    let text = map.next_value::<Text>()?;
-                    out.id = match text {
-                        Text(_, Some(id)) => Id::Text(id),
-                        Text(shown, None) if shown == "null" => Id::Null,
-                        Text(shown, None) => Id::Other(shown),
-                    };
-                }
-                "primitives" | "error" | "unsupported" | "exr" => {
-                    out.answer = true;
-                    map.next_value::<IgnoredAny>()?;
-                }
-                _ => {
-                    map.next_value::<IgnoredAny>()?;
-                }
-            }
-        }
-        Ok(Some(out))
-    }
-}
-
-/// Whether a line is JSON at all (a version 1 answer is taken when it is,
-/// and read into a frame afterwards), without keeping any of it.
-pub(super) fn check_json(bytes: &[u8]) -> Result<(), String> {
-    serde_json::from_slice::<IgnoredAny>(bytes)
-        .map(drop)
-        .map_err(|e| not_json(bytes, &e))
+    scalars!(Option<usize>, |_this| None);
 }
 
 // ---------------------------------------------------------------------------

@@ -11,10 +11,12 @@
 //! `process.rs`' waiting, killing and reading), whose requests are
 //! `protocol.rs`' and answers `answer.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
 //! clip space, points and depth formats, declared); `read.rs` reads
-//! one line apart from a process; `messages.rs` quotes values.
+//! one line apart from a process; `envelope.rs` looks at a line's id
+//! and shape; `messages.rs` quotes values.
 
 mod adapter;
 mod answer;
+mod envelope;
 mod hello;
 mod limits;
 mod messages;

@@ -8,7 +8,7 @@ use std::thread;
 use std::time::{Duration, Instant};
 
 use super::adapter::External;
-use super::answer::check_json;
+use super::envelope::check_json;
 use super::limits::{MAX_OUTPUT_ENV, PIPE_GRACE};
 use super::messages::seconds;
 use super::process::{

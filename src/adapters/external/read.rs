@@ -2,7 +2,8 @@
 //! into a frame, a hello into what it refuses (the fuzz targets drive
 //! these).
 
-use super::answer::{frame_from_line, not_json};
+use super::answer::frame_from_line;
+use super::envelope::not_json;
 use super::hello::{self, Answers, Hello};
 use crate::frame::Frame;
 use crate::plan::Plan;

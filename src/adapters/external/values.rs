@@ -114,6 +114,51 @@ impl<'de> Visitor<'de> for ScalarVisitor {
     }
 }
 
+/// A value quoted in a message: a string as it is, anything else as
+/// [`Scalar`] shows it; cut at about 80 characters (SPEC.md §8). The
+/// second field keeps a string whole (an EXR path).
+pub(super) struct Text(pub(super) String, pub(super) Option<String>);
+
+impl<'de> serde::Deserialize<'de> for Text {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Text, D::Error> {
+        struct V;
+        fn other(s: Scalar) -> Text {
+            Text(s.to_string(), None)
+        }
+        impl<'de> Visitor<'de> for V {
+            type Value = Text;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a JSON value")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Text, E> {
+                Ok(Text(shorten(v), Some(v.to_owned())))
+            }
+            fn visit_bool<E: de::Error>(self, v: bool) -> Result<Text, E> {
+                ScalarVisitor.visit_bool(v).map(other)
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Text, E> {
+                ScalarVisitor.visit_i64(v).map(other)
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Text, E> {
+                ScalarVisitor.visit_u64(v).map(other)
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Text, E> {
+                ScalarVisitor.visit_f64(v).map(other)
+            }
+            fn visit_unit<E: de::Error>(self) -> Result<Text, E> {
+                ScalarVisitor.visit_unit().map(other)
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Text, A::Error> {
+                ScalarVisitor.visit_seq(seq).map(other)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Text, A::Error> {
+                ScalarVisitor.visit_map(map).map(other)
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
+
 /// The pixel (x, y) an answer's item starts with, or why it is none of
 /// the canvas (`at` names the item's JSON path).
 pub(super) fn pixel_of(

@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
-use super::answer::{Envelope, Id};
+use super::envelope::{Envelope, Id};
 use super::hello::{self, Hello};
 use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE};
 use super::messages::shorten;
