@@ -327,6 +327,14 @@ pub trait Rasterizer: Send + Sync {
         None
     }
 
+    /// The most bytes this rasterizer holds of one case's answer beside
+    /// its frame: an external program's answer line, at most its output
+    /// limit (SPEC.md §12.5). The runner counts it in the case's memory
+    /// budget (§8); 0 for one that draws into its frame.
+    fn answer_bytes(&self) -> u64 {
+        0
+    }
+
     /// What the API's checker said of this adapter's calls so far, for a
     /// driver adapter that listens ([`ApiRecord`]); `None` for one that
     /// calls no driver API, or before it has made its device.

@@ -373,7 +373,7 @@ fn limits_table() -> String {
         ("primitives in one case".to_owned(), l::DEFAULT_MAX_PRIMITIVES.to_string(), "`--max-primitives`".to_owned()),
         ("sample points: pixels × samples × time samples".to_owned(), power_of_two(l::DEFAULT_MAX_SAMPLES), "`--max-samples`".to_owned()),
         ("a case file's size, checked before it is read".to_owned(), size(l::DEFAULT_MAX_CASE_BYTES), "`--max-case-bytes`".to_owned()),
-        ("memory of one case's frames, estimated from the scene before any is allocated (a run holds the frames of the cases in flight only)".to_owned(), size(l::DEFAULT_MAX_CASE_MEMORY), "`--max-case-memory`".to_owned()),
+        ("memory of one case: its frames and each external program's answer line (its output limit), estimated from the scene before any is allocated; answers are read and requests written as they stream, so a case takes its estimate plus a constant (a run holds the cases in flight only)".to_owned(), size(l::DEFAULT_MAX_CASE_MEMORY), "`--max-case-memory`".to_owned()),
         ("seconds per rasterizer and case (the reference and production poll it; an external program is stopped at it)".to_owned(), l::DEFAULT_CASE_TIMEOUT.as_secs().to_string(), "`--case-timeout` (0: none)".to_owned()),
         ("seconds an external program may take to answer one case".to_owned(), external::DEFAULT_TIMEOUT.as_secs().to_string(), format!("`{}`", external::TIMEOUT_ENV)),
         ("bytes an external program may write to stdout for one answer (of its stderr, only the tail is kept)".to_owned(), size(external::DEFAULT_MAX_OUTPUT), format!("`{}`", external::MAX_OUTPUT_ENV)),

@@ -20,9 +20,10 @@ pub struct LimitArgs {
     /// Largest case file, in bytes, checked before it is read.
     #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_case_bytes)]
     pub max_case_bytes: u64,
-    /// Memory one case's frames may take, in bytes, estimated from the
-    /// scene before anything is allocated: the reference's frame, a
-    /// working copy, and one frame per candidate.
+    /// Memory one case may take, in bytes, estimated from the scene
+    /// before anything is allocated: the reference's frame, a working
+    /// copy, one frame per candidate, and each external program's answer
+    /// line (its output limit).
     #[arg(long, value_name = "BYTES", default_value_t = Limits::default().max_case_memory)]
     pub max_case_memory: u64,
     /// Seconds each rasterizer (the reference, then each candidate) may

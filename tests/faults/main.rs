@@ -21,15 +21,18 @@
 //! | a case whose frames would take 27 GiB (memory) | 15 MiB | 200 MiB | the 27 GiB, allocated or aborted |
 //! | six cases of 156 MiB of frames, one thread (memory) | 363 MiB | 450 MiB | 1064 MiB: every case's frames kept to the end |
 //! | a v2 program writing 256 MiB to stdout between requests (persistent) | 17 MiB | 64 MiB | 188 MiB here, 2.6 GB for the 2 GB: the reader kept what an idle program wrote |
-//! | every other run (external, input, exit_codes, answers, reports, persistent); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–32 MiB | 64 MiB | |
+//! | a right answer for a 4096² case, 1 GiB address-space cap (bounded) | 384 MiB | 900 MiB | aborted at 3.86 GB under a 4 GiB cap (a `Value` of the answer) |
+//! | a 2048² request at 16 instants, 1 GiB cap (bounded) | 428 MiB | 900 MiB | aborted at 3.95 GB under a 4 GiB cap (the request built three times) |
+//! | every other run (external, input, exit_codes, answers, reports, persistent, bounded); SIGINT, SIGTERM (reports: VmHWM just before the signal) | 4–32 MiB | 64 MiB | |
 //!
-//! One bound for all but two: three to four times the largest measured,
+//! One bound for all but four: three to four times the largest measured,
 //! and far under what any of the guarded faults would cost.
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod answers;
+mod bounded;
 mod exit_codes;
 mod external;
 mod input;

@@ -9,10 +9,11 @@ use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64};
 use std::sync::Mutex;
 use std::time::Duration;
 
+use super::answer::frame_from_line;
 use super::hello::{Answers, Hello};
 use super::limits::{max_output_from_env, timeout_from_env};
 use super::motion;
-use super::protocol::{frame_from_answer, request};
+use super::protocol::Request;
 use super::space::needs_a_hello;
 use super::worker::Worker;
 use crate::deadline;
@@ -177,6 +178,12 @@ impl Rasterizer for External {
             .clone()
     }
 
+    fn answer_bytes(&self) -> u64 {
+        // The line is held as it came, read into the frame without a
+        // `Value` (`answer.rs`); over the limit, the program is killed.
+        self.max_output.clone().unwrap_or(0)
+    }
+
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         // Checked here too, for callers that skip the harness: a request
         // cannot carry a point.
@@ -199,14 +206,12 @@ impl Rasterizer for External {
                 if let Some(why) = needs_a_hello(scene) {
                     return Err(RasterError::Unsupported(why));
                 }
-                let request =
-                    serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
-                self.one_shot(request, timeout, max_output)?
+                self.one_shot(Request::v1(scene, plan).to_vec(), timeout, max_output)?
             }
             // Read into a frame there, before the process is reused.
             Some(pool) => return self.persistent(pool, scene, plan, timeout, max_output, false),
         };
         let answers = self.answers();
-        frame_from_answer(&response, scene, plan, answers)
+        frame_from_line(response.as_bytes(), scene, plan, answers)
     }
 }

@@ -8,12 +8,15 @@
 //! the program start); a case passes `adapter.rs` (the
 //! [`Rasterizer`](crate::rasterizer::Rasterizer), under `limits.rs`), then
 //! `one_shot.rs` or `pool.rs` (with `worker.rs`'s persistent processes and
-//! `process.rs`' waiting, killing and reading), whose messages are
-//! `protocol.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
+//! `process.rs`' waiting, killing and reading), whose requests are
+//! `protocol.rs`' and answers `answer.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
 //! clip space, points and depth formats, declared); `read.rs` reads
-//! one line apart from a process; `messages.rs` quotes values.
+//! one line apart from a process; `envelope.rs` looks at a line's id
+//! and shape; `messages.rs` quotes values.
 
 mod adapter;
+mod answer;
+mod envelope;
 mod hello;
 mod limits;
 mod messages;
@@ -30,6 +33,7 @@ mod values;
 mod worker;
 
 pub use adapter::External;
+pub use answer::{frame_from_answer, frame_from_line, frame_from_response};
 pub use hello::Answers;
 pub use limits::{
     check_environment, DEFAULT_MAX_OUTPUT, DEFAULT_TIMEOUT, MAX_OUTPUT_ENV, TIMEOUT_ENV,
@@ -37,7 +41,5 @@ pub use limits::{
 pub use messages::shorten;
 pub use names::{by_name, check_name, split_name};
 pub use preflight::preflight;
-pub use protocol::{
-    frame_from_answer, frame_from_response, request, request_v2, PROTOCOL, PROTOCOL_V2,
-};
+pub use protocol::{request, request_v2, Request, PROTOCOL, PROTOCOL_V2};
 pub use read::{read_answer, read_hello};

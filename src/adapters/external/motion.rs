@@ -17,6 +17,7 @@
 //! reported for an external program; the frame's `sample_tests` stays
 //! `None`, as the GPU adapters' time passes leave it.
 
+use serde::ser::{Serialize, SerializeSeq, Serializer};
 use serde_json::{json, Value};
 
 use crate::frame::Frame;
@@ -24,7 +25,7 @@ use crate::plan::{MotionPlan, Plan};
 use crate::scene::time::limits::TIME_ONE;
 use crate::scene::{Number, Scene, Vertex};
 
-use super::values::{float_exact, pixel_of, whole_below};
+use super::values::{float_exact, pixel_of, whole_below, Scalar};
 
 /// Why a moving scene is not sent to a program that has not declared
 /// motion in a version 2 hello: one-shot programs, version 1 programs.
@@ -42,122 +43,171 @@ pub(super) fn vertex_to(v: &Vertex) -> Option<(Value, Value)> {
     Some((json!({"x": x.0, "y": y.0}), json!({"x": x.1, "y": y.1})))
 }
 
-/// `plan.motion` of a moving scene's request: the shutter (floats, and
-/// exact strings), N, the pattern and seed, M, and every pixel's instants
-/// u (row-major, p = y·width + x; slot j = s·N + k, SPEC.md §15.3), which
-/// are [`MotionBlur::pixel_times`](crate::scene::MotionBlur::pixel_times),
-/// the ones production tests.
-pub(super) fn plan_motion(scene: &Scene, plan: &Plan, motion: &MotionPlan) -> Value {
+/// `plan.motion` of a moving scene's request, all but its `times`: the
+/// shutter (floats, and exact strings), N, the pattern and seed, M; `times`
+/// is a placeholder that [`Times`] fills as the request is written.
+pub(super) fn plan_motion(plan: &Plan, motion: &MotionPlan) -> Value {
     let blur = &motion.blur;
-    let spatial = plan.samples_per_pixel;
     let [open, close] = blur
         .shutter
         .map(|end| float_exact(&Number::ratio(i64::from(end), i64::from(TIME_ONE))));
-    let pixels = u64::from(scene.canvas.width) * u64::from(scene.canvas.height);
-    let times: Vec<Vec<u32>> = (0..pixels).map(|p| blur.pixel_times(p, spatial)).collect();
     json!({
         "shutter": [open.0, close.0],
         "samples": blur.samples,
         "pattern": blur.pattern.name(),
         "seed": blur.seed,
-        "spatial_samples": spatial,
+        "spatial_samples": plan.samples_per_pixel,
         "exact": {"shutter": [open.1, close.1]},
-        "times": times,
+        "times": null,
     })
 }
 
-/// A moving scene's answer, `$.primitives` (SPEC.md §12.8), as a time-only
-/// frame. Form 1, `fragments`: a moving primitive's `[x, y, j]` is one
-/// covered test (slot j < M·N of the pixel's instants), a static one's
-/// `[x, y, s]` a spatial sample covered at every instant (N tests); each
-/// pixel's time coverage is its covered tests over M·N. Form 2, `time`:
-/// each `[x, y, c]` adds c ∈ [0, 1] to the pixel. A test or pixel listed
-/// twice counts twice, as static fragments do.
-pub(super) fn compose(list: &[Value], scene: &Scene, plan: &Plan) -> Result<Frame, String> {
-    let motion = plan
-        .motion
-        .as_ref()
-        .ok_or("a time-only frame needs a moving scene")?;
-    let (width, height) = (scene.canvas.width, scene.canvas.height);
-    let with_time = list.iter().filter(|e| e.get("time").is_some()).count();
-    if with_time > 0 && with_time != list.len() {
-        return Err(
-            "$.primitives: give time for every primitive or fragments for every one".into(),
-        );
+/// `plan.motion.times`: every pixel's instants u (row-major, p = y·width +
+/// x; slot j = s·N + k, SPEC.md §15.3), which are
+/// [`MotionBlur::pixel_times`](crate::scene::MotionBlur::pixel_times), the
+/// ones production tests. Written one pixel at a time as the request goes
+/// out: a 2048² canvas at 16 instants is half a gigabyte of text, never
+/// whole in memory (issue 36).
+pub(super) struct Times<'a> {
+    pub(super) scene: &'a Scene,
+    pub(super) plan: &'a Plan,
+    pub(super) motion: &'a MotionPlan,
+}
+
+impl Serialize for Times<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let pixels = u64::from(self.scene.canvas.width) * u64::from(self.scene.canvas.height);
+        let spatial = self.plan.samples_per_pixel;
+        let mut seq = serializer.serialize_seq(usize::try_from(pixels).ok())?;
+        for p in 0..pixels {
+            seq.serialize_element(&self.motion.blur.pixel_times(p, spatial))?;
+        }
+        seq.end()
     }
-    let field = if with_time > 0 { "time" } else { "fragments" };
-    let m = plan.samples_per_pixel;
-    let n = motion.blur.samples;
-    let tests = f64::from(m) * f64::from(n);
-    // Form 1 counts covered tests in integers, divided once at the end.
-    let mut covered = vec![0u64; width as usize * height as usize];
-    let mut time = vec![0.0; covered.len()];
-    for (p, entry) in list.iter().enumerate() {
-        let items = entry
-            .as_object()
-            .and_then(|o| o.get(field))
-            .and_then(Value::as_array)
-            .ok_or_else(|| {
-                format!("$.primitives[{p}] must be an object with a {field} array (SPEC §12.8)")
-            })?;
-        let moves = motion.moving[p];
-        for (f, item) in items.iter().enumerate() {
-            let at = || format!("$.primitives[{p}].{field}[{f}]");
-            let triple = item.as_array().filter(|a| a.len() == 3).ok_or_else(|| {
-                format!(
-                    "{} must be [x, y, {}]",
-                    at(),
-                    match (field, moves) {
-                        ("time", _) => "time coverage",
-                        (_, true) => "time slot",
-                        (_, false) => "sample",
-                    }
-                )
-            })?;
-            let (x, y) = pixel_of(triple, (width, height), &at)?;
-            let pixel = y as usize * width as usize + x as usize;
-            if field == "time" {
-                let c = triple[2]
-                    .as_f64()
-                    .filter(|c| (0.0..=1.0).contains(c))
-                    .ok_or_else(|| {
-                        format!(
-                            "{}[2]: {} is not a time coverage in [0, 1]",
-                            at(),
-                            triple[2]
-                        )
-                    })?;
-                time[pixel] += c;
-            } else if moves {
-                whole_below(&triple[2], m * n).ok_or_else(|| {
-                    format!(
-                        "{}[2]: {} is not a time slot in [0, {}) (M·N of a moving primitive)",
-                        at(),
-                        triple[2],
-                        m * n
-                    )
-                })?;
-                covered[pixel] += 1;
+}
+
+/// A moving scene's answer, `$.primitives` (SPEC.md §12.8), read item by
+/// item into a time-only frame. Form 1, `fragments`: a moving primitive's
+/// `[x, y, j]` is one covered test (slot j < M·N of the pixel's instants),
+/// a static one's `[x, y, s]` a spatial sample covered at every instant (N
+/// tests); each pixel's time coverage is its covered tests over M·N. Form
+/// 2, `time`: each `[x, y, c]` adds c ∈ [0, 1] to the pixel. A test or
+/// pixel listed twice counts twice, as static fragments do.
+pub(super) struct TimeAnswer {
+    /// Form 2 (`time`), else form 1 (`fragments`).
+    time_form: bool,
+    moving: Vec<bool>,
+    m: u32,
+    n: u32,
+    /// Form 1 counts covered tests in integers, divided once at the end.
+    covered: Vec<u64>,
+    time: Vec<f64>,
+}
+
+impl TimeAnswer {
+    pub(super) fn new(scene: &Scene, plan: &Plan, time_form: bool) -> Result<TimeAnswer, String> {
+        let motion = plan
+            .motion
+            .as_ref()
+            .ok_or("a time-only frame needs a moving scene")?;
+        let pixels = scene.canvas.width as usize * scene.canvas.height as usize;
+        Ok(TimeAnswer {
+            time_form,
+            moving: motion.moving.clone(),
+            m: plan.samples_per_pixel,
+            n: motion.blur.samples,
+            covered: if time_form {
+                Vec::new()
             } else {
-                whole_below(&triple[2], m).ok_or_else(|| {
+                vec![0; pixels]
+            },
+            time: vec![0.0; pixels],
+        })
+    }
+
+    /// The key of the entries' arrays: `time` or `fragments`.
+    pub(super) fn field(&self) -> &'static str {
+        if self.time_form {
+            "time"
+        } else {
+            "fragments"
+        }
+    }
+
+    /// Item `f` of entry `p`: its first values and its length, `None` when
+    /// it is not an array.
+    pub(super) fn item(
+        &mut self,
+        p: usize,
+        f: usize,
+        values: Option<(&[Scalar], usize)>,
+        (width, height): (u32, u32),
+    ) -> Result<(), String> {
+        let field = self.field();
+        let moves = self.moving.get(p).copied().unwrap_or(false);
+        let (m, n) = (self.m, self.n);
+        let at = || format!("$.primitives[{p}].{field}[{f}]");
+        let triple = values.filter(|(_, len)| *len == 3).ok_or_else(|| {
+            format!(
+                "{} must be [x, y, {}]",
+                at(),
+                match (self.time_form, moves) {
+                    (true, _) => "time coverage",
+                    (_, true) => "time slot",
+                    (_, false) => "sample",
+                }
+            )
+        })?;
+        let triple = triple.0;
+        let (x, y) = pixel_of(triple, (width, height), &at)?;
+        let pixel = y as usize * width as usize + x as usize;
+        if self.time_form {
+            let c = triple[2]
+                .as_f64()
+                .filter(|c| (0.0..=1.0).contains(c))
+                .ok_or_else(|| {
                     format!(
-                        "{}[2]: {} is not a spatial sample in [0, {m}) (a static primitive is \
-                         covered at every instant)",
+                        "{}[2]: {} is not a time coverage in [0, 1]",
                         at(),
                         triple[2]
                     )
                 })?;
-                covered[pixel] += u64::from(n);
+            self.time[pixel] += c;
+        } else if moves {
+            whole_below(&triple[2], m * n).ok_or_else(|| {
+                format!(
+                    "{}[2]: {} is not a time slot in [0, {}) (M·N of a moving primitive)",
+                    at(),
+                    triple[2],
+                    m * n
+                )
+            })?;
+            self.covered[pixel] += 1;
+        } else {
+            whole_below(&triple[2], m).ok_or_else(|| {
+                format!(
+                    "{}[2]: {} is not a spatial sample in [0, {m}) (a static primitive is \
+                     covered at every instant)",
+                    at(),
+                    triple[2]
+                )
+            })?;
+            self.covered[pixel] += u64::from(n);
+        }
+        Ok(())
+    }
+
+    /// The time-only frame.
+    pub(super) fn finish(mut self, width: u32, height: u32) -> Frame {
+        if !self.time_form {
+            // One exact quotient of integers, rounded once, as production's.
+            let tests = f64::from(self.m) * f64::from(self.n);
+            for (t, &c) in self.time.iter_mut().zip(&self.covered) {
+                *t = c as f64 / tests;
             }
         }
+        Frame::time_only(width, height, self.time)
     }
-    if field == "fragments" {
-        // One exact quotient of integers, rounded once, as production's.
-        for (t, &c) in time.iter_mut().zip(&covered) {
-            *t = c as f64 / tests;
-        }
-    }
-    Ok(Frame::time_only(width, height, time))
 }
 
 #[cfg(test)]
@@ -185,11 +235,18 @@ mod tests {
     fn the_request_carries_instants_and_ends() {
         let scene = scene();
         let plan = Plan::for_scene(&scene);
-        let motion = plan_motion(&scene, &plan, plan.motion.as_ref().unwrap());
-        assert_eq!(motion["shutter"], json!([0.25, 0.75]));
-        assert_eq!(motion["exact"]["shutter"], json!(["0.25", "0.75"]));
-        assert_eq!(motion["spatial_samples"], 2);
-        let times = motion["times"].as_array().unwrap();
+        let motion = plan.motion.as_ref().unwrap();
+        let head = plan_motion(&plan, motion);
+        assert_eq!(head["shutter"], json!([0.25, 0.75]));
+        assert_eq!(head["exact"]["shutter"], json!(["0.25", "0.75"]));
+        assert_eq!(head["spatial_samples"], 2);
+        let times = serde_json::to_value(Times {
+            scene: &scene,
+            plan: &plan,
+            motion,
+        })
+        .unwrap();
+        let times = times.as_array().unwrap();
         assert_eq!(times.len(), 2);
         let blur = &plan.motion.as_ref().unwrap().blur;
         assert_eq!(times[1], json!(blur.pixel_times(1, 2)));
@@ -200,56 +257,5 @@ mod tests {
             Some((json!({"x": 1.0, "y": 0.0}), json!({"x": "1", "y": "0"})))
         );
         assert_eq!(vertex_to(&scene.primitives[1].vertices()[0]), None);
-    }
-
-    #[test]
-    fn masks_count_tests_and_time_adds_coverage() {
-        let scene = scene();
-        let plan = Plan::for_scene(&scene);
-        // Pixel 0: two moving tests and one static sample (N = 2 tests):
-        // 4 of M·N = 4. Pixel 1: one moving test, listed twice: 2 of 4.
-        let masks = json!([
-            {"fragments": [[0, 0, 0], [0, 0, 3], [1, 0, 2], [1, 0, 2]]},
-            {"fragments": [[0, 0, 1]]}
-        ]);
-        let frame = compose(masks.as_array().unwrap(), &scene, &plan).unwrap();
-        assert_eq!(frame.time, Some(vec![1.0, 0.5]));
-        assert_eq!(frame.samples, 0);
-        let time = json!([{"time": [[0, 0, 0.25], [1, 0, 1]]}, {"time": [[0, 0, 0.5]]}]);
-        let frame = compose(time.as_array().unwrap(), &scene, &plan).unwrap();
-        assert_eq!(frame.time, Some(vec![0.75, 1.0]));
-        for (bad, says) in [
-            (
-                json!([{"fragments": [[0, 0, 4]]}, {"fragments": []}]),
-                "$.primitives[0].fragments[0][2]: 4 is not a time slot in [0, 4)",
-            ),
-            (
-                json!([{"fragments": []}, {"fragments": [[0, 0, 2]]}]),
-                "$.primitives[1].fragments[0][2]: 2 is not a spatial sample in [0, 2)",
-            ),
-            (
-                json!([{"time": [[0, 0, 1.5]]}, {"time": []}]),
-                "$.primitives[0].time[0][2]: 1.5 is not a time coverage in [0, 1]",
-            ),
-            (
-                json!([{"time": []}, {"fragments": []}]),
-                "time for every primitive or fragments for every one",
-            ),
-            (
-                json!([{"fragments": [[2, 0, 0]]}, {"fragments": []}]),
-                "$.primitives[0].fragments[0]: (2, 0) is not a pixel",
-            ),
-            (
-                json!([{"fragments": [[0, 0]]}, {"fragments": []}]),
-                "$.primitives[0].fragments[0] must be [x, y, time slot]",
-            ),
-            (
-                json!([{"coverage": []}, {"coverage": []}]),
-                "$.primitives[0] must be an object with a fragments array",
-            ),
-        ] {
-            let why = compose(bad.as_array().unwrap(), &scene, &plan).unwrap_err();
-            assert!(why.contains(says), "{why}");
-        }
     }
 }

@@ -7,16 +7,14 @@ use std::sync::mpsc;
 use std::thread;
 use std::time::{Duration, Instant};
 
-use serde_json::Value;
-
 use super::adapter::External;
+use super::envelope::check_json;
 use super::limits::{MAX_OUTPUT_ENV, PIPE_GRACE};
 use super::messages::seconds;
 use super::process::{
     exit_description, failed, join_within, kill_group, read_bounded, wait_until_or, Output,
     StderrTail,
 };
-use super::protocol::parse_response;
 use crate::rasterizer::RasterError;
 
 impl External {
@@ -28,7 +26,7 @@ impl External {
         request: Vec<u8>,
         timeout: Duration,
         max_output: u64,
-    ) -> Result<Value, RasterError> {
+    ) -> Result<String, RasterError> {
         let deadline = Instant::now() + timeout;
         let mut child = self.start()?;
         let (stderr, stderr_thread) = StderrTail::collect(child.stderr.take());
@@ -76,7 +74,9 @@ impl External {
                 })?,
             };
             match got {
-                Ok(bytes) => parse_response(&bytes),
+                Ok(bytes) => check_json(&bytes).and_then(|()| {
+                    String::from_utf8(bytes).map_err(|e| format!("reading its output: {e}"))
+                }),
                 Err(Output::TooLong) => Err(too_long()),
                 Err(Output::Read(e)) => Err(format!("reading its output: {e}")),
             }

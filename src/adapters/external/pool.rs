@@ -11,15 +11,15 @@ use std::sync::atomic::Ordering;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use serde_json::Value;
-
 use super::adapter::External;
+use super::answer::{frame_from_line, PROGRAM_ERROR};
+use super::envelope::check_json;
 use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
 use super::messages::{seconds, shorten};
 use super::motion;
 use super::process::{exit_description, failed, kill, kill_group, wait_until, Output};
-use super::protocol::{frame_from_answer, parse_response, request, request_v2};
+use super::protocol::{Outgoing, Request};
 use super::space::needs_a_hello;
 use super::worker::{Exchange, Unread, Worker};
 use crate::deadline;
@@ -124,7 +124,7 @@ impl External {
             return match self
                 .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
             {
-                Ok(result) => frame_from_answer(&result?, scene, plan, self.answers()),
+                Ok(result) => frame_from_line(result?.as_bytes(), scene, plan, self.answers()),
                 // The process was stuck on an earlier case, or vanished or
                 // flooded before answering this one, and is gone: this
                 // case is sent once more, to a fresh one.
@@ -132,9 +132,7 @@ impl External {
                 Err(why) => Err(why),
             };
         }
-        let mut request =
-            serde_json::to_vec(&request(scene, plan)).expect("a JSON value serializes");
-        request.push(b'\n');
+        let request = Outgoing::Request(Box::new(Request::v1(scene, plan)));
         let had_hello = worker.hello.is_some();
         let reused = worker.sent > 0;
         let line = worker.exchange(request, deadline);
@@ -163,7 +161,9 @@ impl External {
             // Version 1 carries no ids: one line per request, and a second
             // one already written means the answer cannot be told apart.
             Ok(line) => match worker.unread() {
-                Unread::Nothing => parse_response(line.as_bytes()).map_err(|why| (why, true)),
+                Unread::Nothing => check_json(line.as_bytes())
+                    .map(|()| line)
+                    .map_err(|why| (why, true)),
                 Unread::Line(Ok(next)) => Err((
                     format!(
                         "it wrote more than one line for one request (protocol v1 carries no \
@@ -210,8 +210,8 @@ impl External {
             )),
         };
         match result {
-            Ok(value) => match frame_from_answer(&value, scene, plan, self.answers()) {
-                Err(RasterError::Failed(why)) if value.get("error").is_none() => {
+            Ok(line) => match frame_from_line(line.as_bytes(), scene, plan, self.answers()) {
+                Err(RasterError::Failed(why)) if !why.starts_with(PROGRAM_ERROR) => {
                     // An answer that does not fit its request may be
                     // another request's: the process is never reused.
                     worker.end(true);
@@ -259,16 +259,14 @@ impl External {
         deadline: Instant,
         timeout: Duration,
         max_output: u64,
-    ) -> Result<Result<Value, RasterError>, RasterError> {
+    ) -> Result<Result<String, RasterError>, RasterError> {
         let id = format!(
             "{}#{}",
             scene.name,
             self.next_id.fetch_add(1, Ordering::Relaxed)
         );
         let mark = worker.stderr.written();
-        let mut request =
-            serde_json::to_vec(&request_v2(scene, plan, &id)).expect("a JSON value serializes");
-        request.push(b'\n');
+        let request = Outgoing::Request(Box::new(Request::v2(scene, plan, &id)));
         let reused = worker.sent > 0;
         let (answer, skipped) = worker.exchange_v2(request, &id, deadline, max_output);
         let keep = |worker: Worker| pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);

@@ -2,8 +2,9 @@
 //! into a frame, a hello into what it refuses (the fuzz targets drive
 //! these).
 
-use super::hello::{self, Hello};
-use super::protocol::{frame_from_response, parse_response};
+use super::answer::frame_from_line;
+use super::envelope::not_json;
+use super::hello::{self, Answers, Hello};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -14,14 +15,13 @@ use crate::scene::Scene;
 /// reported error, a malformed answer). The `protocol_response` fuzz target
 /// drives it.
 pub fn read_answer(line: &[u8], scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-    let value = parse_response(line).map_err(RasterError::Failed)?;
-    frame_from_response(&value, scene, plan)
+    frame_from_line(line, scene, plan, Answers::default())
 }
 
 /// Reads a line as a hello: `Ok(None)` when it is not one, else the reason
 /// its declared capabilities refuse `scene` drawn under `plan`, if any.
 pub fn read_hello(line: &[u8], scene: &Scene, plan: &Plan) -> Result<Option<String>, String> {
-    let value = parse_response(line)?;
+    let value = serde_json::from_slice(line).map_err(|e| not_json(line, &e))?;
     if !hello::is_hello(&value) {
         return Ok(None);
     }

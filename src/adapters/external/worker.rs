@@ -7,7 +7,7 @@
 //! looked at ([`Worker::unread`]): the sign of a program out of step.
 
 use std::collections::VecDeque;
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{BufRead, BufReader, Read};
 use std::os::fd::{AsFd, AsRawFd, OwnedFd};
 use std::process::{Child, ChildStdin, ExitStatus};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -18,10 +18,12 @@ use std::time::{Duration, Instant};
 
 use serde_json::Value;
 
+use super::envelope::{Envelope, Id};
 use super::hello::{self, Hello};
 use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE, UNREAD_GRACE};
 use super::messages::shorten;
 use super::process::*;
+use super::protocol::Outgoing;
 
 /// What a persistent exchange got instead of a line.
 pub(super) enum Exchange {
@@ -43,7 +45,7 @@ pub(super) struct Worker {
     pub(super) child: Child,
     /// Lines to write to its stdin, by a thread, so that a program that
     /// stops reading cannot block rastercheck past the time limit.
-    pub(super) requests: Option<Sender<Vec<u8>>>,
+    pub(super) requests: Option<Sender<Outgoing>>,
     pub(super) lines: Receiver<Result<String, Output>>,
     pub(super) stderr: StderrTail,
     /// The threads that write its stdin and read its stdout and stderr.
@@ -135,14 +137,6 @@ pub(super) struct Skipped {
     pub(super) wrong_id: Option<String>,
 }
 
-/// Whether `value` is shaped as an answer: an object with one of
-/// §12.2's fields.
-fn is_answer(value: &Value) -> bool {
-    ["primitives", "error", "unsupported", "exr"]
-        .iter()
-        .any(|key| value.get(key).is_some())
-}
-
 impl Skipped {
     pub(super) fn describe(&self) -> String {
         let mut parts = Vec::new();
@@ -169,15 +163,11 @@ impl Worker {
     pub(super) fn start(mut child: Child, max_output: u64) -> Worker {
         let (stderr, stderr_thread) = StderrTail::collect(child.stderr.take());
         let stdin: ChildStdin = child.stdin.take().expect("stdin is piped");
-        let (requests, to_write) = mpsc::channel::<Vec<u8>>();
+        let (requests, to_write) = mpsc::channel::<Outgoing>();
         let writer = thread::spawn(move || {
             let mut stdin = stdin;
             for request in to_write {
-                if stdin
-                    .write_all(&request)
-                    .and_then(|()| stdin.flush())
-                    .is_err()
-                {
+                if request.write_to(&mut stdin).is_err() {
                     break;
                 }
             }
@@ -365,6 +355,11 @@ impl Worker {
             return false;
         }
         self.heard = true;
+        // A version 1 program's first line is its first answer: looked at
+        // for a `hello` key only, not parsed into a tree (issue 36).
+        if !Envelope::read(line).is_some_and(|e| e.hello) {
+            return false;
+        }
         match serde_json::from_str::<Value>(line) {
             Ok(value) if hello::is_hello(&value) => {
                 self.hello = Some(Hello::parse(&value));
@@ -413,11 +408,11 @@ impl Worker {
     /// [`MAX_SKIPPED_LINES`] lines or `max_output` bytes skipped, gives up.
     pub(super) fn exchange_v2(
         &mut self,
-        request: Vec<u8>,
+        request: Outgoing,
         id: &str,
         deadline: Instant,
         max_output: u64,
-    ) -> (Result<Value, Exchange>, Skipped) {
+    ) -> (Result<String, Exchange>, Skipped) {
         if let Some(requests) = &self.requests {
             let _ = requests.send(request);
         }
@@ -432,15 +427,13 @@ impl Worker {
             if line.trim().is_empty() {
                 continue;
             }
-            let value = serde_json::from_str::<Value>(&line).ok();
-            let got = value
-                .as_ref()
-                .and_then(|v| v.get("id"))
-                .and_then(Value::as_str);
+            // Its id and shape only: the answer is read into a frame later.
+            let envelope = Envelope::read(&line);
+            let got = envelope.as_ref().and_then(Envelope::id_text);
             match got {
                 Some(got) if got == id => {
                     self.timeouts_in_a_row = 0;
-                    return (Ok(value.expect("it parsed")), skipped);
+                    return (Ok(line), skipped);
                 }
                 Some(got) if self.owed.iter().any(|o| o == got) => {
                     self.owed.retain(|o| o != got);
@@ -448,17 +441,16 @@ impl Worker {
                     skipped.late += 1;
                 }
                 _ => {
-                    match value.as_ref().filter(|v| is_answer(v)).map(|v| v.get("id")) {
-                        Some(None | Some(Value::Null)) => {
+                    match envelope.as_ref().filter(|e| e.answer).map(|e| &e.id) {
+                        Some(Id::Missing | Id::Null) => {
                             return (Err(Exchange::NoId(shorten(&line))), skipped)
                         }
-                        Some(Some(Value::String(other))) => {
+                        Some(Id::Text(other)) => {
                             let other = format!("{:?}", shorten(other));
                             skipped.wrong_id.get_or_insert(other);
                         }
-                        Some(Some(other)) => {
-                            let other = shorten(&other.to_string());
-                            skipped.wrong_id.get_or_insert(other);
+                        Some(Id::Other(other)) => {
+                            skipped.wrong_id.get_or_insert(shorten(other));
                         }
                         None => {}
                     }
@@ -483,7 +475,7 @@ impl Worker {
     /// Sends a request line and waits for the next non-blank line.
     pub(super) fn exchange(
         &mut self,
-        request: Vec<u8>,
+        request: Outgoing,
         deadline: Instant,
     ) -> Result<String, Exchange> {
         if let Some(requests) = &self.requests {
@@ -506,7 +498,7 @@ impl Worker {
 
     pub(super) fn say_bye(&mut self) {
         if let Some(requests) = self.requests.take() {
-            let _ = requests.send(b"{\"bye\": true}\n".to_vec());
+            let _ = requests.send(Outgoing::Line(b"{\"bye\": true}\n"));
             // Dropping the sender closes stdin once the line is written.
         }
     }

@@ -515,6 +515,7 @@ mod tests {
                     judged_sample_pattern: None,
                     judged_y: None,
                     judged_pixel_centre: None,
+                    line_latitude: None,
                     metrics: None,
                     files: Vec::new(),
                 });

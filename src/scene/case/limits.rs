@@ -13,9 +13,10 @@ pub struct Limits {
     pub max_samples: u64,
     /// Bytes of one case file, checked before it is read (`--max-case-bytes`).
     pub max_case_bytes: u64,
-    /// Bytes one case's frames may take, estimated before they are
-    /// allocated (`--max-case-memory`); enforced by the runner, not the
-    /// reader.
+    /// Bytes one case may take, estimated before anything is allocated
+    /// (`--max-case-memory`): its frames and each external program's
+    /// answer line, the one budget of SPEC.md §8; enforced by the runner,
+    /// not the reader.
     pub max_case_memory: u64,
     /// Wall time each rasterizer (the reference, then each candidate) may
     /// spend on one case; `None` for no limit. Not a property of the file:
