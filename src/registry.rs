@@ -474,7 +474,9 @@ mod tests {
             mutant:shrunk mutant:no-perspective mutant:thick-lines \
             mutant:midpoint-for-diamond mutant:shifted-samples mutant:coarse-resolve \
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
-            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties";
+            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
+            foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
+            foil-empty-antialias";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());
