@@ -11,8 +11,8 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    AnyCoverage, AreaSampler, CoarseSnap, DdaF32, DdaF64, FloatF32, FloatF64, GridSamples,
-    OffsetSampler, SlopeTies,
+    AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, DdaF32, DdaF64, EmptyAntialias, FloatF32,
+    FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -180,6 +180,21 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-slope-ties", Kind::Foil, false,
         "production with ties by slope: bottom-right, but top-left on slopes 3, 3/2, -3, -1/3, -2/3",
         || boxed(SlopeTies)),
+    row("foil-truncate", Kind::Foil, false,
+        "production truncating every vertex to whole pixels, and declaring it",
+        || boxed(Truncate::HONEST)),
+    row("foil-truncate-undeclared", Kind::Foil, false,
+        "production truncating every vertex to whole pixels, declaring nothing",
+        || boxed(Truncate::UNDECLARED)),
+    row("foil-coarse-edges", Kind::Foil, false,
+        "vertices at 8 subpixel bits, slanted edges stepped by slopes truncated to 1/16 px per row",
+        || boxed(CoarseEdges)),
+    row("foil-outline-over-fill", Kind::Foil, false,
+        "production's fill with each triangle's edges stroked over it as one-pixel hairlines",
+        || boxed(OutlineOverFill)),
+    row("foil-empty-antialias", Kind::Foil, false,
+        "an area method answering every antialiased scene with no coverage at all",
+        || boxed(EmptyAntialias)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -487,7 +502,9 @@ mod tests {
             mutant:shrunk mutant:no-perspective mutant:thick-lines \
             mutant:midpoint-for-diamond mutant:shifted-samples mutant:coarse-resolve \
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
-            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties";
+            vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
+            foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
+            foil-empty-antialias";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

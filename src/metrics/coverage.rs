@@ -19,6 +19,10 @@ pub enum SampleDiff {
     /// Covered as often, but the last primitive to cover it differs: the
     /// sample went to the wrong side of a shared edge.
     WrongOwner,
+    /// A tie sample (exactly on an edge) that a candidate with no tie rule
+    /// decided otherwise than the reference, by a choice of sides: accepted
+    /// and counted apart (SPEC.md §3.1.1), not a mismatch.
+    Tie,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -84,7 +88,11 @@ pub fn compare_off_ties(
     for i in 0..reference.sample_count() {
         let (r, c) = (reference.coverage[i], candidate.coverage[i]);
         let diff = if forgiven(ties, candidate, i) {
-            SampleDiff::Same
+            if (c, candidate.last[i]) == (r, reference.last[i]) {
+                SampleDiff::Same
+            } else {
+                SampleDiff::Tie
+            }
         } else if c < r {
             m.missing += 1;
             SampleDiff::Missing

@@ -8,7 +8,10 @@
 //!   magenta = missing (the reference covers it, the candidate does not;
 //!   VK-GL-CTS marks missing pixels in purple), red = extra (the candidate
 //!   covers it more often), yellow = wrong owner (covered as often, but by
-//!   another primitive: the sample went to the other side of a shared edge);
+//!   another primitive: the sample went to the other side of a shared edge),
+//!   green = an accepted tie (a candidate with no tie rule, `fill_rule:
+//!   "none"`, took a sample exactly on an edge by a choice of sides, SPEC.md
+//!   §3.1.1: counted on the card's ties line, not a mismatch);
 //! - every image: thin dark lines at pixel borders, and the snapped
 //!   triangle outlines in cyan, drawn from f64 (display only).
 //!
@@ -42,6 +45,9 @@ pub const MISSING: [u8; 3] = [255, 0, 255];
 pub const EXTRA: [u8; 3] = [255, 0, 0];
 pub const WRONG_OWNER: [u8; 3] = [255, 220, 0];
 pub const SAME_COVERED: [u8; 3] = [110, 110, 110];
+/// A tie sample decided by a choice of sides, accepted for a candidate with
+/// no tie rule (SPEC.md §3.1.1): green, neither a mismatch nor alike.
+pub const TIE_ACCEPTED: [u8; 3] = [0, 190, 90];
 const EDGE: [u8; 3] = [0, 200, 255];
 /// Edges of moving primitives at shutter close.
 pub const EDGE_AT_CLOSE: [u8; 3] = [180, 255, 0];
@@ -80,6 +86,7 @@ fn diff_colour(diff: SampleDiff, covered: bool) -> [u8; 3] {
         SampleDiff::Missing => MISSING,
         SampleDiff::Extra => EXTRA,
         SampleDiff::WrongOwner => WRONG_OWNER,
+        SampleDiff::Tie => TIE_ACCEPTED,
     }
 }
 

@@ -419,7 +419,9 @@ fn classify(
     if c.mismatched() > scene.expect.max_mismatched_samples
         || (c.reference_covered > 0 && c.candidate_covered == 0)
     {
-        let differ = (0..n).filter(|&i| c.mask[i] != SampleDiff::Same).collect();
+        let differ = (0..n)
+            .filter(|&i| !matches!(c.mask[i], SampleDiff::Same | SampleDiff::Tie))
+            .collect();
         focus.push((Kind::Coverage, differ));
     }
     if let Some(aa) = &m.antialias {

@@ -50,6 +50,9 @@ fn sampler_departure(kind: SamplerKind) -> Option<&'static str> {
         SamplerKind::AnyCoverage => Some(
             "It is not point-sampled (any-coverage): a pixel is drawn when a primitive touches any part of it, as D3D12's and Vulkan's optional conservative rasterization (overestimate) does, not their default sample-point coverage. Shared edges are drawn by both triangles; a fill rule, subpixel bits and a sample position do not apply to it.",
         ),
+        SamplerKind::OutlineOverFill => Some(
+            "It is not point-sampled (outline over fill): each triangle's fill is point-sampled, then its edges are stroked over it as one-pixel hairlines, so it draws pixels whose centre no triangle covers, but not every pixel an edge touches; D3D11 and Vulkan decide coverage at sample points only. Shared edges are drawn by both triangles; a fill rule, subpixel bits and a sample position do not apply to it.",
+        ),
         SamplerKind::Unknown => Some(
             "Its frames fit neither a point sampler, an area sampler nor an any-coverage one, so its fill rule, subpixel bits and sample position were not measured.",
         ),
@@ -64,6 +67,21 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
         if p.y_down == Some(false) {
             out.push(Y_UP.to_owned());
         }
+        out.extend(interpolation_departures(p));
+        return out;
+    }
+    let truncates = p.truncation.starts_with("truncates");
+    if truncates {
+        out.push(format!(
+            "Vertices are truncated to whole pixels (⌊x⌋, ⌊y⌋; {}), where D3D11 snaps to 8 subpixel bits and Vulkan to at least 4. Declared as snapping \"truncate\" it is judged at its truncated vertices (SPEC.md §3.2).",
+            p.truncation.trim_start_matches("truncates vertices to whole pixels (⌊x⌋, ⌊y⌋): ")
+        ));
+    }
+    if p.sample_offset.is_none() && truncates {
+        out.push(format!(
+            "Sample position: {}. Its tie rule and the precision of its edges were not measured: their probe scenes place vertices inside pixels, which truncation moves.",
+            p.sample_position
+        ));
         out.extend(interpolation_departures(p));
         return out;
     }
@@ -109,7 +127,17 @@ pub(super) fn departures(p: &Profile) -> Vec<String> {
     if p.y_down == Some(false) {
         out.push(Y_UP.to_owned());
     }
+    if p.edge_precision
+        .ends_with("stepped coarser than the vertex grid")
+    {
+        out.push(format!(
+            "Slanted edges resolve {}, fewer bits than its vertices keep ({}): it steps edges between vertices in coarser arithmetic than it stores them in. D3D11 and Vulkan decide each sample against the edge between the snapped vertices exactly.",
+            p.edge_precision.trim_end_matches(": stepped coarser than the vertex grid"),
+            p.vertex_precision
+        ));
+    }
     match p.subpixel_bits {
+        Some(0) if truncates => {}
         Some(b) if b < 4 => out.push(format!(
             "Vertices snap to {b} subpixel bits (a 1/{} px grid): fewer than Vulkan's minimum subPixelPrecisionBits of 4 and D3D11's 8.",
             1u64 << b
@@ -216,6 +244,9 @@ impl Profile {
                 String::new()
             }
         );
+        s += &format!("  vertex grid:        {}\n", self.vertex_precision);
+        s += &format!("  edge stepping:      {}\n", self.edge_precision);
+        s += &format!("  truncation:         {}\n", self.truncation);
         s += &format!("  sample position:    {}\n", self.sample_position);
         if let Some(clip) = &self.clip {
             s += &format!(

@@ -21,6 +21,9 @@ pub enum SamplerKind {
     Area,
     /// By whether a primitive touches the pixel at all (conservative).
     AnyCoverage,
+    /// A point-sampled fill with each edge stroked over it as a hairline:
+    /// more than a point sampler draws, less than any-coverage.
+    OutlineOverFill,
     /// None of the above explains its frames.
     Unknown,
 }
@@ -32,6 +35,7 @@ impl SamplerKind {
             SamplerKind::Point => "point",
             SamplerKind::Area => "area",
             SamplerKind::AnyCoverage => "any-coverage",
+            SamplerKind::OutlineOverFill => "outline-over-fill",
             SamplerKind::Unknown => "unknown",
         }
     }
@@ -42,6 +46,7 @@ impl SamplerKind {
             SamplerKind::Point => "point-sampled",
             SamplerKind::Area => "not point-sampled (area sampler)",
             SamplerKind::AnyCoverage => "not point-sampled (any-coverage)",
+            SamplerKind::OutlineOverFill => "not point-sampled (outline over fill)",
             SamplerKind::Unknown => "sampler unknown",
         }
     }
@@ -134,6 +139,9 @@ impl Diagnosis {
         match self.sampler.kind {
             SamplerKind::AnyCoverage => {
                 return format!("{probe} not point-sampled (any-coverage): every pixel a triangle touches is drawn, so pixels along shared edges are drawn by both triangles; no tie rule applies.")
+            }
+            SamplerKind::OutlineOverFill => {
+                return format!("{probe} not point-sampled (outline over fill): each triangle's fill is point-sampled, then its edges are stroked over it as hairlines, so pixels along shared edges are drawn by both triangles; no tie rule applies.")
             }
             SamplerKind::Area => {
                 return format!("{probe} not point-sampled (area sampler): a pixel is drawn by how much of it a triangle covers, not at a sample, so shared edges are not decided by a tie rule.")

@@ -17,7 +17,7 @@ use super::evidence::{
 };
 use super::scenes::{
     fill_rule_meshes, interpolation_scene, mesh_scene, precision_scenes, slope_words,
-    tie_slope_meshes, tri, TIE_CENTRE,
+    tie_slope_meshes, tri, vertex_scenes, TIE_CENTRE,
 };
 
 /// Draws a scene, catching panics.
@@ -54,7 +54,11 @@ fn moved(scene: &Scene, o: Eighths) -> Scene {
 }
 
 /// Draws `scene` moved for a sample at `o` ([`moved`]).
-fn draw_for(candidate: &dyn Rasterizer, scene: &Scene, o: Eighths) -> Result<Frame, RasterError> {
+pub(super) fn draw_for(
+    candidate: &dyn Rasterizer,
+    scene: &Scene,
+    o: Eighths,
+) -> Result<Frame, RasterError> {
     draw(candidate, &moved(scene, o))
 }
 
@@ -249,15 +253,35 @@ pub(super) fn probe_y(candidate: &dyn Rasterizer) -> Option<bool> {
     }
 }
 
+/// Where a precision probe puts its sample along an edge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Along {
+    /// On the first sample row below the moving vertex: its grid
+    /// (`scenes::vertex_scenes`).
+    Vertex,
+    /// Three rows down the edge from the fixed vertex: its grid and how
+    /// the edge is stepped (`scenes::precision_scenes`).
+    Edge,
+}
+
 /// Bits resolved along one axis, the scenes moved for a sample at `o`:
 /// the largest k such that all three steps of every k' ≤ k change their
 /// sample. `Err` when it could not draw.
 pub(super) fn probe_axis(
     candidate: &dyn Rasterizer,
+    along: Along,
     transpose: bool,
     o: Eighths,
 ) -> Result<u32, String> {
-    let (before, after, steps) = precision_scenes(transpose);
+    let (before, after, steps) = match along {
+        Along::Vertex if transpose => {
+            return Err(
+                "not measured along y: a row walker steps that edge before the sample".to_owned(),
+            )
+        }
+        Along::Vertex => vertex_scenes(),
+        Along::Edge => precision_scenes(transpose),
+    };
     let f0 = draw_for(candidate, &before, o).map_err(|e| e.to_string())?;
     let f1 = draw_for(candidate, &after, o).map_err(|e| e.to_string())?;
     if f0.sample_count() != before.canvas.pixel_count()

@@ -11,7 +11,8 @@
 //! evidence of `evidence.rs`); `diagnose.rs` is the sampler, position and
 //! tie-rule decision alone (in the words of `diagnosis.rs`); `scenes.rs`
 //! builds the probe scenes, `sampler.rs` and `infer.rs` decide what each
-//! probe found, `clip.rs` and `points.rs` probe clip-space conventions
+//! probe found (`outline.rs` tells outline over fill from any-coverage,
+//! `truncation.rs` finds vertices truncated to whole pixels), `clip.rs` and `points.rs` probe clip-space conventions
 //! (through `convention.rs`), `describe.rs` puts the profile into words.
 //! Reading a profile for `run --profile` is the harness's
 //! (`harness/profile.rs`).
@@ -23,11 +24,13 @@ mod diagnose;
 pub mod diagnosis;
 mod evidence;
 mod infer;
+mod outline;
 mod points;
 mod profile;
 mod run;
 mod sampler;
 mod scenes;
+mod truncation;
 mod verdict;
 
 pub use clip::{probe_clip, ClipProbe};

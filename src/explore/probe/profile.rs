@@ -47,13 +47,30 @@ pub struct Profile {
     /// `true` when y points down on screen (a triangle in the top half is
     /// drawn in the top rows), `false` when up, `null` when unclear.
     pub y_down: Option<bool>,
-    /// Subpixel bits the rasterizer keeps; `null` when it keeps all the
+    /// Subpixel bits the rasterizer keeps for its vertices (`vertex_precision`;
+    /// 0 when it truncates to whole pixels); `null` when it keeps all the
     /// case states (`exact`) or when it could not be measured.
     pub subpixel_bits: Option<u32>,
     /// "8 bits", "exact", or why it is unknown.
     pub subpixel: String,
-    /// Bits resolved along x and along y.
+    /// Bits resolved along x and along y by slanted edges three rows from
+    /// the vertex that moves: the vertex grid and the edge stepping
+    /// together.
     pub subpixel_resolved: Resolved,
+    /// Bits resolved along x on the first sample row below the vertex that
+    /// moves, where no edge has been stepped: the vertex grid (`y` is not
+    /// measured so, and `null`).
+    pub vertex_resolved: Resolved,
+    /// The vertex grid in words: "8 bits", "exact", "0 bits: truncated to
+    /// whole pixels", or why it was not measured.
+    pub vertex_precision: String,
+    /// How slanted edges are stepped: "as the vertices" when they resolve
+    /// the vertex grid three rows on, or the bits they resolve when fewer.
+    pub edge_precision: String,
+    /// What the precision findings were measured on.
+    pub precision_measured_on: String,
+    /// Whether vertices are truncated to whole pixels, and on what scene.
+    pub truncation: String,
     /// What the rasterizer declares about its snapping
     /// ([`crate::rasterizer::Rasterizer::fixed_snapping`]) against what was
     /// measured: "declares 4 subpixel bits; measured 4 (agrees)", or, when

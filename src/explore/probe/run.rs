@@ -71,9 +71,10 @@ use super::clip::probe_clip;
 use super::describe::departures;
 use super::diagnose::{diagnose_with_evidence, not_measured};
 use super::evidence::{Resolved, PROBE_BITS};
-use super::infer::{probe_axis, probe_interpolation, probe_y};
+use super::infer::{probe_axis, probe_interpolation, probe_y, Along};
 use super::points::probe_points;
 use super::profile::Profile;
+use super::truncation::{truncates, MEASURED_ON as TRUNCATION_ON};
 use crate::harness::profile::SCHEMA;
 use crate::rasterizer::{Rasterizer, Snapping};
 
@@ -81,39 +82,24 @@ use crate::rasterizer::{Rasterizer, Snapping};
 pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
     let (d, evidence) = diagnose_with_evidence(candidate)?;
     let y_down = probe_y(candidate);
-    let (x_bits, y_bits) = match (not_measured(&d), d.offset) {
+    let truncates = truncates(candidate, d.offset);
+    let measured = |along: Along| match (not_measured(&d), d.offset) {
         (None, Some(o)) => (
-            probe_axis(candidate, false, o),
-            probe_axis(candidate, true, o),
+            probe_axis(candidate, along, false, o),
+            probe_axis(candidate, along, true, o),
         ),
         (why, _) => {
             let why = why.unwrap_or_default();
             (Err(why.clone()), Err(why))
         }
     };
-    let (subpixel_bits, subpixel) = match (&x_bits, &y_bits) {
-        (Ok(x), Ok(y)) => {
-            // A rasterizer cannot resolve finer than its vertex grid along
-            // any axis, but may resolve less along one where it rounds edge
-            // positions between vertices: the grid is the finer of the two.
-            let b = (*x).max(*y);
-            let axes = if x == y {
-                String::new()
-            } else {
-                format!(
-                    " (x {x}, y {y}: edges resolve fewer bits along {} than the vertex grid)",
-                    if x < y { "x" } else { "y" }
-                )
-            };
-            if b >= PROBE_BITS {
-                (None, format!("exact{axes}"))
-            } else {
-                (Some(b), format!("{b} bits{axes}"))
-            }
-        }
-        (Err(e), _) | (_, Err(e)) if e.starts_with("not ") => (None, e.clone()),
-        (Err(e), _) | (_, Err(e)) => (None, format!("unknown: {e}")),
+    let vertex_x = match (not_measured(&d), d.offset) {
+        (None, Some(o)) => probe_axis(candidate, Along::Vertex, false, o),
+        (why, _) => Err(why.unwrap_or_default()),
     };
+    let (x_bits, y_bits) = measured(Along::Edge);
+    let precision = precision(truncates == Some(true), &vertex_x, (&x_bits, &y_bits));
+    let (subpixel_bits, subpixel) = (precision.bits, precision.words.clone());
     let declared_snapping = candidate
         .fixed_snapping()
         .map(|declared| against_declared(declared, subpixel_bits, &subpixel));
@@ -149,6 +135,20 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
             x: x_bits.ok(),
             y: y_bits.ok(),
         },
+        vertex_resolved: Resolved {
+            x: vertex_x.ok(),
+            y: None,
+        },
+        vertex_precision: precision.vertex,
+        edge_precision: precision.edges,
+        precision_measured_on: PRECISION_MEASURED_ON.to_owned(),
+        truncation: match truncates {
+            Some(true) => format!("truncates vertices to whole pixels (⌊x⌋, ⌊y⌋): {TRUNCATION_ON}"),
+            Some(false) => {
+                format!("does not truncate vertices to whole pixels (not drawn as {TRUNCATION_ON})")
+            }
+            None => "not measured: it could not draw the truncation squares".to_owned(),
+        },
         declared_snapping: declared_snapping.clone(),
         sample_position: d.sample_position,
         sample_offset: d.offset.map(|(x, y)| [x as f64 / 8.0, y as f64 / 8.0]),
@@ -162,6 +162,82 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         profile.departures.push(words);
     }
     Ok(profile)
+}
+
+/// What the precision probes draw, in the words a profile gives.
+pub const PRECISION_MEASURED_ON: &str = "48 cells, a vertex moved by 2^-k (k = 1..16, three steps each): the vertex grid along x, with the sample on the first sample row below the vertex (no edge stepped); the edges along x and y, with the sample three rows down a slanted edge";
+
+/// The precision findings: the vertex grid (bits, `None` when exact or
+/// unmeasured), the profile's `subpixel` words, and the vertex and edge
+/// findings apart.
+struct Precision {
+    bits: Option<u32>,
+    words: String,
+    vertex: String,
+    edges: String,
+}
+
+/// Bits per axis in words: "8 bits", or "x 6, y 8 bits" when they differ;
+/// "exact" at the probe's bits.
+fn axes_words(x: u32, y: u32) -> String {
+    match (x.min(y) >= PROBE_BITS, x == y) {
+        (true, _) => "exact".to_owned(),
+        (false, true) => format!("{x} bits"),
+        (false, false) => format!("x {x}, y {y} bits"),
+    }
+}
+
+/// The vertex grid is what the vertex cells resolve along x (measured
+/// there only, and said so); edges are reported apart when they resolve
+/// fewer bits three rows on than the vertex grid, along either axis;
+/// truncation to whole pixels is 0 bits, found on its own scene, whether or
+/// not the cells could be read.
+fn precision(
+    truncates: bool,
+    vertex: &Result<u32, String>,
+    edges: (&Result<u32, String>, &Result<u32, String>),
+) -> Precision {
+    let why = |e: &String| {
+        if e.starts_with("not ") {
+            e.clone()
+        } else {
+            format!("unknown: {e}")
+        }
+    };
+    let (bits, vertex_words) = match vertex {
+        Ok(x) => ((*x < PROBE_BITS).then_some(*x), axes_words(*x, *x)),
+        Err(e) => (None, why(e)),
+    };
+    let edge_words = match (vertex, edges) {
+        (Ok(v), (Ok(ex), Ok(ey))) if ex >= v && ey >= v => "as the vertices".to_owned(),
+        (_, (Ok(ex), Ok(ey))) => format!(
+            "{}, three rows down a slanted edge: stepped coarser than the vertex grid",
+            axes_words(*ex, *ey)
+        ),
+        (_, (Err(e), _) | (_, Err(e))) => why(e),
+    };
+    if truncates {
+        let words = "0 bits: vertices truncated to whole pixels".to_owned();
+        return Precision {
+            bits: Some(0),
+            words: words.clone(),
+            vertex: words,
+            edges: edge_words,
+        };
+    }
+    let mut words = vertex_words.clone();
+    if !edge_words.starts_with("as the")
+        && !edge_words.starts_with("not ")
+        && !edge_words.starts_with("unknown")
+    {
+        words += &format!(" (slanted edges resolve {edge_words})");
+    }
+    Precision {
+        bits,
+        words,
+        vertex: vertex_words,
+        edges: edge_words,
+    }
 }
 
 /// A declared snapping against the measured one (`measured`: the bits kept,

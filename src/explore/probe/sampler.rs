@@ -26,11 +26,16 @@
 //! - **Whole pixels.** One triangle over the whole canvas: what an area
 //!   rasterizer draws. Drawing it and no strip is the area signature.
 //!
+//! Drawing all four slivers is any-coverage's signature, and also that of
+//! a fill with its edges stroked over it as hairlines: `outline.rs` tells
+//! the two apart on one triangle's edge pixels.
+//!
 //! A frame that carries `resolved` (fractional coverage) for these
 //! single-sample scenes is an area rasterizer's on its face. A rasterizer
 //! that refuses single-sample scenes altogether (vello_cpu, `area-f32`) is
 //! asked for an antialiased half-covered pixel instead: a frame of resolved
-//! coverage only, with no sample slots, is an area method's.
+//! coverage only, with no sample slots, is an area method's; one whose
+//! coverage is zero everywhere draws nothing, and is said to.
 
 use serde_json::json;
 
@@ -40,6 +45,7 @@ use crate::rasterizer::{RasterError, Rasterizer};
 use crate::scene::{parse_case, Limits, Scene};
 
 use super::infer::draw;
+use super::outline;
 use super::scenes::{mesh_scene, tri};
 
 /// The sliver of pixel-relative corners (in 1/32 px), each in its own pixel.
@@ -138,6 +144,14 @@ fn fractional(frame: &Frame) -> bool {
         .is_some_and(|r| r.iter().any(|v| v.fract() != 0.0))
 }
 
+/// Whether a frame of resolved coverage draws nothing at all.
+fn nothing(frame: &Frame) -> bool {
+    frame
+        .resolved
+        .as_ref()
+        .is_none_or(|r| r.iter().all(|&v| v == 0.0))
+}
+
 fn right_size(frame: &Frame, scene: &Scene) -> bool {
     (frame.width, frame.height) == (scene.canvas.width, scene.canvas.height)
         && frame.coverage.len() == frame.pixel_count() * frame.samples as usize
@@ -169,10 +183,12 @@ pub fn decide(candidate: &dyn Rasterizer) -> Result<Sampler, String> {
         .filter(|&k| drawn(&frame, sliver_pixel(k)))
         .count();
     if touched == SLIVERS.len() {
-        return decided(
-            SamplerKind::AnyCoverage,
+        // Any-coverage, or a fill with its edges stroked over it: one
+        // triangle's edge pixels tell them apart (`outline.rs`).
+        return Ok(outline::decide(
+            candidate,
             "it draws all four slivers that avoid every point of the 1/8 lattice, each in its pixel (a point sampler draws at most one)",
-        );
+        ));
     }
     let strips = strip_scene();
     let whole = whole_scene();
@@ -223,6 +239,12 @@ fn decide_antialiased(candidate: &dyn Rasterizer, why: &str) -> Result<Sampler, 
             kind: SamplerKind::Area,
             evidence: format!(
                 "it draws no single-sample scene ({why}), and answers an antialiased half-covered pixel with resolved coverage only (no samples)"
+            ),
+        }),
+        Ok(f) if f.samples == 0 && nothing(&f) => Ok(Sampler {
+            kind: SamplerKind::Unknown,
+            evidence: format!(
+                "it draws no single-sample scene ({why}), and answers an antialiased pixel half covered by a triangle with nothing: zero coverage in every pixel (it draws nothing)"
             ),
         }),
         Ok(_) => Ok(Sampler {

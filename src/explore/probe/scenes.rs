@@ -257,6 +257,58 @@ pub(super) fn precision_scenes(transpose: bool) -> (Scene, Scene, Vec<Step>) {
     )
 }
 
+/// The vertex cells: as [`precision_scenes`], but with the sample on the
+/// first sample row below the moving vertex, so that no edge is stepped
+/// between the vertex and the sample. For k = 1..16 and j = 0, 1, 2, the
+/// moving vertex B = (x, s − ½) is the top of an edge to A = (n − 7j·2^-k,
+/// s + 7/2), and the sample is (n + ½, s): the edge meets it, ⅛ of the way
+/// down, when x = τ_j = n + 4/7 + j·2^-k, never a dyadic number and
+/// strictly inside step j of the 2^-k grid (τ_j·2^k = n·2^k + 4·2^k/7 + j).
+/// The third vertex C = (cx + 15, s) meets the sample's row far to the
+/// right. A rasterizer that finds an edge's x on its first row from its
+/// snapped vertices exactly reads its vertex grid here, however coarsely it
+/// steps the edge down the rows after. Along x only: transposed, the edge
+/// would run across rows from its other end, and a row walker would step
+/// it before the sample (the y sweep of [`precision_scenes`] bounds the
+/// y grid from below).
+pub(super) fn vertex_scenes() -> (Scene, Scene, Vec<Step>) {
+    let (cols, cell_w, cell_h) = (8u32, 16u32, 8u32);
+    let mut before = Vec::new();
+    let mut after = Vec::new();
+    let mut steps = Vec::new();
+    let mut cell = 0u32;
+    let fraction = |num: i64, k: u32| format!("{num}/{}", 1i64 << k);
+    for k in 1..=PROBE_BITS {
+        for j in 0..3i64 {
+            let (cx, cy) = ((cell % cols * cell_w) as i64, (cell / cols * cell_h) as i64);
+            cell += 1;
+            let n = cx + 8;
+            // The sample's row centre s = cy + 5/2.
+            let point = |x: String, y: String| json!([x, y]);
+            let a = point(fraction((n << k) - 7 * j, k), format!("{}", cy + 6));
+            let c = point((cx + 15).to_string(), format!("{}.5", cy + 2));
+            let by = (cy + 2).to_string();
+            // p_0 = ⌊τ_0·2^k⌋·2^-k, τ_0 = n + 4/7.
+            let p0 = (n << k) + ((4i64 << k) / 7) + j;
+            let t0 =
+                json!({"triangle": [point(fraction(p0, k), by.clone()), a.clone(), c.clone()]});
+            let t1 = json!({"triangle": [point(fraction(p0 + 1, k), by), a, c]});
+            before.push(t0);
+            after.push(t1);
+            steps.push(Step {
+                k,
+                sample: (n as u32, (cy + 2) as u32),
+            });
+        }
+    }
+    let (w, h) = (cols * cell_w, cell.div_ceil(cols) * cell_h);
+    (
+        mesh_scene("probe_vertex_precision", w, h, PROBE_BITS, before),
+        mesh_scene("probe_vertex_precision", w, h, PROBE_BITS, after),
+        steps,
+    )
+}
+
 pub(super) fn interpolation_scene(name: &str, mode: &str, w: [&str; 3]) -> Scene {
     let v = |x: i32, y: i32, z: &str, w: &str, a: [&str; 2]| json!({"position": [x, y], "z": z, "w": w, "attributes": a});
     let (v0, v1, v2, v3) = (

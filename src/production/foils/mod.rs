@@ -6,26 +6,38 @@
 //! `grid_samples.rs` hold conventions they cannot change (4 subpixel bits,
 //! grid sample positions) and declare them, truly or not (SPEC.md §3.2,
 //! §14.2.1); `slope_ties.rs` has a tie rule that depends on each
-//! edge's slope.
+//! edge's slope. `truncate.rs` draws vertices at whole pixels (declared
+//! or not), `coarse_edges.rs` walks slanted edges coarsely between fine
+//! vertices, `outline.rs` strokes hairlines over a fill, and
+//! `empty_antialias.rs` answers antialiased scenes with nothing: each a
+//! finding `probe` must make (issue 40).
 
 mod declare;
 
 pub mod any_coverage;
 pub mod area_sampler;
+pub mod coarse_edges;
 pub mod coarse_snap;
 pub mod dda;
+pub mod empty_antialias;
 pub mod float_edges;
 pub mod grid_samples;
 pub mod offset_sampler;
+pub mod outline;
 pub mod samplers;
 pub mod slope_ties;
+pub mod truncate;
 
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
+pub use coarse_edges::CoarseEdges;
 pub use coarse_snap::CoarseSnap;
 pub use dda::{DdaF32, DdaF64};
+pub use empty_antialias::EmptyAntialias;
 pub use float_edges::{FloatF32, FloatF64};
 pub use grid_samples::GridSamples;
 pub use offset_sampler::OffsetSampler;
+pub use outline::OutlineOverFill;
 pub use samplers::SAMPLER_FOILS;
 pub use slope_ties::SlopeTies;
+pub use truncate::Truncate;

@@ -12,10 +12,11 @@ use std::path::{Component, Path, PathBuf};
 
 use super::pictures::{
     colour_key, coverage_pictures, figure, first_differences, heat_maps, picture_shape,
-    COVERAGE_TWICE,
+    COVERAGE_TWICE, TIE_WORDS,
 };
 use super::tables::{badge, metrics_tables};
 use crate::frame::Frame;
+use crate::metrics::SampleDiff;
 use crate::report::escape::escape;
 use crate::report::json::{CaseEntry, MetricsEntry, ResultEntry};
 use crate::report::png::{self, EXTRA, MISSING, SAME_COVERED, WRONG_OWNER};
@@ -203,6 +204,9 @@ pub(super) struct ResultView<'a> {
     /// The depth set a depth format allows per sample (SPEC.md §18), if any.
     pub(super) depth_allowed: Option<&'a [[f64; 2]]>,
     pub(super) candidate: Option<&'a Frame>,
+    /// The mask the candidate was judged by, sample by sample: accepted tie
+    /// samples are [`SampleDiff::Tie`] in it.
+    pub(super) mask: Option<&'a [SampleDiff]>,
 }
 
 pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
@@ -249,7 +253,13 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
     // moving scene: its time coverage, likewise.
     let resolved = v.reference.filter(|r| png::pictured_resolved(r));
     if let (Some(scene), Some(r), Some(c)) = (v.scene, resolved, v.candidate) {
-        html.push_str(&coverage_pictures(case, scene, r, c, &result.rasterizer));
+        html.push_str(&coverage_pictures(
+            case,
+            scene,
+            (r, c),
+            v.mask,
+            &result.rasterizer,
+        ));
     }
 
     // The three pictures, as written under images/.
@@ -277,7 +287,7 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
         show(diff, "diff", "difference mask");
         html.push_str("</div>");
         if let (Some(r), Some(c)) = (v.reference, v.candidate) {
-            html.push_str(&first_differences(r, c));
+            html.push_str(&first_differences(r, c, v.mask));
         }
         html.push_str(&colour_key(&[
             ([255, 255, 255], "covered once"),
@@ -292,6 +302,9 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
             (SAME_COVERED, "covered alike"),
             ([0, 0, 0], "empty in both"),
         ]));
+        if v.mask.is_some_and(|m| m.contains(&SampleDiff::Tie)) {
+            html.push_str(&colour_key(&[(png::TIE_ACCEPTED, TIE_WORDS)]));
+        }
     }
 
     if let Some(m) = &result.metrics {

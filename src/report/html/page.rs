@@ -55,6 +55,12 @@ pub fn page(dir: &Path, case: &CaseEntry, shown: &[Card], outcome: &CaseOutcome)
                         .get(r)
                         .and_then(|run| run.frame.as_ref())
                         .filter(|f| reference.is_some_and(|r| same_shape(r, f))),
+                    mask: outcome
+                        .candidates
+                        .get(r)
+                        .and_then(|run| run.metrics.as_ref())
+                        .map(|m| m.coverage.mask.as_slice())
+                        .filter(|m| !m.is_empty()),
                 };
                 html.push_str(&result_card(dir, &view));
             }

@@ -168,8 +168,8 @@ pub(super) fn picture_shape(case: &CaseEntry) -> &'static str {
 pub(super) fn coverage_pictures(
     case: &CaseEntry,
     scene: &Scene,
-    reference: &Frame,
-    candidate: &Frame,
+    (reference, candidate): (&Frame, &Frame),
+    judged: Option<&[SampleDiff]>,
     name: &str,
 ) -> String {
     let scale = png::auto_scale(reference);
@@ -218,7 +218,7 @@ pub(super) fn coverage_pictures(
         &format!("signed error, full colour at ±{full:.2e}"),
     );
     let mask = if comparable(reference, candidate) {
-        diff_mask(reference, candidate)
+        judged.map_or_else(|| diff_mask(reference, candidate), <[SampleDiff]>::to_vec)
     } else {
         Vec::new()
     };
@@ -228,7 +228,7 @@ pub(super) fn coverage_pictures(
     }
     html.push_str("</div>");
     if comparable(reference, candidate) {
-        html.push_str(&first_differences(reference, candidate));
+        html.push_str(&first_differences(reference, candidate, judged));
     }
     let mut key = vec![
         ([0, 0, 0], "0"),
@@ -252,9 +252,16 @@ pub(super) fn coverage_pictures(
             (EXTRA, "extra"),
             (WRONG_OWNER, "wrong owner"),
         ]));
+        if mask.contains(&SampleDiff::Tie) {
+            html.push_str(&colour_key(&[(png::TIE_ACCEPTED, TIE_WORDS)]));
+        }
     }
     html
 }
+
+/// The colour key's words for an accepted tie sample.
+pub(super) const TIE_WORDS: &str =
+    "tie sample taken by a choice of sides: accepted (no tie rule, counted on the ties line)";
 
 /// The difference of every sample, as `metrics::coverage` finds it.
 pub(super) fn diff_mask(reference: &Frame, candidate: &Frame) -> Vec<SampleDiff> {
@@ -262,8 +269,13 @@ pub(super) fn diff_mask(reference: &Frame, candidate: &Frame) -> Vec<SampleDiff>
 }
 
 /// The first few differing pixels, so that one can be found on a large
-/// canvas.
-pub(super) fn first_differences(reference: &Frame, candidate: &Frame) -> String {
+/// canvas; with the mask the candidate was judged by (`judged`), accepted
+/// tie samples are not among them.
+pub(super) fn first_differences(
+    reference: &Frame,
+    candidate: &Frame,
+    judged: Option<&[SampleDiff]>,
+) -> String {
     const SHOWN: usize = 12;
     let mut listed = Vec::new();
     let mut total = 0usize;
@@ -273,7 +285,10 @@ pub(super) fn first_differences(reference: &Frame, candidate: &Frame) -> String 
     let n = reference.samples.max(1) as usize;
     for i in 0..reference.sample_count() {
         let (r, c) = (reference.coverage[i], candidate.coverage[i]);
-        let kind = if c < r {
+        let accepted = judged.and_then(|m| m.get(i)) == Some(&SampleDiff::Tie);
+        let kind = if accepted {
+            continue;
+        } else if c < r {
             "missing"
         } else if c > r {
             "extra"
@@ -382,6 +397,24 @@ mod tests {
             assert_eq!(base64(plain.as_bytes()), encoded, "{plain:?}");
         }
         assert_eq!(base64(&[0xff, 0xfe, 0xfd]), "//79");
+    }
+
+    /// Accepted tie samples are not listed among the differing pixels;
+    /// judged without the mask, they are.
+    #[test]
+    fn accepted_ties_are_not_differences() {
+        let reference = Frame::new(3, 1, false, 0);
+        let mut candidate = Frame::new(3, 1, false, 0);
+        for i in [0, 2] {
+            candidate.coverage[i] = 1;
+            candidate.last[i] = 1;
+        }
+        let mask = [SampleDiff::Tie, SampleDiff::Same, SampleDiff::Extra];
+        let judged = first_differences(&reference, &candidate, Some(&mask));
+        assert!(judged.contains("(2, 0) extra"), "{judged}");
+        assert!(!judged.contains("(0, 0)"), "{judged}");
+        let plain = first_differences(&reference, &candidate, None);
+        assert!(plain.contains("(0, 0) extra"), "{plain}");
     }
 
     #[test]
