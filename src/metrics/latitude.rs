@@ -170,7 +170,7 @@ pub fn measure(
             SampleDiff::Missing => coverage.missing -= 1,
             SampleDiff::Extra => coverage.extra -= 1,
             SampleDiff::WrongOwner => coverage.wrong_owner -= 1,
-            SampleDiff::Same => {}
+            SampleDiff::Same | SampleDiff::Tie => {}
         }
     }
     for (k, line) in lines.iter().enumerate() {
