@@ -516,6 +516,7 @@ mod tests {
                     judged_y: None,
                     judged_pixel_centre: None,
                     metrics: None,
+                    line_latitude: None,
                     files: Vec::new(),
                 });
                 case
