@@ -195,6 +195,85 @@ fn vertex_box(scene: &Scene, bits: u32) -> Option<[[i64; 2]; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::{parse_case, Limits};
+
+    fn scene(canvas: (u32, u32), triangles: &str) -> Scene {
+        let json = format!(
+            r#"{{"name": "view", "canvas": {{"width": {}, "height": {}}},
+                "rules": {{"subpixel_bits": 8, "fill_rule": "top-left", "cull": "none"}},
+                "primitives": [{triangles}]}}"#,
+            canvas.0, canvas.1
+        );
+        parse_case(&json, "view.json", &Limits::default()).expect("a valid case")
+    }
+
+    /// lavapipe's limits.
+    const LIMITS: ViewLimits = ViewLimits {
+        max: [16384, 16384],
+        x: [-32768, 32768],
+        y: [-32768, 32768],
+    };
+
+    #[test]
+    fn a_scene_inside_the_target_is_drawn_through_the_target() {
+        let inside = scene((16, 8), r#"{"triangle": [[2, 2], [14, 2], [2, 6]]}"#);
+        let view = screen_view(&inside, 8, 8, (16, 8), &LIMITS);
+        assert_eq!(view, View::target((16, 8)));
+    }
+
+    #[test]
+    fn a_scene_past_the_target_gets_an_enclosing_power_of_two_viewport() {
+        // shared_edge_shallow: x from −1 to 17, y from −30 to 30.
+        let past = scene(
+            (16, 8),
+            r#"{"triangle": [[-1, 1], [17, 7], [17, -30]]}, {"triangle": [[-1, 1], [-1, 30], [17, 7]]}"#,
+        );
+        let view = screen_view(&past, 8, 8, (16, 8), &LIMITS);
+        // x: [−3, 19] spans 22 → 32, centred from −8; y: [−32, 32] spans 64.
+        assert_eq!(
+            view,
+            View {
+                origin: [-8, -32],
+                size: (32, 64)
+            }
+        );
+    }
+
+    #[test]
+    fn a_scene_past_the_largest_viewport_is_drawn_through_the_target() {
+        let far = scene(
+            (64, 64),
+            r#"{"triangle": [[-20000, 0], [20000, 0], [0, 64]]}"#,
+        );
+        assert_eq!(
+            screen_view(&far, 8, 8, (64, 64), &LIMITS),
+            View::target((64, 64))
+        );
+        // Within the dimensions but past the bounds range.
+        let off = scene((64, 64), r#"{"triangle": [[0, 0], [30000, 0], [0, 64]]}"#);
+        let narrow = ViewLimits {
+            max: [65536, 65536],
+            x: [-16384, 16384],
+            y: [-16384, 16384],
+        };
+        assert_eq!(
+            screen_view(&off, 8, 8, (64, 64), &narrow),
+            View::target((64, 64))
+        );
+        // And within both: a 32768 px viewport from x = −1384.
+        let view = screen_view(
+            &off,
+            8,
+            8,
+            (64, 64),
+            &ViewLimits {
+                max: [65536, 65536],
+                ..LIMITS
+            },
+        );
+        assert_eq!(view.origin[0], -1384);
+        assert_eq!(view.size.0, 32768);
+    }
 
     #[test]
     fn exactness_counts_the_largest_coordinate_and_the_fine_bits() {
@@ -203,11 +282,12 @@ mod tests {
             size: (64, 32),
         };
         assert!(exact(&view, 8));
+        // x − x0 reaches 2^17: at 2^-7 that is 2^24 steps, at 2^-8 too many.
         let far = View {
             origin: [-65536, 0],
             size: (131072, 32),
         };
-        assert!(exact(&far, 8));
-        assert!(!exact(&far, 9));
+        assert!(exact(&far, 7));
+        assert!(!exact(&far, 8));
     }
 }
