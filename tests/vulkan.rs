@@ -116,6 +116,18 @@ fn probe_finds_a_point_sampler_with_top_left_ties() {
     assert_probe_diagnosis(&VULKAN, "top-left");
 }
 
+/// A screen-space scene whose triangles reach past the target, a shared
+/// edge crossing its border, matches the reference sample for sample: it
+/// is drawn through a viewport enclosing it (`gpu/view.rs`), and the
+/// foil, drawn through the target's viewport, is caught.
+#[test]
+fn triangles_past_the_target_are_not_clipped() {
+    let Some(_record) = available() else {
+        return;
+    };
+    common::viewport_drivers::assert_drawn_unclipped(&VULKAN);
+}
+
 #[test]
 fn matches_the_reference_on_top_left_tie_and_winding_cases() {
     let Some(_record) = available() else {

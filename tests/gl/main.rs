@@ -86,6 +86,17 @@ fn run(scene: &Scene) -> (oracle::ReferenceRun, CandidateRun) {
 
 /// probe finds llvmpipe point-sampled at the centre with bottom-left ties
 /// (in y-down terms: GL's window y points up) and 8 bits.
+/// A screen-space scene whose triangles reach past the tile, a shared
+/// edge crossing its border, matches the reference sample for sample
+/// (`gpu/view.rs`); the foil, drawn through the tile's viewport, is caught.
+#[test]
+fn triangles_past_the_target_are_not_clipped() {
+    let Some(_record) = available() else {
+        return;
+    };
+    common::viewport_drivers::assert_drawn_unclipped(&GL);
+}
+
 #[test]
 fn probe_finds_a_point_sampler_with_bottom_left_ties() {
     let Some(_record) = available() else {

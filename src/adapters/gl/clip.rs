@@ -85,6 +85,22 @@ impl Offers {
         }
     }
 
+    /// What the context allows of a screen-space scene's viewport in a
+    /// `tile` (`gpu/view.rs`), in the tile's pixels (y down) for every
+    /// tile of a framebuffer at most `max_side` square: window x from
+    /// `ox + x0` to `ox + x0 + P` and window y from `oy + Q − y0 − H` to
+    /// `oy + Q − y0` within the bounds range, for `ox` up to
+    /// `max_side − P` and `oy` up to `max_side − Q`.
+    pub(super) fn screen_limits(&self, tile: (u32, u32), max_side: u32) -> gpu::ViewLimits {
+        let [lo, hi] = [self.bounds[0].ceil() as i64, self.bounds[1].floor() as i64];
+        let side = i64::from(max_side);
+        gpu::ViewLimits {
+            max: self.max_viewport,
+            x: [lo, hi - side + i64::from(tile.0)],
+            y: [side - hi, i64::from(tile.1) - lo],
+        }
+    }
+
     /// Why this context cannot draw a clip-space scene, if it cannot.
     pub(super) fn refusal(&self, scene: &Scene) -> Option<String> {
         let v = scene.viewport.as_ref()?;
@@ -173,6 +189,7 @@ impl Stage {
         provoking: ProvokingFn,
         origin: (u32, u32),
         tile: (u32, u32),
+        view: gpu::View,
     ) {
         provoking(if self.provoking_last {
             glow::LAST_VERTEX_CONVENTION
@@ -181,7 +198,13 @@ impl Stage {
         });
         let (ox, oy) = origin;
         let Some(([x, y, w, h], [near, far], clamp)) = self.clip else {
-            gl.viewport(ox as i32, oy as i32, tile.0 as i32, tile.1 as i32);
+            // The view in window coordinates (y up, the tile's canvas row
+            // y at window row Q − 1 − y): `Offers::screen_limits` kept it
+            // within the context's bounds for every tile.
+            let (vw, vh) = view.size;
+            let gx = i64::from(ox) + view.origin[0];
+            let gy = i64::from(oy) + i64::from(tile.1) - view.origin[1] - i64::from(vh);
+            gl.viewport(gx as i32, gy as i32, vw as i32, vh as i32);
             gl.depth_range_f64(0.0, 1.0);
             if self.screen_clamp {
                 gl.enable(glow::DEPTH_CLAMP);

@@ -19,7 +19,7 @@ use glow::HasContext;
 use super::clip::Stage;
 use super::context::{gl_error, GlContext};
 use super::drawing::Drawing;
-use super::passes;
+use super::passes::{self, DRIVER_BITS};
 use super::{lines, msaa, samples, shaders, time};
 use crate::adapters::gpu::depth::DepthTarget;
 use crate::adapters::gpu::{self, VERTEX_FLOATS};
@@ -47,8 +47,10 @@ impl GlContext {
             return Err(RasterError::Unsupported(why));
         }
         let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
+        let limits = self.clip.screen_limits(tile, self.max_side);
+        let view = gpu::screen_view(scene, bits, bits.max(DRIVER_BITS), tile, &limits);
         let groups = gpu::groups(plan);
-        let layout = self.layout(scene, plan, bits, tile, depth.is_some())?;
+        let layout = self.layout(scene, plan, bits, (tile, view), depth.is_some())?;
         let stencils = layout.stencils();
         let passes::Layout {
             vertices,
@@ -64,6 +66,7 @@ impl GlContext {
             plan,
             canvas: (scene.canvas.width, scene.canvas.height),
             target: tile,
+            view,
             size,
             cull: scene.rules.cull,
             stage: Stage::of(scene),
@@ -101,11 +104,11 @@ impl GlContext {
         scene: &Scene,
         plan: &Plan,
         bits: u32,
-        tile: (u32, u32),
+        placed: ((u32, u32), gpu::View),
         depth: bool,
     ) -> Result<passes::Layout, RasterError> {
         if let Some(motion) = &plan.motion {
-            return time::layout(scene, plan, motion, bits, tile);
+            return time::layout(scene, plan, motion, bits, placed);
         }
         if lines::has_rectangles(scene) {
             if depth {
@@ -116,16 +119,16 @@ impl GlContext {
                         .to_owned(),
                 ));
             }
-            return msaa::at_one_sample(scene, plan, bits, tile, &self.offered);
+            return msaa::at_one_sample(scene, plan, bits, placed, &self.offered);
         }
         if let Some(aa) = plan.antialias.as_ref().filter(|_| !depth) {
             if let Some((count, slots)) = samples::native(aa, &self.offered) {
                 if !lines::has_lines(scene) {
-                    return Ok(msaa::native(scene, bits, tile, count, &slots));
+                    return Ok(msaa::native(scene, bits, placed, count, &slots));
                 }
             }
         }
-        passes::layout(scene, plan, bits, tile, self.max_side)
+        passes::layout(scene, plan, bits, placed, self.max_side)
     }
 
     /// Makes the vertex buffer (filled with `vertices`) and the framebuffer
@@ -271,7 +274,9 @@ impl GlContext {
         gl.bind_vertex_array(Some(drawing.vao));
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
-            drawing.stage.set(gl, self.provoking, pass.origin, (tw, th));
+            drawing
+                .stage
+                .set(gl, self.provoking, pass.origin, (tw, th), drawing.view);
             match pass.pixel {
                 // Canvas row y is window row Q − 1 − y of the tile.
                 Some((x, y)) => gl.scissor((ox + x) as i32, (oy + th - 1 - y) as i32, 1, 1),

@@ -19,6 +19,9 @@ pub(super) struct Drawing<'a> {
     pub(super) canvas: (u32, u32),
     /// Each pass's tile: the power-of-two size the canvas is drawn in.
     pub(super) target: (u32, u32),
+    /// The viewport of a screen-space scene, in its tile's pixels
+    /// (`gpu/view.rs`).
+    pub(super) view: gpu::View,
     /// The framebuffer's size: every tile.
     pub(super) size: (u32, u32),
     pub(super) cull: Cull,

@@ -40,7 +40,7 @@ use dashu_ratio::RBig;
 pub(super) fn native(
     scene: &Scene,
     bits: u32,
-    tile: (u32, u32),
+    (tile, view): ((u32, u32), gpu::View),
     count: u32,
     slots: &[usize],
 ) -> Layout {
@@ -55,7 +55,7 @@ pub(super) fn native(
     let mut layout = Layout::new(tile, reading);
     let stream = layout.push(gpu::Stream::new(
         scene,
-        &gpu::Placement::at_centres(bits, tile),
+        &gpu::Placement::at_centres(bits, view),
     ));
     layout.passes.push(Pass {
         origin: (0, 0),
@@ -73,7 +73,7 @@ pub(super) fn at_one_sample(
     scene: &Scene,
     plan: &Plan,
     bits: u32,
-    tile: (u32, u32),
+    (tile, view): ((u32, u32), gpu::View),
     offered: &[DriverSamples],
 ) -> Result<Layout, RasterError> {
     let unsupported = |why: String| Err(RasterError::Unsupported(why));
@@ -102,7 +102,7 @@ pub(super) fn at_one_sample(
     let shift = [x, y].map(|c| RBig::from_parts(IBig::from(c - unit / 2), (unit as u64).into()));
     let place = gpu::Placement {
         shift,
-        ..gpu::Placement::at_centres(bits, tile)
+        ..gpu::Placement::at_centres(bits, view)
     };
     let reading = Reading::Samples {
         samples: driver.count,

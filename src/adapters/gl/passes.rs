@@ -137,14 +137,15 @@ pub(super) fn shifts(plan: &Plan, bits: u32) -> Result<Vec<[RBig; 2]>, RasterErr
         .map_err(|why| RasterError::Unsupported(format!("antialiasing by shifted passes: {why}")))
 }
 
-/// The passes `scene` is drawn in, each in a `tile` (`P × Q`), or why
-/// they cannot be drawn exactly: an antialiased scene whose shifts leave
-/// the driver's grid, or whose tiles do not fit in `max_side`.
+/// The passes `scene` is drawn in, each in a `tile` (`P × Q`) through
+/// `view` (`gpu/view.rs`), or why they cannot be drawn exactly: an
+/// antialiased scene whose shifts leave the driver's grid, or whose tiles
+/// do not fit in `max_side`.
 pub(super) fn layout(
     scene: &Scene,
     plan: &Plan,
     bits: u32,
-    tile: (u32, u32),
+    (tile, view): ((u32, u32), gpu::View),
     max_side: u32,
 ) -> Result<Layout, RasterError> {
     let shifts = shifts(plan, bits)?;
@@ -163,7 +164,7 @@ pub(super) fn layout(
         let k = k as u32;
         let place = gpu::Placement {
             shift,
-            ..gpu::Placement::at_centres(bits, tile)
+            ..gpu::Placement::at_centres(bits, view)
         };
         let stream = layout.push(gpu::Stream::new(scene, &place));
         layout.passes.push(Pass {

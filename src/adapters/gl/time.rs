@@ -31,12 +31,12 @@ pub(super) fn layout(
     plan: &Plan,
     motion: &MotionPlan,
     bits: u32,
-    tile: (u32, u32),
+    (tile, view): ((u32, u32), gpu::View),
 ) -> Result<Layout, RasterError> {
     let shifts = passes::shifts(plan, bits)?;
     let canvas = (scene.canvas.width, scene.canvas.height);
     let tests = shifts.len() as u32 * motion.blur.samples;
-    let time = gpu::time_draws(motion, canvas, bits, tile, &shifts)
+    let time = gpu::time_draws(motion, canvas, bits, view, &shifts)
         .map_err(|why| RasterError::Unsupported(format!("time passes: {why}")))?;
     let mut layout = Layout::new(tile, Reading::Time { tests });
     for placement in &time.placements {

@@ -4,13 +4,15 @@
 //! attachment's state and read-back (`depth.rs`), the WGSL of the two
 //! Vulkan adapters (`wgsl.rs`), what a driver cannot be handed of a
 //! clip-space scene (`clip.rs`), what they draw and the target size
-//! (`acceptance.rs`), the channels they write (`channels.rs`), and
+//! (`acceptance.rs`), the channels they write (`channels.rs`), the
+//! viewport a screen-space scene is drawn through (`view.rs`), and
 //! Mesa's environment noise quieted where they start it (`mesa_noise.rs`).
 //!
 //! Positions are snapped exactly to the case's grid, rounded once to f32,
-//! and mapped to clip space over a power-of-two target, on which the
-//! mapping and the viewport transform back are exact in f32:
-//! `x_ndc = 2x/P − 1`, `y_ndc = 1 − 2y/Q` (y down on screen), sent as
+//! and mapped to clip space over a power-of-two viewport `(x0, y0, P, Q)`
+//! enclosing the target and the scene (`view.rs`), on which the mapping
+//! and the viewport transform back are exact in f32:
+//! `x_ndc = 2(x − x0)/P − 1`, `y_ndc = 1 − 2(y − y0)/Q` (y down on screen), sent as
 //! `(x_ndc·w, y_ndc·w, w/2, w)` so the driver's perspective division sees
 //! the vertex's w.
 
@@ -27,6 +29,7 @@ pub(crate) mod points;
 mod stream;
 #[cfg(any(feature = "vulkan", feature = "gl"))]
 mod time;
+mod view;
 #[cfg(any(feature = "lavapipe", feature = "vulkan"))]
 pub(crate) mod wgsl;
 
@@ -44,3 +47,5 @@ pub(crate) use acceptance::{capabilities, snapping_bits, target_size};
 #[allow(unused_imports)] // not every adapter reads each
 pub(crate) use channels::{groups, CHANNELS, GROUPS, MAX_ATTRIBUTES};
 pub(crate) use mesa_noise::quiet_mesa;
+#[allow(unused_imports)] // not every adapter reads each
+pub(crate) use view::{screen_view, View, ViewLimits};

@@ -33,6 +33,7 @@ use dashu_ratio::RBig;
 
 use super::super::float_input::{f32_of, snapped, to_f32};
 use super::channels::MAX_ATTRIBUTES;
+use super::view::View;
 use crate::scene::{Interpolation, LineRule, Polygon, PolygonFill, Primitive, Scene, Vertex};
 
 /// Floats per vertex: clip position (4), `[primitive + 1, depth, lo, hi]`
@@ -94,8 +95,9 @@ pub(crate) struct Stream {
 pub(crate) struct Placement {
     /// The case's subpixel bits: each position is snapped to them.
     pub bits: u32,
-    /// The target's size: positions map to clip space over it.
-    pub target: (u32, u32),
+    /// The viewport, in the target's pixels: positions map to clip space
+    /// over it (`view.rs`).
+    pub view: View,
     /// Added to every snapped position, in pixels (exact).
     pub shift: [RBig; 2],
     /// The instant τ ∈ [0, 1] a moving vertex is placed at:
@@ -106,10 +108,10 @@ pub(crate) struct Placement {
 
 impl Placement {
     /// No shift: pixel centres sample the scene.
-    pub(crate) fn at_centres(bits: u32, target: (u32, u32)) -> Placement {
+    pub(crate) fn at_centres(bits: u32, view: View) -> Placement {
         Placement {
             bits,
-            target,
+            view,
             shift: [RBig::ZERO, RBig::ZERO],
             time: RBig::ZERO,
         }
@@ -213,18 +215,30 @@ impl Stream {
     }
 
     /// A snapped, shifted position (at the placement's instant, if the
-    /// vertex moves) in normalised device coordinates: `x · 2/P − 1`,
-    /// `1 − y · 2/Q` (y down on screen), exact in f32 for 8-bit
-    /// coordinates of magnitude under 2^15.
+    /// vertex moves) in normalised device coordinates over the viewport
+    /// `(x0, y0, P, Q)`: `(x − x0) · 2/P − 1`, `1 − (y − y0) · 2/Q` (y down
+    /// on screen), x − x0 exact before the one rounding; exact in f32 for
+    /// the viewports `view.rs` chooses.
     fn position(&self, v: &Vertex, place: &Placement) -> [f32; 2] {
-        let [x, y] = place.pixels(v).map(|c| to_f32(&c));
-        let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
+        let [x0, y0] = place.view.origin.map(RBig::from);
+        let [x, y] = place.pixels(v);
+        let [x, y] = [x - x0, y - y0].map(|c| to_f32(&c));
+        let (sx, sy) = (
+            2.0 / place.view.size.0 as f32,
+            2.0 / place.view.size.1 as f32,
+        );
         [x * sx - 1.0, 1.0 - y * sy]
     }
 
-    /// Appends a bare vertex at a position in pixels (a cover's corner).
+    /// Appends a bare vertex at a position in pixels (a cover's corner,
+    /// an integer as is the viewport's corner: the difference is exact).
     fn corner(&mut self, x: f32, y: f32, id: f32, place: &Placement) {
-        let (sx, sy) = (2.0 / place.target.0 as f32, 2.0 / place.target.1 as f32);
+        let [x0, y0] = place.view.origin.map(|c| c as f32);
+        let (sx, sy) = (
+            2.0 / place.view.size.0 as f32,
+            2.0 / place.view.size.1 as f32,
+        );
+        let (x, y) = (x - x0, y - y0);
         self.vertices.extend([x * sx - 1.0, 1.0 - y * sy, 0.5, 1.0]);
         self.vertices
             .extend([id, 0.0, SCREEN_DEPTH[0], SCREEN_DEPTH[1]]);

@@ -22,6 +22,7 @@ use dashu_int::UBig;
 use dashu_ratio::RBig;
 
 use super::stream::Placement;
+use super::view::View;
 use crate::plan::MotionPlan;
 
 /// The most time tests one scene is drawn with: one draw each.
@@ -39,7 +40,7 @@ pub(crate) fn time_draws(
     motion: &MotionPlan,
     (width, height): (u32, u32),
     bits: u32,
-    target: (u32, u32),
+    view: View,
     shifts: &[[RBig; 2]],
 ) -> Result<TimeDraws, String> {
     let blur = &motion.blur;
@@ -62,7 +63,7 @@ pub(crate) fn time_draws(
             let at = *index.entry((s, u)).or_insert_with(|| {
                 placements.push(Placement {
                     bits,
-                    target,
+                    view,
                     shift: shifts[s].clone(),
                     time: RBig::from(blur.instant(u)) / &unit,
                 });

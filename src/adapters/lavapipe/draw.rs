@@ -106,8 +106,10 @@ impl Gpu {
             self.check_msaa(scene, plan)?;
         }
         let groups = gpu::groups(plan);
-        let gpu::Stream { vertices, runs, .. } =
-            gpu::Stream::new(scene, &gpu::Placement::at_centres(bits, (tw, th)));
+        let gpu::Stream { vertices, runs, .. } = gpu::Stream::new(
+            scene,
+            &gpu::Placement::at_centres(bits, gpu::View::target((tw, th))),
+        );
 
         let vertex_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("vertices"),

@@ -133,12 +133,16 @@ impl Rasterizer for Vulkan {
             unpack,
         } = &mut *shared;
         let bits = accepted(scene, plan, &device.offers)?;
-        let target = gpu::target_size(scene, device.offers.max_side, "this Vulkan device")?;
-        let centres = Placement::at_centres(bits, target);
+        let offers = &device.offers;
+        let target = gpu::target_size(scene, offers.max_side, "this Vulkan device")?;
+        let limits = gpu::ViewLimits::vulkan(offers.max_viewport, offers.viewport_bounds);
+        let fine = bits.max(offers.subpixel_bits);
+        let view = gpu::screen_view(scene, bits, fine, target, &limits);
+        let centres = Placement::at_centres(bits, view);
         if let Some(n) = native_samples(scene, plan, &device.offers, self.passes_only) {
             let job = draw::Job {
                 samples: n,
-                ..draw::Job::per_placement(scene, &[centres])
+                ..draw::Job::per_placement(scene, &[centres], view)
             };
             let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
             return draw::slots(&bytes, scene, plan, &job);
@@ -153,15 +157,15 @@ impl Rasterizer for Vulkan {
                 .into_iter()
                 .map(|shift| Placement {
                     shift,
-                    ..Placement::at_centres(bits, target)
+                    ..Placement::at_centres(bits, view)
                 })
                 .collect();
-            let job = draw::Job::per_placement(scene, &placements);
+            let job = draw::Job::per_placement(scene, &placements, view);
             let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
             return draw::slots(&bytes, scene, plan, &job);
         };
         let canvas = (scene.canvas.width, scene.canvas.height);
-        let time = gpu::time_draws(motion, canvas, bits, target, &shifts)
+        let time = gpu::time_draws(motion, canvas, bits, view, &shifts)
             .map_err(|why| RasterError::Unsupported(format!("time passes: {why}")))?;
         let job = draw::Job {
             streams: time
@@ -178,6 +182,7 @@ impl Rasterizer for Vulkan {
                 .map(|&(p, stream)| (draw::rect(p % canvas.0, p / canvas.0, 1, 1), stream))
                 .collect()],
             samples: 1,
+            view,
         };
         let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
         draw::time(&bytes, scene, shifts.len() as u32 * motion.blur.samples)

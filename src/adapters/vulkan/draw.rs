@@ -10,7 +10,7 @@
 use ash::vk;
 
 use super::super::float_input::f32_of;
-use super::super::gpu::{self, Placement, Stream, VERTEX_FLOATS};
+use super::super::gpu::{self, Placement, Stream, View, VERTEX_FLOATS};
 use super::device::{depth_attachment, Device};
 use super::pipelines::{Pipelines, Stage, COUNT_FORMAT, VALUE_FORMAT};
 use super::unpack::Unpack;
@@ -40,25 +40,33 @@ pub(super) struct Job {
     /// Samples per pixel of the targets: 1, or the count of native
     /// multisampling (one pass, read back sample by sample).
     pub samples: u32,
+    /// The viewport a screen-space scene's streams are placed on
+    /// (`gpu/view.rs`), every placement's.
+    pub view: View,
 }
 
 impl Job {
-    /// One pass per placement, each drawn over the whole canvas.
-    pub(super) fn per_placement(scene: &Scene, placements: &[Placement]) -> Job {
+    /// One pass per placement, each drawn over the whole canvas, through
+    /// `view`, the placements' viewport.
+    pub(super) fn per_placement(scene: &Scene, placements: &[Placement], view: View) -> Job {
         let canvas = rect(0, 0, scene.canvas.width, scene.canvas.height);
         Job {
             streams: placements.iter().map(|p| Stream::new(scene, p)).collect(),
             passes: (0..placements.len()).map(|i| vec![(canvas, i)]).collect(),
             samples: 1,
+            view,
         }
     }
 }
 
 /// The viewport: a clip-space scene's own (SPEC.md §16.1, y down as
 /// Vulkan's; `vulkan/mod.rs` checked that its values are f32 and within
-/// the device's bounds), else the whole target, onto which the stream's
-/// screen-space positions map exactly.
-fn viewport(scene: &Scene, target: (u32, u32)) -> vk::Viewport {
+/// the device's bounds), else `view`, the rectangle enclosing the target
+/// and the scene onto which the stream's screen-space positions map
+/// exactly (`gpu/view.rs`, which kept it within the device's
+/// `maxViewportDimensions` and `viewportBoundsRange`); the scissor, at the
+/// canvas, bounds what is drawn.
+fn viewport(scene: &Scene, view: View) -> vk::Viewport {
     match &scene.viewport {
         Some(v) => vk::Viewport {
             x: f32_of(&v.x),
@@ -69,10 +77,10 @@ fn viewport(scene: &Scene, target: (u32, u32)) -> vk::Viewport {
             max_depth: f32_of(&v.max_depth),
         },
         None => vk::Viewport {
-            x: 0.0,
-            y: 0.0,
-            width: target.0 as f32,
-            height: target.1 as f32,
+            x: view.origin[0] as f32,
+            y: view.origin[1] as f32,
+            width: view.size.0 as f32,
+            height: view.size.1 as f32,
             min_depth: 0.0,
             max_depth: 1.0,
         },
@@ -251,7 +259,7 @@ pub(super) fn render(
                 })
                 .clear_values(&clears);
             d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
-            d.cmd_set_viewport(cb, 0, &[viewport(scene, target)]);
+            d.cmd_set_viewport(cb, 0, &[viewport(scene, job.view)]);
             let mut bound = vk::Pipeline::null();
             for &(scissor, stream) in draws {
                 let (offset, runs) = &placed[stream];
