@@ -86,11 +86,24 @@ impl Gpu {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::VULKAN;
         let instance = wgpu::Instance::new(desc);
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            force_fallback_adapter: true,
-            ..Default::default()
-        }))
-        .map_err(|e| format!("no Vulkan adapter: {INSTALL_HINT} ({e})"))?;
+        // lavapipe among the adapters when it is there (another CPU driver,
+        // such as SwiftShader given to the loader, may come first); else
+        // the fallback adapter, said to be no lavapipe below.
+        let named_lavapipe = |a: &wgpu::Adapter| {
+            let info = a.get_info();
+            [&info.name, &info.driver]
+                .iter()
+                .any(|s| s.contains("llvmpipe") || s.contains("lavapipe"))
+        };
+        let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::VULKAN));
+        let adapter = match adapters.into_iter().find(named_lavapipe) {
+            Some(adapter) => adapter,
+            None => pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+                force_fallback_adapter: true,
+                ..Default::default()
+            }))
+            .map_err(|e| format!("no Vulkan adapter: {INSTALL_HINT} ({e})"))?,
+        };
         let info = adapter.get_info();
         let description = format!("{} ({}, {})", info.name, info.driver, info.driver_info);
         let is_lavapipe = [&info.name, &info.driver]
