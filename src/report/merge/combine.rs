@@ -517,7 +517,6 @@ mod tests {
                     judged_pixel_centre: None,
                     line_latitude: None,
                     metrics: None,
-                    line_latitude: None,
                     files: Vec::new(),
                 });
                 case
