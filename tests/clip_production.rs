@@ -785,3 +785,28 @@ fn values_read_outside_the_unsnapped_piece_are_within_the_bound() {
         run.verdict
     );
 }
+
+/// Issue 36's item 13: a guard-band sliver clipped by the near plane (its
+/// first vertex at z < 0), `interpolate_from: unsnapped` at 0 subpixel
+/// bits. Production's values were off by 2.24e-2 (attribute 0) against a
+/// bound of 3.05e-5 before the unsnapped piece, read outside itself, took
+/// the exact path; found by a random search over such slivers.
+#[test]
+fn a_near_clipped_sliver_at_zero_bits_is_within_the_bound() {
+    let s = scene(
+        r#"{"name": "near_sliver_b0", "canvas": {"width": 24, "height": 16},
+  "rules": {"subpixel_bits": 0, "clip_xy": "guard-band", "clip_z": "clip-then-snap", "depth": "clip",
+            "interpolate_from": "unsnapped"},
+  "viewport": {"x": 0, "y": 0, "width": 24, "height": 16, "min_depth": 0, "max_depth": 1},
+  "primitives": [{"triangle": [{"clip": [-2.828125, -1.671875, -0.1875, 2.0], "attributes": [2]},
+    {"clip": [-2.796875, -1.765625, 0.53125, 1.0], "attributes": [0]},
+    {"clip": [2.71875, 2.5625, 0.046875, 5.0], "attributes": [0]}]}]}"#,
+    );
+    let (_, run) = common::run(&s, &Production);
+    assert_eq!(
+        run.verdict,
+        rastercheck::harness::judge::Verdict::Pass,
+        "{:?}",
+        run.verdict
+    );
+}
