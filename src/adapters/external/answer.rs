@@ -803,24 +803,10 @@ fn frame_from_exr(path: &Path, scene: &Scene, plan: &Plan) -> Result<Frame, Stri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::{parse_case, Limits};
     use serde_json::json;
 
-    /// A 2×1 canvas, two spatial samples, N = 2: one moving triangle and
-    /// one static one.
-    fn scene() -> Scene {
-        parse_case(
-            r#"{"name": "m", "canvas": {"width": 2, "height": 1},
-                "effects": {"antialias": {"samples": 2},
-                            "motion_blur": {"samples": 2, "shutter": [0.25, 0.75]}},
-                "primitives": [
-                  {"triangle": [{"from": [0, 0], "to": [1, 0]}, [2, 0], [0, 1]]},
-                  {"triangle": [[0, 0], [2, 0], [0, 1]]}]}"#,
-            "m.json",
-            &Limits::default(),
-        )
-        .unwrap()
-    }
+    // The moving scene motion.rs's tests send: what its answers answer.
+    use crate::adapters::external::motion::tests::scene;
 
     /// `$.primitives` read as an answer, or the message of its refusal.
     fn read(primitives: &Value, scene: &Scene, plan: &Plan) -> Result<Frame, String> {

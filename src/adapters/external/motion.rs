@@ -211,13 +211,13 @@ impl TimeAnswer {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::scene::{parse_case, Limits};
 
     /// A 2×1 canvas, two spatial samples, N = 2: one moving triangle and
     /// one static one.
-    fn scene() -> Scene {
+    pub(in crate::adapters::external) fn scene() -> Scene {
         parse_case(
             r#"{"name": "m", "canvas": {"width": 2, "height": 1},
                 "effects": {"antialias": {"samples": 2},
