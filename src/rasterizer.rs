@@ -6,7 +6,8 @@ use std::fmt;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, FillRule, InterpolateFrom, LineRule, LineT, Pattern, PointBounds, PointClip,
+    Scene,
 };
 
 /// Where a rasterizer puts a vertex before it rasterizes (SPEC.md §3.2): its
@@ -372,6 +373,27 @@ pub trait Rasterizer: Send + Sync {
     /// counted apart, and the result says so. `false` for a rasterizer
     /// that draws the exact rule.
     fn diamond_exit_latitude(&self) -> bool {
+        false
+    }
+
+    /// The line parameter this rasterizer takes a line's values at, for
+    /// lines drawn under `rule`, whatever a case states (SPEC.md §5.1):
+    /// projected onto the segment or along the major axis, clamped to
+    /// [0, 1] or not. A case whose lines of that rule state another (or
+    /// any case, where it declares no clamp) is judged against the
+    /// reference computing the values with this one, and the result says
+    /// so. `None` for a rasterizer that follows each line's `parameter`
+    /// and clamps, as SPEC does.
+    fn fixed_line_parameter(&self, _rule: LineRule) -> Option<LineT> {
+        None
+    }
+
+    /// Whether this rasterizer gives no tie rule for a sample exactly on a
+    /// `rectangle` line's border (SPEC.md §4.3.1): such samples are then
+    /// judged as `fill_rule: "none"` judges ties (either side accepted,
+    /// counted apart, §3.1.1), every sample off the border exactly.
+    /// `false` for one whose rectangle lines keep the case's fill rule.
+    fn rectangle_border_no_tie_rule(&self) -> bool {
         false
     }
 

@@ -160,6 +160,18 @@ pub(crate) fn print_outcome(
                 " (judged with its own samples at whole coordinates: the case moved by (½, ½))",
             );
         }
+        if let (Some(own), Some(scene)) = (result.judged.line_parameter, &outcome.scene) {
+            method.push_str(&format!(
+                " (judged under its own {} line parameter; the case states {})",
+                own.words(),
+                own.stated(scene)
+            ));
+        }
+        if result.judged.rectangle_border_ties {
+            method.push_str(
+                " (judged with no tie rule on rectangle lines' borders: border samples either way, counted apart)",
+            );
+        }
         outln!(
             "{} {id:width$}  {}{method}  {}",
             paint(&format!("{label:5}"), tint, colour),

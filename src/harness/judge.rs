@@ -12,7 +12,7 @@ use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
 use crate::reference::{self, DiamondLine, TieSet};
-use crate::scene::Scene;
+use crate::scene::{LineRule, Primitive, Scene};
 
 /// How a candidate did on a case.
 #[derive(Clone, Debug, PartialEq)]
@@ -119,7 +119,7 @@ pub fn run_candidate(
     // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
     let own = OwnConventions::of(candidate, scene);
-    if own.any() || own.no_tie_rule || own.line_latitude {
+    if own.any() || own.no_tie_rule || own.line_latitude || own.rectangle_border_ties {
         if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);
         }
@@ -134,10 +134,21 @@ pub fn run_candidate(
         };
         // With no tie rule the oracle also gives its tie set (SPEC.md
         // §3.1.1); its failure is the reference's, as below.
-        let ties = match own.no_tie_rule && plan.motion.is_none() {
+        // With no tie rule on rectangle lines' borders (§4.3.1), only the
+        // ties every primitive holding them on an edge is such a line's.
+        let ties = match (own.no_tie_rule || own.rectangle_border_ties) && plan.motion.is_none() {
             true => Some(
                 std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    reference::tie_set(&under, &plan)
+                    let set = reference::tie_set(&under, &plan);
+                    match own.no_tie_rule {
+                        true => set,
+                        false => set.only_on(|primitive| {
+                            matches!(
+                                under.primitives.get(primitive),
+                                Some(Primitive::Line(l)) if l.rule == LineRule::Rectangle
+                            )
+                        }),
+                    }
                 }))
                 .map_err(|panic| pass_on_deadline(panic, "panicked")),
             ),

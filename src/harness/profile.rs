@@ -18,7 +18,8 @@ use crate::rasterizer::{
     Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
 };
 use crate::scene::{
-    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineRule, Number, Pattern, Primitive, Scene,
+    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineClamp, LineRule, LineT, Number,
+    Pattern, Primitive, Scene,
 };
 
 /// The schema of a profile file, written by `probe` and read here.
@@ -212,6 +213,12 @@ impl Rasterizer for Profiled {
     fn diamond_exit_latitude(&self) -> bool {
         self.inner.diamond_exit_latitude()
     }
+    fn fixed_line_parameter(&self, rule: LineRule) -> Option<LineT> {
+        self.inner.fixed_line_parameter(rule)
+    }
+    fn rectangle_border_no_tie_rule(&self) -> bool {
+        self.inner.rectangle_border_no_tie_rule()
+    }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         self.rule.fill_rule()
     }
@@ -315,6 +322,120 @@ pub struct OwnConventions {
     /// the latitude against the exact fragments (SPEC.md §4.2.1), which
     /// restates nothing.
     pub line_latitude: bool,
+    /// Its own line parameter (SPEC.md §5.1), for each line rule of the
+    /// case whose lines it restates: values are taken at it.
+    pub line_parameter: Option<LineParameters>,
+    /// It declares no tie rule on a rectangle line's border and the case
+    /// has rectangle lines (SPEC.md §4.3.1): their border samples are
+    /// judged off the ties, which restates nothing.
+    pub rectangle_border_ties: bool,
+}
+
+/// A rasterizer's own line parameters over a case's lines (SPEC.md §5.1),
+/// by line rule: `Some` for a rule whose lines it restates (its declared
+/// parameter differs from a line's, or it declares no clamp).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LineParameters {
+    pub by_rule: [Option<LineT>; 4],
+}
+
+impl LineParameters {
+    /// Slot of `rule` in [`LineParameters::by_rule`].
+    fn slot(rule: LineRule) -> usize {
+        match rule {
+            LineRule::Midpoint => 0,
+            LineRule::DiamondExit => 1,
+            LineRule::Rectangle => 2,
+            LineRule::Parallelogram => 3,
+        }
+    }
+
+    pub fn get(&self, rule: LineRule) -> Option<LineT> {
+        self.by_rule[Self::slot(rule)]
+    }
+
+    /// The declarations in use, with their rules.
+    pub fn each(&self) -> impl Iterator<Item = (LineRule, LineT)> + '_ {
+        [
+            LineRule::Midpoint,
+            LineRule::DiamondExit,
+            LineRule::Rectangle,
+            LineRule::Parallelogram,
+        ]
+        .into_iter()
+        .filter_map(|rule| self.get(rule).map(|t| (rule, t)))
+    }
+
+    /// The one declaration in use, when every restated rule has the same.
+    pub fn single(&self) -> Option<LineT> {
+        let mut all = self.each().map(|(_, t)| t);
+        let first = all.next()?;
+        all.all(|t| t == first).then_some(first)
+    }
+
+    /// In words: "projected, unclamped", or per rule where they differ
+    /// ("major, unclamped for diamond-exit lines and projected, unclamped
+    /// for rectangle lines").
+    pub fn words(&self) -> String {
+        if let Some(t) = self.single() {
+            return t.words();
+        }
+        self.each()
+            .map(|(rule, t)| format!("{} for {} lines", t.words(), rule.name()))
+            .collect::<Vec<_>>()
+            .join(" and ")
+    }
+
+    /// The parameters `scene`'s lines state, in words, for the result's
+    /// "the case states ..." ("major", "major and projected").
+    pub fn stated(&self, scene: &Scene) -> String {
+        let mut names: Vec<&str> = scene
+            .primitives
+            .iter()
+            .filter_map(|p| match p {
+                Primitive::Line(l) if self.get(l.rule).is_some() => Some(l.parameter.name()),
+                _ => None,
+            })
+            .collect();
+        names.sort_unstable();
+        names.dedup();
+        format!("{}, clamped", names.join(" and "))
+    }
+
+    /// Its name in a report: the one declaration's ([`LineT::name`]), or
+    /// `per-rule` where rules differ.
+    pub fn name(&self) -> &'static str {
+        self.single().map_or("per-rule", LineT::name)
+    }
+
+    /// What `candidate` restates on `scene`'s lines, if anything: for
+    /// each line that carries values (depth or attributes), its rule's
+    /// declaration where it differs from the line's `parameter` or
+    /// declares no clamp.
+    fn of(candidate: &dyn Rasterizer, scene: &Scene) -> Option<LineParameters> {
+        if !scene.has_depth && scene.attribute_count == 0 {
+            return None;
+        }
+        let mut own = LineParameters::default();
+        for p in &scene.primitives {
+            let Primitive::Line(line) = p else { continue };
+            if let Some(t) = candidate.fixed_line_parameter(line.rule) {
+                if t.parameter != line.parameter || t.clamp != scene.rules.line_clamp {
+                    own.by_rule[Self::slot(line.rule)] = Some(t);
+                }
+            }
+        }
+        (own != LineParameters::default()).then_some(own)
+    }
+
+    /// The clamp the restated case takes: one for all its lines (a case
+    /// has one `line_clamp`); `None` when the rules declare different
+    /// clamps.
+    fn clamp(&self) -> Option<LineClamp> {
+        let mut clamps = self.each().map(|(_, t)| t.clamp);
+        let first = clamps.next()?;
+        clamps.all(|c| c == first).then_some(first)
+    }
 }
 
 impl OwnConventions {
@@ -389,6 +510,12 @@ impl OwnConventions {
                     .primitives
                     .iter()
                     .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::DiamondExit)),
+            line_parameter: LineParameters::of(candidate, scene),
+            rectangle_border_ties: candidate.rectangle_border_no_tie_rule()
+                && scene
+                    .primitives
+                    .iter()
+                    .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::Rectangle)),
         }
     }
 
@@ -402,12 +529,19 @@ impl OwnConventions {
             || self.sample_pattern.is_some()
             || self.y_up
             || self.integer_centre
+            || self.line_parameter.is_some()
     }
 
     /// Why `scene` cannot be judged under these conventions, if it cannot
     /// (SPEC.md §2.1, §3.2, §14.1, §14.2.1): the case is then unsupported
     /// with this reason, never judged under other conventions.
     pub fn cannot_judge(&self, scene: &Scene) -> Option<String> {
+        if let Some(own) = self.line_parameter.filter(|own| own.clamp().is_none()) {
+            return Some(format!(
+                "its own line parameters ({}) clamp t on some of the case's lines and not on others, which no case can state (SPEC.md §5.1)",
+                own.words()
+            ));
+        }
         if let Some(why) = self
             .fill_rule
             .and_then(|rule| cannot_judge_under(scene, rule))
@@ -486,6 +620,18 @@ impl OwnConventions {
         if let (Some(pattern), Some(aa)) = (self.sample_pattern, s.effects.antialias.as_mut()) {
             aa.pattern = pattern;
         }
+        if let Some(own) = self.line_parameter {
+            for p in &mut s.primitives {
+                if let Primitive::Line(line) = p {
+                    if let Some(t) = own.get(line.rule) {
+                        line.parameter = t.parameter;
+                    }
+                }
+            }
+            if let Some(clamp) = own.clamp() {
+                s.rules.line_clamp = clamp;
+            }
+        }
         if self.y_up {
             s.rules.cull = match s.rules.cull {
                 Cull::Clockwise => Cull::CounterClockwise,
@@ -539,6 +685,12 @@ impl OwnConventions {
         }
         if self.line_latitude {
             words.push("the latitude for diamond-exit lines".to_owned());
+        }
+        if let Some(own) = self.line_parameter {
+            words.push(format!("its {} line parameter", own.words()));
+        }
+        if self.rectangle_border_ties {
+            words.push("no tie rule on rectangle lines' borders".to_owned());
         }
         words.join(" and ")
     }

@@ -15,16 +15,22 @@ use super::exact::{ceil_div, to_f64_round_odd};
 use super::grid::{orient, Grid, Point};
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::scene::{Canvas, FillRule, Interpolation, LastPixel, Line, LineParameter, LineRule};
+use crate::scene::{
+    Canvas, FillRule, Interpolation, LastPixel, Line, LineClamp, LineParameter, LineRule,
+};
 
 /// Visits every pixel a line covers: `visit(pixel, t)`, where t is the
-/// exact interpolation parameter of the sample (SPEC.md §5).
+/// exact interpolation parameter of the sample (SPEC.md §5), clamped to
+/// [0, 1] unless `clamp` says otherwise (§5.1: a rasterizer's declared
+/// unclamped parameter, which extrapolates before the first end and past
+/// the last).
 pub fn visit<F: FnMut(usize, RBig)>(
     grid: &Grid,
     canvas: Canvas,
     line: &Line,
     ends: &[Point<IBig>],
     rule: FillRule,
+    clamp: LineClamp,
     mut visit: F,
 ) {
     let (a, b) = (&ends[0], &ends[1]);
@@ -54,7 +60,10 @@ pub fn visit<F: FnMut(usize, RBig)>(
                 )
             }
         };
-        t.clamp(RBig::ZERO, RBig::ONE)
+        match clamp {
+            LineClamp::Clamped => t.clamp(RBig::ZERO, RBig::ONE),
+            LineClamp::Unclamped => t,
+        }
     };
     let width = canvas.width as usize;
     match line.rule {
@@ -434,7 +443,18 @@ pub fn write(
             Interpolation::Flat => line.vertices[provoking].attributes[k].as_rbig().clone(),
             Interpolation::Linear => mix(a0, a1),
             Interpolation::Perspective => {
-                mix(&(a0 * &inv_w[0]), &(a1 * &inv_w[1])) / mix(&inv_w[0], &inv_w[1])
+                // An unclamped t (SPEC.md §5.1) far past an end can reach
+                // the line's vanishing point, where 1/w interpolates to 0
+                // or below and the formula has no value: there t is taken
+                // at the nearer end, as clamped.
+                let w = mix(&inv_w[0], &inv_w[1]);
+                if w > RBig::ZERO {
+                    mix(&(a0 * &inv_w[0]), &(a1 * &inv_w[1])) / w
+                } else if *t < RBig::ZERO {
+                    a0.clone()
+                } else {
+                    a1.clone()
+                }
             }
         };
         frame.attributes[k][pixel] = to_f64_round_odd(&exact);

@@ -101,6 +101,19 @@ impl TieSet {
     pub fn is_empty(&self) -> bool {
         self.samples.is_empty()
     }
+
+    /// The tie samples whose every primitive holding them on an edge is
+    /// one `keep` names (by index in the scene): for a rasterizer with no
+    /// tie rule on those primitives alone (rectangle lines' borders,
+    /// SPEC.md §4.3.1), every other sample judged under the fill rule.
+    pub fn only_on(self, keep: impl Fn(usize) -> bool) -> TieSet {
+        let samples = self
+            .samples
+            .into_iter()
+            .filter(|(_, tie)| tie.on_edge.iter().all(|&p| keep(p as usize - 1)))
+            .collect();
+        TieSet { samples }
+    }
 }
 
 /// The tie set of `scene` drawn with `plan` (the scene's own).

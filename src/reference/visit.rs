@@ -104,6 +104,7 @@ fn visit_scene<F>(
 {
     let fast = on.fits_i128 && arithmetic == Arithmetic::Auto;
     let (grid, canvas, cull) = (&on.grid, scene.canvas, scene.rules.cull);
+    let clamp = scene.rules.line_clamp;
     for (index, (primitive, points)) in scene.primitives.iter().zip(&on.points).enumerate() {
         crate::deadline::check();
         match primitive {
@@ -149,7 +150,7 @@ fn visit_scene<F>(
                 })
             }
             Primitive::Line(line) if antialiased && line.rule != LineRule::Parallelogram => {}
-            Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, |p, t| {
+            Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, clamp, |p, t| {
                 visit(
                     index,
                     p,

@@ -345,6 +345,19 @@ pub struct ResultEntry {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[serde(default, deserialize_with = "maybe_name")]
     pub judged_pixel_centre: Option<Word>,
+    /// The line parameter it was judged under, when that is its own and
+    /// not the case's lines' (SPEC.md §5.1): `major`, `projected`,
+    /// `major-unclamped`, `projected-unclamped`, or `per-rule` where its
+    /// line rules declare different ones.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_line_parameter: Option<Word>,
+    /// `"none"` when it declares no tie rule on rectangle lines' borders
+    /// and the case has rectangle lines (SPEC.md §4.3.1): those border
+    /// samples are judged off the ties, counted in `ties`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, deserialize_with = "maybe_name")]
+    pub judged_line_border: Option<Word>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metrics: Option<MetricsEntry>,
     /// Files written for this result, relative to the report folder.
@@ -583,6 +596,8 @@ impl CaseEntry {
                 judged_sample_pattern: run.judged.sample_pattern.map(|p| p.name()),
                 judged_y: run.judged.y_up.then_some("up"),
                 judged_pixel_centre: run.judged.integer_centre.then_some("integer"),
+                judged_line_parameter: run.judged.line_parameter.map(|p| p.name()),
+                judged_line_border: run.judged.rectangle_border_ties.then_some("none"),
                 metrics: run.metrics.as_ref().map(MetricsEntry::from_metrics),
                 files: Vec::new(),
             })
@@ -669,7 +684,9 @@ impl Report {
                         || result.judged_snapping.is_some()
                         || result.judged_sample_pattern.is_some()
                         || result.judged_y.is_some()
-                        || result.judged_pixel_centre.is_some(),
+                        || result.judged_pixel_centre.is_some()
+                        || result.judged_line_parameter.is_some()
+                        || result.judged_line_border.is_some(),
                 );
             }
         }

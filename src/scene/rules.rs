@@ -299,6 +299,67 @@ impl LineParameter {
     }
 }
 
+/// Whether a line's parameter t is clamped to [0, 1] (SPEC.md §5.1). A
+/// case states no clamp of its own: its lines are `Clamped`. `Unclamped`
+/// is a convention a rasterizer declares (the formula of Vulkan's "Basic
+/// Line Segment Rasterization" and of GL 4.6 §14.5.1 has no clamp, so a
+/// fragment whose centre lies before the first end or past the last one
+/// extrapolates), judged by restating the case under it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LineClamp {
+    #[default]
+    Clamped,
+    Unclamped,
+}
+
+impl LineClamp {
+    pub fn name(self) -> &'static str {
+        match self {
+            LineClamp::Clamped => "clamped",
+            LineClamp::Unclamped => "unclamped",
+        }
+    }
+}
+
+impl LineParameter {
+    pub fn name(self) -> &'static str {
+        match self {
+            LineParameter::Major => "major",
+            LineParameter::Projected => "projected",
+        }
+    }
+}
+
+/// A line parameter a rasterizer follows whatever a case states, for the
+/// lines of one rule (SPEC.md §5.1): where along the line t is taken, and
+/// whether it is clamped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct LineT {
+    pub parameter: LineParameter,
+    pub clamp: LineClamp,
+}
+
+impl LineT {
+    /// In words: "projected" or "major", with ", unclamped" where it is.
+    pub fn words(self) -> String {
+        match self.clamp {
+            LineClamp::Clamped => self.parameter.name().to_owned(),
+            LineClamp::Unclamped => format!("{}, unclamped", self.parameter.name()),
+        }
+    }
+
+    /// Its name in a report: `major`, `projected`, `major-unclamped`,
+    /// `projected-unclamped`.
+    pub fn name(self) -> &'static str {
+        match (self.parameter, self.clamp) {
+            (LineParameter::Major, LineClamp::Clamped) => "major",
+            (LineParameter::Projected, LineClamp::Clamped) => "projected",
+            (LineParameter::Major, LineClamp::Unclamped) => "major-unclamped",
+            (LineParameter::Projected, LineClamp::Unclamped) => "projected-unclamped",
+        }
+    }
+}
+
 /// Which vertex of a primitive gives a `flat` primitive its values
 /// (SPEC.md §5): Vulkan's default and `VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT`,
 /// OpenGL's `glProvokingVertex`.
@@ -340,6 +401,10 @@ pub struct Rules {
     pub depth_format: DepthFormat,
     /// Polygon offset (SPEC.md §18.2), when the case gives one.
     pub depth_bias: Option<DepthBias>,
+    /// Whether lines clamp t to [0, 1] (SPEC.md §5.1): always `Clamped` in
+    /// a case; `Unclamped` only in a case restated under a rasterizer's
+    /// declared line parameter.
+    pub line_clamp: LineClamp,
 }
 
 impl Default for Rules {
@@ -352,6 +417,7 @@ impl Default for Rules {
             clip: ClipRules::default(),
             depth_format: DepthFormat::Exact,
             depth_bias: None,
+            line_clamp: LineClamp::Clamped,
         }
     }
 }

@@ -5,7 +5,10 @@
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{ApiRecord, Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
+use crate::scene::{
+    ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
+    PointBounds, PointClip, Scene,
+};
 
 use super::accepted::accepted;
 use super::context::{self, with_context};
@@ -71,6 +74,33 @@ impl Rasterizer for Gl {
     /// diamond-exit rule within the latitude GL 4.6 §14.5.1 allows: judged
     /// under it (SPEC.md §4.2.1).
     fn diamond_exit_latitude(&self) -> bool {
+        true
+    }
+
+    /// GL 4.6 §14.5.1's formula for a line's t, the projection, has no
+    /// clamp: every line is unclamped (SPEC.md §5.1). llvmpipe takes an
+    /// aliased (`diamond-exit`) line's t along the major axis (measured on
+    /// `lines/diamond_colour_interpolation` line by line: 1.1e-7 stated
+    /// `major`, 2.1e-2 restated `projected`), which the GL and GLES CTS
+    /// accept with a quality warning (`LINEINTERPOLATION_PROJECTED`), not
+    /// a failure: declared as its own. A multisampled (`rectangle`) line
+    /// is the projection's. softpipe's is not measured.
+    fn fixed_line_parameter(&self, rule: LineRule) -> Option<LineT> {
+        let parameter = match rule {
+            LineRule::Rectangle => LineParameter::Projected,
+            _ if self.softpipe => return None,
+            _ => LineParameter::Major,
+        };
+        Some(LineT {
+            parameter,
+            clamp: LineClamp::Unclamped,
+        })
+    }
+
+    /// GL states no tie rule for the border of a multisampled line's
+    /// rectangle (GL 4.6 §14.5.4 counts the samples "inside" it): its
+    /// border samples are judged off the ties (SPEC.md §4.3.1).
+    fn rectangle_border_no_tie_rule(&self) -> bool {
         true
     }
 

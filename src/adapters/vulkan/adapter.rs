@@ -6,7 +6,10 @@
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{ApiRecord, Capabilities, RasterError, Rasterizer};
-use crate::scene::{ClipXy, ClipZ, FillRule, InterpolateFrom, PointBounds, PointClip, Scene};
+use crate::scene::{
+    ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
+    PointBounds, PointClip, Scene,
+};
 
 use super::draw;
 use super::native::{native_offered, native_samples};
@@ -73,6 +76,40 @@ impl Rasterizer for Vulkan {
     /// ("Bresenham Line Segment Rasterization"): judged under it (SPEC.md
     /// §4.2.1).
     fn diamond_exit_latitude(&self) -> bool {
+        true
+    }
+
+    /// Vulkan's formula for a line's t ("Basic Line Segment
+    /// Rasterization", `primsrast-lines-basic`) has no clamp, so every
+    /// line is unclamped (SPEC.md §5.1). RECTANGULAR lines "must" use
+    /// that formula, the projection: declared for `rectangle` whatever
+    /// the device, a device doing otherwise stays a departure. For
+    /// Bresenham and DEFAULT lines the device's own
+    /// ([`super::device::line_parameter`], by its driver). `None` where
+    /// the device cannot be made (nothing is drawn then).
+    fn fixed_line_parameter(&self, rule: LineRule) -> Option<LineT> {
+        let parameter = match rule {
+            LineRule::Rectangle => LineParameter::Projected,
+            _ => {
+                let shared = self.shared().ok()?;
+                let parameter = lock(shared).device.offers.line_parameter;
+                parameter
+            }
+        };
+        Some(LineT {
+            parameter,
+            clamp: LineClamp::Unclamped,
+        })
+    }
+
+    /// Vulkan's RECTANGULAR lines give no tie rule: "Coverage bits that
+    /// correspond to sample points that intersect the rectangle are 1,
+    /// other coverage bits are 0" (`primsrast-lines-basic`), where
+    /// DEFAULT (parallelogram) lines say "Samples that fall exactly on the
+    /// edge of the parallelogram follow the polygon rasterization rules".
+    /// A rectangle's border samples are judged off the ties (SPEC.md
+    /// §4.3.1).
+    fn rectangle_border_no_tie_rule(&self) -> bool {
         true
     }
 

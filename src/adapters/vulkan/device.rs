@@ -11,7 +11,7 @@ use ash::vk;
 use super::messenger::{self, Listening, Messenger, Record};
 use crate::adapters::gpu;
 use crate::rasterizer::ApiRecord;
-use crate::scene::{DepthFormat, InterpolateFrom};
+use crate::scene::{DepthFormat, InterpolateFrom, LineParameter};
 
 /// What the device offers that decides what it can draw.
 #[derive(Clone)]
@@ -74,6 +74,9 @@ pub(super) struct Offers {
     /// from (SPEC.md §16.5, §16.10), known per driver
     /// ([`interpolate_from`]).
     pub interpolate_from: InterpolateFrom,
+    /// Where the driver takes a Bresenham or DEFAULT line's t (SPEC.md
+    /// §5.1), known per driver ([`line_parameter`]).
+    pub line_parameter: LineParameter,
 }
 
 /// The positions a driver interpolates from, by its `driverID`:
@@ -86,6 +89,26 @@ pub(super) fn interpolate_from(driver: vk::DriverId) -> InterpolateFrom {
     match driver {
         vk::DriverId::GOOGLE_SWIFTSHADER => InterpolateFrom::Snapped,
         _ => InterpolateFrom::Unsnapped,
+    }
+}
+
+/// Where a driver takes the t of its Bresenham (and DEFAULT) lines, by its
+/// `driverID` (SPEC.md §5.1): SwiftShader projects the fragment centre
+/// onto the segment, the spec's formula (measured on
+/// `lines/diamond_colour_interpolation` line by line: 2.6e-7 restated
+/// `projected`, 5.7e-2 as stated `major`); Mesa's lavapipe, and any
+/// driver not known otherwise, along the major axis (1.1e-7 stated
+/// `major`, 2.1e-2 restated `projected`), as Vulkan's non-strict lines
+/// interpolate ("as if the parallelogram was decomposed into two
+/// triangles where each pair of vertices at each end of the line has
+/// identical attributes") and as VK-GL-CTS accepts for Bresenham lines
+/// (`LINEINTERPOLATION_PROJECTED`, a quality warning, not a failure). A
+/// driver that departs from its declaration is judged under it and
+/// shows it.
+pub(super) fn line_parameter(driver: vk::DriverId) -> LineParameter {
+    match driver {
+        vk::DriverId::GOOGLE_SWIFTSHADER => LineParameter::Projected,
+        _ => LineParameter::Major,
     }
 }
 
@@ -373,6 +396,7 @@ impl Device {
             viewport_bounds: limits.viewport_bounds_range,
             max_viewport: limits.max_viewport_dimensions,
             interpolate_from: interpolate_from(driver.driver_id),
+            line_parameter: line_parameter(driver.driver_id),
         };
         Ok(Device {
             _entry: entry,
@@ -493,6 +517,21 @@ mod tests {
         assert_eq!(
             interpolate_from(vk::DriverId::MESA_LLVMPIPE),
             InterpolateFrom::Unsnapped
+        );
+    }
+
+    /// SwiftShader projects a Bresenham line's t onto the segment,
+    /// lavapipe takes it along the major axis (SPEC.md §5.1; measured on
+    /// `lines/diamond_colour_interpolation`, `tests/line_conventions.rs`).
+    #[test]
+    fn each_driver_declares_its_own_line_parameter() {
+        assert_eq!(
+            line_parameter(vk::DriverId::GOOGLE_SWIFTSHADER),
+            LineParameter::Projected
+        );
+        assert_eq!(
+            line_parameter(vk::DriverId::MESA_LLVMPIPE),
+            LineParameter::Major
         );
     }
 }

@@ -515,6 +515,8 @@ mod tests {
                     judged_sample_pattern: None,
                     judged_y: None,
                     judged_pixel_centre: None,
+                    judged_line_parameter: None,
+                    judged_line_border: None,
                     line_latitude: None,
                     metrics: None,
                     files: Vec::new(),

@@ -219,6 +219,8 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 judged_sample_pattern: None,
                 judged_y: None,
                 judged_pixel_centre: None,
+                judged_line_parameter: None,
+                judged_line_border: None,
                 metrics: Some(m),
                 files: Vec::new(),
             })
