@@ -160,11 +160,11 @@ pub(crate) fn print_outcome(
                 " (judged with its own samples at whole coordinates: the case moved by (½, ½))",
             );
         }
-        if let (Some(own), Some(scene)) = (result.judged.line_parameter, &outcome.scene) {
+        if let Some(own) = result.judged.line_parameter {
             method.push_str(&format!(
                 " (judged under its own {} line parameter; the case states {})",
                 own.words(),
-                own.stated(scene)
+                own.stated()
             ));
         }
         if result.judged.rectangle_border_ties {

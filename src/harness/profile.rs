@@ -18,8 +18,8 @@ use crate::rasterizer::{
     Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
 };
 use crate::scene::{
-    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineClamp, LineRule, LineT, Number,
-    Pattern, Primitive, Scene,
+    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineClamp, LineParameter, LineRule, LineT,
+    Number, Pattern, Primitive, Scene,
 };
 
 /// The schema of a profile file, written by `probe` and read here.
@@ -337,6 +337,9 @@ pub struct OwnConventions {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LineParameters {
     pub by_rule: [Option<LineT>; 4],
+    /// The parameters the restated lines state: `major`, `projected`
+    /// (kept here, as a run lets the case's primitives go).
+    pub stated: [bool; 2],
 }
 
 impl LineParameters {
@@ -386,19 +389,15 @@ impl LineParameters {
             .join(" and ")
     }
 
-    /// The parameters `scene`'s lines state, in words, for the result's
-    /// "the case states ..." ("major", "major and projected").
-    pub fn stated(&self, scene: &Scene) -> String {
-        let mut names: Vec<&str> = scene
-            .primitives
-            .iter()
-            .filter_map(|p| match p {
-                Primitive::Line(l) if self.get(l.rule).is_some() => Some(l.parameter.name()),
-                _ => None,
-            })
+    /// The parameters the restated lines state, in words, for the
+    /// result's "the case states ..." ("major, clamped", "major and
+    /// projected, clamped").
+    pub fn stated(&self) -> String {
+        let names: Vec<&str> = [LineParameter::Major, LineParameter::Projected]
+            .into_iter()
+            .zip(self.stated)
+            .filter_map(|(parameter, stated)| stated.then_some(parameter.name()))
             .collect();
-        names.sort_unstable();
-        names.dedup();
         format!("{}, clamped", names.join(" and "))
     }
 
@@ -422,6 +421,7 @@ impl LineParameters {
             if let Some(t) = candidate.fixed_line_parameter(line.rule) {
                 if t.parameter != line.parameter || t.clamp != scene.rules.line_clamp {
                     own.by_rule[Self::slot(line.rule)] = Some(t);
+                    own.stated[usize::from(line.parameter == LineParameter::Projected)] = true;
                 }
             }
         }

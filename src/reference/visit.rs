@@ -150,17 +150,19 @@ fn visit_scene<F>(
                 })
             }
             Primitive::Line(line) if antialiased && line.rule != LineRule::Parallelogram => {}
-            Primitive::Line(line) => line::visit(grid, canvas, line, points, rule, clamp, |p, t| {
-                visit(
-                    index,
-                    p,
-                    if with_values {
-                        Exact::Line(t)
-                    } else {
-                        Exact::Nothing
-                    },
-                )
-            }),
+            Primitive::Line(line) => {
+                line::visit(grid, canvas, line, points, rule, clamp, |p, t| {
+                    visit(
+                        index,
+                        p,
+                        if with_values {
+                            Exact::Line(t)
+                        } else {
+                            Exact::Nothing
+                        },
+                    )
+                })
+            }
         }
     }
 }

@@ -36,8 +36,8 @@ pub use model::{Canvas, Effects, Scene};
 pub use number::Number;
 pub use primitive::{Line, Point, Polygon, Primitive, Triangle, Vertex};
 pub use rules::{
-    Cull, DeclaredRule, FillRule, Interpolation, LastPixel, LineClamp, LineParameter, LineRule, LineT,
-    PolygonFill, ProvokingVertex, Rules,
+    Cull, DeclaredRule, FillRule, Interpolation, LastPixel, LineClamp, LineParameter, LineRule,
+    LineT, PolygonFill, ProvokingVertex, Rules,
 };
 pub use samples::{Antialias, Pattern};
 pub use time::{MotionBlur, TimePattern};
