@@ -4,7 +4,8 @@
 //! roots) → [`load`] (the file read into a scene) → [`oracle`] (the
 //! reference's answer, once for every candidate) → [`judge`] (each
 //! candidate's frame against it, under the conventions [`profile`] says it
-//! follows) → [`golden`] (the blessed reference output) → [`baseline`]
+//! follows, a line parameter among them: [`line_parameters`]) → [`golden`]
+//! (the blessed reference output) → [`baseline`]
 //! (recorded metrics a later run must not get worse than). [`runner`] runs
 //! many cases at once: selection, parallel execution, limits, outcomes in a
 //! fixed order. [`flaky`] compares a candidate's repetitions of a case (`run --repeat`).
@@ -17,6 +18,7 @@ pub mod discover;
 pub mod flaky;
 pub mod golden;
 pub mod judge;
+pub mod line_parameters;
 pub mod load;
 pub mod oracle;
 pub mod panics;

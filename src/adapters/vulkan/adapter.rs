@@ -88,13 +88,11 @@ impl Rasterizer for Vulkan {
     /// ([`super::device::line_parameter`], by its driver). `None` where
     /// the device cannot be made (nothing is drawn then).
     fn fixed_line_parameter(&self, rule: LineRule) -> Option<LineT> {
+        let shared = self.shared().ok()?;
+        let own = lock(shared).device.offers.line_parameter;
         let parameter = match rule {
             LineRule::Rectangle => LineParameter::Projected,
-            _ => {
-                let shared = self.shared().ok()?;
-                let parameter = lock(shared).device.offers.line_parameter;
-                parameter
-            }
+            _ => own,
         };
         Some(LineT {
             parameter,
