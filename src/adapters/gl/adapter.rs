@@ -98,8 +98,10 @@ impl Rasterizer for Gl {
     }
 
     /// GL states no tie rule for the border of a multisampled line's
-    /// rectangle (GL 4.6 §14.5.4 counts the samples "inside" it): its
-    /// border samples are judged off the ties (SPEC.md §4.3.1).
+    /// rectangle ("Coverage bits that correspond to sample points that
+    /// intersect a rectangle are 1, other coverage bits are 0", OpenGL ES
+    /// 3.0.3 §3.5.4; GL 4.6 §14.5.4 draws the same rectangle): its border
+    /// samples are judged off the ties (SPEC.md §4.3.1).
     fn rectangle_border_no_tie_rule(&self) -> bool {
         true
     }
