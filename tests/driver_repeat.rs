@@ -158,7 +158,9 @@ fn an_unsupported_reason_must_name_the_device() {
         "a point of size 4 whose square reaches outside a viewport rectangle with an edge off \
          the pixel grid: where Mesa cuts the square there is unmeasured (SPEC.md §17.4)"
     ));
-    assert!(!device_limit("4 attributes (this adapter carries at most 3)"));
+    assert!(!device_limit(
+        "4 attributes (this adapter carries at most 3)"
+    ));
 }
 
 #[cfg(feature = "vulkan")]
