@@ -293,7 +293,7 @@ mod tests {
         let mut fractional = scene(true, [0, 0, 1], Number::from_int(17));
         fractional.viewport.as_mut().unwrap().x = Number::ratio(9, 2);
         assert_eq!(why(&fractional, false), None);
-        fractional.viewport.as_mut().unwrap().x = Number::ratio(4097, 1024);
+        fractional.viewport.as_mut().unwrap().x = Number::ratio(4609, 1024);
         let out = why(&fractional, false);
         assert!(out.unwrap().contains("past a pixel centre"));
         // w ≤ 0 is discarded by driver and rule alike.
