@@ -284,6 +284,25 @@ impl fmt::Display for ApiRecord {
     }
 }
 
+/// A rectangle of the canvas's pixels (x right, y down) a screen-space
+/// scene is drawn through, and clipped at by a driver that clips at its
+/// side planes: its corner and its sides ([`Rasterizer::screen_viewport`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ScreenViewport {
+    pub origin: [i64; 2],
+    pub size: [u32; 2],
+}
+
+impl ScreenViewport {
+    /// In words: "its 64 × 64 px viewport at (0, 0)".
+    pub fn words(&self) -> String {
+        format!(
+            "its {} × {} px viewport at ({}, {})",
+            self.size[0], self.size[1], self.origin[0], self.origin[1]
+        )
+    }
+}
+
 /// Why a rasterizer produced no frame.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum RasterError {
@@ -405,6 +424,21 @@ pub trait Rasterizer: Send + Sync {
     /// for [`Rasterizer::fixed_fill_rule`]. `None` for a rasterizer that
     /// follows each case's.
     fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        None
+    }
+
+    /// The viewport a screen-space `scene` is drawn through, when it does
+    /// not hold every vertex of the scene: a driver that clips at its side
+    /// planes ([`Rasterizer::fixed_clip_rules`]'s `clip-then-snap`) clips
+    /// the scene there. An adapter draws such a scene through a viewport
+    /// that encloses its vertices where the device allows one, and through
+    /// a smaller one where the device's largest viewport cannot hold them
+    /// (a device limit); it says which here, from the same computation it
+    /// draws with, so the judge restates the case clipped exactly at that
+    /// rectangle (SPEC.md §16.9) and never guesses. `None` for a
+    /// rasterizer that clips no screen-space scene, and for a scene it
+    /// draws whole.
+    fn screen_viewport(&self, _scene: &Scene, _plan: &Plan) -> Option<ScreenViewport> {
         None
     }
 

@@ -108,7 +108,12 @@ pub(crate) fn print_outcome(
                 scene.rules.fill_rule
             ));
         }
-        if let (Some(clip), Some(scene)) = (result.judged.clip, &outcome.scene) {
+        if let Some(viewport) = result.judged.viewport {
+            method.push_str(&format!(
+                " (judged under its own clip-then-snap at {}; the case is drawn unclipped)",
+                viewport.words()
+            ));
+        } else if let (Some(clip), Some(scene)) = (result.judged.clip, &outcome.scene) {
             let stated = scene.rules.clip;
             method.push_str(&format!(
                 " (judged under its own clipping, {}; the case states {})",

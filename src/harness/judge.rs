@@ -118,7 +118,7 @@ pub fn run_candidate(
     // space, its clip conventions; its snapping, sample positions, y
     // direction or pixel centre) is judged under the ones it follows,
     // against the reference drawn under them.
-    let own = OwnConventions::of(candidate, scene);
+    let own = OwnConventions::of(candidate, scene).with_viewport(candidate, scene, &reference.plan);
     if own.any() || own.no_tie_rule || own.line_latitude || own.rectangle_border_ties {
         if let Some(why) = own.cannot_judge(scene) {
             return CandidateRun::without_frame(name, Verdict::Unsupported(why), elapsed);

@@ -9,11 +9,13 @@
 //! (recorded metrics a later run must not get worse than). [`runner`] runs
 //! many cases at once: selection, parallel execution, limits, outcomes in a
 //! fixed order. [`flaky`] compares a candidate's repetitions of a case (`run --repeat`).
+//! [`clipped`] restates a screen-space case clipped at a driver's viewport.
 //! [`panics`] is the text of a caught panic; [`today`] the date reports are
 //! stamped with; [`case_hash`] the hash of a case file a report names.
 
 pub mod baseline;
 pub mod case_hash;
+pub mod clipped;
 pub mod discover;
 pub mod flaky;
 pub mod golden;

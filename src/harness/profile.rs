@@ -12,14 +12,16 @@ use std::path::Path;
 
 use serde_json::Value;
 
+use super::clipped;
 use super::line_parameters::LineParameters;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{
-    Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, Snapping, YDirection,
+    Capabilities, Declaration, PixelCentre, RasterError, Rasterizer, ScreenViewport, Snapping,
+    YDirection,
 };
 use crate::scene::{
-    ClipRules, Cull, DeclaredRule, DepthMode, FillRule, LineRule, LineT, Number, Pattern,
+    ClipRules, ClipXy, Cull, DeclaredRule, DepthMode, FillRule, LineRule, LineT, Number, Pattern,
     Primitive, Scene,
 };
 
@@ -220,6 +222,12 @@ impl Rasterizer for Profiled {
     fn rectangle_border_no_tie_rule(&self) -> bool {
         self.inner.rectangle_border_no_tie_rule()
     }
+    fn fixed_clip_rules(&self) -> Option<(crate::scene::ClipXy, crate::scene::ClipZ)> {
+        self.inner.fixed_clip_rules()
+    }
+    fn screen_viewport(&self, scene: &Scene, plan: &Plan) -> Option<ScreenViewport> {
+        self.inner.screen_viewport(scene, plan)
+    }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
         self.rule.fill_rule()
     }
@@ -330,6 +338,10 @@ pub struct OwnConventions {
     /// has rectangle lines (SPEC.md §4.3.1): their border samples are
     /// judged off the ties, which restates nothing.
     pub rectangle_border_ties: bool,
+    /// A screen-space case its viewport cannot hold, judged clipped at that
+    /// viewport under its own `clip-then-snap` (SPEC.md §16.9): the
+    /// rectangle ([`Rasterizer::screen_viewport`]).
+    pub viewport: Option<ScreenViewport>,
 }
 
 impl OwnConventions {
@@ -410,7 +422,32 @@ impl OwnConventions {
                     .primitives
                     .iter()
                     .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::Rectangle)),
+            viewport: None,
         }
+    }
+
+    /// These and, for a screen-space case that `candidate` draws through a
+    /// viewport too small to hold it and clips at (its declared `clip_xy`
+    /// is `clip-then-snap`), that viewport: the case is then judged clipped
+    /// there (`clipped.rs`, SPEC.md §16.9), its clipping reported as the
+    /// candidate's own (`clip_xy clip-then-snap`). A case `clipped.rs`
+    /// cannot restate (lines, points, values, motion) is judged as stated.
+    pub fn with_viewport(mut self, candidate: &dyn Rasterizer, scene: &Scene, plan: &Plan) -> Self {
+        let clips = matches!(
+            candidate.fixed_clip_rules(),
+            Some((ClipXy::ClipThenSnap, _))
+        );
+        if !clips || !clipped::applies(scene, plan) {
+            return self;
+        }
+        if let Some(viewport) = candidate.screen_viewport(scene, plan) {
+            self.viewport = Some(viewport);
+            self.clip = Some(ClipRules {
+                xy: ClipXy::ClipThenSnap,
+                ..self.clip.unwrap_or(scene.rules.clip)
+            });
+        }
+        self
     }
 
     /// Whether the case is restated (the tie set of a rasterizer with no
@@ -424,6 +461,7 @@ impl OwnConventions {
             || self.y_up
             || self.integer_centre
             || self.line_parameter.is_some()
+            || self.viewport.is_some()
     }
 
     /// Why `scene` cannot be judged under these conventions, if it cannot
@@ -489,6 +527,10 @@ impl OwnConventions {
     /// move (other bits, no snapping, truncation, another pixel centre).
     pub fn restate(&self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
+        if let Some(viewport) = self.viewport {
+            // First, from the positions the adapter sent: the case's own.
+            clipped::clip_scene(&mut s, viewport, scene.rules.subpixel_bits);
+        }
         if let Some(rule) = self.fill_rule {
             s.rules.fill_rule = rule;
         }
@@ -559,8 +601,12 @@ impl OwnConventions {
         if self.no_tie_rule {
             words.push("no tie rule".to_owned());
         }
-        if let Some(clip) = self.clip {
-            words.push(clip.words());
+        match (self.viewport, self.clip) {
+            (Some(viewport), _) => {
+                words.push(format!("clip_xy clip-then-snap at {}", viewport.words()))
+            }
+            (None, Some(clip)) => words.push(clip.words()),
+            (None, None) => {}
         }
         if let Some(bits) = self.subpixel_bits {
             words.push(format!("{bits} subpixel bits"));

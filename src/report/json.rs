@@ -191,6 +191,11 @@ pub struct ClipInfo {
     /// What limits a kept point's square (SPEC.md §17.2).
     #[serde(deserialize_with = "name")]
     pub point_bounds: Word,
+    /// The viewport a screen-space case was judged clipped at, `[x, y,
+    /// width, height]` in the canvas's pixels (SPEC.md §16.9): the
+    /// rasterizer's, where no viewport it allows holds the case.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viewport: Option<[i64; 4]>,
 }
 
 impl ClipInfo {
@@ -202,6 +207,7 @@ impl ClipInfo {
             interpolate_from: clip.values.name(),
             clip_points: clip.points.name(),
             point_bounds: clip.bounds.name(),
+            viewport: None,
         }
     }
 }
@@ -587,7 +593,13 @@ impl CaseEntry {
                 },
                 ties: run.metrics.as_ref().and_then(|m| m.ties.clone()),
                 line_latitude: run.metrics.as_ref().and_then(|m| m.latitude.clone()),
-                judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
+                judged_clip: run.judged.clip.map(|c| ClipInfo {
+                    viewport: run
+                        .judged
+                        .viewport
+                        .map(|v| [v.origin[0], v.origin[1], v.size[0].into(), v.size[1].into()]),
+                    ..ClipInfo::of(&c)
+                }),
                 judged_subpixel_bits: run.judged.subpixel_bits,
                 judged_snapping: run.judged.snapping.map(|s| match s {
                     Snapping::Truncate => "truncate",

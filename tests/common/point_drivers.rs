@@ -527,8 +527,10 @@ pub fn assert_multisampled_points(candidate: &dyn Rasterizer) {
 /// Points the driver cannot draw as the rule's square are refused, each
 /// with its reason.
 pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
-    // A viewport whose left side runs through pixel centres.
-    let viewport = r#"{"x": 4.5, "y": 4, "width": 16, "height": 16}"#;
+    // A viewport whose left side lies 1/1024 px past the centres of
+    // column 4, where Mesa's whole-pixel rectangle ((int)(x + 0.499))
+    // departs from the rule.
+    let viewport = r#"{"x": 4.5009765625, "y": 4, "width": 16, "height": 16}"#;
     let cases = [
         // Under one pixel (below the range, or drawn one pixel wide), off
         // the 8-bit grid by half a step, beyond the range.
@@ -555,7 +557,7 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
                 None,
                 Some(viewport),
             ),
-            "edge off the pixel grid",
+            "past a pixel centre",
         ),
         (
             scene(
@@ -568,7 +570,7 @@ pub fn assert_point_refusals(candidate: &dyn Rasterizer) {
                 None,
                 Some(viewport),
             ),
-            "edge off the pixel grid",
+            "past a pixel centre",
         ),
     ];
     for (scene, why) in cases {
@@ -602,6 +604,16 @@ pub fn assert_squares_cut_at_the_viewport(candidate: &dyn Rasterizer) {
         let frame = run.frame.expect("a frame");
         let drawn = frame.coverage.iter().filter(|&&c| c > 0).count();
         assert_eq!(drawn, cut, "x = {x}:\n{}", picture(&frame));
+        // With the viewport's left side through the centres of column 4,
+        // Mesa's whole-pixel rectangle keeps the columns the rule keeps.
+        let mut through = scene.clone();
+        through.viewport.as_mut().unwrap().x = rastercheck::scene::Number::ratio(9, 2);
+        let (_, on_centres) = super::run(&through, candidate);
+        assert_eq!(
+            on_centres.verdict,
+            Verdict::Pass,
+            "x = {x}, viewport from 4.5"
+        );
         let mut whole = scene.clone();
         whole.rules.clip.bounds = PointBounds::Canvas;
         let canvas_bounded = rastercheck::reference::render(&whole, &Plan::for_scene(&whole));

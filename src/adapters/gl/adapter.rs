@@ -4,7 +4,9 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{ApiRecord, Capabilities, Prepared, RasterError, Rasterizer};
+use crate::rasterizer::{
+    ApiRecord, Capabilities, Prepared, RasterError, Rasterizer, ScreenViewport,
+};
 use crate::scene::{
     ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
     PointBounds, PointClip, Scene,
@@ -122,6 +124,20 @@ impl Rasterizer for Gl {
     /// unsnapped positions' by at most 2.3e-6). softpipe's is not measured.
     fn fixed_interpolate_from(&self) -> Option<InterpolateFrom> {
         (!self.softpipe).then_some(InterpolateFrom::Unsnapped)
+    }
+
+    /// The viewport the context draws a screen-space scene through
+    /// (`GlContext::placed`), where it cannot hold the scene's vertices:
+    /// `GL_MAX_VIEWPORT_DIMS` and `GL_VIEWPORT_BOUNDS_RANGE` are too small,
+    /// and llvmpipe clips there (SPEC.md §16.9). `None` before the context
+    /// exists, and for softpipe, whose clipping is not measured.
+    fn screen_viewport(&self, scene: &Scene, plan: &Plan) -> Option<ScreenViewport> {
+        if self.softpipe {
+            return None;
+        }
+        let (bits, _) = accepted(scene, plan, self.softpipe).ok()?;
+        let (_, view) = context::existing(|gl| gl.placed(scene, bits))?.ok()?;
+        gpu::clipped_at(scene, bits, &view)
     }
 
     /// GL's own rule: llvmpipe pops a point whose centre is outside the

@@ -28,6 +28,21 @@ use crate::rasterizer::RasterError;
 use crate::scene::{Cull, Interpolation, PolygonFill, Scene};
 
 impl GlContext {
+    /// A scene's tile (the target) and the viewport its screen-space
+    /// positions are placed on in it (`gpu/view.rs`), at the case's `bits`:
+    /// what [`GlContext::set_up`] draws through and the adapter's
+    /// `screen_viewport` reports.
+    pub(super) fn placed(
+        &self,
+        scene: &Scene,
+        bits: u32,
+    ) -> Result<((u32, u32), gpu::View), RasterError> {
+        let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
+        let limits = self.clip.screen_limits(tile, self.max_side);
+        let view = gpu::screen_view(scene, bits, bits.max(DRIVER_BITS), tile, &limits);
+        Ok((tile, view))
+    }
+
     /// Sets a scene up: uploads its passes' vertex streams into a vertex
     /// array and buffer of its own, and makes a framebuffer of float
     /// attachments (the count, then the channel groups) holding a `P × Q`
@@ -46,9 +61,7 @@ impl GlContext {
         if let Some(why) = depth.and_then(|t| self.depth_refusal(scene, &t)) {
             return Err(RasterError::Unsupported(why));
         }
-        let tile = gpu::target_size(scene, self.max_side, &self.renderer)?;
-        let limits = self.clip.screen_limits(tile, self.max_side);
-        let view = gpu::screen_view(scene, bits, bits.max(DRIVER_BITS), tile, &limits);
+        let (tile, view) = self.placed(scene, bits)?;
         let groups = gpu::groups(plan);
         let layout = self.layout(scene, plan, bits, (tile, view), depth.is_some())?;
         let stencils = layout.stencils();

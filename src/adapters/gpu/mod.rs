@@ -48,4 +48,4 @@ pub(crate) use acceptance::{capabilities, snapping_bits, target_size};
 pub(crate) use channels::{groups, CHANNELS, GROUPS, MAX_ATTRIBUTES};
 pub(crate) use mesa_noise::quiet_mesa;
 #[allow(unused_imports)] // not every adapter reads each
-pub(crate) use view::{screen_view, View, ViewLimits};
+pub(crate) use view::{clipped_at, screen_view, View, ViewLimits};

@@ -13,11 +13,11 @@
 //! - half the size on the driver's subpixel grid, so that the corners
 //!   X ± size/2 of a snapped centre are on it and nothing is rounded;
 //! - in clip space, a square reaching outside the viewport rectangle
-//!   only across the rectangle's edges on whole pixels: lavapipe and
+//!   only across edges not just past a pixel centre: lavapipe and
 //!   llvmpipe limit a point's square to the viewport rectangle (judged
-//!   under `point_bounds: viewport`, their `fixed_point_bounds`), and
-//!   where an edge lies off the pixel grid how they round it is
-//!   unmeasured;
+//!   under `point_bounds: viewport`, their `fixed_point_bounds`) rounded
+//!   to whole pixels as `(int)(x + 0.499)`, which keeps the columns the
+//!   rule keeps unless an edge lies less than 0.001 px past a centre;
 //! - in screen space, on a driver that pops (GL), the centre at least half
 //!   a pixel inside the canvas: the target's viewport covers the canvas,
 //!   and a shifted pass moves the centre by less than half a pixel, so no
@@ -112,10 +112,21 @@ fn near_the_edge(scene: &Scene, point: &Point) -> Option<String> {
     })
 }
 
+/// How far past a pixel centre (in pixels) a viewport edge may lie where
+/// Mesa's whole-pixel rectangle departs from SPEC.md §17.2's: llvmpipe
+/// (`lp_setup.c`) rounds the viewport rectangle to whole pixels as
+/// `(int)(x + 0.499)` and `(int)(x + width − 0.501)` (inclusive), which
+/// keeps exactly the columns whose centre the rule's [x, x + width) holds
+/// unless an edge lies less than 0.001 px past a centre (measured on the
+/// bundled case with an edge through centres); twice that, for the f32
+/// sums.
+const MESA_ROUNDING: (i64, i64) = (1, 500);
+
 /// Why a clip-space point's square cannot be judged where it reaches
 /// outside the viewport rectangle, which Mesa limits it to: an edge of the
-/// rectangle off the pixel grid (a point with w ≤ 0 is discarded by both
-/// and never refused).
+/// rectangle just past a pixel centre, where Mesa's rounding of the
+/// rectangle to whole pixels departs from the rule ([`MESA_ROUNDING`]; a
+/// point with w ≤ 0 is discarded by both and never refused).
 fn outside_viewport(scene: &Scene, point: &Point, half: &RBig) -> Option<String> {
     let view = scene.viewport.as_ref()?;
     let v = &point.vertices[0];
@@ -134,15 +145,28 @@ fn outside_viewport(scene: &Scene, point: &Point, half: &RBig) -> Option<String>
     let inside = |c: &RBig, origin: &Number, extent: &Number| {
         c - half >= *origin.as_rbig() && c + half <= origin.as_rbig() + extent.as_rbig()
     };
-    let whole = [&view.x, &view.y, &view.width, &view.height]
-        .iter()
-        .all(|n| n.as_rbig().is_int());
     let reaches = !(inside(&x, &view.x, &view.width) && inside(&y, &view.y, &view.height));
-    (reaches && !whole).then(|| {
+    let (num, den) = MESA_ROUNDING;
+    let latitude = RBig::from(num) / RBig::from(den);
+    // The fraction of an edge past the pixel centre before it: in (0, ε).
+    let just_past = |edge: RBig| {
+        let past = &edge - RBig::from(1) / RBig::from(2);
+        let fraction = &past - RBig::from(past.floor());
+        fraction > RBig::ZERO && fraction < latitude
+    };
+    let edges = [
+        view.x.as_rbig().clone(),
+        view.y.as_rbig().clone(),
+        view.x.as_rbig() + view.width.as_rbig(),
+        view.y.as_rbig() + view.height.as_rbig(),
+    ];
+    let off = edges.into_iter().any(just_past);
+    (reaches && off).then(|| {
         format!(
             "a point of size {} whose square reaches outside a viewport rectangle with an \
-             edge off the pixel grid: where Mesa cuts the square there is unmeasured \
-             (SPEC.md §17.4)",
+             edge less than 1/{den} px past a pixel centre: Mesa limits the square to the \
+             rectangle rounded to whole pixels as (int)(x + 0.499) and (int)(x + width - 0.501) \
+             (lp_setup.c), which departs from SPEC.md §17.2's centre rule there (SPEC.md §17.4)",
             point.size.to_exact_string()
         )
     })
@@ -260,15 +284,18 @@ mod tests {
             None
         );
         // Reaching out across whole-pixel edges is judged (under
-        // `point_bounds: viewport`); across an edge off the grid, refused.
+        // `point_bounds: viewport`), and across an edge through pixel
+        // centres; across one just past a centre, refused.
         assert_eq!(
             why(&scene(true, [0, 0, 1], Number::from_int(17)), false),
             None
         );
         let mut fractional = scene(true, [0, 0, 1], Number::from_int(17));
         fractional.viewport.as_mut().unwrap().x = Number::ratio(9, 2);
+        assert_eq!(why(&fractional, false), None);
+        fractional.viewport.as_mut().unwrap().x = Number::ratio(4609, 1024);
         let out = why(&fractional, false);
-        assert!(out.unwrap().contains("edge off the pixel grid"));
+        assert!(out.unwrap().contains("past a pixel centre"));
         // w ≤ 0 is discarded by driver and rule alike.
         assert_eq!(
             why(&scene(true, [0, 0, -1], Number::from_int(17)), false),

@@ -26,6 +26,7 @@
 use dashu_int::IBig;
 
 use super::super::float_input::{f32_of, snapped};
+use crate::rasterizer::ScreenViewport;
 use crate::scene::{Primitive, Scene};
 
 /// f32's significand: 24 bits.
@@ -134,6 +135,28 @@ pub(crate) fn screen_view(
     } else {
         whole
     }
+}
+
+/// The viewport a screen-space `scene` drawn through `view` (what
+/// [`screen_view`] chose) is clipped at by a driver without a guard band,
+/// when `view` does not hold every vertex (snapped to `bits`, widened by a
+/// line's width or a point's size): where the device's largest viewport
+/// cannot hold them (`Rasterizer::screen_viewport`). `None` for a
+/// clip-space scene (its own viewport) and for one `view` holds whole.
+pub(crate) fn clipped_at(scene: &Scene, bits: u32, view: &View) -> Option<ScreenViewport> {
+    if scene.viewport.is_some() {
+        return None;
+    }
+    let [lo, hi] = vertex_box(scene, bits)?;
+    let ends = [view.size.0, view.size.1];
+    let holds = (0..2).all(|axis| {
+        lo[axis] >= view.origin[axis]
+            && hi[axis] <= view.origin[axis].saturating_add(i64::from(ends[axis]))
+    });
+    (!holds).then_some(ScreenViewport {
+        origin: view.origin,
+        size: ends,
+    })
 }
 
 /// Whether every position of `view` at `2^-fine` pixel, and the
@@ -273,6 +296,25 @@ mod tests {
         );
         assert_eq!(view.origin[0], -1384);
         assert_eq!(view.size.0, 32768);
+    }
+
+    #[test]
+    fn only_a_viewport_that_cannot_hold_the_vertices_clips() {
+        let past = scene((16, 8), r#"{"triangle": [[-1, 1], [17, 7], [17, -30]]}"#);
+        let view = screen_view(&past, 8, 8, (16, 8), &LIMITS);
+        assert_eq!(clipped_at(&past, 8, &view), None);
+        let far = scene(
+            (64, 64),
+            r#"{"triangle": [[-20000, 0], [20000, 0], [0, 64]]}"#,
+        );
+        let view = screen_view(&far, 8, 8, (64, 64), &LIMITS);
+        assert_eq!(
+            clipped_at(&far, 8, &view),
+            Some(ScreenViewport {
+                origin: [0, 0],
+                size: [64, 64]
+            })
+        );
     }
 
     #[test]

@@ -3,8 +3,8 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::{FillRule, Pattern, Scene};
+use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer, ScreenViewport};
+use crate::scene::{ClipXy, ClipZ, FillRule, Pattern, Scene};
 
 use super::prepared;
 use super::refusals::{accepted, DRIVER_BITS};
@@ -43,6 +43,25 @@ impl Rasterizer for Lavapipe {
     /// these.
     fn fixed_sample_pattern(&self) -> Option<Pattern> {
         Some(Pattern::Standard)
+    }
+
+    /// lavapipe's, as the `vulkan` adapter declares it (SPEC.md §16.10):
+    /// no guard band at the side planes, the new vertices snapped. This
+    /// adapter draws no clip-space case; what the declaration decides is a
+    /// screen-space case past its viewport ([`Lavapipe::screen_viewport`]).
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+
+    /// The target: wgpu sets no viewport beyond its render target, so a
+    /// screen-space scene whose vertices reach past the target (rounded up
+    /// to the device's sizes, `gpu::target_size`) is clipped there by the
+    /// driver (SPEC.md §16.9).
+    fn screen_viewport(&self, scene: &Scene, plan: &Plan) -> Option<ScreenViewport> {
+        let bits = accepted(scene, plan).ok()?;
+        let max_side = lock(gpu().ok()?).max_side;
+        let target = gpu::target_size(scene, max_side, "the lavapipe adapter").ok()?;
+        gpu::clipped_at(scene, bits, &gpu::View::target(target))
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {

@@ -5,17 +5,18 @@
 
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::rasterizer::{ApiRecord, Capabilities, RasterError, Rasterizer};
+use crate::rasterizer::{ApiRecord, Capabilities, RasterError, Rasterizer, ScreenViewport};
 use crate::scene::{
     ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
     PointBounds, PointClip, Scene,
 };
 
+use super::device::Offers;
 use super::draw;
 use super::native::{native_offered, native_samples};
 use super::refusals::accepted;
 use super::shared::{lock, shared, Shared};
-use crate::adapters::gpu::{self, Placement};
+use crate::adapters::gpu::{self, Placement, View};
 
 /// The name on the command line and in reports.
 pub const NAME: &str = "vulkan";
@@ -167,12 +168,7 @@ impl Rasterizer for Vulkan {
             pipelines,
             unpack,
         } = &mut *shared;
-        let bits = accepted(scene, plan, &device.offers)?;
-        let offers = &device.offers;
-        let target = gpu::target_size(scene, offers.max_side, "this Vulkan device")?;
-        let limits = gpu::ViewLimits::vulkan(offers.max_viewport, offers.viewport_bounds);
-        let fine = bits.max(offers.subpixel_bits);
-        let view = gpu::screen_view(scene, bits, fine, target, &limits);
+        let (bits, view) = placed(scene, plan, &device.offers)?;
         let centres = Placement::at_centres(bits, view);
         if let Some(n) = native_samples(scene, plan, &device.offers, self.passes_only) {
             let job = draw::Job {
@@ -223,6 +219,17 @@ impl Rasterizer for Vulkan {
         draw::time(&bytes, scene, shifts.len() as u32 * motion.blur.samples)
     }
 
+    /// The viewport [`placed`] draws a screen-space scene through, where it
+    /// cannot hold the scene's vertices: the device's largest viewport
+    /// (`maxViewportDimensions`, `viewportBoundsRange`) is too small, and
+    /// the driver, which has no guard band, clips there (SPEC.md §16.9).
+    fn screen_viewport(&self, scene: &Scene, plan: &Plan) -> Option<ScreenViewport> {
+        let shared = self.shared().ok()?;
+        let shared = lock(shared);
+        let (bits, view) = placed(scene, plan, &shared.device.offers).ok()?;
+        gpu::clipped_at(scene, bits, &view)
+    }
+
     /// What the instance's messenger heard of this process's calls
     /// (`messenger.rs`): every case's, of both adapters on the shared
     /// device.
@@ -261,4 +268,16 @@ impl Rasterizer for Vulkan {
             shared.device.description
         ))
     }
+}
+
+/// The case's snapping bits (what the device draws of it, `refusals.rs`)
+/// and the viewport its screen-space positions are placed on
+/// (`gpu/view.rs`): what [`Vulkan::rasterize`] draws through and
+/// [`Vulkan::screen_viewport`] reports.
+fn placed(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<(u32, View), RasterError> {
+    let bits = accepted(scene, plan, offers)?;
+    let target = gpu::target_size(scene, offers.max_side, "this Vulkan device")?;
+    let limits = gpu::ViewLimits::vulkan(offers.max_viewport, offers.viewport_bounds);
+    let fine = bits.max(offers.subpixel_bits);
+    Ok((bits, gpu::screen_view(scene, bits, fine, target, &limits)))
 }

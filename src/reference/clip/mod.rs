@@ -9,12 +9,16 @@
 //! not the point; clip-space cases are small.
 //!
 //! `visit.rs` walks the scene in that order; `point.rs` places a point.
+//! `window.rs` clips a screen-space contour at a viewport rectangle, for a
+//! screen-space case restated under a driver's own clipping (§16.9).
 //! The exact values at a covered sample are `../values.rs`'s.
 
 pub mod clipper;
 pub mod homogeneous;
 pub mod point;
 mod visit;
+pub mod window;
 
 pub use super::values::Values;
 pub use visit::visit;
+pub use window::{clip_to_window, Window};

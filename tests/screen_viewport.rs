@@ -1,0 +1,152 @@
+//! Screen-space cases beyond a device's largest viewport (SPEC.md §16.9):
+//! a rasterizer that declares `clip_xy: clip-then-snap` and reports the
+//! viewport it draws such a case through is judged against the reference
+//! clipped exactly there, and the result names it. The declaration is held
+//! to: one that reports a viewport and clips nowhere, or clips at another
+//! rectangle, is caught; one that clips where it says passes.
+//!
+//! The candidates are production wrapped: `Clips` draws the case as
+//! production draws it after clipping every primitive at a rectangle
+//! (`harness::clipped::clip_scene`, the same exact clip the judge restates
+//! with: the point here is the foils, which depart from it).
+
+use std::path::PathBuf;
+
+use rastercheck::frame::Frame;
+use rastercheck::harness::clipped::clip_scene;
+use rastercheck::harness::judge::{run_candidate, Verdict};
+use rastercheck::harness::{discover, load, oracle};
+use rastercheck::plan::Plan;
+use rastercheck::production::Production;
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer, ScreenViewport};
+use rastercheck::scene::{ClipXy, ClipZ, Limits, Scene};
+
+fn scene(id: &str) -> Scene {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let file = discover::case_file(&root.join("cases").join(format!("{id}.json")));
+    load::load(&file, &Limits::default()).unwrap()
+}
+
+/// The canvas of a 64 px case, as a viewport.
+const CANVAS: ScreenViewport = ScreenViewport {
+    origin: [0, 0],
+    size: [64, 64],
+};
+
+/// Production, declaring `clip-then-snap` (when `declares`) and reporting
+/// `reported` as its viewport, and clipping at `clips_at` (or nowhere).
+struct Clips {
+    reported: ScreenViewport,
+    clips_at: Option<ScreenViewport>,
+    declares: bool,
+}
+
+impl Rasterizer for Clips {
+    fn name(&self) -> &str {
+        "clips"
+    }
+    fn capabilities(&self) -> Capabilities {
+        Production.capabilities()
+    }
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        self.declares
+            .then_some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+    fn screen_viewport(&self, scene: &Scene, _plan: &Plan) -> Option<ScreenViewport> {
+        (!scene.in_clip_space()).then_some(self.reported)
+    }
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut drawn = scene.clone();
+        if let Some(window) = self.clips_at {
+            clip_scene(&mut drawn, window, scene.rules.subpixel_bits);
+        }
+        Production.rasterize(&drawn, plan)
+    }
+}
+
+fn judged(id: &str, candidate: &Clips) -> (Verdict, Option<ScreenViewport>) {
+    let scene = scene(id);
+    let reference = oracle::run_reference(&scene);
+    let run = run_candidate(&scene, &reference, candidate);
+    (run.verdict, run.judged.viewport)
+}
+
+/// Far triangles, far polygons, and far antialiased triangles.
+const FAR: [&str; 3] = [
+    "hard/far_b8_bands",
+    "hard/poly_far_zigzag_b8_nonzero",
+    "hard/aa_sliver_near_collinear_far_standard16",
+];
+
+#[test]
+fn clipping_where_it_says_passes_and_is_named() {
+    for id in FAR {
+        let canvas = scene(id).canvas;
+        let window = ScreenViewport {
+            origin: [0, 0],
+            size: [canvas.width, canvas.height],
+        };
+        let honest = Clips {
+            reported: window,
+            clips_at: Some(window),
+            declares: true,
+        };
+        let (verdict, viewport) = judged(id, &honest);
+        assert!(matches!(verdict, Verdict::Pass), "{id}: {verdict:?}");
+        assert_eq!(viewport, Some(window), "{id}");
+    }
+}
+
+#[test]
+fn a_declared_viewport_it_does_not_clip_at_is_caught() {
+    // Clips nowhere: production's unclipped frame, exact as the case states.
+    let nowhere = Clips {
+        reported: CANVAS,
+        clips_at: None,
+        declares: true,
+    };
+    let (verdict, _) = judged("hard/far_b8_bands", &nowhere);
+    assert!(matches!(verdict, Verdict::Fail(_)), "{verdict:?}");
+    // Clips at a larger rectangle than it reports.
+    let elsewhere = Clips {
+        reported: CANVAS,
+        clips_at: Some(ScreenViewport {
+            origin: [-64, -64],
+            size: [192, 192],
+        }),
+        declares: true,
+    };
+    let (verdict, _) = judged("hard/far_b8_bands", &elsewhere);
+    assert!(matches!(verdict, Verdict::Fail(_)), "{verdict:?}");
+    // Reports a larger rectangle than it clips at.
+    let smaller = Clips {
+        reported: ScreenViewport {
+            origin: [-64, -64],
+            size: [192, 192],
+        },
+        clips_at: Some(CANVAS),
+        declares: true,
+    };
+    let (verdict, _) = judged("hard/far_b8_bands", &smaller);
+    assert!(matches!(verdict, Verdict::Fail(_)), "{verdict:?}");
+}
+
+#[test]
+fn a_viewport_without_declared_clipping_restates_nothing() {
+    // Not declaring clip-then-snap: the case is judged as stated (whole),
+    // so production clipping at the canvas is caught and unclipped passes.
+    let clipping = Clips {
+        reported: CANVAS,
+        clips_at: Some(CANVAS),
+        declares: false,
+    };
+    let (verdict, viewport) = judged("hard/far_b8_bands", &clipping);
+    assert_eq!(viewport, None);
+    assert!(matches!(verdict, Verdict::Fail(_)), "{verdict:?}");
+    let whole = Clips {
+        clips_at: None,
+        ..clipping
+    };
+    let (verdict, _) = judged("hard/far_b8_bands", &whole);
+    assert!(matches!(verdict, Verdict::Pass), "{verdict:?}");
+}
