@@ -143,7 +143,7 @@ fn worked_examples_7_and_8_the_flag() {
     let c = classify(&case("flag_last_writer")).unwrap();
     let truth: Vec<[u32; 2]> = (0..4u32)
         .flat_map(|y| (0..4u32).map(move |x| [x, y]))
-        .filter(|&[x, y]| y >= x + 1 || y + 2 <= x)
+        .filter(|&[x, y]| y > x || y + 2 <= x)
         .collect();
     assert_eq!(flags(&c, PixelClass::Required), truth);
 }
