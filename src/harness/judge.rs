@@ -11,8 +11,9 @@ use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
+use crate::reference::conservative::ConservativeClasses;
 use crate::reference::{self, DiamondLine, TieSet};
-use crate::scene::{LineRule, Primitive, Scene};
+use crate::scene::{Conservative, LineRule, Primitive, Scene};
 
 /// How a candidate did on a case.
 #[derive(Clone, Debug, PartialEq)]
@@ -89,7 +90,11 @@ pub fn run_candidate(
     candidate: &dyn Rasterizer,
 ) -> CandidateRun {
     let started = Instant::now();
-    if let Some(why) = candidate.capabilities().refuses(scene) {
+    let refused = candidate
+        .capabilities()
+        .refuses(scene)
+        .or_else(|| super::conservative::refusal(scene, candidate));
+    if let Some(why) = refused {
         return CandidateRun::without_frame(
             candidate.name().to_owned(),
             Verdict::Unsupported(why),
@@ -182,6 +187,7 @@ pub fn run_candidate(
                 let oracle = Oracle {
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
+                    conservative: super::conservative::judged_under(&under, candidate),
                 };
                 judge(&under, &restated, frame, name, elapsed, oracle)
             }
@@ -189,6 +195,7 @@ pub fn run_candidate(
                 let oracle = Oracle {
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
+                    conservative: super::conservative::judged_under(&under, candidate),
                 };
                 judge(&under, reference, frame, name, elapsed, oracle)
             }
@@ -196,16 +203,23 @@ pub fn run_candidate(
         run.judged = own;
         return run;
     }
-    judge(scene, reference, frame, name, elapsed, Oracle::default())
+    let oracle = Oracle {
+        conservative: super::conservative::judged_under(scene, candidate),
+        ..Oracle::default()
+    };
+    judge(scene, reference, frame, name, elapsed, oracle)
 }
 
 /// What the oracle gives beyond its frame for a candidate judged under a
 /// convention that restates nothing: its tie set (no tie rule, SPEC.md
 /// §3.1.1) and each diamond-exit line's fragments (the latitude, §4.2.1).
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Default)]
 struct Oracle<'a> {
     ties: Option<&'a TieSet>,
     lines: Option<&'a [DiamondLine]>,
+    /// A conservative case: the state the candidate is judged under (the
+    /// case's, restated under what it declares, SPEC.md §19.6).
+    conservative: Option<Conservative>,
 }
 
 /// The restated case with its antialiasing bounds (`max_coverage_error`,
@@ -274,6 +288,16 @@ fn judge(
     oracle: Oracle,
 ) -> CandidateRun {
     let ties = oracle.ties;
+    if let Some(classes) = &reference.conservative {
+        return judge_conservative(
+            scene,
+            classes,
+            oracle.conservative.as_ref(),
+            frame,
+            name,
+            elapsed,
+        );
+    }
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return CandidateRun {
@@ -352,6 +376,85 @@ fn judge(
         elapsed,
         judged: OwnConventions::default(),
     }
+}
+
+/// A conservative candidate's frame judged against the oracle's classes
+/// (SPEC.md §19.5): against `classes`, the reference's for the case, or,
+/// where the candidate declares an uncertainty or properties of its own
+/// (`under` differs from the case's), against the classes under those,
+/// reported as such.
+fn judge_conservative(
+    scene: &Scene,
+    classes: &Result<ConservativeClasses, RasterError>,
+    under: Option<&Conservative>,
+    frame: Frame,
+    name: String,
+    elapsed: Duration,
+) -> CandidateRun {
+    let run = |verdict: Verdict, metrics: Option<Metrics>, frame: Frame| CandidateRun {
+        rasterizer: name.clone(),
+        verdict,
+        metrics,
+        method: frame.method,
+        frame: Some(frame),
+        elapsed,
+        judged: OwnConventions::default(),
+    };
+    let classes = match classes {
+        Err(RasterError::Unsupported(why)) => {
+            return run(Verdict::Unsupported(why.clone()), None, frame)
+        }
+        Err(RasterError::Failed(why)) => return run(Verdict::Error(why.clone()), None, frame),
+        Ok(classes) => classes,
+    };
+    let case = scene
+        .effects
+        .conservative
+        .as_ref()
+        .expect("a conservative scene");
+    // The case's promises hold of the case's classes, whatever the
+    // candidate is judged under.
+    let promises = super::conservative::broken_promises(scene, classes);
+    let own;
+    let (judged, classes) = match under {
+        Some(under) if under != case => {
+            own = reference::conservative::classify_under(scene, under);
+            (under, &own)
+        }
+        _ => (case, classes),
+    };
+    if let Some(why) = metrics::conservative::shape_problem(classes, &frame) {
+        let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
+        return run(Verdict::Error(why), None, frame);
+    }
+    let mut words = judged.words();
+    if judged != case {
+        words.push_str(&format!(
+            ", its own conventions; the case states {}",
+            case.words()
+        ));
+    }
+    let m = metrics::conservative::measure(classes, &frame, words);
+    let mut failures = metrics::conservative::failures(&m);
+    failures.extend(promises);
+    let coverage = metrics::conservative::coverage(&m, &frame);
+    let metrics = Metrics {
+        coverage,
+        watertight: None,
+        lines: None,
+        channels: Vec::new(),
+        antialias: None,
+        time: None,
+        ties: None,
+        latitude: None,
+        conservative: Some(m),
+    };
+    let verdict = if failures.is_empty() {
+        Verdict::Pass
+    } else {
+        Verdict::Fail(failures)
+    };
+    run(verdict, Some(metrics), frame)
 }
 
 /// Why a candidate's frame cannot be compared with the reference's, if it

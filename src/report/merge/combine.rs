@@ -518,6 +518,7 @@ mod tests {
                     judged_line_parameter: None,
                     judged_line_border: None,
                     line_latitude: None,
+                    conservative: None,
                     metrics: None,
                     files: Vec::new(),
                 });

@@ -93,6 +93,7 @@ impl Reader<'_> {
         self.check_points(&scene)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
+        self.check_conservative(&scene)?;
         Ok(scene)
     }
 
@@ -511,7 +512,7 @@ impl Reader<'_> {
     }
 
     fn effects(&self, value: &Value, path: &Path) -> Result<Effects> {
-        let fields = Fields::new(value, path, &["antialias", "motion_blur"])?;
+        let fields = Fields::new(value, path, &["antialias", "motion_blur", "conservative"])?;
         let antialias = match fields.get("antialias") {
             Some((v, p)) => Some(self.antialias(v, &p)?),
             None => None,
@@ -520,9 +521,14 @@ impl Reader<'_> {
             Some((v, p)) => Some(self.motion_blur(v, &p)?),
             None => None,
         };
+        let conservative = match fields.get("conservative") {
+            Some((v, p)) => Some(self.conservative(v, &p)?),
+            None => None,
+        };
         Ok(Effects {
             antialias,
             motion_blur,
+            conservative,
         })
     }
 
@@ -647,9 +653,13 @@ impl Reader<'_> {
                 "max_time_error",
                 "max_time_rms",
                 "time_coverage",
+                "conservative",
             ],
         )?;
         let mut expect = Expect::default();
+        if let Some((v, p)) = fields.get("conservative") {
+            expect.conservative = Some(self.conservative_promise(v, &p)?);
+        }
         if let Some((v, p)) = fields.get("max_mismatched_samples") {
             expect.max_mismatched_samples = count(v, &p, u64::MAX >> 1)?;
         }
