@@ -271,7 +271,9 @@ pub(super) fn precision_scenes(transpose: bool) -> (Scene, Scene, Vec<Step>) {
 ///   A = (m + 3, n + 5 − 5j·2^-k), and the sample is (m + ½, n + 3/2): the
 ///   edge meets it, ⅙ of the way along, when y = τ_j = n + 4/5 + j·2^-k
 ///   (⅚·τ_j + ⅙·(n + 5 − 5j·2^-k) = n + 3/2), never dyadic and strictly
-///   inside step j. C = (m + 12, n + 3/2). For k ≥ 2 every position of B
+///   inside step j. C = (m + 12, n + 1), or (m + 12, n + 2) where A lies
+///   above the sample's row (k = 1, j = 2), so that the sample lies on A's
+///   side of CB whatever B's position. For k ≥ 2 every position of B
 ///   lies in (n + ½, n + 3/2]: B is the edge's top and the sample's row the
 ///   first at or below it, so a row walker finds the edge's x there from
 ///   B's y with no row stepped, and B's y grid decides. (For k = 1, B at
@@ -301,7 +303,14 @@ pub(super) fn vertex_scenes(along_y: bool) -> (Scene, Scene, Vec<Step>) {
             let (a, c, fixed, sample, n) = if along_y {
                 let (m, n) = (cx + 2, cy);
                 let a = point((m + 3).to_string(), fraction(((n + 5) << k) - 5 * j, k));
-                let c = point((m + 12).to_string(), format!("{}.5", n + 1));
+                // C above the sample's row, or below it where A is above
+                // it (k = 1, j = 2): the sample lies on A's side of CB.
+                let c_y = if ((n + 5) << k) - 5 * j < ((2 * n + 3) << k) / 2 {
+                    n + 2
+                } else {
+                    n + 1
+                };
+                let c = point((m + 12).to_string(), c_y.to_string());
                 (a, c, m.to_string(), (m as u32, (n + 1) as u32), n)
             } else {
                 let n = cx + 8;
