@@ -136,7 +136,11 @@ fn a_profile_declares_the_latitude() {
     .unwrap();
     let d = load_declared(&file).unwrap();
     assert_eq!(d.conventions.diamond_exit_latitude, Some(true));
-    assert!(d.note().contains("latitude for diamond-exit lines"), "{}", d.note());
+    assert!(
+        d.note().contains("latitude for diamond-exit lines"),
+        "{}",
+        d.note()
+    );
     let profiled = Profiled {
         inner: Box::new(client(&[])),
         rule: d.fill_rule,
@@ -178,16 +182,30 @@ fn the_hello_checks_the_latitude_key() {
     let hello = |conventions: &str| {
         format!(r#"{{"hello": {{"protocol": 2, "conventions": {conventions}}}}}"#)
     };
-    let ok = read_hello(hello(r#"{"diamond_exit": "latitude"}"#).as_bytes(), &s, &plan);
+    let ok = read_hello(
+        hello(r#"{"diamond_exit": "latitude"}"#).as_bytes(),
+        &s,
+        &plan,
+    );
     assert!(ok.is_ok(), "{ok:?}");
-    let word = read_hello(hello(r#"{"diamond_exit": "latitud"}"#).as_bytes(), &s, &plan)
-        .unwrap_err();
+    let word = read_hello(
+        hello(r#"{"diamond_exit": "latitud"}"#).as_bytes(),
+        &s,
+        &plan,
+    )
+    .unwrap_err();
     assert!(
-        word.contains("$.hello.conventions.diamond_exit is \"latitud\"; did you mean \"latitude\"?"),
+        word.contains(
+            "$.hello.conventions.diamond_exit is \"latitud\"; did you mean \"latitude\"?"
+        ),
         "{word}"
     );
-    let key = read_hello(hello(r#"{"diamond_exits": "latitude"}"#).as_bytes(), &s, &plan)
-        .unwrap_err();
+    let key = read_hello(
+        hello(r#"{"diamond_exits": "latitude"}"#).as_bytes(),
+        &s,
+        &plan,
+    )
+    .unwrap_err();
     assert!(
         key.contains("$.hello.conventions.diamond_exits: unknown key"),
         "{key}"

@@ -292,7 +292,12 @@ fn alpha_over_256_passes_as_declared_and_is_caught_read_as_unorm() {
     // 1: caught wherever a primitive covers a whole pixel, on piglit's
     // rule per primitive, and nowhere else (its fractions lie within
     // 1/512 of the exact areas, inside one step of 1/255).
-    assert_eq!(unorm.fail.len(), ALPHA256_AS_UNORM_FAILURES, "{:#?}", unorm.fail);
+    assert_eq!(
+        unorm.fail.len(),
+        ALPHA256_AS_UNORM_FAILURES,
+        "{:#?}",
+        unorm.fail
+    );
     for (id, why) in &unorm.fail {
         assert!(why.contains("not exactly 1 or 0"), "{id}: {why}");
         assert!(!why.contains("more than"), "{id}: {why}");
@@ -327,13 +332,21 @@ const ALPHA256_AS_UNORM_FAILURES: usize = 49;
 #[test]
 fn probe_finds_the_coverage_encoding() {
     let honest = probe_of("foil-alpha256");
-    assert_eq!(honest.sampler, SamplerKind::Area, "{}", honest.sampler_evidence);
+    assert_eq!(
+        honest.sampler,
+        SamplerKind::Area,
+        "{}",
+        honest.sampler_evidence
+    );
     assert_eq!(honest.coverage_encoding, Some("fraction"));
     assert_eq!(honest.coverage_bits, Some(8));
     let words = honest.coverage.clone().unwrap();
     assert!(words.starts_with("8-bit fraction"), "{words}");
     assert!(words.contains("area × 256 capped at 255"), "{words}");
-    assert!(words.contains("measured on two antialiased triangles"), "{words}");
+    assert!(
+        words.contains("measured on two antialiased triangles"),
+        "{words}"
+    );
     assert!(
         honest
             .declared_coverage
@@ -359,19 +372,31 @@ fn probe_finds_the_coverage_encoding() {
     let unorm = probe_of("foil-alpha255");
     assert_eq!(unorm.coverage_encoding, Some("unorm"));
     assert_eq!(unorm.coverage_bits, Some(8));
-    assert!(unorm.coverage.as_deref().unwrap().starts_with("8-bit unorm"));
+    assert!(unorm
+        .coverage
+        .as_deref()
+        .unwrap()
+        .starts_with("8-bit unorm"));
     // A sample method and an unquantized area method have none to declare.
     let production = probe_of("production");
     assert_eq!(production.coverage_encoding, None);
     assert!(
-        production.coverage.as_deref().unwrap().starts_with("a sample method"),
+        production
+            .coverage
+            .as_deref()
+            .unwrap()
+            .starts_with("a sample method"),
         "{:?}",
         production.coverage
     );
     let float = probe_of("area-f32");
     assert_eq!(float.coverage_encoding, None);
     assert!(
-        float.coverage.as_deref().unwrap().starts_with("not quantized"),
+        float
+            .coverage
+            .as_deref()
+            .unwrap()
+            .starts_with("not quantized"),
         "{:?}",
         float.coverage
     );

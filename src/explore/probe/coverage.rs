@@ -193,7 +193,11 @@ pub(super) fn probe_coverage(candidate: &dyn Rasterizer) -> Option<CoverageFindi
         (1u64 << k) - 1,
         if fraction { 1u64 << k } else { (1u64 << k) - 1 },
     );
-    match (fraction, at_top == whole.len() && !whole.is_empty(), at_one == whole.len()) {
+    match (
+        fraction,
+        at_top == whole.len() && !whole.is_empty(),
+        at_one == whole.len(),
+    ) {
         (true, true, _) => finding(
             Some(encoding),
             format!(
@@ -211,9 +215,7 @@ pub(super) fn probe_coverage(candidate: &dyn Rasterizer) -> Option<CoverageFindi
         ),
         _ => finding(
             None,
-            format!(
-                "no encoding SPEC.md §12.9 names: {seen} (measured on {MEASURED_ON})"
-            ),
+            format!("no encoding SPEC.md §12.9 names: {seen} (measured on {MEASURED_ON})"),
             declared,
         ),
     }
@@ -224,7 +226,11 @@ pub(super) fn probe_coverage(candidate: &dyn Rasterizer) -> Option<CoverageFindi
 pub(super) fn against_declared(found: &CoverageFinding) -> Option<String> {
     let declared = found.declared?;
     let measured = found.encoding?;
-    let verdict = if declared == measured { " (agrees)" } else { "" };
+    let verdict = if declared == measured {
+        " (agrees)"
+    } else {
+        ""
+    };
     Some(format!(
         "declares coverage as {}; measured {}{verdict}",
         declared.words(),

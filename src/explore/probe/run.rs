@@ -233,7 +233,9 @@ fn precision(
         (Err(e), _) | (_, Err(e)) => (None, why(e)),
     };
     let edge_words = match (vertex, edges) {
-        ((Ok(vx), Ok(vy)), (Ok(ex), Ok(ey))) if ex >= vx && ey >= vy => "as the vertices".to_owned(),
+        ((Ok(vx), Ok(vy)), (Ok(ex), Ok(ey))) if ex >= vx && ey >= vy => {
+            "as the vertices".to_owned()
+        }
         (_, (Ok(ex), Ok(ey))) => format!(
             "{}, three rows down a slanted edge: stepped coarser than the vertex grid",
             axes_words(*ex, *ey)
