@@ -169,7 +169,8 @@ pub struct Declaration {
     pub pixel_centre: Option<PixelCentre>,
     /// `diamond_exit`: `Some(true)` for `"latitude"` (its diamond-exit
     /// lines keep to the APIs' latitude, SPEC.md §4.2.1,
-    /// [`Rasterizer::diamond_exit_latitude`]), `Some(false)` for `"exact"`.
+    /// [`Rasterizer::diamond_exit_latitude`]), `Some(false)` for
+    /// `"exact-rule"`.
     pub diamond_exit_latitude: Option<bool>,
 }
 
@@ -183,8 +184,10 @@ impl Declaration {
         "diamond_exit",
     ];
 
-    /// The words `diamond_exit` takes.
-    pub const DIAMOND_EXIT: [&'static str; 2] = ["exact", "latitude"];
+    /// The words `diamond_exit` takes (not `"exact"`: a hello's
+    /// descriptions say `"arithmetic": "exact"`, which would then read as a
+    /// `diamond_exit` misplaced).
+    pub const DIAMOND_EXIT: [&'static str; 2] = ["exact-rule", "latitude"];
 
     /// Reads `snapping`, `sample_pattern`, `y`, `pixel_centre` and
     /// `diamond_exit` from an

@@ -513,7 +513,7 @@ mod tests {
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
             vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
-            foil-empty-antialias";
+            foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

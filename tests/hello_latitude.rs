@@ -160,7 +160,7 @@ fn a_profile_declares_the_latitude() {
     .unwrap();
     let e = load_declared(&file).unwrap_err();
     assert!(e.contains("$.conventions.diamond_exit"), "{e}");
-    assert!(e.contains("known: exact, latitude"), "{e}");
+    assert!(e.contains("known: exact-rule, latitude"), "{e}");
     std::fs::write(
         &file,
         r#"{"schema": "rastercheck-profile/1", "rasterizer": "bresenham",
