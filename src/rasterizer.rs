@@ -168,13 +168,30 @@ pub struct Declaration {
     pub sample_pattern: Option<Pattern>,
     pub y: Option<YDirection>,
     pub pixel_centre: Option<PixelCentre>,
+    /// `diamond_exit`: `Some(true)` for `"latitude"` (its diamond-exit
+    /// lines keep to the APIs' latitude, SPEC.md §4.2.1,
+    /// [`Rasterizer::diamond_exit_latitude`]), `Some(false)` for
+    /// `"exact-rule"`.
+    pub diamond_exit_latitude: Option<bool>,
 }
 
 impl Declaration {
     /// The keys this reads, for a reader that checks for unknown ones.
-    pub const KEYS: [&'static str; 4] = ["snapping", "sample_pattern", "y", "pixel_centre"];
+    pub const KEYS: [&'static str; 5] = [
+        "snapping",
+        "sample_pattern",
+        "y",
+        "pixel_centre",
+        "diamond_exit",
+    ];
 
-    /// Reads `snapping`, `sample_pattern`, `y` and `pixel_centre` from an
+    /// The words `diamond_exit` takes (not `"exact"`: a hello's
+    /// descriptions say `"arithmetic": "exact"`, which would then read as a
+    /// `diamond_exit` misplaced).
+    pub const DIAMOND_EXIT: [&'static str; 2] = ["exact-rule", "latitude"];
+
+    /// Reads `snapping`, `sample_pattern`, `y`, `pixel_centre` and
+    /// `diamond_exit` from an
     /// object at JSON path `at`; other keys are left to the caller. A
     /// message names the path of the first bad value.
     pub fn read(
@@ -216,11 +233,14 @@ impl Declaration {
                 PixelCentre::Half
             }
         });
+        let diamond_exit_latitude =
+            word("diamond_exit", &Self::DIAMOND_EXIT)?.map(|w| w == "latitude");
         Ok(Declaration {
             snapping,
             sample_pattern,
             y,
             pixel_centre,
+            diamond_exit_latitude,
         })
     }
 }

@@ -11,8 +11,8 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, DdaF32, DdaF64, EmptyAntialias, FloatF32,
-    FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
+    Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, DdaF32, DdaF64, EmptyAntialias,
+    FloatF32, FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -195,6 +195,15 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-empty-antialias", Kind::Foil, false,
         "an area method answering every antialiased scene with no coverage at all",
         || boxed(EmptyAntialias)),
+    row("foil-alpha256", Kind::Foil, false,
+        "an area method storing area × 256 capped at 255 in a byte, and declaring that encoding",
+        || boxed(Alpha::FRACTION)),
+    row("foil-alpha256-as-unorm", Kind::Foil, false,
+        "the same bytes as foil-alpha256, declared as 8-bit unorm (steps of 1/255)",
+        || boxed(Alpha::FRACTION_AS_UNORM)),
+    row("foil-alpha255", Kind::Foil, false,
+        "an area method storing area × 255 in a byte (8-bit unorm), and declaring it",
+        || boxed(Alpha::UNORM)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -504,7 +513,7 @@ mod tests {
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
             vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
-            foil-empty-antialias";
+            foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

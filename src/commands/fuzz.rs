@@ -205,6 +205,7 @@ fn profiled(
         inner: candidate,
         rule: declared.fill_rule,
         conventions: declared.conventions,
+        coverage: declared.coverage,
     }))
 }
 

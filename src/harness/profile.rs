@@ -32,12 +32,97 @@ pub const SCHEMA: &str = "rastercheck-profile/1";
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Declared {
     pub rasterizer: String,
-    /// A fill rule, or `none` (no tie rule, SPEC.md §3.1.1).
-    pub fill_rule: DeclaredRule,
+    /// A fill rule, or `none` (no tie rule, SPEC.md §3.1.1); `None` for an
+    /// area method's profile that declares its coverage encoding only.
+    pub fill_rule: Option<DeclaredRule>,
     /// Its optional `conventions`: snapping, sample positions, y direction,
     /// pixel centre (SPEC.md §13), declared by hand; `probe` writes none.
     pub conventions: Declaration,
+    /// Its optional `coverage_encoding` and `coverage_bits` (SPEC.md §12.9),
+    /// as `probe` finds them on an area method.
+    pub coverage: Option<CoverageEncoding>,
     pub file: String,
+}
+
+/// How an area method's coverage fractions are encoded (SPEC.md §12.9):
+/// multiples of 1/(2^bits − 1) (`unorm`), or of 1/2^bits capped at
+/// 1 − 1/2^bits (`fraction`: area × 2^bits in a word that saturates).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CoverageEncoding {
+    /// `"fraction"` (else `"unorm"`).
+    pub fraction: bool,
+    pub bits: u32,
+}
+
+impl CoverageEncoding {
+    /// The most bits a profile may declare, as a hello may.
+    pub const MAX_BITS: u32 = 24;
+
+    /// One step of the encoding: 1/2^bits, or 1/(2^bits − 1).
+    pub fn step(&self) -> f64 {
+        let whole = 2f64.powi(self.bits as i32);
+        1.0 / if self.fraction { whole } else { whole - 1.0 }
+    }
+
+    /// The encoding's word, as a hello and a profile write it.
+    pub fn word(&self) -> &'static str {
+        if self.fraction {
+            "fraction"
+        } else {
+            "unorm"
+        }
+    }
+
+    /// "8-bit fraction (steps of 1/256, saturating at 255/256)".
+    pub fn words(&self) -> String {
+        let n = 1u64 << self.bits.min(62);
+        if self.fraction {
+            format!(
+                "{}-bit fraction (steps of 1/{n}, saturating at {}/{n})",
+                self.bits,
+                n - 1
+            )
+        } else {
+            format!("{}-bit unorm (steps of 1/{})", self.bits, n - 1)
+        }
+    }
+
+    /// Reads `coverage_encoding` and `coverage_bits` from a profile's
+    /// top level: both or neither (`coverage_encoding` alone is an error;
+    /// `coverage_bits` alone is `unorm`).
+    fn read(value: &Value, shown: &str) -> Result<Option<CoverageEncoding>, String> {
+        let encoding = match value.get("coverage_encoding") {
+            None | Some(Value::Null) => None,
+            Some(Value::String(w)) if w == "unorm" || w == "fraction" => Some(w == "fraction"),
+            Some(other) => {
+                return Err(format!(
+                    "{shown}: $.coverage_encoding is {other}; known: unorm, fraction"
+                ))
+            }
+        };
+        let bits = match value.get("coverage_bits") {
+            None | Some(Value::Null) => None,
+            Some(v) => match v.as_u64() {
+                Some(b) if (1..=u64::from(Self::MAX_BITS)).contains(&b) => Some(b as u32),
+                _ => {
+                    return Err(format!(
+                        "{shown}: $.coverage_bits is {v}; expected a whole number from 1 to {}",
+                        Self::MAX_BITS
+                    ))
+                }
+            },
+        };
+        match (encoding, bits) {
+            (Some(_), None) => Err(format!(
+                "{shown}: $.coverage_encoding needs $.coverage_bits (the k of the encoding)"
+            )),
+            (fraction, Some(bits)) => Ok(Some(CoverageEncoding {
+                fraction: fraction.unwrap_or(false),
+                bits,
+            })),
+            (None, None) => Ok(None),
+        }
+    }
 }
 
 /// Reads a profile file for `run --profile`.
@@ -60,30 +145,37 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
         .and_then(Value::as_str)
         .ok_or_else(|| format!("{shown}: $.rasterizer: expected a rasterizer name"))?
         .to_owned();
-    let rule = value
-        .get("fill_rule")
-        .and_then(Value::as_str)
-        .ok_or_else(|| {
-            // A probe of a rasterizer that is not point-sampled writes no
-            // rule (`sampler`, optional: absent in older profiles).
+    let coverage = CoverageEncoding::read(&value, &shown)?;
+    // A probe of a rasterizer that is not point-sampled writes no rule
+    // (`sampler`, optional: absent in older profiles); an area method's
+    // profile may then declare its coverage encoding alone.
+    let fill_rule = match value.get("fill_rule").and_then(Value::as_str) {
+        None if coverage.is_some() => None,
+        None => {
             let sampler = match value.get("sampler").and_then(Value::as_str) {
                 Some(s) if s != "point" => {
                     format!(" (its sampler is {s}: not point-sampled, so it has no tie rule)")
                 }
                 _ => String::new(),
             };
-            format!("{shown}: $.fill_rule: the profile declares no fill rule{sampler}")
-        })?;
-    // A probe that found ties going by slope names the nearest rule and
-    // the verdict `inconsistent`: it has no tie rule (SPEC.md §3.1.1).
-    let by_slope = value.get("tie_verdict").and_then(Value::as_str) == Some("inconsistent");
-    let rule = if by_slope { DeclaredRule::NONE } else { rule };
-    let fill_rule = DeclaredRule::from_name(rule).ok_or_else(|| {
-        format!(
-            "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state, nor none ({})",
-            DeclaredRule::NAMES.join(", ")
-        )
-    })?;
+            return Err(format!(
+                "{shown}: $.fill_rule: the profile declares no fill rule{sampler}"
+            ));
+        }
+        Some(rule) => {
+            // A probe that found ties going by slope names the nearest
+            // rule and the verdict `inconsistent`: it has no tie rule
+            // (SPEC.md §3.1.1).
+            let by_slope = value.get("tie_verdict").and_then(Value::as_str) == Some("inconsistent");
+            let rule = if by_slope { DeclaredRule::NONE } else { rule };
+            Some(DeclaredRule::from_name(rule).ok_or_else(|| {
+                format!(
+                    "{shown}: $.fill_rule: {rule:?} is not a fill rule a case can state, nor none ({})",
+                    DeclaredRule::NAMES.join(", ")
+                )
+            })?)
+        }
+    };
     let conventions = match value.get("conventions") {
         None | Some(Value::Null) => Declaration::default(),
         Some(Value::Object(object)) => {
@@ -91,8 +183,12 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
                 .keys()
                 .find(|k| !Declaration::KEYS.contains(&k.as_str()))
             {
+                let hint = match crate::scene::case::closest(key, &Declaration::KEYS) {
+                    Some(meant) => format!("did you mean {meant:?}? "),
+                    None => String::new(),
+                };
                 return Err(format!(
-                    "{shown}: $.conventions.{key}: not a convention a profile declares ({})",
+                    "{shown}: $.conventions.{key}: not a convention a profile declares; {hint}known: {}",
                     Declaration::KEYS.join(", ")
                 ));
             }
@@ -104,6 +200,7 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
         rasterizer,
         fill_rule,
         conventions,
+        coverage,
         file: shown,
     })
 }
@@ -111,7 +208,7 @@ pub fn load_declared(path: &Path) -> Result<Declared, String> {
 impl Declared {
     /// The line `run` prints about the override.
     pub fn note(&self) -> String {
-        if self.fill_rule == DeclaredRule::NoTieRule {
+        if self.fill_rule == Some(DeclaredRule::NoTieRule) {
             return format!(
                 "profile: {} declares no tie rule (from {}): judged exactly off the ties, its tie samples counted apart",
                 self.rasterizer, self.file
@@ -131,14 +228,28 @@ impl Declared {
         if c.pixel_centre == Some(PixelCentre::Integer) {
             more.push("samples at whole coordinates".to_owned());
         }
+        if c.diamond_exit_latitude == Some(true) {
+            more.push("the APIs' latitude for diamond-exit lines".to_owned());
+        }
+        if let Some(coverage) = self.coverage {
+            more.push(format!("coverage as {}", coverage.words()));
+        }
         let more = if more.is_empty() {
             String::new()
         } else {
             format!(" and {}", more.join(", "))
         };
+        let Some(rule) = self.fill_rule else {
+            return format!(
+                "profile: {} is judged under its declared {} (from {})",
+                self.rasterizer,
+                more.trim_start_matches(" and "),
+                self.file
+            );
+        };
         format!(
-            "profile: {} is judged under its declared fill rule {}{more} (from {}) instead of each case's",
-            self.rasterizer, self.fill_rule, self.file
+            "profile: {} is judged under its declared fill rule {rule}{more} (from {}) instead of each case's",
+            self.rasterizer, self.file
         )
     }
 }
@@ -188,10 +299,14 @@ pub fn for_run(
 /// §3.1). `fuzz --profile` searches with it.
 pub struct Profiled {
     pub inner: Box<dyn Rasterizer>,
-    pub rule: DeclaredRule,
+    /// `None`: its own rule (or each case's), as without a profile.
+    pub rule: Option<DeclaredRule>,
     /// The profile's other conventions; each one it leaves out is the
     /// rasterizer's own declaration, if any.
     pub conventions: Declaration,
+    /// The coverage encoding its area answers are judged under, in place
+    /// of the one they carry (SPEC.md §12.9); `None` keeps theirs.
+    pub coverage: Option<CoverageEncoding>,
 }
 
 impl Rasterizer for Profiled {
@@ -205,7 +320,12 @@ impl Rasterizer for Profiled {
         self.inner.is_foil()
     }
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        self.inner.rasterize(scene, plan)
+        let mut frame = self.inner.rasterize(scene, plan)?;
+        if let (Some(c), Some(parts)) = (self.coverage, frame.parts.as_mut()) {
+            parts.step = c.step();
+            parts.saturates = c.fraction;
+        }
+        Ok(frame)
     }
     fn declared(&self) -> Option<String> {
         self.inner.declared()
@@ -217,7 +337,9 @@ impl Rasterizer for Profiled {
         self.inner.conservative()
     }
     fn diamond_exit_latitude(&self) -> bool {
-        self.inner.diamond_exit_latitude()
+        self.conventions
+            .diamond_exit_latitude
+            .unwrap_or_else(|| self.inner.diamond_exit_latitude())
     }
     fn fixed_line_parameter(&self, rule: LineRule) -> Option<LineT> {
         self.inner.fixed_line_parameter(rule)
@@ -232,10 +354,16 @@ impl Rasterizer for Profiled {
         self.inner.screen_viewport(scene, plan)
     }
     fn fixed_fill_rule(&self) -> Option<FillRule> {
-        self.rule.fill_rule()
+        match self.rule {
+            Some(rule) => rule.fill_rule(),
+            None => self.inner.fixed_fill_rule(),
+        }
     }
     fn no_tie_rule(&self) -> bool {
-        self.rule == DeclaredRule::NoTieRule
+        match self.rule {
+            Some(rule) => rule == DeclaredRule::NoTieRule,
+            None => self.inner.no_tie_rule(),
+        }
     }
     fn fixed_subpixel_bits(&self) -> Option<u32> {
         match self.conventions.snapping {
@@ -684,6 +812,7 @@ pub fn apply(
                     inner: candidate,
                     rule: d.fill_rule,
                     conventions: d.conventions,
+                    coverage: d.coverage,
                 }) as Box<dyn Rasterizer>,
                 None => candidate,
             },

@@ -61,17 +61,24 @@ pub struct LatitudeMetrics {
     pub underdrawn: u64,
 }
 
+/// `n` and the noun in the number it takes: "1 fragment", "2 fragments".
+fn counted(n: u64, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
 impl LatitudeMetrics {
     /// The console's and the case page's line.
     pub fn line(&self) -> String {
         let mut line = format!(
-            "judged under the latitude for diamond-exit lines (Vulkan Bresenham lines, GL 4.6 §14.5.1): {} lines, {} fragments moved by one unit, {} lines one fragment off",
-            self.lines, self.moved, self.count_changed
+            "judged under the latitude for diamond-exit lines (Vulkan Bresenham lines, GL 4.6 §14.5.1): {}, {} moved by one unit, {} one fragment off",
+            counted(self.lines, "line", "lines"),
+            counted(self.moved, "fragment", "fragments"),
+            counted(self.count_changed, "line", "lines")
         );
         if self.unseen > 0 {
             line.push_str(&format!(
-                ", {} places hidden by later primitives",
-                self.unseen
+                ", {} hidden by later primitives",
+                counted(self.unseen, "place", "places")
             ));
         }
         line

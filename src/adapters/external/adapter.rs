@@ -171,6 +171,10 @@ impl Rasterizer for External {
         self.answers().declaration.pixel_centre
     }
 
+    fn diamond_exit_latitude(&self) -> bool {
+        self.answers().declaration.diamond_exit_latitude == Some(true)
+    }
+
     fn declared(&self) -> Option<String> {
         self.declared
             .lock()
@@ -212,6 +216,6 @@ impl Rasterizer for External {
             Some(pool) => return self.persistent(pool, scene, plan, timeout, max_output, false),
         };
         let answers = self.answers();
-        frame_from_line(response.as_bytes(), scene, plan, answers)
+        Ok(frame_from_line(response.as_bytes(), scene, plan, answers)?)
     }
 }

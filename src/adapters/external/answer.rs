@@ -34,9 +34,33 @@ use super::values::{pixel_of, stored_depth, whole_below, Scalar, Text, NUMBER_TO
 /// reports show beside its verdict.
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
 
-/// How the failure of an answer that is the program's own `error` begins:
-/// the program is in step, and said so.
-pub(super) const PROGRAM_ERROR: &str = "the program reported an error: ";
+/// How the failure of an answer that is the program's own `error` begins.
+const PROGRAM_ERROR: &str = "the program reported an error: ";
+
+/// Why a response line gave no frame, by whose doing: the program's own
+/// answer (`unsupported`, `error`: it is in step, and said so), or a line
+/// that does not fit its request (under protocol v1 it may be another
+/// request's answer).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AnswerError {
+    /// The program answered `unsupported`, with its reason.
+    Unsupported(String),
+    /// The program answered `error`, with its text.
+    Program(String),
+    /// The line is not an answer to this request: not JSON, or not shaped
+    /// as its request asks (SPEC.md §12.2).
+    Unfit(String),
+}
+
+impl From<AnswerError> for RasterError {
+    fn from(e: AnswerError) -> RasterError {
+        match e {
+            AnswerError::Unsupported(why) => RasterError::Unsupported(why),
+            AnswerError::Program(why) => RasterError::Failed(format!("{PROGRAM_ERROR}{why}")),
+            AnswerError::Unfit(why) => RasterError::Failed(why),
+        }
+    }
+}
 
 /// Reads one response line into a frame, checking it against the request
 /// (SPEC.md §12.2), for a program whose hello declared how its answers are
@@ -46,13 +70,13 @@ pub fn frame_from_line(
     scene: &Scene,
     plan: &Plan,
     answers: Answers,
-) -> Result<Frame, RasterError> {
-    let bad = |why: String| RasterError::Failed(format!("bad response: {why}"));
+) -> Result<Frame, AnswerError> {
+    let bad = |why: String| AnswerError::Unfit(format!("bad response: {why}"));
     let mut reader = Reader::new(scene, plan, answers);
     let mut de = serde_json::Deserializer::from_slice(bytes);
     let parsed = (&mut reader).deserialize(&mut de).and_then(|()| de.end());
     if let Err(e) = parsed {
-        return Err(RasterError::Failed(not_json(bytes, &e)));
+        return Err(AnswerError::Unfit(not_json(bytes, &e)));
     }
     if !reader.object {
         return Err(bad("not a JSON object".to_owned()));
@@ -66,10 +90,10 @@ pub fn frame_from_line(
         }
     }
     if let Some(why) = reader.unsupported {
-        return Err(RasterError::Unsupported(why));
+        return Err(AnswerError::Unsupported(why));
     }
     if let Some(why) = reader.error {
-        return Err(RasterError::Failed(format!("{PROGRAM_ERROR}{why}")));
+        return Err(AnswerError::Program(why));
     }
     match (reader.primitives, reader.exr) {
         (Some(_), None) => {
@@ -130,7 +154,7 @@ pub fn frame_from_answer(
     answers: Answers,
 ) -> Result<Frame, RasterError> {
     let line = serde_json::to_vec(response).expect("a JSON value serializes");
-    frame_from_line(&line, scene, plan, answers)
+    frame_from_line(&line, scene, plan, answers).map_err(RasterError::from)
 }
 
 /// What a response said, read key by key.
@@ -863,5 +887,33 @@ mod tests {
             let why = read(&bad, &scene, &plan).unwrap_err();
             assert!(why.contains(says), "{why}");
         }
+    }
+
+    /// The program's own answers and a line that fits no request are told
+    /// apart by kind, not by their text (`pool.rs` retires a v1 process
+    /// for the second only).
+    #[test]
+    fn the_programs_own_error_is_a_kind_of_its_own() {
+        let scene = scene();
+        let plan = Plan::for_scene(&scene);
+        let kind = |line: &str| frame_from_line(line.as_bytes(), &scene, &plan, Answers::default());
+        assert_eq!(
+            kind(r#"{"error": "bad response: out of memory"}"#).unwrap_err(),
+            AnswerError::Program("bad response: out of memory".to_owned())
+        );
+        assert_eq!(
+            kind(r#"{"unsupported": "no motion"}"#).unwrap_err(),
+            AnswerError::Unsupported("no motion".to_owned())
+        );
+        assert!(matches!(kind("drawing…"), Err(AnswerError::Unfit(_))));
+        assert!(matches!(
+            kind(r#"{"primitives": []}"#),
+            Err(AnswerError::Unfit(_))
+        ));
+        let failed = RasterError::from(AnswerError::Program("x".to_owned()));
+        assert_eq!(
+            failed.to_string(),
+            RasterError::Failed(format!("{PROGRAM_ERROR}x")).to_string()
+        );
     }
 }

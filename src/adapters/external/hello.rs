@@ -212,6 +212,12 @@ const KEYS: &[(&str, &str, Kind)] = &[
         "coverage_encoding",
         Kind::Word(&["unorm", "fraction"]),
     ),
+    // Diamond-exit lines drawn with the APIs' latitude (SPEC.md §4.2.1).
+    (
+        "conventions",
+        "diamond_exit",
+        Kind::Word(&Declaration::DIAMOND_EXIT),
+    ),
 ];
 
 /// The objects whose other keys are descriptions for people rather than

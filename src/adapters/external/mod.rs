@@ -33,7 +33,7 @@ mod values;
 mod worker;
 
 pub use adapter::External;
-pub use answer::{frame_from_answer, frame_from_line, frame_from_response};
+pub use answer::{frame_from_answer, frame_from_line, frame_from_response, AnswerError};
 pub use hello::Answers;
 pub use limits::{
     check_environment, DEFAULT_MAX_OUTPUT, DEFAULT_TIMEOUT, MAX_OUTPUT_ENV, TIMEOUT_ENV,

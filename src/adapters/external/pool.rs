@@ -12,7 +12,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use super::adapter::External;
-use super::answer::{frame_from_line, PROGRAM_ERROR};
+use super::answer::{frame_from_line, AnswerError};
 use super::envelope::check_json;
 use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
@@ -124,7 +124,12 @@ impl External {
             return match self
                 .persistent_v2(pool, worker, scene, plan, deadline, timeout, max_output)
             {
-                Ok(result) => frame_from_line(result?.as_bytes(), scene, plan, self.answers()),
+                Ok(result) => Ok(frame_from_line(
+                    result?.as_bytes(),
+                    scene,
+                    plan,
+                    self.answers(),
+                )?),
                 // The process was stuck on an earlier case, or vanished or
                 // flooded before answering this one, and is gone: this
                 // case is sent once more, to a fresh one.
@@ -211,7 +216,7 @@ impl External {
         };
         match result {
             Ok(line) => match frame_from_line(line.as_bytes(), scene, plan, self.answers()) {
-                Err(RasterError::Failed(why)) if !why.starts_with(PROGRAM_ERROR) => {
+                Err(AnswerError::Unfit(why)) => {
                     // An answer that does not fit its request may be
                     // another request's: the process is never reused.
                     worker.end(true);
@@ -226,7 +231,7 @@ impl External {
                 }
                 judged => {
                     pool.lock().unwrap_or_else(|e| e.into_inner()).push(worker);
-                    judged
+                    Ok(judged?)
                 }
             },
             Err((why, kill_now)) => {

@@ -15,7 +15,7 @@ use crate::scene::Scene;
 /// reported error, a malformed answer). The `protocol_response` fuzz target
 /// drives it.
 pub fn read_answer(line: &[u8], scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-    frame_from_line(line, scene, plan, Answers::default())
+    Ok(frame_from_line(line, scene, plan, Answers::default())?)
 }
 
 /// Reads a line as a hello: `Ok(None)` when it is not one, else the reason

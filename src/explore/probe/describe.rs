@@ -248,6 +248,12 @@ impl Profile {
         s += &format!("  edge stepping:      {}\n", self.edge_precision);
         s += &format!("  truncation:         {}\n", self.truncation);
         s += &format!("  sample position:    {}\n", self.sample_position);
+        if let Some(coverage) = &self.coverage {
+            s += &format!("  coverage encoding:  {coverage}\n");
+        }
+        if let Some(declared) = &self.declared_coverage {
+            s += &format!("                      {declared}\n");
+        }
         if let Some(clip) = &self.clip {
             s += &format!(
                 "  clipping:           {} ({} scenes)\n",

@@ -274,12 +274,7 @@ pub(super) fn probe_axis(
     o: Eighths,
 ) -> Result<u32, String> {
     let (before, after, steps) = match along {
-        Along::Vertex if transpose => {
-            return Err(
-                "not measured along y: a row walker steps that edge before the sample".to_owned(),
-            )
-        }
-        Along::Vertex => vertex_scenes(),
+        Along::Vertex => vertex_scenes(transpose),
         Along::Edge => precision_scenes(transpose),
     };
     let f0 = draw_for(candidate, &before, o).map_err(|e| e.to_string())?;

@@ -12,13 +12,15 @@
 //! tie-rule decision alone (in the words of `diagnosis.rs`); `scenes.rs`
 //! builds the probe scenes, `sampler.rs` and `infer.rs` decide what each
 //! probe found (`outline.rs` tells outline over fill from any-coverage,
-//! `truncation.rs` finds vertices truncated to whole pixels), `clip.rs` and `points.rs` probe clip-space conventions
+//! `truncation.rs` finds vertices truncated to whole pixels, `coverage.rs`
+//! an area method's coverage encoding), `clip.rs` and `points.rs` probe clip-space conventions
 //! (through `convention.rs`), `describe.rs` puts the profile into words.
 //! Reading a profile for `run --profile` is the harness's
 //! (`harness/profile.rs`).
 
 mod clip;
 mod convention;
+mod coverage;
 mod describe;
 mod diagnose;
 pub mod diagnosis;

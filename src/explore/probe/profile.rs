@@ -49,7 +49,8 @@ pub struct Profile {
     pub y_down: Option<bool>,
     /// Subpixel bits the rasterizer keeps for its vertices (`vertex_precision`;
     /// 0 when it truncates to whole pixels); `null` when it keeps all the
-    /// case states (`exact`) or when it could not be measured.
+    /// case states (`exact`), when its x and y grids differ (then
+    /// `vertex_precision` gives both), or when it could not be measured.
     pub subpixel_bits: Option<u32>,
     /// "8 bits", "exact", or why it is unknown.
     pub subpixel: String,
@@ -57,9 +58,8 @@ pub struct Profile {
     /// the vertex that moves: the vertex grid and the edge stepping
     /// together.
     pub subpixel_resolved: Resolved,
-    /// Bits resolved along x on the first sample row below the vertex that
-    /// moves, where no edge has been stepped: the vertex grid (`y` is not
-    /// measured so, and `null`).
+    /// Bits resolved along x and along y on the first sample row below
+    /// the edge's top, where no edge has been stepped: the vertex grid.
     pub vertex_resolved: Resolved,
     /// The vertex grid in words: "8 bits", "exact", "0 bits: truncated to
     /// whole pixels", or why it was not measured.
@@ -91,6 +91,20 @@ pub struct Profile {
     /// when it draws them.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub points: Option<PointProbe>,
+    /// An area method's coverage encoding (SPEC.md §12.9), as `run
+    /// --profile` reads it: `"unorm"` or `"fraction"`, with
+    /// `coverage_bits`; `null` when none was measured (a sample method, a
+    /// method that does not quantize, one that does not antialias).
+    pub coverage_encoding: Option<&'static str>,
+    pub coverage_bits: Option<u32>,
+    /// The coverage finding in words, with what it was measured on;
+    /// absent for a rasterizer that does not antialias.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coverage: Option<String>,
+    /// What its frames declare about their coverage encoding against what
+    /// was measured, when they declare one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub declared_coverage: Option<String>,
     /// Departures from D3D11 and Vulkan, as sentences.
     pub departures: Vec<String>,
 }

@@ -37,11 +37,14 @@
 //!   four distinct grid points 2^-b ≥ 2·2^-k apart cannot lie within 2^-b
 //!   of them, so at least one step is drawn twice the same and its sample
 //!   does not change. The finest k at which every step changes, for every
-//!   k up to it, is therefore exactly the bits kept. The sweep is made
-//!   along x and along y; one that rounds edge positions between vertices
-//!   (tiny-skia rounds each edge's x on its first scanline to 1/64)
-//!   resolves fewer bits along that axis, never more than its grid, so the
-//!   grid is the finer of the two (both are reported). Scenes state 16
+//!   k up to it, is therefore exactly the bits kept. Two sweeps are made
+//!   along x and two along y: the vertex cells put the sample on the first
+//!   sample row below the edge's top, where no edge is stepped (the vertex
+//!   grid, per axis), the edge cells three rows down a slanted edge (the
+//!   grid and the edge stepping together); one that rounds edge positions
+//!   between vertices (tiny-skia rounds each edge's x on its first
+//!   scanline to 1/64) resolves fewer bits in the edge cells, never more
+//!   than its grid, and is reported apart. Scenes state 16
 //!   subpixel bits, the most a case can: "exact" means the rasterizer
 //!   keeps all of them.
 //! - **Sample position.** 64 tiny triangles (3/32 px) around the offsets
@@ -52,6 +55,9 @@
 //!   read against the reference's centre samples, not as a wrong rule.
 //! - **Interpolation.** A linear and a perspective mesh (w from 0.1 to 10)
 //!   with depth and two attributes, measured as in `run` (SPEC §6.3).
+//! - **Coverage encoding** (`coverage.rs`), for one that antialiases: an
+//!   area method's fractions read as multiples of 1/(2^k − 1) or of 1/2^k,
+//!   its whole pixels for saturation (SPEC §12.9).
 //! - **Clipping** (`clip.rs`), for a rasterizer that takes clip space:
 //!   which `clip_xy` and `clip_z` it follows, or whether it follows each
 //!   case's (SPEC §16.9).
@@ -68,6 +74,7 @@
 //!
 
 use super::clip::probe_clip;
+use super::coverage::{against_declared as coverage_against_declared, probe_coverage};
 use super::describe::departures;
 use super::diagnose::{diagnose_with_evidence, not_measured};
 use super::evidence::{Resolved, PROBE_BITS};
@@ -93,17 +100,21 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
             (Err(why.clone()), Err(why))
         }
     };
-    let vertex_x = match (not_measured(&d), d.offset) {
-        (None, Some(o)) => probe_axis(candidate, Along::Vertex, false, o),
-        (why, _) => Err(why.unwrap_or_default()),
-    };
+    let (vertex_x, vertex_y) = measured(Along::Vertex);
     let (x_bits, y_bits) = measured(Along::Edge);
-    let precision = precision(truncates == Some(true), &vertex_x, (&x_bits, &y_bits));
+    let precision = precision(
+        truncates == Some(true),
+        (&vertex_x, &vertex_y),
+        (&x_bits, &y_bits),
+    );
     let (subpixel_bits, subpixel) = (precision.bits, precision.words.clone());
     let declared_snapping = candidate
         .fixed_snapping()
         .map(|declared| against_declared(declared, subpixel_bits, &subpixel));
     let interpolation = probe_interpolation(candidate);
+    let coverage = probe_coverage(candidate);
+    let declared_coverage = coverage.as_ref().and_then(coverage_against_declared);
+    let encoding = coverage.as_ref().and_then(|c| c.encoding);
     let mut profile = Profile {
         schema: SCHEMA,
         tool: crate::report::json::Tool {
@@ -137,7 +148,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         },
         vertex_resolved: Resolved {
             x: vertex_x.ok(),
-            y: None,
+            y: vertex_y.ok(),
         },
         vertex_precision: precision.vertex,
         edge_precision: precision.edges,
@@ -155,17 +166,26 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         interpolation,
         clip: probe_clip(candidate),
         points: probe_points(candidate),
+        coverage_encoding: encoding.map(|e| e.word()),
+        coverage_bits: encoding.map(|e| e.bits),
+        coverage: coverage.map(|c| c.words),
+        declared_coverage: declared_coverage.clone(),
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);
     if let Some(words) = declared_snapping.filter(|w| !w.ends_with("(agrees)")) {
         profile.departures.push(words);
     }
+    if let Some(words) = declared_coverage.filter(|w| !w.ends_with("(agrees)")) {
+        profile.departures.push(format!(
+            "It {words}: judged as declared, its answers are read wrongly (SPEC.md §12.9); declare the measured encoding"
+        ));
+    }
     Ok(profile)
 }
 
 /// What the precision probes draw, in the words a profile gives.
-pub const PRECISION_MEASURED_ON: &str = "48 cells, a vertex moved by 2^-k (k = 1..16, three steps each): the vertex grid along x, with the sample on the first sample row below the vertex (no edge stepped); the edges along x and y, with the sample three rows down a slanted edge";
+pub const PRECISION_MEASURED_ON: &str = "48 cells, a vertex moved by 2^-k (k = 1..16, three steps each): the vertex grid along x and along y, with the sample on the first sample row below the edge's top (no edge stepped); the edges along x and y, with the sample three rows down a slanted edge";
 
 /// The precision findings: the vertex grid (bits, `None` when exact or
 /// unmeasured), the profile's `subpixel` words, and the vertex and edge
@@ -187,14 +207,15 @@ fn axes_words(x: u32, y: u32) -> String {
     }
 }
 
-/// The vertex grid is what the vertex cells resolve along x (measured
-/// there only, and said so); edges are reported apart when they resolve
-/// fewer bits three rows on than the vertex grid, along either axis;
-/// truncation to whole pixels is 0 bits, found on its own scene, whether or
-/// not the cells could be read.
+/// The vertex grid is what the vertex cells resolve along x and along y
+/// (one number when they agree; "x 8, y 6 bits" and no single `bits` when
+/// they do not, since SPEC.md §3.2's snapping is one grid); edges are
+/// reported apart when they resolve fewer bits three rows on than the
+/// vertex grid along the same axis; truncation to whole pixels is 0 bits,
+/// found on its own scene, whether or not the cells could be read.
 fn precision(
     truncates: bool,
-    vertex: &Result<u32, String>,
+    vertex: (&Result<u32, String>, &Result<u32, String>),
     edges: (&Result<u32, String>, &Result<u32, String>),
 ) -> Precision {
     let why = |e: &String| {
@@ -205,11 +226,16 @@ fn precision(
         }
     };
     let (bits, vertex_words) = match vertex {
-        Ok(x) => ((*x < PROBE_BITS).then_some(*x), axes_words(*x, *x)),
-        Err(e) => (None, why(e)),
+        (Ok(x), Ok(y)) => (
+            (x == y && *x < PROBE_BITS).then_some(*x),
+            axes_words(*x, *y),
+        ),
+        (Err(e), _) | (_, Err(e)) => (None, why(e)),
     };
     let edge_words = match (vertex, edges) {
-        (Ok(v), (Ok(ex), Ok(ey))) if ex >= v && ey >= v => "as the vertices".to_owned(),
+        ((Ok(vx), Ok(vy)), (Ok(ex), Ok(ey))) if ex >= vx && ey >= vy => {
+            "as the vertices".to_owned()
+        }
         (_, (Ok(ex), Ok(ey))) => format!(
             "{}, three rows down a slanted edge: stepped coarser than the vertex grid",
             axes_words(*ex, *ey)

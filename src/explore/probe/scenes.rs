@@ -258,47 +258,86 @@ pub(super) fn precision_scenes(transpose: bool) -> (Scene, Scene, Vec<Step>) {
 }
 
 /// The vertex cells: as [`precision_scenes`], but with the sample on the
-/// first sample row below the moving vertex, so that no edge is stepped
-/// between the vertex and the sample. For k = 1..16 and j = 0, 1, 2, the
-/// moving vertex B = (x, s − ½) is the top of an edge to A = (n − 7j·2^-k,
-/// s + 7/2), and the sample is (n + ½, s): the edge meets it, ⅛ of the way
-/// down, when x = τ_j = n + 4/7 + j·2^-k, never a dyadic number and
-/// strictly inside step j of the 2^-k grid (τ_j·2^k = n·2^k + 4·2^k/7 + j).
-/// The third vertex C = (cx + 15, s) meets the sample's row far to the
-/// right. A rasterizer that finds an edge's x on its first row from its
-/// snapped vertices exactly reads its vertex grid here, however coarsely it
-/// steps the edge down the rows after. Along x only: transposed, the edge
-/// would run across rows from its other end, and a row walker would step
-/// it before the sample (the y sweep of [`precision_scenes`] bounds the
-/// y grid from below).
-pub(super) fn vertex_scenes() -> (Scene, Scene, Vec<Step>) {
+/// first sample row below the edge's top vertex, so that no edge is
+/// stepped before the sample. For k = 1..16 and j = 0, 1, 2:
+///
+/// - **along x**: the moving vertex B = (x, s − ½) is the top of an edge
+///   to A = (n − 7j·2^-k, s + 7/2), and the sample is (n + ½, s): the edge
+///   meets it, ⅛ of the way down, when x = τ_j = n + 4/7 + j·2^-k, never a
+///   dyadic number and strictly inside step j of the 2^-k grid
+///   (τ_j·2^k = n·2^k + 4·2^k/7 + j). The third vertex C = (cx + 15, s)
+///   meets the sample's row far to the right.
+/// - **along y** (`along_y`): B = (m, y) moves down, the edge runs to
+///   A = (m + 3, n + 5 − 5j·2^-k), and the sample is (m + ½, n + 3/2): the
+///   edge meets it, ⅙ of the way along, when y = τ_j = n + 4/5 + j·2^-k
+///   (⅚·τ_j + ⅙·(n + 5 − 5j·2^-k) = n + 3/2), never dyadic and strictly
+///   inside step j. C = (m + 12, n + 1), or (m + 12, n + 2) where A lies
+///   above the sample's row (k = 1, j = 2), so that the sample lies on A's
+///   side of CB whatever B's position. For k ≥ 2 every position of B
+///   lies in (n + ½, n + 3/2]: B is the edge's top and the sample's row the
+///   first at or below it, so a row walker finds the edge's x there from
+///   B's y with no row stepped, and B's y grid decides. (For k = 1, B at
+///   n + ½ and, for j = 2, A at n put one row before the sample's.) The
+///   crossing moves about 0.6 times as far in x as B in y, so a walker that
+///   rounds that x (to 1/64, say) resolves fewer bits of y than its grid
+///   holds: a lower bound there.
+///
+/// A rasterizer that finds an edge's x on its first row from its snapped
+/// vertices exactly reads its vertex grid here, however coarsely it steps
+/// the edge down the rows after.
+pub(super) fn vertex_scenes(along_y: bool) -> (Scene, Scene, Vec<Step>) {
     let (cols, cell_w, cell_h) = (8u32, 16u32, 8u32);
     let mut before = Vec::new();
     let mut after = Vec::new();
     let mut steps = Vec::new();
     let mut cell = 0u32;
     let fraction = |num: i64, k: u32| format!("{num}/{}", 1i64 << k);
+    let point = |x: String, y: String| json!([x, y]);
     for k in 1..=PROBE_BITS {
         for j in 0..3i64 {
             let (cx, cy) = ((cell % cols * cell_w) as i64, (cell / cols * cell_h) as i64);
             cell += 1;
-            let n = cx + 8;
-            // The sample's row centre s = cy + 5/2.
-            let point = |x: String, y: String| json!([x, y]);
-            let a = point(fraction((n << k) - 7 * j, k), format!("{}", cy + 6));
-            let c = point((cx + 15).to_string(), format!("{}.5", cy + 2));
-            let by = (cy + 2).to_string();
-            // p_0 = ⌊τ_0·2^k⌋·2^-k, τ_0 = n + 4/7.
-            let p0 = (n << k) + ((4i64 << k) / 7) + j;
-            let t0 =
-                json!({"triangle": [point(fraction(p0, k), by.clone()), a.clone(), c.clone()]});
-            let t1 = json!({"triangle": [point(fraction(p0 + 1, k), by), a, c]});
+            // B's coordinate that moves, before and after: p_0 + j and
+            // p_0 + j + 1 steps, p_0 = ⌊τ_0·2^k⌋, τ_0 = n + 4/7 along x and
+            // n + 4/5 along y (n its whole part).
+            let (a, c, fixed, sample, n) = if along_y {
+                let (m, n) = (cx + 2, cy);
+                let a = point((m + 3).to_string(), fraction(((n + 5) << k) - 5 * j, k));
+                // C above the sample's row, or below it where A is above
+                // it (k = 1, j = 2): the sample lies on A's side of CB.
+                let c_y = if ((n + 5) << k) - 5 * j < ((2 * n + 3) << k) / 2 {
+                    n + 2
+                } else {
+                    n + 1
+                };
+                let c = point((m + 12).to_string(), c_y.to_string());
+                (a, c, m.to_string(), (m as u32, (n + 1) as u32), n)
+            } else {
+                let n = cx + 8;
+                // The sample's row centre s = cy + 5/2.
+                let a = point(fraction((n << k) - 7 * j, k), format!("{}", cy + 6));
+                let c = point((cx + 15).to_string(), format!("{}.5", cy + 2));
+                (a, c, (cy + 2).to_string(), (n as u32, (cy + 2) as u32), n)
+            };
+            // B at its coordinate that moves.
+            let b = |moving: String| {
+                if along_y {
+                    point(fixed.clone(), moving)
+                } else {
+                    point(moving, fixed.clone())
+                }
+            };
+            let below = if along_y {
+                (4i64 << k) / 5
+            } else {
+                (4i64 << k) / 7
+            };
+            let p0 = (n << k) + below + j;
+            let t0 = json!({"triangle": [b(fraction(p0, k)), a.clone(), c.clone()]});
+            let t1 = json!({"triangle": [b(fraction(p0 + 1, k)), a, c]});
             before.push(t0);
             after.push(t1);
-            steps.push(Step {
-                k,
-                sample: (n as u32, (cy + 2) as u32),
-            });
+            steps.push(Step { k, sample });
         }
     }
     let (w, h) = (cols * cell_w, cell.div_ceil(cols) * cell_h);

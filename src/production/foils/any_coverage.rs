@@ -19,89 +19,73 @@
 
 use dashu_ratio::RBig;
 
+use super::declare::coverage_foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{Number, Primitive, Scene};
 
-/// The any-coverage foil.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct AnyCoverage;
+coverage_foil!(
+    /// The any-coverage foil.
+    AnyCoverage,
+    "foil-any-coverage",
+    draw_touched
+);
 
 /// Fraction bits of the integer coordinates: the most a case can snap to.
 const FRAC: u32 = 16;
 
-impl Rasterizer for AnyCoverage {
-    fn name(&self) -> &str {
-        "foil-any-coverage"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: true,
-            ..Capabilities::none()
+/// Every pixel each triangle touches, counted once per triangle.
+fn draw_touched(scene: &Scene, _plan: &Plan) -> Result<Frame, RasterError> {
+    let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let mut frame = Frame::new(w, h, false, 0);
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        let Primitive::Triangle(t) = primitive else {
+            return unsupported("foil-any-coverage draws triangles only");
+        };
+        let mut p = [[0i128; 2]; 3];
+        for (q, v) in p.iter_mut().zip(&t.vertices) {
+            for (c, n) in q.iter_mut().zip([&v.x, &v.y]) {
+                *c = fixed(n, scene.rules.subpixel_bits).ok_or_else(|| {
+                    RasterError::Unsupported(format!(
+                        "foil-any-coverage holds coordinates in units of 2^-{FRAC} px; {n} is not one or is too large"
+                    ))
+                })?;
+            }
         }
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
-        if plan.interpolates() {
-            return unsupported("foil-any-coverage draws coverage only, not depth or attributes");
+        let area = cross(p[0], p[1], p[2]);
+        if area == 0 || scene.rules.cull.discards(area.cmp(&0)) {
+            continue;
         }
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let mut frame = Frame::new(w, h, false, 0);
-        for (index, primitive) in scene.primitives.iter().enumerate() {
-            let Primitive::Triangle(t) = primitive else {
-                return unsupported("foil-any-coverage draws triangles only");
-            };
-            let mut p = [[0i128; 2]; 3];
-            for (q, v) in p.iter_mut().zip(&t.vertices) {
-                for (c, n) in q.iter_mut().zip([&v.x, &v.y]) {
-                    *c = fixed(n, scene.rules.subpixel_bits).ok_or_else(|| {
-                        RasterError::Unsupported(format!(
-                            "foil-any-coverage holds coordinates in units of 2^-{FRAC} px; {n} is not one or is too large"
-                        ))
-                    })?;
-                }
-            }
-            let area = cross(p[0], p[1], p[2]);
-            if area == 0 || scene.rules.cull.discards(area.cmp(&0)) {
-                continue;
-            }
-            // Counter-clockwise in y-down terms, so that inside is positive.
-            if area < 0 {
-                p.swap(1, 2);
-            }
-            let one = 1i128 << FRAC;
-            let lo = |k: usize| p.iter().map(|q| q[k]).min().unwrap_or(0);
-            let hi = |k: usize| p.iter().map(|q| q[k]).max().unwrap_or(0);
-            // Pixels whose open square meets the open bounding box.
-            let range = |k: usize, size: u32| {
-                let first = (lo(k) >> FRAC).max(0);
-                let last = ((hi(k) + one - 1) >> FRAC).min(i128::from(size));
-                first..last
-            };
-            for y in range(1, h) {
-                for x in range(0, w) {
-                    let corners = [(0, 0), (1, 0), (0, 1), (1, 1)]
-                        .map(|(dx, dy)| [(x + dx) * one, (y + dy) * one]);
-                    let touches =
-                        (0..3).all(|e| corners.iter().any(|&c| cross(p[e], p[(e + 1) % 3], c) > 0));
-                    if touches {
-                        let i = frame.index(x as u32, y as u32);
-                        frame.coverage[i] = frame.coverage[i].saturating_add(1);
-                        frame.last[i] = index as u32 + 1;
-                    }
+        // Counter-clockwise in y-down terms, so that inside is positive.
+        if area < 0 {
+            p.swap(1, 2);
+        }
+        let one = 1i128 << FRAC;
+        let lo = |k: usize| p.iter().map(|q| q[k]).min().unwrap_or(0);
+        let hi = |k: usize| p.iter().map(|q| q[k]).max().unwrap_or(0);
+        // Pixels whose open square meets the open bounding box.
+        let range = |k: usize, size: u32| {
+            let first = (lo(k) >> FRAC).max(0);
+            let last = ((hi(k) + one - 1) >> FRAC).min(i128::from(size));
+            first..last
+        };
+        for y in range(1, h) {
+            for x in range(0, w) {
+                let corners = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                    .map(|(dx, dy)| [(x + dx) * one, (y + dy) * one]);
+                let touches =
+                    (0..3).all(|e| corners.iter().any(|&c| cross(p[e], p[(e + 1) % 3], c) > 0));
+                if touches {
+                    let i = frame.index(x as u32, y as u32);
+                    frame.coverage[i] = frame.coverage[i].saturating_add(1);
+                    frame.last[i] = index as u32 + 1;
                 }
             }
         }
-        Ok(frame)
     }
+    Ok(frame)
 }
 
 /// (b − a) × (c − a): positive when c lies left of a→b in y-down terms

@@ -16,14 +16,18 @@
 use dashu_int::IBig;
 use dashu_ratio::RBig;
 
+use super::declare::coverage_foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::{FillRule, Number, Primitive, Scene};
 
-/// The coarse edge walker.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct CoarseEdges;
+coverage_foil!(
+    /// The coarse edge walker.
+    CoarseEdges,
+    "foil-coarse-edges",
+    walk_coarsely
+);
 
 /// The vertex grid: 8 subpixel bits, or the case's when it states fewer.
 pub const VERTEX_BITS: u32 = 8;
@@ -31,83 +35,63 @@ pub const VERTEX_BITS: u32 = 8;
 /// Fraction bits of an edge's per-row increment.
 pub const STEP_BITS: u32 = 4;
 
-impl Rasterizer for CoarseEdges {
-    fn name(&self) -> &str {
-        "foil-coarse-edges"
+/// Each triangle walked row by row, its edges stepped coarsely.
+fn walk_coarsely(scene: &Scene, _plan: &Plan) -> Result<Frame, RasterError> {
+    let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
+    if scene.rules.fill_rule != FillRule::TopLeft {
+        return unsupported("foil-coarse-edges draws the top-left rule only");
     }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: true,
-            ..Capabilities::none()
+    let bits = scene
+        .rules
+        .subpixel_bits
+        .map_or(VERTEX_BITS, |b| b.min(VERTEX_BITS));
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let mut frame = Frame::new(w, h, false, 0);
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        let Primitive::Triangle(t) = primitive else {
+            return unsupported("foil-coarse-edges draws triangles only");
+        };
+        let snap = |n: &Number| n.snapped(bits).as_rbig().clone();
+        let p: Vec<[RBig; 2]> = t
+            .vertices
+            .iter()
+            .map(|v| [snap(&v.x), snap(&v.y)])
+            .collect();
+        let cross = (&p[1][0] - &p[0][0]) * (&p[2][1] - &p[0][1])
+            - (&p[1][1] - &p[0][1]) * (&p[2][0] - &p[0][0]);
+        if cross == RBig::ZERO || scene.rules.cull.discards(cross.cmp(&RBig::ZERO)) {
+            continue;
         }
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
-        if plan.interpolates() {
-            return unsupported("foil-coarse-edges draws coverage only, not depth or attributes");
-        }
-        if scene.rules.fill_rule != FillRule::TopLeft {
-            return unsupported("foil-coarse-edges draws the top-left rule only");
-        }
-        let bits = scene
-            .rules
-            .subpixel_bits
-            .map_or(VERTEX_BITS, |b| b.min(VERTEX_BITS));
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let mut frame = Frame::new(w, h, false, 0);
-        for (index, primitive) in scene.primitives.iter().enumerate() {
-            let Primitive::Triangle(t) = primitive else {
-                return unsupported("foil-coarse-edges draws triangles only");
-            };
-            let snap = |n: &Number| n.snapped(bits).as_rbig().clone();
-            let p: Vec<[RBig; 2]> = t
-                .vertices
+        let edges: Vec<Walk> = (0..3)
+            .filter_map(|k| Walk::new(&p[k], &p[(k + 1) % 3]))
+            .collect();
+        let rows = |e: &Walk| e.first..e.end;
+        let top = edges.iter().map(|e| e.first).min().unwrap_or(0).max(0);
+        let bottom = edges
+            .iter()
+            .map(|e| e.end)
+            .max()
+            .unwrap_or(0)
+            .min(i64::from(h));
+        for r in top..bottom {
+            let xs: Vec<RBig> = edges
                 .iter()
-                .map(|v| [snap(&v.x), snap(&v.y)])
+                .filter(|e| rows(e).contains(&r))
+                .map(|e| e.x_at(r))
                 .collect();
-            let cross = (&p[1][0] - &p[0][0]) * (&p[2][1] - &p[0][1])
-                - (&p[1][1] - &p[0][1]) * (&p[2][0] - &p[0][0]);
-            if cross == RBig::ZERO || scene.rules.cull.discards(cross.cmp(&RBig::ZERO)) {
-                continue;
-            }
-            let edges: Vec<Walk> = (0..3)
-                .filter_map(|k| Walk::new(&p[k], &p[(k + 1) % 3]))
-                .collect();
-            let rows = |e: &Walk| e.first..e.end;
-            let top = edges.iter().map(|e| e.first).min().unwrap_or(0).max(0);
-            let bottom = edges
-                .iter()
-                .map(|e| e.end)
-                .max()
-                .unwrap_or(0)
-                .min(i64::from(h));
-            for r in top..bottom {
-                let xs: Vec<RBig> = edges
-                    .iter()
-                    .filter(|e| rows(e).contains(&r))
-                    .map(|e| e.x_at(r))
-                    .collect();
-                let [a, b] = xs.as_slice() else { continue };
-                let (left, right) = if a <= b { (a, b) } else { (b, a) };
-                // Sample x = c + ½ with left ≤ x < right.
-                let first = centre_index(left).max(0);
-                let end = centre_index(right).min(i64::from(w));
-                for c in first..end {
-                    let i = frame.index(c as u32, r as u32);
-                    frame.coverage[i] = frame.coverage[i].saturating_add(1);
-                    frame.last[i] = index as u32 + 1;
-                }
+            let [a, b] = xs.as_slice() else { continue };
+            let (left, right) = if a <= b { (a, b) } else { (b, a) };
+            // Sample x = c + ½ with left ≤ x < right.
+            let first = centre_index(left).max(0);
+            let end = centre_index(right).min(i64::from(w));
+            for c in first..end {
+                let i = frame.index(c as u32, r as u32);
+                frame.coverage[i] = frame.coverage[i].saturating_add(1);
+                frame.last[i] = index as u32 + 1;
             }
         }
-        Ok(frame)
     }
+    Ok(frame)
 }
 
 /// The first pixel index c whose centre c + ½ is at or right of `x`

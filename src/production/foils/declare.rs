@@ -1,5 +1,6 @@
-//! The `foil!` declaration every foil shares: a unit struct drawing with
-//! its own function under production's capabilities, less those it lacks.
+//! The declarations foils share: `foil!`, a unit struct drawing with its
+//! own function under production's capabilities, less those it lacks; and
+//! `coverage_foil!`, one that draws triangles' coverage and nothing else.
 
 /// Declares a foil: a unit struct whose `Rasterizer` impl gives its name,
 /// says it is a foil, takes production's capabilities, and draws with the
@@ -38,3 +39,45 @@ macro_rules! foil {
 }
 
 pub(super) use foil;
+
+/// Declares a coverage-only triangle foil: a unit struct whose
+/// `Rasterizer` impl gives its name, says it is a foil, takes triangles
+/// (at any coordinates) and nothing else, refuses a plan that asks for
+/// depth or attributes, and draws with the given function of the scene
+/// and plan.
+macro_rules! coverage_foil {
+    ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct $name;
+
+        impl Rasterizer for $name {
+            fn name(&self) -> &str {
+                $label
+            }
+
+            fn is_foil(&self) -> bool {
+                true
+            }
+
+            fn capabilities(&self) -> Capabilities {
+                Capabilities {
+                    triangles: true,
+                    ideal_geometry: true,
+                    ..Capabilities::none()
+                }
+            }
+
+            fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+                if plan.interpolates() {
+                    return Err(RasterError::Unsupported(
+                        concat!($label, " draws coverage only, not depth or attributes").to_owned(),
+                    ));
+                }
+                $draw(scene, plan)
+            }
+        }
+    };
+}
+
+pub(super) use coverage_foil;

@@ -9,10 +9,14 @@
 //! edge's slope. `truncate.rs` draws vertices at whole pixels (declared
 //! or not), `coarse_edges.rs` walks slanted edges coarsely between fine
 //! vertices, `outline.rs` strokes hairlines over a fill, and
-//! `empty_antialias.rs` answers antialiased scenes with nothing: each a
-//! finding `probe` must make (issue 40).
+//! `empty_antialias.rs` answers antialiased scenes with nothing, and
+//! `alpha.rs` stores coverage as a byte over 256 (or 255), declared truly
+//! or not: each a finding `probe` must make (issue 40). `coverage_only.rs`
+//! is what the coverage-only triangle foils share.
 
 mod declare;
+
+pub mod alpha;
 
 pub mod any_coverage;
 pub mod area_sampler;
@@ -28,6 +32,7 @@ pub mod samplers;
 pub mod slope_ties;
 pub mod truncate;
 
+pub use alpha::Alpha;
 pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
 pub use coarse_edges::CoarseEdges;

@@ -15,6 +15,7 @@
 //! a pixel its fill and its outline both light counts once. Triangles,
 //! single-sample, coverage only.
 
+use super::declare::coverage_foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::dispatch::Production;
@@ -23,58 +24,44 @@ use crate::scene::{
     Canvas, Interpolation, LastPixel, Line, LineParameter, LineRule, Number, Primitive, Scene,
 };
 
-/// The outline-over-fill foil.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct OutlineOverFill;
+coverage_foil!(
+    /// The outline-over-fill foil.
+    OutlineOverFill,
+    "foil-outline-over-fill",
+    draw_outlined
+);
 
-impl Rasterizer for OutlineOverFill {
-    fn name(&self) -> &str {
-        "foil-outline-over-fill"
+/// Each triangle filled by production, its edges stroked over the fill.
+fn draw_outlined(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+    let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
+    if plan.antialias.is_some() {
+        return unsupported(
+            "foil-outline-over-fill draws single-sample coverage only, not antialiasing",
+        );
     }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            triangles: true,
-            ideal_geometry: true,
-            ..Capabilities::none()
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let mut frame = Frame::new(w, h, false, 0);
+    for (index, primitive) in scene.primitives.iter().enumerate() {
+        if !matches!(primitive, Primitive::Triangle(_)) {
+            return unsupported("foil-outline-over-fill draws triangles only");
         }
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let unsupported = |why: &str| Err(RasterError::Unsupported(why.to_owned()));
-        if plan.interpolates() || plan.antialias.is_some() {
-            return unsupported(
-                "foil-outline-over-fill draws single-sample coverage only, not antialiasing, depth or attributes",
-            );
-        }
-        let (w, h) = (scene.canvas.width, scene.canvas.height);
-        let mut frame = Frame::new(w, h, false, 0);
-        for (index, primitive) in scene.primitives.iter().enumerate() {
-            if !matches!(primitive, Primitive::Triangle(_)) {
-                return unsupported("foil-outline-over-fill draws triangles only");
-            }
-            let Some((origin, piece)) = cropped(scene, primitive) else {
-                continue;
-            };
-            let drawn = Production.rasterize(&piece, &Plan::for_scene(&piece))?;
-            for y in 0..piece.canvas.height {
-                for x in 0..piece.canvas.width {
-                    if drawn.coverage[drawn.index(x, y)] == 0 {
-                        continue;
-                    }
-                    let (cx, cy) = (i64::from(x) + origin.0, i64::from(y) + origin.1);
-                    let i = frame.index(cx as u32, cy as u32);
-                    frame.coverage[i] = frame.coverage[i].saturating_add(1);
-                    frame.last[i] = index as u32 + 1;
+        let Some((origin, piece)) = cropped(scene, primitive) else {
+            continue;
+        };
+        let drawn = Production.rasterize(&piece, &Plan::for_scene(&piece))?;
+        for y in 0..piece.canvas.height {
+            for x in 0..piece.canvas.width {
+                if drawn.coverage[drawn.index(x, y)] == 0 {
+                    continue;
                 }
+                let (cx, cy) = (i64::from(x) + origin.0, i64::from(y) + origin.1);
+                let i = frame.index(cx as u32, cy as u32);
+                frame.coverage[i] = frame.coverage[i].saturating_add(1);
+                frame.last[i] = index as u32 + 1;
             }
         }
-        Ok(frame)
     }
+    Ok(frame)
 }
 
 /// The triangle and its three edges as midpoint lines, on a canvas
