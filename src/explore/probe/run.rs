@@ -68,6 +68,7 @@
 //!
 
 use super::clip::probe_clip;
+use super::conservative::probe_conservative;
 use super::describe::departures;
 use super::diagnose::{diagnose_with_evidence, not_measured};
 use super::evidence::{Resolved, PROBE_BITS};
@@ -155,6 +156,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         interpolation,
         clip: probe_clip(candidate),
         points: probe_points(candidate),
+        conservative: probe_conservative(candidate, d.sampler.kind),
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);
