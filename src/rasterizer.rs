@@ -6,7 +6,8 @@ use std::fmt;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, ConservativeSupport, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip,
+    Scene,
 };
 
 /// Where a rasterizer puts a vertex before it rasterizes (SPEC.md §3.2): its
@@ -453,6 +454,18 @@ pub trait Rasterizer: Send + Sync {
     /// in this rasterizer whatever a case states: judged as
     /// [`Rasterizer::fixed_point_clip`].
     fn fixed_point_bounds(&self) -> Option<PointBounds> {
+        None
+    }
+
+    /// Whether and how this rasterizer draws conservative scenes
+    /// (`effects.conservative`, SPEC.md §19): the modes it draws, whether
+    /// it gives the fully-covered flag, and the uncertainty and API
+    /// properties it cannot choose. `None` (the default): every
+    /// conservative case is `unsupported`, with that reason. Asked before
+    /// the case is drawn (a mode or flag it lacks refuses the case unsent)
+    /// and again after (a program may declare its uncertainty in its
+    /// hello): the case is judged under [`ConservativeSupport::restate`].
+    fn conservative(&self) -> Option<ConservativeSupport> {
         None
     }
 

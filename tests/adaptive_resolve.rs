@@ -57,6 +57,7 @@ fn scene(rng: &mut Rng, pattern: Pattern, samples: u32, rule: FillRule) -> Scene
                 position_bits: if samples <= 16 { *rng.pick(&[4, 8]) } else { 8 },
             }),
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

@@ -140,6 +140,7 @@ fn random_scene_of(
         effects: Effects {
             antialias: Some(antialias(rng, position_bits, adaptive)),
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: usize::from(valued),
@@ -289,6 +290,7 @@ fn an_edge_on_samples_follows_the_fill_rule() {
                     position_bits: 8,
                 }),
                 motion_blur: None,
+                conservative: None,
             },
             expect: Expect::default(),
             attribute_count: 0,
@@ -384,6 +386,7 @@ fn adaptive_refine_misses_a_thin_sliver_and_resolves_its_own_mask() {
                 position_bits: 8,
             }),
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

@@ -275,6 +275,7 @@ fn maybe_moving_scene(rng: &mut Rng) -> Scene {
         Effects {
             antialias,
             motion_blur: Some(motion),
+            conservative: None,
         },
     )
 }
@@ -496,6 +497,7 @@ impl Sweep {
             Effects {
                 antialias: None,
                 motion_blur: Some(blur(samples, pattern, seed)),
+                conservative: None,
             },
         )
     }
@@ -676,6 +678,7 @@ fn with_static(include_static: bool) -> Scene {
         Effects {
             antialias: None,
             motion_blur: Some(blur(16, TimePattern::Stratified, 5)),
+            conservative: None,
         },
     )
 }
@@ -747,6 +750,7 @@ fn a_scene_that_moves_nothing_is_static() {
             Effects {
                 antialias: antialias.clone(),
                 motion_blur: Some(blur(8, TimePattern::Random, 1)),
+                conservative: None,
             },
         );
         let mut plain = declared.clone();

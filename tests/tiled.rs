@@ -117,6 +117,7 @@ fn random_scene(rng: &mut Rng, antialiased: bool, polygons: bool) -> Scene {
         effects: Effects {
             antialias,
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: attributes,

@@ -55,6 +55,11 @@ pub struct Frame {
     /// frame has no depth and no attributes, and they are not judged
     /// (SPEC.md §12.9).
     pub coverage_only: bool,
+    /// A conservative scene whose case asks for it (SPEC.md §19.4): each
+    /// pixel's fully-covered flag (`FullyCoveredEXT`, D3D's inner
+    /// coverage), the flag of the last fragment written there; false where
+    /// nothing is drawn.
+    pub fully_covered: Option<Vec<bool>>,
 }
 
 impl Frame {
@@ -133,6 +138,7 @@ impl Frame {
             parts: None,
             area_step: None,
             coverage_only: false,
+            fully_covered: None,
         }
     }
 
@@ -210,6 +216,9 @@ impl Frame {
         }
         for channel in self.resolved.iter_mut().chain(&mut self.time) {
             channel.fill(0.0);
+        }
+        if let Some(flags) = &mut self.fully_covered {
+            flags.fill(false);
         }
         self.sample_tests = None;
     }

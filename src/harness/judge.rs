@@ -89,7 +89,11 @@ pub fn run_candidate(
     candidate: &dyn Rasterizer,
 ) -> CandidateRun {
     let started = Instant::now();
-    if let Some(why) = candidate.capabilities().refuses(scene) {
+    let refused = candidate
+        .capabilities()
+        .refuses(scene)
+        .or_else(|| super::conservative::refusal(scene, candidate));
+    if let Some(why) = refused {
         return CandidateRun::without_frame(
             candidate.name().to_owned(),
             Verdict::Unsupported(why),
@@ -263,6 +267,9 @@ fn judge(
     oracle: Oracle,
 ) -> CandidateRun {
     let ties = oracle.ties;
+    if let Some(classes) = &reference.conservative {
+        return super::conservative::judge(scene, classes, frame, name, elapsed);
+    }
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return CandidateRun {

@@ -10,9 +10,12 @@
 //! fixed order. [`flaky`] compares a candidate's repetitions of a case (`run --repeat`).
 //! [`panics`] is the text of a caught panic; [`today`] the date reports are
 //! stamped with; [`case_hash`] the hash of a case file a report names.
+//! [`conservative`] refuses and judges a conservative case's candidate
+//! (SPEC.md §19) against the oracle's three classes.
 
 pub mod baseline;
 pub mod case_hash;
+pub mod conservative;
 pub mod discover;
 pub mod flaky;
 pub mod golden;

@@ -14,7 +14,9 @@ use super::panics::pass_on_deadline;
 use crate::frame::Frame;
 use crate::metrics::AreaClass;
 use crate::plan::Plan;
+use crate::rasterizer::RasterError;
 use crate::reference;
+use crate::reference::conservative::ConservativeClasses;
 use crate::reference::motion::Certified;
 use crate::scene::Scene;
 
@@ -36,6 +38,10 @@ pub struct ReferenceRun {
     /// For scenes with a depth format (SPEC.md §18) only: the depths a
     /// candidate may read back at each slot (`reference::render_judged`).
     pub depth_allowed: Option<Vec<[f64; 2]>>,
+    /// For conservative scenes only (SPEC.md §19): each pixel's class,
+    /// three-valued, or why the reference gives none (`Unsupported`: this
+    /// version does not judge the scene; `Failed`: it panicked).
+    pub conservative: Option<Result<ConservativeClasses, RasterError>>,
     pub elapsed: Duration,
 }
 
@@ -81,6 +87,24 @@ fn run_planned_with(
             areas: None,
             time: Some(time),
             depth_allowed: None,
+            conservative: None,
+            elapsed: started.elapsed(),
+        };
+    }
+    if scene.is_conservative() {
+        let classes = super::conservative::oracle_classes(scene);
+        let frame = match &classes {
+            Ok(classes) => reference::conservative::frame_of(scene, &plan, classes),
+            Err(_) => Frame::for_plan(scene.canvas.width, scene.canvas.height, &plan),
+        };
+        return ReferenceRun {
+            plan,
+            frame,
+            interior: None,
+            areas: None,
+            time: None,
+            depth_allowed: None,
+            conservative: Some(classes),
             elapsed: started.elapsed(),
         };
     }
@@ -98,6 +122,7 @@ fn run_planned_with(
         areas,
         time: None,
         depth_allowed,
+        conservative: None,
         elapsed: started.elapsed(),
     }
 }

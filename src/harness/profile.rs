@@ -209,6 +209,9 @@ impl Rasterizer for Profiled {
     fn api_record(&self) -> Option<crate::rasterizer::ApiRecord> {
         self.inner.api_record()
     }
+    fn conservative(&self) -> Option<crate::scene::ConservativeSupport> {
+        self.inner.conservative()
+    }
     fn diamond_exit_latitude(&self) -> bool {
         self.inner.diamond_exit_latitude()
     }

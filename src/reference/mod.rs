@@ -18,10 +18,13 @@
 //! `ties.rs` the samples exactly on an edge (for a rasterizer with no tie rule),
 //! `latitude.rs` each diamond-exit line's own fragments (for one that draws
 //! them with its API's latitude);
+//! `conservative/` classes every pixel of a conservative scene (SPEC.md §19):
+//! required, allowed or forbidden;
 //! `rasterizer.rs` is the reference behind the one trait.
 
 pub mod area;
 pub mod clip;
+pub mod conservative;
 pub mod coverage;
 pub mod depth;
 pub mod exact;

@@ -4,7 +4,7 @@ use super::render::render;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::Scene;
+use crate::scene::{ConservativeSupport, Scene};
 
 /// The reference rasterizer.
 #[derive(Clone, Copy, Debug, Default)]
@@ -20,6 +20,18 @@ impl Rasterizer for Reference {
     }
 
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        if scene.is_conservative() {
+            return super::conservative::render(scene, plan);
+        }
         Ok(render(scene, plan))
+    }
+
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        Some(ConservativeSupport {
+            overestimate: true,
+            underestimate: true,
+            fully_covered: true,
+            ..ConservativeSupport::default()
+        })
     }
 }

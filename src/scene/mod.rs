@@ -8,7 +8,8 @@
 //! `primitive.rs` what it draws, `expect.rs` what it expects; the rules
 //! live in `rules.rs`, `clip.rs` (clip space), `depth.rs` (formats and
 //! offset; `scene_depth.rs` asks them of a scene), `samples.rs` and
-//! `time.rs` (antialiasing and motion); exact numbers in `number.rs`;
+//! `time.rs` (antialiasing and motion), `conservative.rs` (conservative
+//! rasterization, SPEC.md §19); exact numbers in `number.rs`;
 //! `names.rs` writes each convention's words once; `case/` reads a file.
 
 #[macro_use]
@@ -16,6 +17,7 @@ mod names;
 
 pub mod case;
 pub mod clip;
+pub mod conservative;
 pub mod depth;
 pub mod expect;
 pub mod model;
@@ -30,6 +32,7 @@ pub use case::{parse_case, CaseError, Limits};
 pub use clip::{
     ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
 };
+pub use conservative::{Conservative, ConservativeMode, ConservativeSupport};
 pub use depth::{DepthBias, DepthFormat};
 pub use expect::{Expect, TimePin};
 pub use model::{Canvas, Effects, Scene};

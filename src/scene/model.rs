@@ -2,6 +2,7 @@
 //! expectations, and what can be asked of it as a whole.
 
 use super::clip::Viewport;
+use super::conservative::Conservative;
 use super::expect::Expect;
 use super::number::Number;
 use super::primitive::{Primitive, Triangle, Vertex};
@@ -51,6 +52,9 @@ pub struct Effects {
     /// A shutter interval and time samples (SPEC.md §15); it changes
     /// nothing unless some primitive moves.
     pub motion_blur: Option<MotionBlur>,
+    /// Conservative rasterization (SPEC.md §19): the mode, its uncertainty
+    /// and the API properties; it replaces the fill rule for triangles.
+    pub conservative: Option<Conservative>,
 }
 
 impl Scene {
@@ -84,6 +88,49 @@ impl Scene {
         self.primitives
             .iter()
             .any(|p| matches!(p, Primitive::Point(_)))
+    }
+
+    /// Whether the scene is drawn conservatively (SPEC.md §19).
+    pub fn is_conservative(&self) -> bool {
+        self.effects.conservative.is_some()
+    }
+
+    /// Why a conservative scene is not judged in this version, if it is
+    /// not (SPEC.md §19.7): multisampling, motion, clip space, polygons,
+    /// depth and attributes at conservative pixels, points and lines. Every candidate's verdict on it is `unsupported`
+    /// with this reason; `None` for a scene that is not conservative.
+    pub fn conservative_unjudged(&self) -> Option<String> {
+        self.effects.conservative.as_ref()?;
+        let clash = if self.effects.antialias.is_some() {
+            Some("multisampling (effects.antialias)")
+        } else if self.effects.motion_blur.is_some() {
+            Some("effects.motion_blur")
+        } else if self.in_clip_space() {
+            Some("clip space")
+        } else if self.has_polygons() {
+            Some("polygons")
+        } else {
+            None
+        };
+        if let Some(what) = clash {
+            return Some(format!(
+                "conservative rasterization with {what} is not judged in this version (SPEC.md §19.7)"
+            ));
+        }
+        if self.has_depth {
+            return Some("depth at conservatively drawn pixels is not judged in this version (SPEC.md §19.7)".to_owned());
+        }
+        if self.attribute_count > 0 {
+            return Some("attributes at conservatively drawn pixels are not judged in this version (SPEC.md §19.7)".to_owned());
+        }
+        if self
+            .primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Line(_) | Primitive::Point(_)))
+        {
+            return Some("conservative scenes with lines or points are not judged in this version (SPEC.md §19.7)".to_owned());
+        }
+        None
     }
 
     /// Whether any primitive moves: only then is there a time loop.

@@ -173,6 +173,7 @@ pub fn scene_of(
         effects: Effects {
             antialias,
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

@@ -211,6 +211,7 @@ fn aa_scene_of(primitives: Vec<Primitive>, rules: Rules, antialias: Option<Antia
         effects: Effects {
             antialias,
             motion_blur: None,
+            conservative: None,
         },
         expect: Expect::default(),
         attribute_count: 0,

@@ -312,6 +312,7 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
         time: None,
         // Fuzzed scenes state no depth format.
         depth_allowed: None,
+        conservative: None,
         elapsed: started.elapsed(),
     })
 }

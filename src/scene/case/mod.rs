@@ -15,12 +15,14 @@
 //!   scene model;
 //! - `validate.rs`: documented ranges, and the checks across fields on the
 //!   whole scene;
-//! - `clip.rs`, `point.rs` and `depth.rs`: the clip-space (§16), point
-//!   (§17) and depth (§18) fields and their checks;
+//! - `clip.rs`, `point.rs`, `depth.rs` and `conservative.rs`: the
+//!   clip-space (§16), point (§17), depth (§18) and conservative (§19)
+//!   fields and their checks;
 //! - `parse.rs`: the entry point, [`parse_case`]; `reader.rs` the walk's
 //!   type, `limits.rs` the run's [`Limits`], `error.rs` [`CaseError`].
 
 mod clip;
+mod conservative;
 mod depth;
 mod error;
 mod json;

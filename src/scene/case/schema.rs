@@ -511,7 +511,7 @@ impl Reader<'_> {
     }
 
     fn effects(&self, value: &Value, path: &Path) -> Result<Effects> {
-        let fields = Fields::new(value, path, &["antialias", "motion_blur"])?;
+        let fields = Fields::new(value, path, &["antialias", "motion_blur", "conservative"])?;
         let antialias = match fields.get("antialias") {
             Some((v, p)) => Some(self.antialias(v, &p)?),
             None => None,
@@ -520,9 +520,14 @@ impl Reader<'_> {
             Some((v, p)) => Some(self.motion_blur(v, &p)?),
             None => None,
         };
+        let conservative = match fields.get("conservative") {
+            Some((v, p)) => Some(self.conservative(v, &p)?),
+            None => None,
+        };
         Ok(Effects {
             antialias,
             motion_blur,
+            conservative,
         })
     }
 
