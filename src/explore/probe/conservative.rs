@@ -184,7 +184,9 @@ fn words(x: &Reach, y: &Reach) -> String {
             return Err("drawn at a gap beyond one it missed (not monotone)".into());
         }
         match (&r.largest_drawn, &r.smallest_missed) {
-            (None, _) => Err("a touching triangle does not draw the pixel: not overestimating".into()),
+            (None, _) => {
+                Err("a touching triangle does not draw the pixel: not overestimating".into())
+            }
             (Some(d), Some(m)) => Ok(format!("{d} px (drawn at a gap of {d}, not at {m})")),
             (Some(d), None) => Ok(format!("at least {d} px")),
         }

@@ -228,7 +228,10 @@ impl Profile {
             s += &format!("                      and {off} samples away from the edges differ from the reference\n");
         }
         if let Some(c) = &self.conservative {
-            s += &format!("  uncertainty:        {} ({})\n", c.uncertainty, c.measured_on);
+            s += &format!(
+                "  uncertainty:        {} ({})\n",
+                c.uncertainty, c.measured_on
+            );
         }
         s += &format!(
             "  y direction:        {}\n",
