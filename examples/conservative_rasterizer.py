@@ -12,17 +12,18 @@ projections on one of five axes are apart, the two pixel axes (the
 triangle's bounding box against the square) and each edge's normal (the
 edge function offset by the square's half extent along the normal,
 (|a| + |b|)/2: the classic offset edge function). A degenerate triangle
-(zero area after snapping) is the segment or point it is: its edges'
-normals are the segment's, and the same test draws every pixel the segment
-touches. Its `grow` is 0: it draws no pixel the triangle does not touch,
+(zero area after snapping) is drawn as the segment or point it is when the
+case's `degenerate_triangles` is true (its edges' normals are the
+segment's, and the same test draws every pixel the segment touches), and
+culled otherwise. Its `grow` is 0: it draws no pixel the triangle does not touch,
 the least a conservative rasterizer may draw, so it passes at any declared
 uncertainty.
 
 Underestimation: pixel (x, y) is drawn when its closed square lies inside
 the closed triangle (its four corners do): the most it may draw.
 
-The fully-covered flag (`plan.fully_covered`): a fragment [x, y, f] with
-f = 1 when the square lies inside the triangle, else 0.
+The fully-covered flag (`rules.conservative.fully_covered`): a fragment
+[x, y, f] with f = 1 when the square lies inside the triangle, else 0.
 
 Flags:
   --uncertainty U   declare U (an exact number, "1/256") as its
@@ -160,13 +161,17 @@ def answer(req):
         return {"unsupported": "this example draws conservative cases only"}
     else:
         mode = conservative["mode"]
-    flagged = bool(req["plan"].get("fully_covered"))
+    flagged = bool(conservative and conservative.get("fully_covered"))
     width, height = req["canvas"]["width"], req["canvas"]["height"]
     prims = []
     for p in req["primitives"]:
         if "triangle" not in p:
             return {"unsupported": "this example draws triangles only"}
         pts = vertices(p["triangle"], rules["subpixel_bits"])
+        degenerate = twice_area(*pts) == 0
+        if degenerate and ALWAYS is None and not conservative.get("degenerate_triangles"):
+            prims.append({"fragments": []})  # culled, as the case states
+            continue
         if culled(pts, rules.get("cull", "none")):
             prims.append({"fragments": []})
             continue
@@ -181,7 +186,6 @@ def main():
         caps["conservative"] = {
             "modes": ["overestimate", "underestimate"],
             "uncertainty": str(UNCERTAINTY),
-            "degenerate_triangles": True,
             "fully_covered": True,
         }
     hello["capabilities"] = caps

@@ -761,6 +761,27 @@ mod tests {
                 "$.hello.capabilities must be an object",
             ),
             (json!({"protocol": 2, "name": 7}), "$.hello.name must be a string"),
+            // Conservative rasterization (§12.11).
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"mode": ["overestimate"]}}}),
+                "$.hello.capabilities.conservative.mode: unknown key \"mode\"; did you mean \"modes\"?",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"modes": ["overestimates"]}}}),
+                "$.hello.capabilities.conservative.modes[0] is \"overestimates\"; did you mean \"overestimate\"?",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"fully_covered": "yes"}}}),
+                "$.hello.capabilities.conservative.fully_covered must be true or false",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"uncertainty": "1/0"}}}),
+                "$.hello.capabilities.conservative.uncertainty:",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": true}}),
+                "$.hello.capabilities.conservative must be an object",
+            ),
         ];
         for (hello, expected) in cases {
             let error = error_of(hello.clone());

@@ -199,18 +199,26 @@ fn words(x: &Reach, y: &Reach) -> String {
     }
 }
 
-/// The conservative probe, for an any-coverage rasterizer; `None` for any
-/// other (its pixels are decided otherwise), or when it cannot draw the
-/// needles.
+/// The conservative probe, for an any-coverage rasterizer, and for one
+/// whose sampler is unknown (a conservative rasterizer growing triangles
+/// by 1/32 px or more draws the sampler probe's slivers into their
+/// neighbours, and is not recognised there): for the latter, kept only
+/// where it looks conservative on both axes (a touching needle drawn, the
+/// drawn gaps a prefix). `None` for any other (its pixels are decided
+/// otherwise), or when it cannot draw the needles.
 pub fn probe_conservative(
     candidate: &dyn Rasterizer,
     sampler: SamplerKind,
 ) -> Option<ConservativeProbe> {
-    if sampler != SamplerKind::AnyCoverage {
+    if !matches!(sampler, SamplerKind::AnyCoverage | SamplerKind::Unknown) {
         return None;
     }
     let x = reach(candidate, false).ok()?;
     let y = reach(candidate, true).ok()?;
+    let conservative = |r: &Reach| r.monotone && r.largest_drawn.is_some();
+    if sampler == SamplerKind::Unknown && !(conservative(&x) && conservative(&y)) {
+        return None;
+    }
     Some(ConservativeProbe {
         uncertainty: words(&x, &y),
         x,
