@@ -204,3 +204,58 @@ fn the_drivers_here_refuse_with_their_reason() {
         assert_eq!(record["warnings"], 0, "{r}");
     }
 }
+
+/// The example over `cases/conservative` (the verdict of SPEC.md §19.5,
+/// through the binary, one thread): what it was built for, and each
+/// wrong variant caught by its own check.
+#[test]
+fn the_example_passes_the_conservative_cases_and_each_foil_is_caught() {
+    use common::cli::{rastercheck, read_json, scratch, text, verdicts};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let run = |tag: &str, flags: &str| {
+        let dir = scratch(&format!("conservative_example_{tag}"));
+        let report = dir.join("report");
+        let spec = format!(
+            "example=external-persistent:python3 {}/examples/conservative_rasterizer.py {flags}",
+            root.display()
+        );
+        let out = rastercheck(
+            root,
+            &[
+                "run",
+                "cases/conservative",
+                "-r",
+                &spec,
+                "--threads",
+                "1",
+                "--report",
+                report.to_str().unwrap(),
+            ],
+        );
+        (
+            verdicts(&read_json(&report.join("report.json"))),
+            text(&out),
+        )
+    };
+    let count = |v: &[(String, String, String)], verdict: &str| {
+        v.iter().filter(|(_, w, _)| w == verdict).count()
+    };
+    let (exact, out) = run("exact", "");
+    assert_eq!(count(&exact, "fail") + count(&exact, "error"), 0, "{out}");
+    assert!(count(&exact, "pass") >= 40, "{out}");
+    for (flags, reason) in [
+        ("--open", "required pixel"),
+        ("--too-much", "forbidden pixel"),
+        ("--flag-partial", "fully-covered flag wrong"),
+    ] {
+        let (v, out) = run(flags.trim_start_matches("--"), flags);
+        let caught: Vec<_> = v
+            .iter()
+            .filter(|(_, w, why)| w == "fail" && why.contains(reason))
+            .map(|(id, _, _)| id.as_str())
+            .collect();
+        eprintln!("{flags}: {} caught ({reason}): {caught:?}", caught.len());
+        assert!(!caught.is_empty(), "{flags}: {out}");
+        assert_eq!(count(&v, "error"), 0, "{flags}: {out}");
+    }
+}

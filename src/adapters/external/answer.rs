@@ -392,20 +392,17 @@ impl Fragments {
             })?
             .0;
         let (numbers, flag) = match numbers.split_last() {
-            Some((last, rest)) if self.flag => {
-                let flag = match last.as_f64() {
-                    Some(v) if v == 0.0 => false,
-                    Some(v) if v == 1.0 => true,
-                    _ => {
-                        return Err(format!(
-                            "{}[{}]: {last} is not a fully-covered flag (0 or 1, SPEC §12.11)",
-                            at(),
-                            arity - 1
-                        ))
-                    }
-                };
-                (rest, Some(flag))
-            }
+            Some((last, rest)) if self.flag => (
+                rest,
+                Some(super::conservative::flag(last.as_f64()).ok_or_else(|| {
+                    format!(
+                        "{}[{}]: {last} {}",
+                        at(),
+                        arity - 1,
+                        super::conservative::NOT_A_FLAG
+                    )
+                })?),
+            ),
             _ => (numbers, None),
         };
         let (x, y) = pixel_of(numbers, (width, height), &at)?;

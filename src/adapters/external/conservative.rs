@@ -166,6 +166,18 @@ pub fn request_rules(case: &Conservative) -> Value {
     })
 }
 
+/// An answer's fully-covered flag: 0 or 1, nothing else.
+pub fn flag(value: Option<f64>) -> Option<bool> {
+    match value {
+        Some(v) if v == 0.0 => Some(false),
+        Some(v) if v == 1.0 => Some(true),
+        _ => None,
+    }
+}
+
+/// What a fragment's last value is when it is not 0 or 1.
+pub const NOT_A_FLAG: &str = "is not a fully-covered flag (0 or 1, SPEC §12.11)";
+
 /// Whether an answer's fragments end with the fully-covered flag: the
 /// case asks for it.
 pub fn flagged(scene: &Scene) -> bool {
