@@ -169,8 +169,8 @@ pub fn request_rules(case: &Conservative) -> Value {
 /// An answer's fully-covered flag: 0 or 1, nothing else.
 pub fn flag(value: Option<f64>) -> Option<bool> {
     match value {
-        Some(v) if v == 0.0 => Some(false),
-        Some(v) if v == 1.0 => Some(true),
+        Some(0.0) => Some(false),
+        Some(1.0) => Some(true),
         _ => None,
     }
 }

@@ -19,7 +19,7 @@ pub(super) const EXTENSIONS: [&str; 2] = [
 
 /// Why the context does not draw a conservative case.
 pub(super) fn refusal(gl: &GlContext) -> String {
-    why(&gl.gl.supported_extensions(), &gl.renderer)
+    why(gl.gl.supported_extensions(), &gl.renderer)
 }
 
 fn why(extensions: &HashSet<String>, renderer: &str) -> String {
