@@ -21,7 +21,8 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, PixelCentre, RasterError, Rasterizer, Snapping, YDirection};
 use crate::scene::{
-    ClipXy, ClipZ, DeclaredRule, FillRule, InterpolateFrom, Pattern, PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, ConservativeSupport, DeclaredRule, FillRule, InterpolateFrom, Pattern,
+    PointBounds, PointClip, Scene,
 };
 
 /// A rasterizer that is another program.
@@ -52,6 +53,9 @@ pub struct External {
     pub(super) broken: Mutex<Option<(String, Option<Hello>)>>,
     /// v2: requests that timed out with an answer under another id.
     pub(super) wrong_ids: AtomicU32,
+    /// What its hello declares of conservative rasterization (SPEC.md
+    /// §12.11), once a hello declaring it is read.
+    pub(super) conservative: Mutex<Option<ConservativeSupport>>,
 }
 
 impl External {
@@ -71,6 +75,7 @@ impl External {
             answers: Mutex::new(Answers::default()),
             broken: Mutex::new(None),
             wrong_ids: AtomicU32::new(0),
+            conservative: Mutex::new(None),
         }
     }
 
@@ -173,6 +178,24 @@ impl Rasterizer for External {
 
     fn diamond_exit_latitude(&self) -> bool {
         self.answers().declaration.diamond_exit_latitude == Some(true)
+    }
+
+    /// Its hello's declaration (SPEC.md §12.11) once read; before, or
+    /// when it declares none, both modes and the flag, so that a
+    /// conservative case comes to [`Rasterizer::rasterize`] and is refused
+    /// there naming the declaration (or the missing hello).
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        let declared = self
+            .conservative
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone();
+        Some(declared.unwrap_or(ConservativeSupport {
+            overestimate: true,
+            underestimate: true,
+            fully_covered: true,
+            ..ConservativeSupport::default()
+        }))
     }
 
     fn declared(&self) -> Option<String> {

@@ -195,6 +195,9 @@ struct Fragments {
     samples: Option<u32>,
     depth: bool,
     attributes: usize,
+    /// Each fragment ends with the fully-covered flag, 0 or 1 (a
+    /// conservative case that asks for it, SPEC.md §12.11).
+    flag: bool,
     arity: usize,
 }
 
@@ -357,12 +360,21 @@ impl Fragments {
         if unjudged {
             frame.method = Some(COVERAGE_ONLY);
         }
-        let arity = 2 + usize::from(samples.is_some()) + usize::from(depth) + attributes;
+        let flag = super::conservative::flagged(scene);
+        if flag {
+            frame.fully_covered = Some(vec![false; frame.pixel_count()]);
+        }
+        let arity = 2
+            + usize::from(samples.is_some())
+            + usize::from(depth)
+            + attributes
+            + usize::from(flag);
         Fragments {
             frame,
             samples,
             depth,
             attributes,
+            flag,
             arity,
         }
     }
@@ -382,7 +394,7 @@ impl Fragments {
             .filter(|(_, len)| *len == arity)
             .ok_or_else(|| {
                 format!(
-                    "{} must be an array of {arity} numbers: x, y{}{}{}",
+                    "{} must be an array of {arity} numbers: x, y{}{}{}{}",
                     at(),
                     if self.samples.is_some() {
                         ", sample"
@@ -394,10 +406,29 @@ impl Fragments {
                         format!(", {} attributes", self.attributes)
                     } else {
                         String::new()
+                    },
+                    if self.flag {
+                        ", fully covered (0 or 1)"
+                    } else {
+                        ""
                     }
                 )
             })?
             .0;
+        let (numbers, flag) = match numbers.split_last() {
+            Some((last, rest)) if self.flag => (
+                rest,
+                Some(super::conservative::flag(last.as_f64()).ok_or_else(|| {
+                    format!(
+                        "{}[{}]: {last} {}",
+                        at(),
+                        arity - 1,
+                        super::conservative::NOT_A_FLAG
+                    )
+                })?),
+            ),
+            _ => (numbers, None),
+        };
         let (x, y) = pixel_of(numbers, (width, height), &at)?;
         let slot = match self.samples {
             Some(n) => whole_below(&numbers[2], n).ok_or_else(|| {
@@ -412,6 +443,13 @@ impl Fragments {
         let frame = &mut self.frame;
         let i = frame.index(x, y) + slot as usize;
         frame.hit(i, p);
+        // The last fragment written at a pixel leaves its flag (SPEC.md §19.4).
+        if let (Some(slot), Some(flag)) = (
+            frame.fully_covered.as_mut().and_then(|f| f.get_mut(i)),
+            flag,
+        ) {
+            *slot = flag;
+        }
         for (k, v) in numbers[2 + slot_field..].iter().enumerate() {
             let v = v.as_f64().ok_or_else(|| {
                 format!("{}[{}] must be a finite number", at(), k + 2 + slot_field)

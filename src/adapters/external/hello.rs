@@ -14,10 +14,11 @@ use crate::scene::case::{closest, edit_distance};
 use crate::plan::Plan;
 use crate::rasterizer::Declaration;
 use crate::scene::{
-    ClipXy, ClipZ, DeclaredRule, FillRule, InterpolateFrom, Interpolation, LineRule, Pattern,
-    PointBounds, PointClip, PolygonFill, Primitive, Scene,
+    ClipXy, ClipZ, ConservativeMode, DeclaredRule, FillRule, InterpolateFrom, Interpolation,
+    LineRule, Pattern, PointBounds, PointClip, PolygonFill, Primitive, Scene,
 };
 
+use super::conservative::{self, DeclaredConservative};
 use super::space::{Declared3d, FixedClip, DEPTH_FORMATS};
 
 /// What a program declared in its hello. A list left out declares nothing
@@ -58,6 +59,8 @@ pub struct Hello {
     /// Clip space, points, depth formats and polygon offset, and the clip
     /// conventions it follows (SPEC.md §12.10): `space.rs`.
     three_d: Declared3d,
+    /// Conservative rasterization (SPEC.md §12.11): `conservative.rs`.
+    conservative: Option<DeclaredConservative>,
 }
 
 /// How a program's answers are shaped, as its hello declares them
@@ -218,6 +221,22 @@ const KEYS: &[(&str, &str, Kind)] = &[
         "diamond_exit",
         Kind::Word(&Declaration::DIAMOND_EXIT),
     ),
+    // Conservative rasterization (§12.11, conservative.rs).
+    ("capabilities", "conservative", Kind::Object),
+    (
+        "capabilities.conservative",
+        "modes",
+        Kind::Words(&ConservativeMode::NAMES),
+    ),
+    ("capabilities.conservative", "uncertainty", Kind::Read),
+    (
+        "capabilities.conservative",
+        "degenerate_triangles",
+        Kind::Flag,
+    ),
+    ("capabilities.conservative", "degenerate_lines", Kind::Flag),
+    ("capabilities.conservative", "points_and_lines", Kind::Flag),
+    ("capabilities.conservative", "fully_covered", Kind::Flag),
 ];
 
 /// The objects whose other keys are descriptions for people rather than
@@ -454,6 +473,10 @@ impl Hello {
                     .to_owned(),
             );
         }
+        let conservative = cap("conservative")
+            .and_then(Value::as_object)
+            .map(DeclaredConservative::parse)
+            .transpose()?;
         Ok(Hello {
             protocol,
             name: text("name"),
@@ -481,6 +504,7 @@ impl Hello {
             declaration,
             conventions: conventions.cloned(),
             three_d,
+            conservative,
         })
     }
 
@@ -538,6 +562,9 @@ impl Hello {
             }
         }
         if let Some(why) = self.three_d.refuses(scene, &who) {
+            return Some(why);
+        }
+        if let Some(why) = conservative::refuses(scene, self.conservative.as_ref(), &who) {
             return Some(why);
         }
         if self.fill_rule == Some(DeclaredRule::Fill(FillRule::AllEdges)) && scene.has_polygons() {
@@ -628,6 +655,11 @@ impl Hello {
             coverage_fraction: self.coverage_fraction,
             declaration: self.declaration,
         }
+    }
+
+    /// Its conservative declaration (SPEC.md §12.11), when it makes one.
+    pub fn conservative(&self) -> Option<&DeclaredConservative> {
+        self.conservative.as_ref()
     }
 
     /// The program as its hello names it: `name version`, or `None`; each
@@ -735,6 +767,27 @@ mod tests {
                 "$.hello.capabilities must be an object",
             ),
             (json!({"protocol": 2, "name": 7}), "$.hello.name must be a string"),
+            // Conservative rasterization (§12.11).
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"mode": ["overestimate"]}}}),
+                "$.hello.capabilities.conservative.mode: unknown key \"mode\"; did you mean \"modes\"?",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"modes": ["overestimates"]}}}),
+                "$.hello.capabilities.conservative.modes[0] is \"overestimates\"; did you mean \"overestimate\"?",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"fully_covered": "yes"}}}),
+                "$.hello.capabilities.conservative.fully_covered must be true or false",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": {"uncertainty": "1/0"}}}),
+                "$.hello.capabilities.conservative.uncertainty:",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"conservative": true}}),
+                "$.hello.capabilities.conservative must be an object",
+            ),
         ];
         for (hello, expected) in cases {
             let error = error_of(hello.clone());

@@ -10,12 +10,14 @@
 //! `one_shot.rs` or `pool.rs` (with `worker.rs`'s persistent processes and
 //! `process.rs`' waiting, killing and reading), whose requests are
 //! `protocol.rs`' and answers `answer.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
-//! clip space, points and depth formats, declared); `read.rs` reads
+//! clip space, points and depth formats, declared, and `conservative.rs`:
+//! conservative rasterization, declared); `read.rs` reads
 //! one line apart from a process; `envelope.rs` looks at a line's id
 //! and shape; `messages.rs` quotes values.
 
 mod adapter;
 mod answer;
+mod conservative;
 mod envelope;
 mod hello;
 mod limits;

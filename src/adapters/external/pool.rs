@@ -417,6 +417,8 @@ impl External {
         }
         drop(declared);
         *self.answers.lock().unwrap_or_else(|e| e.into_inner()) = hello.answers();
+        *self.conservative.lock().unwrap_or_else(|e| e.into_inner()) =
+            hello.conservative().map(|c| c.support());
     }
 
     /// Ends `worker` and sends the program no more cases: its answers

@@ -128,6 +128,9 @@ fn head(scene: &Scene, plan: &Plan) -> Value {
         "primitives": null,
     });
     depth_and_clip(scene, &mut out);
+    if let Some(case) = &scene.effects.conservative {
+        out["rules"]["conservative"] = super::conservative::request_rules(case);
+    }
     out
 }
 

@@ -222,6 +222,8 @@ pub fn needs_a_hello(scene: &Scene) -> Option<String> {
         DEPTH_FORMATS_SENT
     } else if scene.rules.depth_bias.is_some() {
         OFFSET
+    } else if scene.is_conservative() {
+        super::conservative::NOT_DECLARED
     } else {
         return None;
     };

@@ -8,8 +8,8 @@ use crate::rasterizer::{
     ApiRecord, Capabilities, Prepared, RasterError, Rasterizer, ScreenViewport,
 };
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
-    PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, ConservativeSupport, FillRule, InterpolateFrom, LineClamp, LineParameter,
+    LineRule, LineT, PointBounds, PointClip, Scene,
 };
 
 use super::accepted::accepted;
@@ -167,6 +167,18 @@ impl Rasterizer for Gl {
         declared()
     }
 
+    /// Both modes and the flag are claimed, so that a conservative case
+    /// comes to [`Rasterizer::rasterize`] and is refused there naming the
+    /// extensions the context lacks (`conservative.rs`).
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        Some(ConservativeSupport {
+            overestimate: true,
+            underestimate: true,
+            fully_covered: true,
+            ..ConservativeSupport::default()
+        })
+    }
+
     /// What the context's KHR_debug callback heard of this process's
     /// calls (`debug.rs`), once the context exists.
     fn api_record(&self) -> Option<ApiRecord> {
@@ -226,6 +238,10 @@ fn declared() -> Option<String> {
 /// Sets the scene up, clears, draws and reads back, with the context held
 /// throughout, and deletes what it set up.
 fn rasterize(scene: &Scene, plan: &Plan, softpipe: bool) -> Result<Frame, RasterError> {
+    if scene.is_conservative() {
+        let why = with_context(|gl| Ok(super::conservative::refusal(gl)))?;
+        return Err(RasterError::Unsupported(why));
+    }
     let (bits, depth) = accepted(scene, plan, softpipe)?;
     with_context(|gl| {
         gl.insist_on_softpipe(softpipe)?;

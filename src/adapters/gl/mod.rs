@@ -5,7 +5,8 @@
 //! one context per process: [`docs/drivers/gl.md`](../../../docs/drivers/gl.md).
 //!
 //! A scene passes `adapter.rs` (the [`Rasterizer`](crate::rasterizer::Rasterizer)),
-//! `accepted.rs` (what GL draws, and why not the rest), `context.rs` (the
+//! `accepted.rs` (what GL draws, and why not the rest; `conservative.rs`
+//! refuses conservative cases naming the extensions), `context.rs` (the
 //! shared EGL context), `passes.rs` / `time.rs` / `msaa.rs` (the passes it
 //! is drawn in), `draw.rs` (set up, cleared and drawn into a `drawing.rs`,
 //! with `depth.rs`'s attachment), then `readback.rs`; `prepared.rs` is the
@@ -16,6 +17,7 @@
 mod accepted;
 mod adapter;
 mod clip;
+mod conservative;
 mod context;
 mod debug;
 mod depth;

@@ -7,8 +7,8 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{ApiRecord, Capabilities, RasterError, Rasterizer, ScreenViewport};
 use crate::scene::{
-    ClipXy, ClipZ, FillRule, InterpolateFrom, LineClamp, LineParameter, LineRule, LineT,
-    PointBounds, PointClip, Scene,
+    ClipXy, ClipZ, ConservativeSupport, FillRule, InterpolateFrom, LineClamp, LineParameter,
+    LineRule, LineT, PointBounds, PointClip, Scene,
 };
 
 use super::device::Offers;
@@ -158,6 +158,19 @@ impl Rasterizer for Vulkan {
         Some(bits)
     }
 
+    /// VK_EXT_conservative_rasterization where the device offers it, with
+    /// its `primitiveOverestimationSize` as its uncertainty and its
+    /// degenerate-primitive properties (`conservative.rs`); where it does
+    /// not, both modes are claimed and each case is refused in
+    /// [`Rasterizer::rasterize`] with the device's reason. `None` where
+    /// the device cannot be made (nothing is drawn then).
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        let shared = self.shared().ok()?;
+        let support =
+            super::conservative::support(lock(shared).device.offers.conservative.as_ref());
+        Some(support)
+    }
+
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let shared = self
             .shared()
@@ -263,8 +276,12 @@ impl Rasterizer for Vulkan {
                 }
             )
         };
+        let conservative = match &offers.conservative {
+            Some(c) => c.words(),
+            None => format!("no {}", super::conservative::EXTENSION),
+        };
         Some(format!(
-            "{}; {sampling}; motion by time passes",
+            "{}; {sampling}; motion by time passes; {conservative}",
             shared.device.description
         ))
     }

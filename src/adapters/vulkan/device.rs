@@ -8,6 +8,7 @@ use std::ffi::CStr;
 
 use ash::vk;
 
+use super::conservative::ConservativeOffers;
 use super::messenger::{self, Listening, Messenger, Record};
 use crate::adapters::gpu;
 use crate::rasterizer::ApiRecord;
@@ -77,6 +78,9 @@ pub(super) struct Offers {
     /// Where the driver takes a Bresenham or DEFAULT line's t (SPEC.md
     /// §5.1), known per driver ([`line_parameter`]).
     pub line_parameter: LineParameter,
+    /// VK_EXT_conservative_rasterization's properties, where the device
+    /// lists the extension (it is then enabled); `None` where it does not.
+    pub conservative: Option<ConservativeOffers>,
 }
 
 /// The positions a driver interpolates from, by its `driverID`:
@@ -249,9 +253,17 @@ impl Device {
         .into_iter()
         .find(|e| has(e));
 
+        let conservative_ext = has(ash::ext::conservative_rasterization::NAME);
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut conservative_properties =
+            vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default();
         let mut properties2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        if conservative_ext {
+            properties2 = properties2.push_next(&mut conservative_properties);
+        }
         instance.get_physical_device_properties2(physical, &mut properties2);
+        let conservative =
+            conservative_ext.then(|| ConservativeOffers::of(&conservative_properties));
         let c_text = |r: Result<&CStr, _>| r.map(|c: &CStr| c.to_string_lossy().into_owned());
         let driver_name = c_text(driver.driver_name_as_c_str()).unwrap_or_default();
         let driver_info = c_text(driver.driver_info_as_c_str()).unwrap_or_default();
@@ -320,6 +332,9 @@ impl Device {
         }
         if depth_clamp {
             names.push(ash::ext::depth_clip_enable::NAME.as_ptr());
+        }
+        if conservative.is_some() {
+            names.push(ash::ext::conservative_rasterization::NAME.as_ptr());
         }
         let mut info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
@@ -397,6 +412,7 @@ impl Device {
             max_viewport: limits.max_viewport_dimensions,
             interpolate_from: interpolate_from(driver.driver_id),
             line_parameter: line_parameter(driver.driver_id),
+            conservative,
         };
         Ok(Device {
             _entry: entry,

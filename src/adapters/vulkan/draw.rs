@@ -208,11 +208,16 @@ pub(super) fn render(
     // runs, chosen before recording.
     let mut placed = Vec::with_capacity(streams.len());
     let mut base = 0u64;
+    let stage = Stage {
+        conservative: super::conservative::ask(scene, gpu.offers.conservative.as_ref())
+            .map_err(RasterError::Unsupported)?,
+        ..Stage::of(scene)
+    };
     for stream in streams {
         let mut runs = Vec::with_capacity(stream.runs.len());
         for run in &stream.runs {
             let pipeline = pipelines
-                .pipeline(run.draw, scene.rules.cull, Stage::of(scene), groups, n)
+                .pipeline(run.draw, scene.rules.cull, stage, groups, n)
                 .map_err(failed)?;
             runs.push((pipeline, run.first, run.end));
         }

@@ -5,7 +5,8 @@
 //! and motion: [`docs/drivers/vulkan.md`](../../../docs/drivers/vulkan.md).
 //!
 //! A scene passes `adapter.rs` (the [`Rasterizer`](crate::rasterizer::Rasterizer)),
-//! `refusals.rs` (what the device draws, and why not the rest), `native.rs`
+//! `refusals.rs` (what the device draws, and why not the rest, with
+//! `conservative.rs` for VK_EXT_conservative_rasterization), `native.rs`
 //! (natively multisampled or by shifted passes), `shared.rs` (the device
 //! and pipelines, made once: `device.rs`, `pipelines.rs`, `shaders.rs`),
 //! then `draw.rs` (recorded, submitted, read back, decoded, with
@@ -14,6 +15,7 @@
 //! makes a call it must catch, for the test that shows it does.
 
 mod adapter;
+mod conservative;
 mod device;
 mod draw;
 mod invalid_call;

@@ -21,6 +21,7 @@ use std::collections::HashMap;
 use ash::vk;
 
 use super::super::gpu::{self, Draw, VERTEX_FLOATS};
+use super::conservative::Ask;
 use super::device::{depth_attachment, Device};
 use super::shaders;
 use crate::scene::{
@@ -58,6 +59,9 @@ pub(super) struct Stage {
     pub depth: Option<DepthFormat>,
     /// Polygon offset `[constant, slope, clamp]`, their f32 bits.
     pub bias: Option<[u32; 3]>,
+    /// Conservative rasterization (`conservative.rs`): its create info
+    /// chained into the rasterization state.
+    pub conservative: Option<Ask>,
 }
 
 impl Stage {
@@ -74,6 +78,7 @@ impl Stage {
             },
             depth,
             bias: requested.and_then(|t| t.bias).map(|b| b.map(f32::to_bits)),
+            conservative: None,
         }
     }
 }
@@ -342,6 +347,10 @@ impl Pipelines {
             .depth_clip_enable(false);
         if key.stage.depth_clamp {
             raster = raster.depth_clamp_enable(true).push_next(&mut depth_clip);
+        }
+        let mut conservative = key.stage.conservative.map(|ask| ask.create_info());
+        if let Some(state) = &mut conservative {
+            raster = raster.push_next(state);
         }
         if let Some([constant, slope, clamp]) = key.stage.bias {
             raster = raster

@@ -1,6 +1,6 @@
 //! What a Vulkan device can draw of a scene, and why it refuses the rest:
 //! line modes and widths, stencil, points, clip space, depth attachments,
-//! the provoking vertex and attributes.
+//! the provoking vertex, attributes and conservative rasterization.
 
 use super::device::{self, Offers};
 use crate::adapters::float_input::f32_of;
@@ -38,6 +38,9 @@ pub(super) fn accepted(scene: &Scene, plan: &Plan, offers: &Offers) -> Result<u3
         if let Some(why) = gpu::points::refusal(scene, point, &point_offers) {
             return unsupported(why);
         }
+    }
+    if let Err(why) = super::conservative::ask(scene, offers.conservative.as_ref()) {
+        return unsupported(why);
     }
     if let Some(why) = clip_space_refusal(scene, offers) {
         return unsupported(why);

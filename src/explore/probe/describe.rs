@@ -227,6 +227,12 @@ impl Profile {
         if off > 0 {
             s += &format!("                      and {off} samples away from the edges differ from the reference\n");
         }
+        if let Some(c) = &self.conservative {
+            s += &format!(
+                "  uncertainty:        {} ({})\n",
+                c.uncertainty, c.measured_on
+            );
+        }
         s += &format!(
             "  y direction:        {}\n",
             match self.y_down {

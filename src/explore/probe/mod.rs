@@ -14,11 +14,13 @@
 //! probe found (`outline.rs` tells outline over fill from any-coverage,
 //! `truncation.rs` finds vertices truncated to whole pixels, `coverage.rs`
 //! an area method's coverage encoding), `clip.rs` and `points.rs` probe clip-space conventions
-//! (through `convention.rs`), `describe.rs` puts the profile into words.
+//! (through `convention.rs`), `conservative.rs` measures a conservative
+//! rasterizer's uncertainty, `describe.rs` puts the profile into words.
 //! Reading a profile for `run --profile` is the harness's
 //! (`harness/profile.rs`).
 
 mod clip;
+mod conservative;
 mod convention;
 mod coverage;
 mod describe;
@@ -36,6 +38,7 @@ mod truncation;
 mod verdict;
 
 pub use clip::{probe_clip, ClipProbe};
+pub use conservative::{probe_conservative, ConservativeProbe, Reach};
 pub use convention::{Convention, ConventionProbe};
 pub use diagnose::diagnose;
 pub use diagnosis::{Diagnosis, Sampler, SamplerKind};

@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use super::clip::ClipProbe;
+use super::conservative::ConservativeProbe;
 use super::diagnosis::SamplerKind;
 use super::evidence::{InterpolationProbe, MeshEvidence, Resolved, SlopeRule};
 use super::points::PointProbe;
@@ -105,6 +106,10 @@ pub struct Profile {
     /// was measured, when they declare one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub declared_coverage: Option<String>,
+    /// For an any-coverage (conservative) rasterizer, its uncertainty: how
+    /// far outside a pixel's square a triangle still draws it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conservative: Option<ConservativeProbe>,
     /// Departures from D3D11 and Vulkan, as sentences.
     pub departures: Vec<String>,
 }

@@ -74,6 +74,7 @@
 //!
 
 use super::clip::probe_clip;
+use super::conservative::probe_conservative;
 use super::coverage::{against_declared as coverage_against_declared, probe_coverage};
 use super::describe::departures;
 use super::diagnose::{diagnose_with_evidence, not_measured};
@@ -170,6 +171,7 @@ pub fn probe(candidate: &dyn Rasterizer) -> Result<Profile, String> {
         coverage_bits: encoding.map(|e| e.bits),
         coverage: coverage.map(|c| c.words),
         declared_coverage: declared_coverage.clone(),
+        conservative: probe_conservative(candidate, d.sampler.kind),
         departures: Vec::new(),
     };
     profile.departures = departures(&profile);

@@ -1,0 +1,338 @@
+//! Conservative rasterization through `VK_EXT_conservative_rasterization`
+//! (issue 38, SPEC.md §19): what the device offers (its
+//! `VkPhysicalDeviceConservativeRasterizationPropertiesEXT`, read where it
+//! lists the extension), what a conservative case asks the pipeline for
+//! (`VkPipelineRasterizationConservativeStateCreateInfoEXT`: the mode and
+//! the extra overestimation size), the uncertainty the device is then
+//! declared to have, and why it cannot draw a case.
+//!
+//! **The uncertainty.** Vulkan grows the primitive "at each of its edges"
+//! by `primitiveOverestimationSize`, plus the pipeline's
+//! `extraPrimitiveOverestimationSize` (0 to
+//! `maxExtraPrimitiveOverestimationSize`, in steps of
+//! `extraPrimitiveOverestimationSizeGranularity`). A case (SPEC.md §19)
+//! states the uncertainty it allows, not an extra size to grow by, so the
+//! pipeline asks for no extra size (0, which every device takes exactly)
+//! and the device is declared to have its own base size as its
+//! uncertainty (`ConservativeSupport::overestimation_uncertainty`): every
+//! overestimating case is judged under it, reported as judged under the
+//! device's own where the case states another (SPEC.md §19.6). A case
+//! format that asked for an extra size e would be handed ⌈e / g⌉·g (g the
+//! granularity, or 2^-subPixelPrecisionBits where it is 0), refused above
+//! the maximum, and declared as base + that; none does today.
+//!
+//! What it does not do: read `FullyCoveredEXT` (the shaders are naga's
+//! WGSL, which has no such built-in: a case asking for the flag is
+//! refused, naming why), or draw points and lines conservatively (not
+//! judged in this version, SPEC.md §19.7). Underestimation has no size in
+//! Vulkan; its uncertainty follows the case.
+
+use ash::vk;
+use dashu_ratio::RBig;
+
+use crate::scene::{ConservativeMode, ConservativeSupport, Number, Scene};
+
+/// The extension's name, as reasons quote it.
+pub(super) const EXTENSION: &str = "VK_EXT_conservative_rasterization";
+
+/// What the device offers of conservative rasterization: its
+/// `VkPhysicalDeviceConservativeRasterizationPropertiesEXT`.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct ConservativeOffers {
+    /// `primitiveOverestimationSize`, px.
+    pub overestimation_size: f32,
+    /// `maxExtraPrimitiveOverestimationSize`, px.
+    pub max_extra: f32,
+    /// `extraPrimitiveOverestimationSizeGranularity`, px (0: the subpixel
+    /// grid).
+    pub extra_granularity: f32,
+    /// `primitiveUnderestimation`.
+    pub underestimation: bool,
+    /// `conservativePointAndLineRasterization`.
+    pub points_and_lines: bool,
+    /// `degenerateTrianglesRasterized`.
+    pub degenerate_triangles: bool,
+    /// `degenerateLinesRasterized`.
+    pub degenerate_lines: bool,
+    /// `fullyCoveredFragmentShaderInputVariable`.
+    pub fully_covered: bool,
+    /// `conservativeRasterizationPostDepthCoverage`.
+    pub post_depth_coverage: bool,
+}
+
+impl ConservativeOffers {
+    /// The offers of the device's properties.
+    pub(super) fn of(p: &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT) -> Self {
+        ConservativeOffers {
+            overestimation_size: p.primitive_overestimation_size,
+            max_extra: p.max_extra_primitive_overestimation_size,
+            extra_granularity: p.extra_primitive_overestimation_size_granularity,
+            underestimation: p.primitive_underestimation == vk::TRUE,
+            points_and_lines: p.conservative_point_and_line_rasterization == vk::TRUE,
+            degenerate_triangles: p.degenerate_triangles_rasterized == vk::TRUE,
+            degenerate_lines: p.degenerate_lines_rasterized == vk::TRUE,
+            fully_covered: p.fully_covered_fragment_shader_input_variable == vk::TRUE,
+            post_depth_coverage: p.conservative_rasterization_post_depth_coverage == vk::TRUE,
+        }
+    }
+
+    /// The properties in words, for the adapter's description.
+    pub(super) fn words(&self) -> String {
+        format!(
+            "{EXTENSION}: primitiveOverestimationSize {}, extra up to {} in steps of {}{}{}{}",
+            exact(self.overestimation_size),
+            exact(self.max_extra),
+            exact(self.extra_granularity),
+            if self.underestimation {
+                ", underestimation"
+            } else {
+                ""
+            },
+            if self.degenerate_triangles {
+                ", degenerate triangles rasterized"
+            } else {
+                ""
+            },
+            if self.fully_covered {
+                ", FullyCoveredEXT"
+            } else {
+                ""
+            },
+        )
+    }
+}
+
+/// An f32 as its exact value ("1/512"); a non-finite one as written.
+fn exact(v: f32) -> String {
+    RBig::try_from(v).map_or_else(
+        |_| v.to_string(),
+        |r| Number::from_rbig(r).to_exact_string(),
+    )
+}
+
+/// An f32 property as an exact number (a non-finite, zero or negative one: 0).
+fn number(v: f32) -> Number {
+    RBig::try_from(v)
+        .ok()
+        .map(Number::from_rbig)
+        .filter(|n| n.is_positive())
+        .unwrap_or(Number::ZERO)
+}
+
+/// What a conservative case asks the pipeline for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) struct Ask {
+    pub underestimate: bool,
+    /// `extraPrimitiveOverestimationSize`, its f32 bits (0 for
+    /// underestimation).
+    pub extra: u32,
+}
+
+impl Ask {
+    /// The create info chained into the pipeline's rasterization state.
+    pub(super) fn create_info(
+        &self,
+    ) -> vk::PipelineRasterizationConservativeStateCreateInfoEXT<'static> {
+        let mode = if self.underestimate {
+            vk::ConservativeRasterizationModeEXT::UNDERESTIMATE
+        } else {
+            vk::ConservativeRasterizationModeEXT::OVERESTIMATE
+        };
+        vk::PipelineRasterizationConservativeStateCreateInfoEXT::default()
+            .conservative_rasterization_mode(mode)
+            .extra_primitive_overestimation_size(f32::from_bits(self.extra))
+    }
+}
+
+/// What the pipeline is asked for to draw `scene` conservatively, `None`
+/// for a scene that is not conservative, or why the device cannot: it
+/// lacks the extension, underestimation, or (as this adapter reads no
+/// `FullyCoveredEXT`) the flag asked for.
+pub(super) fn ask(
+    scene: &Scene,
+    offers: Option<&ConservativeOffers>,
+) -> Result<Option<Ask>, String> {
+    let Some(case) = &scene.effects.conservative else {
+        return Ok(None);
+    };
+    let Some(offers) = offers else {
+        return Err(format!(
+            "conservative {}: the device offers no {EXTENSION}",
+            case.mode.name()
+        ));
+    };
+    if case.mode == ConservativeMode::Underestimate && !offers.underestimation {
+        return Err(format!(
+            "conservative underestimate: the device's {EXTENSION} has no primitiveUnderestimation"
+        ));
+    }
+    if case.fully_covered {
+        return Err(if offers.fully_covered {
+            "the fully-covered flag: the device offers FullyCoveredEXT, but this adapter's \
+             shaders (naga's WGSL) cannot read it"
+                .to_owned()
+        } else {
+            format!(
+                "the fully-covered flag: the device's {EXTENSION} has no \
+                 fullyCoveredFragmentShaderInputVariable"
+            )
+        });
+    }
+    Ok(Some(match case.mode {
+        ConservativeMode::Underestimate => Ask {
+            underestimate: true,
+            extra: 0,
+        },
+        ConservativeMode::Overestimate => Ask {
+            underestimate: false,
+            extra: 0.0f32.to_bits(),
+        },
+    }))
+}
+
+/// What the device declares for conservative cases (SPEC.md §19.6): the
+/// modes it offers, its base size as its overestimation uncertainty, and
+/// its degenerate-primitive properties. Without the extension it still
+/// claims both modes, so that a case comes to `rasterize` and is refused
+/// there with the device's reason.
+pub(super) fn support(offers: Option<&ConservativeOffers>) -> ConservativeSupport {
+    let Some(offers) = offers else {
+        return ConservativeSupport {
+            overestimate: true,
+            underestimate: true,
+            fully_covered: true,
+            ..ConservativeSupport::default()
+        };
+    };
+    ConservativeSupport {
+        overestimate: true,
+        underestimate: offers.underestimation,
+        // Refused in `ask` with the reason (the shaders cannot read it).
+        fully_covered: true,
+        overestimation_uncertainty: Some(number(offers.overestimation_size)),
+        underestimation_uncertainty: None,
+        degenerate_triangles: Some(offers.degenerate_triangles),
+        degenerate_lines: Some(offers.degenerate_lines),
+        points_and_lines: Some(offers.points_and_lines),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{parse_case, Limits};
+    use serde_json::json;
+
+    /// An NVIDIA H100's properties (shared/GPU.md, ANCHORS.md): base
+    /// 2^-9 px, extra up to 0.75 px in steps of 2^-8.
+    fn h100() -> ConservativeOffers {
+        ConservativeOffers::of(
+            &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default()
+                .primitive_overestimation_size(1.0 / 512.0)
+                .max_extra_primitive_overestimation_size(0.75)
+                .extra_primitive_overestimation_size_granularity(1.0 / 256.0)
+                .primitive_underestimation(true)
+                .degenerate_triangles_rasterized(true)
+                .fully_covered_fragment_shader_input_variable(true),
+        )
+    }
+
+    fn scene(conservative: serde_json::Value) -> Scene {
+        parse_case(
+            &json!({
+                "name": "c", "canvas": {"width": 4, "height": 4},
+                "rules": {"subpixel_bits": 8},
+                "effects": {"conservative": conservative},
+                "primitives": [{"triangle": [[0.5, 0.5], [3.5, 0.5], [0.5, 3.5]]}],
+            })
+            .to_string(),
+            "c",
+            &Limits::default(),
+        )
+        .unwrap()
+    }
+
+    fn n(s: &str) -> Number {
+        Number::from_string(s).unwrap()
+    }
+
+    /// What the pipeline is asked for, and what the device then declares,
+    /// on an H100's properties: the case's mode, no extra size, the
+    /// structure type the chain needs; the uncertainty 2^-9 px whatever
+    /// the case allows (judged under it).
+    #[test]
+    fn a_case_asks_for_its_mode_and_no_extra_size() {
+        let o = h100();
+        for u in ["0", "1/64", "3/4"] {
+            let over = scene(json!({"mode": "overestimate", "uncertainty": u}));
+            let info = ask(&over, Some(&o)).unwrap().unwrap().create_info();
+            assert_eq!(
+                info.conservative_rasterization_mode,
+                vk::ConservativeRasterizationModeEXT::OVERESTIMATE
+            );
+            assert_eq!(info.extra_primitive_overestimation_size, 0.0);
+            assert_eq!(
+                info.s_type,
+                vk::StructureType::PIPELINE_RASTERIZATION_CONSERVATIVE_STATE_CREATE_INFO_EXT
+            );
+        }
+        let declared = support(Some(&o));
+        assert_eq!(declared.overestimation_uncertainty, Some(n("1/512")));
+        assert_eq!(declared.underestimation_uncertainty, None);
+        assert_eq!(declared.degenerate_triangles, Some(true));
+        assert!(declared.overestimate && declared.underestimate);
+        let case = scene(json!({"mode": "overestimate"}));
+        let judged = declared.restate(case.effects.conservative.as_ref().unwrap());
+        assert_eq!(judged.uncertainty, n("1/512"));
+        let under = scene(json!({"mode": "underestimate", "uncertainty": "1/8"}));
+        let info = ask(&under, Some(&o)).unwrap().unwrap().create_info();
+        assert_eq!(
+            info.conservative_rasterization_mode,
+            vk::ConservativeRasterizationModeEXT::UNDERESTIMATE
+        );
+        assert_eq!(info.extra_primitive_overestimation_size, 0.0);
+        assert!(
+            o.words().contains(
+                "primitiveOverestimationSize 0.001953125, extra up to 0.75 in steps of 0.00390625"
+            ),
+            "{}",
+            o.words()
+        );
+    }
+
+    /// Without the extension (lavapipe, SwiftShader): refused with the
+    /// device's reason; without underestimation or with the flag asked:
+    /// refused naming the property or the shaders.
+    #[test]
+    fn what_the_device_lacks_refuses_the_case_with_its_reason() {
+        let over = scene(json!({"mode": "overestimate"}));
+        assert_eq!(
+            ask(&over, None).unwrap_err(),
+            "conservative overestimate: the device offers no VK_EXT_conservative_rasterization"
+        );
+        let no_under = ConservativeOffers {
+            underestimation: false,
+            ..h100()
+        };
+        let under = scene(json!({"mode": "underestimate"}));
+        assert!(ask(&under, Some(&no_under))
+            .unwrap_err()
+            .contains("no primitiveUnderestimation"));
+        let flagged = scene(json!({"mode": "overestimate", "fully_covered": true}));
+        assert!(ask(&flagged, Some(&h100()))
+            .unwrap_err()
+            .contains("cannot read it"));
+        assert!(ask(&scene_plain(), None).unwrap().is_none());
+    }
+
+    fn scene_plain() -> Scene {
+        parse_case(
+            &json!({"name": "p", "canvas": {"width": 2, "height": 2},
+                    "primitives": [{"triangle": [[0, 0], [2, 0], [0, 2]]}]})
+            .to_string(),
+            "p",
+            &Limits::default(),
+        )
+        .unwrap()
+    }
+}
