@@ -40,8 +40,10 @@
 
 pub mod case_files;
 pub mod diff;
+pub mod digest;
 pub mod escape;
 pub mod exr;
+pub mod families;
 pub mod files;
 pub mod folder;
 pub mod html;
@@ -53,6 +55,7 @@ pub mod machine;
 pub mod merge;
 pub mod plots;
 pub mod png;
+pub mod spool;
 pub mod summary;
 pub mod write;
 
