@@ -22,6 +22,10 @@ use crate::scene::{ClipRules, DeclaredRule, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
+/// Hands over a report's case entries, in order, one at a time (from
+/// memory, or read back from disk: `spool.rs`).
+pub type Cases<'a> = dyn FnMut(&mut dyn FnMut(&CaseEntry)) -> Result<(), String> + 'a;
+
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Report {
     #[serde(deserialize_with = "name")]

@@ -8,7 +8,7 @@
 use super::escape::escape;
 use std::io::Write;
 
-use super::json::{CaseEntry, Report};
+use super::json::{CaseEntry, Cases, Report};
 
 /// `junit.xml` for a report whose cases are in memory.
 pub fn render(report: &Report) -> String {
@@ -30,7 +30,7 @@ pub fn write(
     out: &mut dyn Write,
     report: &Report,
     tests: usize,
-    cases: &mut dyn FnMut(&mut dyn FnMut(&CaseEntry)) -> Result<(), String>,
+    cases: &mut Cases,
 ) -> Result<(), String> {
     let mut failed: Option<std::io::Error> = None;
     let mut put = |out: &mut dyn Write, text: &str| {

@@ -10,13 +10,10 @@ use std::path::{Path, PathBuf};
 use super::digest::Digest;
 use super::families::{families_of, FamilyCount};
 use super::files::{write_file, write_file_with};
-use super::json::{CaseEntry, Report};
+use super::json::{Cases, Report};
 use super::spool::Spool;
 use super::{case_files, html, junit, plots, summary};
 use crate::harness::runner::CaseOutcome;
-
-/// Hands over a report's case entries, in order, one at a time.
-pub type Cases<'a> = dyn FnMut(&mut dyn FnMut(&CaseEntry)) -> Result<(), String> + 'a;
 
 /// Writes `report.json` alone (used before a run starts, so that an
 /// interrupted run leaves a report saying what did not run).
