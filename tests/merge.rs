@@ -310,3 +310,62 @@ fn disagreeing_reports_are_errors_naming_what_disagrees() {
     assert_eq!(code, 2, "{printed}");
     assert!(printed.contains("would overwrite the report"), "{printed}");
 }
+
+#[test]
+fn one_driver_sharded_on_two_boards_is_one_matrix_with_a_row_per_board() {
+    let out = scratch("merge-boards");
+    let mut reports = Vec::new();
+    for board in ["board-a", "board-b"] {
+        for k in 1..=2 {
+            let dir = out.join(format!("{board}-{k}"));
+            let shard = format!("{k}/2");
+            let args = ["cases/lines", "-r", "production", "--shard", &shard];
+            assert_eq!(run_on(board, &dir, &args), 0);
+            reports.push(dir);
+        }
+    }
+    let whole = out.join("whole");
+    assert_eq!(
+        run_on("board-a", &whole, &["cases/lines", "-r", "production"]),
+        0
+    );
+    // Before: "shard 1/2 of the run of production given 2 times".
+    let merged = out.join("merged");
+    let given: Vec<&Path> = reports.iter().map(PathBuf::as_path).collect();
+    let (code, printed) = merge(&merged, &given);
+    assert_eq!(code, 0, "{printed}");
+    let report = read_json(&merged.join("report.json"));
+    assert_eq!(
+        rows(&report),
+        ["production on board-a", "production on board-b"],
+        "{printed}"
+    );
+    // Each board's row holds the unsharded run's verdicts, in its order.
+    let unsharded = read_json(&whole.join("report.json"));
+    let ids = |r: &Value| -> Vec<Value> {
+        r["cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["id"].clone())
+            .collect()
+    };
+    assert_eq!(ids(&report), ids(&unsharded));
+    for row in 0..2 {
+        let verdicts: Vec<&Value> = report["cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| &c["results"][row]["verdict"])
+            .collect();
+        let expected: Vec<&Value> = unsharded["cases"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| &c["results"][0]["verdict"])
+            .collect();
+        assert_eq!(verdicts, expected, "row {row}");
+    }
+    assert_eq!(report["sources"].as_array().unwrap().len(), 4);
+    assert_files_present(&merged);
+}

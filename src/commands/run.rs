@@ -16,7 +16,8 @@ use super::limits::LimitArgs;
 use super::names::rasterizers_named;
 use crate::harness::runner::{self, Problem, Selection};
 use crate::report;
-use crate::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report};
+use crate::report::digest::Digest;
+use crate::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report, Totals};
 
 #[derive(Args)]
 pub struct RunArgs {
@@ -171,7 +172,6 @@ pub fn run(args: RunArgs) -> Exit {
         LimitsInfo::of(&limits),
     );
     report.shard = shard.map(|(i, n)| format!("{i}/{n}"));
-    report.cases = files.iter().map(CaseEntry::not_run).collect();
     // Held (locked) until the run returns.
     let mut _claimed = None;
     if let Some(dir) = &args.report {
@@ -195,7 +195,13 @@ pub fn run(args: RunArgs) -> Exit {
         }
         // Written first, so that a run that is killed still leaves a report
         // that lists what did not run.
-        if let Err(e) = report::write_json(dir, &mut report) {
+        let mut not_run = |f: &mut dyn FnMut(&CaseEntry)| {
+            files.iter().for_each(|c| f(&CaseEntry::not_run(c)));
+            Ok(())
+        };
+        report.totals = Totals::of(&report.rasterizers);
+        not_run(&mut |c| report.totals.add(c)).ok();
+        if let Err(e) = report::write::write_json_streamed(dir, &report, &mut not_run) {
             eprintln!("error: {e}");
             return Exit::BadInput;
         }
@@ -204,9 +210,10 @@ pub fn run(args: RunArgs) -> Exit {
     // external programs are killed, and the partial report is written.
     crate::stop::install();
 
-    // Each case's report entry, kept as it finishes.
-    let entries: Vec<std::sync::Mutex<Option<CaseEntry>>> =
-        files.iter().map(|_| std::sync::Mutex::new(None)).collect();
+    // Each case's report entry, made on its worker thread as it finishes
+    // and taken when the case is handed over, in order: at most
+    // `runner::AHEAD` are held at once.
+    let entries: std::sync::Mutex<std::collections::HashMap<usize, CaseEntry>> = Default::default();
     let progress = Progress::new(files.len(), args.quiet);
     let root = PathBuf::from(".");
     // Each case's pictures, error maps and page are written as it
@@ -215,7 +222,24 @@ pub fn run(args: RunArgs) -> Exit {
         .report
         .as_deref()
         .map(|dir| report::case_files::CaseWriter::new(dir, &foils));
-    let mut outcomes = runner::run_all_repeated(
+    // Every entry goes to disk as its case is handed over; what stays in
+    // memory is bounded: the totals, the counts per family, and the
+    // entries the summary files are drawn from (`report/digest.rs`).
+    let mut spool = match args.report.as_deref().map(report::spool::Spool::create) {
+        Some(Ok(spool)) => Some(spool),
+        Some(Err(e)) => {
+            eprintln!("error: {e}");
+            return Exit::BadInput;
+        }
+        None => None,
+    };
+    let mut digest = Digest::new(&report.rasterizers);
+    // Case names already used, and by which file (names identify cases in
+    // reports and baselines, so they must be unique in a run).
+    let mut names: std::collections::HashMap<String, usize> = Default::default();
+    let colour = std::io::stdout().is_terminal();
+    let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    runner::run_streamed(
         &files,
         &limits,
         &candidates,
@@ -227,54 +251,46 @@ pub fn run(args: RunArgs) -> Exit {
                 Some(writer) => writer.write(outcome),
                 None => CaseEntry::from_outcome(outcome, &foils),
             };
-            *entries[k].lock().unwrap_or_else(|e| e.into_inner()) = Some(entry);
-            // The entry holds what the report needs of the scene; the bulk
-            // of it goes, so a run's memory grows by an entry per case.
-            if let Some(scene) = &mut outcome.scene {
-                scene.primitives = Vec::new();
-                scene.description = String::new();
-            }
+            entries
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .insert(k, entry);
             progress.tick();
+        },
+        &mut |k, mut outcome| {
+            let kept = entries.lock().unwrap_or_else(|e| e.into_inner()).remove(&k);
+            let duplicate = runner::reject_duplicate_name(&mut outcome, k, &files, &mut names);
+            // A case that did not finish gets its entry now; one marked
+            // since (a duplicate name) a fresh one, with the facts of its
+            // scene kept.
+            let entry = match kept {
+                Some(kept) if duplicate => CaseEntry {
+                    description: kept.description,
+                    rules: kept.rules,
+                    ..CaseEntry::from_outcome(&outcome, &foils)
+                },
+                Some(kept) => kept,
+                None => CaseEntry::from_outcome(&outcome, &foils),
+            };
+            progress.suspend(|| print_outcome(&outcome, &candidates, args.quiet, colour, width));
+            bad_input |= outcome
+                .problem
+                .as_ref()
+                .is_some_and(Problem::is_input_error);
+            if let Some(spool) = &mut spool {
+                spool.push(&entry);
+            }
+            digest.add(&entry);
         },
     );
     progress.finish();
-    let duplicates = runner::reject_duplicate_names(&mut outcomes);
-
-    let colour = std::io::stdout().is_terminal();
-    let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
-    for outcome in &outcomes {
-        print_outcome(outcome, &candidates, args.quiet, colour, width);
-        bad_input |= outcome
-            .problem
-            .as_ref()
-            .is_some_and(Problem::is_input_error);
-    }
-    // The entries kept as each case finished. A case that did not finish
-    // gets its entry now; one marked since (a duplicate name) a fresh one,
-    // with the facts of its scene kept (the scene itself was let go).
-    report.cases = outcomes
-        .iter()
-        .zip(entries)
-        .enumerate()
-        .map(
-            |(k, (o, kept))| match kept.into_inner().unwrap_or_else(|e| e.into_inner()) {
-                Some(kept) if duplicates.contains(&k) => CaseEntry {
-                    description: kept.description,
-                    rules: kept.rules,
-                    ..CaseEntry::from_outcome(o, &foils)
-                },
-                Some(kept) => kept,
-                None => CaseEntry::from_outcome(o, &foils),
-            },
-        )
-        .collect();
     for (info, candidate) in report.rasterizers.iter_mut().zip(&candidates) {
         info.declared = candidate.declared();
         info.api_record = candidate.api_record();
     }
     let stopped = crate::stop::requested();
     report.complete = stopped.is_none();
-    report.tally();
+    report.totals = digest.totals.clone();
     let t = report.totals.clone();
     let failed = t.reference_failed > 0
         || t.golden.differing > 0
@@ -340,10 +356,10 @@ pub fn run(args: RunArgs) -> Exit {
             ""
         }
     );
-    if let (Some(dir), Some(writer)) = (&args.report, writer) {
-        let written = writer
-            .finish()
-            .and_then(|cases| Ok(cases + report::write_summaries(dir, &mut report)?.len()));
+    if let (Some(dir), Some(writer), Some(spool)) = (&args.report, writer, &mut spool) {
+        let written = writer.finish().and_then(|cases| {
+            Ok(cases + report::write::write_streamed(dir, &mut report, spool, digest)?.len())
+        });
         match written {
             Ok(n) => outln!("report: {} ({n} files)", dir.display()),
             Err(e) => {

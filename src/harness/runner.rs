@@ -354,31 +354,111 @@ pub fn run_all(
     threads: Option<usize>,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
-    let work = || {
-        files
-            .par_iter()
-            .enumerate()
-            .map(|(k, file)| {
-                if crate::stop::requested().is_some() {
-                    return CaseOutcome::interrupted(file);
-                }
-                let mut outcome = run_case(file, limits, candidates, root);
-                if crate::stop::requested().is_some() {
-                    return CaseOutcome::interrupted(file);
-                }
+    let mut outcomes = Vec::with_capacity(files.len());
+    run_streamed(
+        files,
+        limits,
+        candidates,
+        root,
+        threads,
+        1,
+        done,
+        &mut |_, o| outcomes.push(o),
+    );
+    outcomes
+}
+
+/// How many cases past the oldest one not yet handed over a worker may
+/// start ([`run_streamed`]): the most outcomes held waiting for their turn,
+/// whatever the number of cases (a case that hangs until its time limit
+/// holds the others back once this many have finished after it).
+pub const AHEAD: usize = 1024;
+
+/// [`run_all_repeated`] without keeping the outcomes: each is handed to
+/// `emit`, released of its frames, in the order of `files`, on the calling
+/// thread, as soon as it and every case before it have finished. Cases are
+/// started in order and at most [`AHEAD`] cases past the oldest one not yet
+/// handed over, so a run of any number of cases holds at most that many
+/// outcomes: its memory does not grow with its number of cases.
+#[allow(clippy::too_many_arguments)]
+pub fn run_streamed(
+    files: &[CaseFile],
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+    root: &Path,
+    threads: Option<usize>,
+    repeat: usize,
+    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
+    emit: &mut dyn FnMut(usize, CaseOutcome),
+) {
+    if repeat > 1 {
+        return repeated(files, limits, candidates, root, threads, repeat, done, emit);
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build();
+    let workers = pool
+        .as_ref()
+        .map_or_else(
+            |_| rayon::current_num_threads(),
+            |p| p.current_num_threads(),
+        )
+        .max(1);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    // The index of the oldest case not yet handed over, and its signal.
+    let handed = std::sync::Mutex::new(0usize);
+    let turn = std::sync::Condvar::new();
+    let (sender, receiver) = std::sync::mpsc::channel::<(usize, CaseOutcome)>();
+    let work = |sender: std::sync::mpsc::Sender<(usize, CaseOutcome)>| loop {
+        let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let Some(file) = files.get(k) else {
+            return;
+        };
+        {
+            let mut oldest = handed.lock().unwrap_or_else(|e| e.into_inner());
+            while k >= *oldest + AHEAD {
+                oldest = turn.wait(oldest).unwrap_or_else(|e| e.into_inner());
+            }
+        }
+        let outcome = if crate::stop::requested().is_some() {
+            CaseOutcome::interrupted(file)
+        } else {
+            let mut outcome = run_case(file, limits, candidates, root);
+            if crate::stop::requested().is_some() {
+                CaseOutcome::interrupted(file)
+            } else {
                 done(k, &mut outcome);
                 outcome.release_frames();
                 outcome
-            })
-            .collect()
+            }
+        };
+        if sender.send((k, outcome)).is_err() {
+            return;
+        }
     };
-    match rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-    {
-        Ok(pool) => pool.install(work),
-        Err(_) => work(),
-    }
+    std::thread::scope(|scope| {
+        let work = &work;
+        scope.spawn(move || match &pool {
+            Ok(pool) => pool.scope(|s| {
+                for _ in 0..workers {
+                    let sender = sender.clone();
+                    s.spawn(move |_| work(sender));
+                }
+            }),
+            Err(_) => work(sender.clone()),
+        });
+        let mut waiting: std::collections::BTreeMap<usize, CaseOutcome> = Default::default();
+        let mut oldest = 0;
+        for (k, outcome) in receiver {
+            waiting.insert(k, outcome);
+            while let Some(outcome) = waiting.remove(&oldest) {
+                emit(oldest, outcome);
+                oldest += 1;
+                *handed.lock().unwrap_or_else(|e| e.into_inner()) = oldest;
+                turn.notify_all();
+            }
+        }
+    });
 }
 
 /// How many cases a round of a repeated run holds (`run --repeat N`): each
@@ -408,13 +488,40 @@ pub fn run_all_repeated(
     repeat: usize,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
-    if repeat <= 1 {
-        return run_all(files, limits, candidates, root, threads, done);
-    }
+    let mut outcomes = Vec::with_capacity(files.len());
+    run_streamed(
+        files,
+        limits,
+        candidates,
+        root,
+        threads,
+        repeat,
+        done,
+        &mut |_, o| outcomes.push(o),
+    );
+    outcomes
+}
+
+/// [`run_streamed`] of `repeat` > 1, block by block.
+#[allow(clippy::too_many_arguments)]
+fn repeated(
+    files: &[CaseFile],
+    limits: &Limits,
+    candidates: &[Box<dyn Rasterizer>],
+    root: &Path,
+    threads: Option<usize>,
+    repeat: usize,
+    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
+    emit: &mut dyn FnMut(usize, CaseOutcome),
+) {
     let stopped = || crate::stop::requested().is_some();
-    let work = || {
-        let mut outcomes = Vec::with_capacity(files.len());
-        for (block, chunk) in files.chunks(ROUND_CASES).enumerate() {
+    // Drawn on the pool, handed over on the calling thread, a block at a
+    // time.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build();
+    for (block, chunk) in files.chunks(ROUND_CASES).enumerate() {
+        let work = || {
             let mut firsts: Vec<CaseOutcome> = chunk
                 .par_iter()
                 .map(|file| {
@@ -443,6 +550,7 @@ pub fn run_all_repeated(
                     }
                 }
             }
+            let mut outcomes = Vec::with_capacity(firsts.len());
             for (k, (mut outcome, reps)) in firsts.drain(..).zip(kept).enumerate() {
                 if stopped() {
                     outcomes.push(CaseOutcome::interrupted(&outcome.file));
@@ -457,15 +565,15 @@ pub fn run_all_repeated(
                 outcome.release_frames();
                 outcomes.push(outcome);
             }
+            outcomes
+        };
+        let outcomes = match &pool {
+            Ok(pool) => pool.install(work),
+            Err(_) => work(),
+        };
+        for (k, outcome) in outcomes.into_iter().enumerate() {
+            emit(block * ROUND_CASES + k, outcome);
         }
-        outcomes
-    };
-    match rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
-        .build()
-    {
-        Ok(pool) => pool.install(work),
-        Err(_) => work(),
     }
 }
 
@@ -558,30 +666,49 @@ fn repetition(verdict: &Verdict, k: usize) -> Repetition {
 /// names identify cases in reports and baselines, so they must be unique in
 /// a run. Returns the indices of those marked.
 pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
-    let mut seen: std::collections::HashMap<String, String> = std::collections::HashMap::new();
+    let files: Vec<CaseFile> = outcomes.iter().map(|o| o.file.clone()).collect();
+    let mut names = std::collections::HashMap::new();
     let mut marked = Vec::new();
     for (k, outcome) in outcomes.iter_mut().enumerate() {
-        let Some(name) = outcome.scene.as_ref().map(|s| s.name.clone()) else {
-            continue;
-        };
-        let path = outcome.file.path.display().to_string();
-        match seen.get(&name) {
-            None => {
-                seen.insert(name, path);
-            }
-            Some(first) => {
-                outcome.problem = Some(Problem::Unreadable(format!(
-                    "{path}: $.name: the case name {} is also used by {first}; case names must be unique",
-                    crate::scene::number::echo(&name)
-                )));
-                outcome.reference = None;
-                outcome.golden = None;
-                outcome.candidates.clear();
-                marked.push(k);
-            }
+        if reject_duplicate_name(outcome, k, &files, &mut names) {
+            marked.push(k);
         }
     }
     marked
+}
+
+/// [`reject_duplicate_names`] one case at a time, in order: `outcome` is
+/// case `k` of `files`, and `names` the names of the cases before it, each
+/// with the index of the first case that used it. Returns whether the case
+/// was marked as bad input.
+pub fn reject_duplicate_name(
+    outcome: &mut CaseOutcome,
+    k: usize,
+    files: &[CaseFile],
+    names: &mut std::collections::HashMap<String, usize>,
+) -> bool {
+    let Some(name) = outcome.scene.as_ref().map(|s| s.name.clone()) else {
+        return false;
+    };
+    let first = match names.get(&name) {
+        None => {
+            names.insert(name, k);
+            return false;
+        }
+        Some(&first) => first,
+    };
+    let path = outcome.file.path.display().to_string();
+    let first = files
+        .get(first)
+        .map_or_else(String::new, |f| f.path.display().to_string());
+    outcome.problem = Some(Problem::Unreadable(format!(
+        "{path}: $.name: the case name {} is also used by {first}; case names must be unique",
+        crate::scene::number::echo(&name)
+    )));
+    outcome.reference = None;
+    outcome.golden = None;
+    outcome.candidates.clear();
+    true
 }
 
 /// Counts of verdicts for one rasterizer.

@@ -39,6 +39,43 @@ pub fn write_file(path: &Path, content: &[u8]) -> Result<PathBuf, String> {
     written.map(|()| path.to_owned())
 }
 
+/// Writes the file at `path` as `write` writes it, a piece at a time,
+/// whole or not at all as [`write_file`] does: a report file too large to
+/// hold in memory is written from what streams into it.
+pub fn write_file_with(
+    path: &Path,
+    write: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<(), String>,
+) -> Result<PathBuf, String> {
+    let parent = path.parent().unwrap_or(Path::new("."));
+    if !parent.as_os_str().is_empty() {
+        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+    }
+    let name = path
+        .file_name()
+        .ok_or_else(|| format!("{}: not a file name", path.display()))?;
+    let temporary = path.with_file_name(format!(
+        ".{}.{}{TEMPORARY_SUFFIX}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    let written = std::fs::File::create(&temporary)
+        .map_err(|e| format!("{}: {e}", path.display()))
+        .and_then(|file| {
+            let mut out = std::io::BufWriter::new(file);
+            write(&mut out)?;
+            out.into_inner()
+                .map(drop)
+                .map_err(|e| format!("{}: {}", path.display(), e.error()))
+        })
+        .and_then(|()| {
+            std::fs::rename(&temporary, path).map_err(|e| format!("{}: {e}", path.display()))
+        });
+    if written.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    written.map(|()| path.to_owned())
+}
+
 /// Removes what an earlier run wrote into the report folder `dir`
 /// ([`OWNED_FILES`], [`OWNED_FOLDERS`], and temporary files a killed run
 /// left), and nothing else: a user's own files there stay. A missing folder

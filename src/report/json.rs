@@ -22,6 +22,10 @@ use crate::scene::{ClipRules, DeclaredRule, Scene};
 
 pub const SCHEMA: &str = "rastercheck-report/1";
 
+/// Hands over a report's case entries, in order, one at a time (from
+/// memory, or read back from disk: `spool.rs`).
+pub type Cases<'a> = dyn FnMut(&mut dyn FnMut(&CaseEntry)) -> Result<(), String> + 'a;
+
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Report {
     #[serde(deserialize_with = "name")]
@@ -121,6 +125,62 @@ pub struct Totals {
     /// Per rasterizer, in the order of `rasterizers`.
     pub verdicts: Vec<RasterizerTotals>,
     pub golden: GoldenTotals,
+}
+
+impl Totals {
+    /// No case yet, for `rasterizers`.
+    pub fn of(rasterizers: &[RasterizerInfo]) -> Totals {
+        Totals {
+            verdicts: rasterizers
+                .iter()
+                .map(|r| RasterizerTotals {
+                    rasterizer: r.name.clone(),
+                    tally: Tally::default(),
+                })
+                .collect(),
+            ..Totals::default()
+        }
+    }
+
+    /// Counts one more case.
+    pub fn add(&mut self, case: &CaseEntry) {
+        self.cases += 1;
+        match case.status {
+            "unreadable" => self.unreadable += 1,
+            "reference-failed" => self.reference_failed += 1,
+            "limit-exceeded" => self.limit_exceeded += 1,
+            "not-run" => self.not_run += 1,
+            _ => {}
+        }
+        match case.golden {
+            Some("match") => self.golden.matching += 1,
+            Some("differ") => self.golden.differing += 1,
+            Some("missing") => self.golden.missing += 1,
+            _ => {}
+        }
+        for (result, totals) in case.results.iter().zip(self.verdicts.iter_mut()) {
+            let tally = &mut totals.tally;
+            match result.verdict {
+                "pass" => tally.pass += 1,
+                "fail" => tally.fail += 1,
+                "foil" => tally.foil += 1,
+                "unsupported" => tally.unsupported += 1,
+                "flaky" => tally.flaky += 1,
+                _ => tally.error += 1,
+            }
+            tally.own_rule += usize::from(
+                result.judged_fill_rule.is_some()
+                    || result.judged_clip.is_some()
+                    || result.judged_subpixel_bits.is_some()
+                    || result.judged_snapping.is_some()
+                    || result.judged_sample_pattern.is_some()
+                    || result.judged_y.is_some()
+                    || result.judged_pixel_centre.is_some()
+                    || result.judged_line_parameter.is_some()
+                    || result.judged_line_border.is_some(),
+            );
+        }
+    }
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -659,54 +719,9 @@ impl Report {
 
     /// Recounts the totals from the case entries.
     pub fn tally(&mut self) {
-        let mut totals = Totals {
-            cases: self.cases.len(),
-            verdicts: self
-                .rasterizers
-                .iter()
-                .map(|r| RasterizerTotals {
-                    rasterizer: r.name.clone(),
-                    tally: Tally::default(),
-                })
-                .collect(),
-            ..Totals::default()
-        };
+        let mut totals = Totals::of(&self.rasterizers);
         for case in &self.cases {
-            match case.status {
-                "unreadable" => totals.unreadable += 1,
-                "reference-failed" => totals.reference_failed += 1,
-                "limit-exceeded" => totals.limit_exceeded += 1,
-                "not-run" => totals.not_run += 1,
-                _ => {}
-            }
-            match case.golden {
-                Some("match") => totals.golden.matching += 1,
-                Some("differ") => totals.golden.differing += 1,
-                Some("missing") => totals.golden.missing += 1,
-                _ => {}
-            }
-            for (result, totals) in case.results.iter().zip(totals.verdicts.iter_mut()) {
-                let tally = &mut totals.tally;
-                match result.verdict {
-                    "pass" => tally.pass += 1,
-                    "fail" => tally.fail += 1,
-                    "foil" => tally.foil += 1,
-                    "unsupported" => tally.unsupported += 1,
-                    "flaky" => tally.flaky += 1,
-                    _ => tally.error += 1,
-                }
-                tally.own_rule += usize::from(
-                    result.judged_fill_rule.is_some()
-                        || result.judged_clip.is_some()
-                        || result.judged_subpixel_bits.is_some()
-                        || result.judged_snapping.is_some()
-                        || result.judged_sample_pattern.is_some()
-                        || result.judged_y.is_some()
-                        || result.judged_pixel_centre.is_some()
-                        || result.judged_line_parameter.is_some()
-                        || result.judged_line_border.is_some(),
-                );
-            }
+            totals.add(case);
         }
         self.totals = totals;
     }

@@ -12,3 +12,11 @@ pub const MAX_PROBLEM_PAGES: usize = 1000;
 /// kept well above the bundled cases' 424 (every one of which may have
 /// a pass with some error) so that their report does not.
 pub const MAX_PAGES: usize = 1000;
+
+/// The first cases of a run the summary files (`summary.md`, the plots,
+/// `index.html`) are drawn from whole (`digest.rs`).
+pub const LISTED: usize = 2000;
+
+/// Further cases worth a look (a failure, an error, a departure, some
+/// error) the summary files are drawn from whole, at most.
+pub const LOOKED: usize = 2000;

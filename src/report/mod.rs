@@ -43,8 +43,10 @@
 pub mod case_files;
 pub mod conservative;
 pub mod diff;
+pub mod digest;
 pub mod escape;
 pub mod exr;
+pub mod families;
 pub mod files;
 pub mod folder;
 pub mod html;
@@ -56,6 +58,7 @@ pub mod machine;
 pub mod merge;
 pub mod plots;
 pub mod png;
+pub mod spool;
 pub mod summary;
 pub mod write;
 

@@ -2,6 +2,7 @@
 //! totals, the failures first, then the worst metrics.
 
 use super::json::{CaseEntry, Report, ResultEntry};
+use super::limits::{LISTED, LOOKED};
 
 pub fn render(report: &Report) -> String {
     let t = &report.totals;
@@ -22,6 +23,14 @@ pub fn render(report: &Report) -> String {
         md.push_str(&format!(
             "| {} | {} | {} | {} | {} | {} | {} |\n",
             v.rasterizer, x.pass, x.fail, x.foil, x.unsupported, x.error, x.flaky
+        ));
+    }
+    let left_out = t.cases.saturating_sub(report.cases.len());
+    if left_out > 0 {
+        md.push_str(&format!(
+            "\nThe lists below are drawn from {} of the {} cases: the first {LISTED} and at most {LOOKED} more worth a look; the other {left_out} are counted above. report.json and junit.xml have every result.\n",
+            report.cases.len(),
+            t.cases
         ));
     }
     let problems: Vec<&CaseEntry> = report

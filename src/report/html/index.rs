@@ -9,8 +9,9 @@ use super::page::page_url;
 use super::shell::head;
 use super::tables::{badge, cell, shorten};
 use crate::report::escape::escape;
+use crate::report::families::{FamilyCount, VERDICTS};
 use crate::report::json::{CaseEntry, Report};
-use crate::report::limits::{MAX_PAGES, MAX_PROBLEM_PAGES};
+use crate::report::limits::{LISTED, LOOKED, MAX_PAGES, MAX_PROBLEM_PAGES};
 use crate::report::plots;
 
 /// Rows of the failures table on the index, at most.
@@ -19,7 +20,7 @@ const MAX_FAILURE_ROWS: usize = 500;
 /// The index: the run's header, totals, a family × rasterizer summary, the
 /// failures first, then one table per family. Built from the report alone;
 /// pictures live on the case pages, so the index stays light.
-pub fn render(report: &Report) -> String {
+pub fn render(report: &Report, families: &[FamilyCount]) -> String {
     let t = &report.totals;
     let mut html = head("rastercheck report", None);
 
@@ -66,14 +67,17 @@ pub fn render(report: &Report) -> String {
         t.cases, t.unreadable, t.reference_failed, t.limit_exceeded, t.not_run, g.matching, g.differing, g.missing
     );
 
-    // Families, in order of first appearance.
-    let mut families: Vec<&str> = Vec::new();
-    for case in &report.cases {
-        if !families.contains(&case.family.as_str()) {
-            families.push(&case.family);
-        }
+    // Families, in order of first appearance, counted over every case.
+    html.push_str(&family_summary(report, families));
+    let left_out = t.cases.saturating_sub(report.cases.len());
+    if left_out > 0 {
+        let _ = write!(
+            html,
+            "<div class=\"banner\">This page lists {} of the {} cases: the first {LISTED} and at most {LOOKED} more worth a look (failures, errors, departures, results with some error); the other {left_out} are counted above and not listed. The failures table, the plots and the family tables below are drawn from the cases listed; report.json and junit.xml have every result.</div>",
+            report.cases.len(),
+            t.cases
+        );
     }
-    html.push_str(&family_summary(report, &families));
     html.push_str(&failures(report));
     html.push_str(&plots(report));
     let unpaged = report
@@ -88,19 +92,24 @@ pub fn render(report: &Report) -> String {
         );
     }
 
-    for family in &families {
+    for count in families {
+        let family = &count.family;
         let members: Vec<&CaseEntry> = report
             .cases
             .iter()
             .filter(|c| c.family == *family)
             .collect();
+        let listed = match members.len() == count.cases {
+            true => String::new(),
+            false => format!(", {} listed", members.len()),
+        };
         let _ = write!(
             html,
-            "<section class=\"family\" id=\"family-{}\"><h2>{} <span class=\"muted\">({} case{})</span></h2>",
+            "<section class=\"family\" id=\"family-{}\"><h2>{} <span class=\"muted\">({} case{}{listed})</span></h2>",
             escape(&slug(family)),
             escape(family),
-            members.len(),
-            if members.len() == 1 { "" } else { "s" }
+            count.cases,
+            if count.cases == 1 { "" } else { "s" }
         );
         html.push_str("<table class=\"cases\"><tr><th>case</th><th>golden</th>");
         for r in &report.rasterizers {
@@ -151,7 +160,7 @@ pub fn render(report: &Report) -> String {
 
 /// Per family and rasterizer, how many results passed, failed, departed,
 /// were unsupported or errors, and cases with problems of their own.
-fn family_summary(report: &Report, families: &[&str]) -> String {
+fn family_summary(report: &Report, families: &[FamilyCount]) -> String {
     let mut html = String::from(
         "<h2>Families</h2><table class=\"families\"><tr><th>family</th><th class=\"n\">cases</th>",
     );
@@ -159,19 +168,15 @@ fn family_summary(report: &Report, families: &[&str]) -> String {
         let _ = write!(html, "<th>{}</th>", escape(&r.name));
     }
     html.push_str("</tr>\n");
-    for family in families {
-        let members: Vec<&CaseEntry> = report
-            .cases
-            .iter()
-            .filter(|c| c.family == *family)
-            .collect();
-        let problems = members.iter().filter(|c| c.status != "ran").count();
+    for count in families {
+        let family = &count.family;
+        let problems = count.problems;
         let _ = write!(
             html,
             "<tr><td><a href=\"#family-{}\">{}</a></td><td class=\"n\">{}{}</td>",
             escape(&slug(family)),
             escape(family),
-            members.len(),
+            count.cases,
             if problems > 0 {
                 format!(" <span class=\"metric\">({problems} did not run)</span>")
             } else {
@@ -179,19 +184,13 @@ fn family_summary(report: &Report, families: &[&str]) -> String {
             }
         );
         for r in 0..report.rasterizers.len() {
-            let mut counts: Vec<(&str, usize)> = Vec::new();
-            for verdict in ["pass", "fail", "flaky", "foil", "error", "unsupported"] {
-                let n = members
-                    .iter()
-                    .filter(|c| c.results.get(r).is_some_and(|x| x.verdict == verdict))
-                    .count();
-                if n > 0 {
-                    counts.push((verdict, n));
-                }
-            }
             html.push_str("<td>");
-            for (verdict, n) in counts {
-                html.push_str(&badge(verdict, &format!("{n} {verdict}")));
+            if let Some(counts) = count.verdicts.get(r) {
+                for (verdict, &n) in VERDICTS.iter().zip(counts) {
+                    if n > 0 {
+                        html.push_str(&badge(verdict, &format!("{n} {verdict}")));
+                    }
+                }
             }
             html.push_str("</td>");
         }

@@ -22,7 +22,9 @@ use std::path::{Component, Path, PathBuf};
 use super::read::Input;
 use crate::harness::runner::Selection;
 use crate::rasterizer::ApiRecord;
+use crate::report::html::cards_of;
 use crate::report::json::{CaseEntry, RasterizerInfo, Report, Source, Totals, SCHEMA};
+use crate::report::limits::{MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
 use crate::report::machine::Machine;
 
 /// Errors listed before the rest are counted.
@@ -205,6 +207,7 @@ fn group<'a>(inputs: &'a [Input], errors: &mut Vec<String>) -> Vec<Run<'a>> {
         };
         run.shards.entry(k).or_default().push(input);
     }
+    let runs: Vec<Run<'a>> = runs.into_iter().flat_map(by_board).collect();
     for run in &runs {
         let names: Vec<&str> = run.rows.iter().map(|r| r.0.as_str()).collect();
         for (k, given) in &run.shards {
@@ -225,8 +228,14 @@ fn group<'a>(inputs: &'a [Input], errors: &mut Vec<String>) -> Vec<Run<'a>> {
             .map(|k| format!("{k}/{}", run.count))
             .collect();
         if !missing.is_empty() {
+            let on = match &run.host {
+                Some(host) if run.count > 1 => format!(
+                    " on {host} (shards given more than once are told apart by the host each report names: RASTERCHECK_HOST names a board)"
+                ),
+                _ => String::new(),
+            };
             errors.push(format!(
-                "the run of {} ({}) misses shard {}: its cases would be missing from the merged report",
+                "the run of {}{on} ({}) misses shard {}: its cases would be missing from the merged report",
                 names.join(", "),
                 run.files(),
                 missing.join(", ")
@@ -234,6 +243,43 @@ fn group<'a>(inputs: &'a [Input], errors: &mut Vec<String>) -> Vec<Run<'a>> {
         }
     }
     runs
+}
+
+/// A sharded run whose shards come more than once, split into one run per
+/// host the reports name: the same rasterizers (and `declared` device) on
+/// two boards, each sharded, are two runs, keyed by (rasterizer, device,
+/// machine). A run whose shards each come once stays whole, whatever hosts
+/// they ran on (a CI matrix deals shards to machines of its own choosing);
+/// one whose repeated shards all name one host stays whole too, and its
+/// shard given twice is an error.
+fn by_board<'a>(run: Run<'a>) -> Vec<Run<'a>> {
+    let repeated = run.shards.values().any(|given| given.len() > 1);
+    let hosts: BTreeSet<&str> = run
+        .shards
+        .values()
+        .flatten()
+        .map(|i| i.report.machine.host.as_str())
+        .collect();
+    if run.count == 1 || !repeated || hosts.len() < 2 {
+        return vec![run];
+    }
+    hosts
+        .into_iter()
+        .map(|host| {
+            let mut shards: BTreeMap<usize, Vec<&Input>> = BTreeMap::new();
+            for (k, given) in &run.shards {
+                for input in given.iter().filter(|i| i.report.machine.host == host) {
+                    shards.entry(*k).or_default().push(*input);
+                }
+            }
+            Run {
+                rows: run.rows.clone(),
+                count: run.count,
+                host: Some(host.to_owned()),
+                shards,
+            }
+        })
+        .collect()
 }
 
 /// A run's cases in the unsharded order, each with the report it came
@@ -375,10 +421,12 @@ fn side_by_side(
         }
     }
     let mut merged = Vec::with_capacity(cases[0].len());
+    let mut caps = Caps::default();
     for (base, from) in &cases[0] {
         let mut entry = base.clone();
         entry.results.clear();
         entry.page = None;
+        let mut page_from = None;
         for (r, run_cases) in cases.iter().enumerate() {
             let Some(&at) = by_id[r].get(&base.id) else {
                 continue;
@@ -391,13 +439,9 @@ fn side_by_side(
                 0 => String::new(),
                 _ => format!("pages/run-{}/", r + 1),
             };
-            let mut place = |file: &str| -> Option<String> {
+            let mut place = |file: &str| -> Option<(PathBuf, String)> {
                 match inside(file) {
-                    true => {
-                        let to = format!("{prefix}{file}");
-                        copies.push((input.dir.join(file), to.clone()));
-                        Some(to)
-                    }
+                    true => Some((input.dir.join(file), format!("{prefix}{file}"))),
                     false => {
                         errors.push(format!(
                             "{}: case {}: the file {file:?} is not a path inside the report folder",
@@ -410,18 +454,74 @@ fn side_by_side(
             };
             if let Some(page) = &case.page {
                 let placed = place(page);
-                entry.page = entry.page.take().or(placed);
+                page_from = page_from.take().or(placed);
             }
             for (result, label) in case.results.iter().zip(&labels[r]) {
                 let mut result = result.clone();
                 result.rasterizer = label.clone();
-                result.files = result.files.iter().filter_map(|f| place(f)).collect();
+                let placed: Vec<(PathBuf, String)> =
+                    result.files.iter().filter_map(|f| place(f)).collect();
+                // The pictures of a result count against the merged
+                // report's cap, not each shard's.
+                let pictured = placed.iter().any(|(_, to)| is_picture(to));
+                let keep_pictures = !pictured || caps.picture();
+                result.files = Vec::new();
+                for (from, to) in placed {
+                    if keep_pictures || !is_picture(&to) {
+                        result.files.push(to.clone());
+                        copies.push((from, to));
+                    }
+                }
                 entry.results.push(result);
+            }
+        }
+        if let Some((from, to)) = page_from {
+            let problem = cards_of(&entry).iter().any(|c| c.is_problem());
+            if caps.page(problem) {
+                entry.page = Some(to.clone());
+                copies.push((from, to));
             }
         }
         merged.push(entry);
     }
     (merged, copies)
+}
+
+/// The caps on pictures and pages (`report/limits.rs`), taken over the
+/// merged report as a whole, in its case order: shards that each kept
+/// under a cap may together exceed it.
+#[derive(Default)]
+struct Caps {
+    pictured: usize,
+    problem_pages: usize,
+    other_pages: usize,
+}
+
+impl Caps {
+    /// Takes a place for one result's pictures, if any is left.
+    fn picture(&mut self) -> bool {
+        take(&mut self.pictured, MAX_PICTURED)
+    }
+
+    /// Takes a place for a case's page, if any is left.
+    fn page(&mut self, problem: bool) -> bool {
+        match problem {
+            true => take(&mut self.problem_pages, MAX_PROBLEM_PAGES),
+            false => take(&mut self.other_pages, MAX_PAGES),
+        }
+    }
+}
+
+fn take(count: &mut usize, cap: usize) -> bool {
+    let free = *count < cap;
+    *count += usize::from(free);
+    free
+}
+
+/// Whether a file a result names is one of its PNG pictures (capped), not
+/// an EXR error map (every result with an error keeps its own).
+fn is_picture(file: &str) -> bool {
+    file.ends_with(".png")
 }
 
 /// Two runs' entries for one case id agree on its file and status.
@@ -595,5 +695,85 @@ mod tests {
             errors[0].contains("not a path inside the report folder"),
             "{errors:?}"
         );
+    }
+
+    #[test]
+    fn one_driver_sharded_on_two_boards_is_a_row_per_board() {
+        // a b c d on two boards, each dealt to 2 shards: a c, b d.
+        let shards = |host: &str| {
+            [
+                input(&["a", "c"], Some("1/2"), host),
+                input(&["b", "d"], Some("2/2"), host),
+            ]
+        };
+        let [a1, a2] = shards("board-a");
+        let [b1, b2] = shards("board-b");
+        let merged = merge(&[a1.clone(), b2, a2.clone(), b1], Vec::new()).unwrap();
+        let rows: Vec<&str> = merged
+            .report
+            .rasterizers
+            .iter()
+            .map(|r| r.name.as_str())
+            .collect();
+        assert_eq!(rows, ["production on board-a", "production on board-b"]);
+        assert_eq!(ids(&merged), ["a", "b", "c", "d"]);
+        assert_eq!(merged.runs, 2);
+        // One board's shards given twice is still two verdicts per case.
+        let errors = merge(&[a1.clone(), a2, a1], Vec::new()).unwrap_err();
+        assert!(errors[0].contains("given 2 times"), "{errors:?}");
+        // Shards of one run on CI machines of their own: one row.
+        let one = input(&["a", "c"], Some("1/2"), "runner-7");
+        let two = input(&["b", "d"], Some("2/2"), "runner-3");
+        assert_eq!(merge(&[one, two], Vec::new()).unwrap().runs, 1);
+    }
+
+    #[test]
+    fn picture_and_page_caps_hold_over_the_merged_report() {
+        // Two shards, each under the caps, over them together.
+        let named = |k: usize| format!("c{k:05}");
+        let all: Vec<String> = (0..MAX_PROBLEM_PAGES + 10).map(named).collect();
+        let shard = |k: usize| {
+            let ids: Vec<&str> = all
+                .iter()
+                .skip(k - 1)
+                .step_by(2)
+                .map(String::as_str)
+                .collect();
+            let mut shard = input(&ids, Some(&format!("{k}/2")), "ci");
+            for case in &mut shard.report.cases {
+                case.page = Some(format!("pages/{}.html", case.id));
+                let result = &mut case.results[0];
+                result.verdict = "fail";
+                result.files = vec![
+                    format!("images/{}/production.png", case.id),
+                    format!("exr/{}/production.exr", case.id),
+                ];
+            }
+            shard
+        };
+        let merged = merge(&[shard(1), shard(2)], Vec::new()).unwrap();
+        let pictures = merged
+            .copies
+            .iter()
+            .filter(|(_, to)| to.ends_with(".png"))
+            .count();
+        let maps = merged
+            .copies
+            .iter()
+            .filter(|(_, to)| to.ends_with(".exr"))
+            .count();
+        assert_eq!(pictures, MAX_PICTURED);
+        assert_eq!(maps, all.len(), "error maps are not capped");
+        let pages = merged.report.cases.iter().filter(|c| c.page.is_some());
+        assert_eq!(pages.count(), MAX_PROBLEM_PAGES);
+        let pictured = merged
+            .report
+            .cases
+            .iter()
+            .filter(|c| c.results[0].files.iter().any(|f| f.ends_with(".png")))
+            .count();
+        assert_eq!(pictured, MAX_PICTURED);
+        // The first cases in the merged order keep theirs.
+        assert!(merged.report.cases[0].results[0].files[0].ends_with(".png"));
     }
 }

@@ -64,7 +64,14 @@ pub fn plots(report: &Report) -> Vec<Plot> {
 /// everywhere (drawn as no chart or said in the caption), area methods,
 /// values that are not finite.
 pub fn notes(report: &Report) -> Vec<String> {
-    everything(report).1
+    let mut notes = everything(report).1;
+    let (listed, all) = (report.cases.len(), report.totals.cases);
+    if listed < all {
+        notes.push(format!(
+            "The charts are drawn from {listed} of the {all} cases (the first and those worth a look)."
+        ));
+    }
+    notes
 }
 
 /// Writes every chart to `DIR/plots/<file>` and returns the paths.

@@ -1,0 +1,96 @@
+//! Issue 39's flat memory: a run's memory does not grow with its number of
+//! cases. Each case's report entry goes to disk as it is judged
+//! (`report/spool.rs`) and the summaries are written by reading them back
+//! (`report/write.rs`), so what a run keeps per case is only its place in
+//! the selection (id and path) and its name (names must be unique).
+//!
+//! Two runs of generated tiny cases (a 4×4 canvas, one triangle each: the
+//! generator RELIABILITY.md gives a user), 2 000 and 20 000 cases, one
+//! thread, a full report folder: the peak RSS may grow by at most
+//! [`BOUND_BYTES`] per case between them. The code before the spool grew
+//! by about 6.7 KiB per case here (21.5 MiB at 2 000 cases, 136.5 MiB at
+//! 20 000: RELIABILITY.md), which this test fails.
+
+mod common;
+
+use std::path::Path;
+use std::process::Command;
+use std::time::Duration;
+
+use common::cli::{read_json, run_measured, scratch, text, Measured};
+
+/// The most the peak RSS may grow per case, in bytes: the measured growth
+/// (RELIABILITY.md) with a margin of about three times.
+const BOUND_BYTES: f64 = 1024.0;
+
+/// Writes `n` tiny case files into `dir/gen`, as RELIABILITY.md's
+/// generator does.
+fn generate(dir: &Path, n: usize) {
+    let gen = dir.join("gen");
+    std::fs::create_dir_all(&gen).unwrap();
+    for k in 0..n {
+        std::fs::write(
+            gen.join(format!("c{k:07}.json")),
+            format!(
+                "{{\"name\": \"c{k:07}\", \"canvas\": {{\"width\": 4, \"height\": 4}}, \"primitives\": [{{\"triangle\": [[0, 0], [{}, 0], [0, 4]]}}]}}\n",
+                1 + k % 4
+            ),
+        )
+        .unwrap();
+    }
+}
+
+/// `run gen -r production -q --threads 1 --report out` over `n` generated
+/// cases, measured.
+fn run(n: usize) -> (Measured, std::path::PathBuf) {
+    let dir = scratch(&format!("flat-memory-{n}"));
+    generate(&dir, n);
+    let measured = run_measured(
+        Command::new(env!("CARGO_BIN_EXE_rastercheck"))
+            .args(["run", "gen", "-r", "production", "-q"])
+            .args(["--threads", "1", "--report", "out"])
+            .current_dir(&dir),
+        Duration::from_secs(600),
+    );
+    let t = text(&measured.output);
+    assert_eq!(measured.output.status.code(), Some(0), "{t}");
+    let report = read_json(&dir.join("out/report.json"));
+    assert_eq!(report["totals"]["cases"], n, "{t}");
+    assert_eq!(report["cases"].as_array().unwrap().len(), n);
+    assert_eq!(report["totals"]["verdicts"][0]["pass"], n);
+    (measured, dir)
+}
+
+#[test]
+fn peak_memory_grows_by_less_than_the_bound_per_case() {
+    let (small, small_dir) = run(2_000);
+    let (large, large_dir) = run(20_000);
+    let growth = (large.peak_rss_kib as f64 - small.peak_rss_kib as f64) * 1024.0 / 18_000.0;
+    eprintln!(
+        "peak RSS: {:.1} MiB at 2 000 cases, {:.1} MiB at 20 000: {growth:.0} bytes per case (bound {BOUND_BYTES})",
+        small.peak_rss_mib(),
+        large.peak_rss_mib()
+    );
+    assert!(
+        growth < BOUND_BYTES,
+        "the peak RSS grew by {growth:.0} bytes per case ({:.1} MiB at 2 000 cases, {:.1} MiB at 20 000), over the bound of {BOUND_BYTES}",
+        small.peak_rss_mib(),
+        large.peak_rss_mib()
+    );
+    // Every result is in junit.xml; the index lists a bounded part and says so.
+    let junit = std::fs::read_to_string(large_dir.join("out/junit.xml")).unwrap();
+    assert_eq!(junit.matches("<testcase ").count(), 20_000);
+    let index = std::fs::read_to_string(large_dir.join("out/index.html")).unwrap();
+    assert!(index.contains("This page lists 2000 of the 20000 cases"));
+    assert!(index.len() < 2_000_000, "{} bytes", index.len());
+    // Nothing temporary left beside the report.
+    let left: Vec<String> = std::fs::read_dir(large_dir.join("out"))
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.') && n != ".rastercheck-report")
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+    let _ = std::fs::remove_dir_all(small_dir);
+    let _ = std::fs::remove_dir_all(large_dir);
+}
