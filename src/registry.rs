@@ -11,7 +11,8 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, DdaF32, DdaF64, EmptyAntialias, FloatF32,
+    AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
+    ConservativeCentreFlag, ConservativeOvergrow, DdaF32, DdaF64, EmptyAntialias, FloatF32,
     FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
@@ -195,6 +196,15 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-empty-antialias", Kind::Foil, false,
         "an area method answering every antialiased scene with no coverage at all",
         || boxed(EmptyAntialias)),
+    row("foil-conservative-overgrow", Kind::Foil, false,
+        "conservative overestimation grown 1/8 px past the uncertainty it declares",
+        || boxed(ConservativeOvergrow)),
+    row("foil-conservative-centre-box", Kind::Foil, false,
+        "conservative overestimation tested only in the box of pixel centres (misses touched corner pixels)",
+        || boxed(ConservativeCentreBox)),
+    row("foil-conservative-centre-flag", Kind::Foil, false,
+        "conservative rasterization flagging a pixel fully covered when its centre is covered",
+        || boxed(ConservativeCentreFlag)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
