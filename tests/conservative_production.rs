@@ -9,13 +9,14 @@
 //! classes, and these tests hold it to that function exactly, not just
 //! to a passing verdict.
 
+use dashu_ratio::RBig;
 use rastercheck::explore::fuzz::{generate, Family};
 use rastercheck::frame::Frame;
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::Rasterizer;
 use rastercheck::reference::conservative::{classify, PixelClass};
-use rastercheck::scene::{parse_case, ConservativeMode, Limits, Scene};
+use rastercheck::scene::{parse_case, ConservativeMode, Limits, Primitive, Scene};
 
 fn scene(json: &str) -> Scene {
     parse_case(json, "t.json", &Limits::default()).unwrap_or_else(|e| panic!("{e}\n{json}"))
@@ -76,13 +77,17 @@ const CORNER: &str =
 fn overestimation_draws_pixels_touched_at_one_point() {
     // Every pixel of [1, 3]²: (1, 1) and (3, 3) meet the triangle at a
     // single point, (1, 2), (2, 1) and the rest of the border along an
-    // edge; none of row 0 or column 0.
+    // edge; and the four whose corners the vertices (4, 2) and (2, 4)
+    // touch: (4, 1), (4, 2), (1, 4), (2, 4). None of row 0 or column 0.
     let frame = draw(&case(
         5,
         CORNER,
         r#""mode": "overestimate", "fully_covered": true"#,
     ));
-    assert_eq!(drawn(&frame), square(1, 3, 1, 3));
+    let mut expected = square(1, 3, 1, 3);
+    expected.extend([(4, 1), (4, 2), (1, 4), (2, 4)]);
+    expected.sort_by_key(|&(x, y)| (y, x));
+    assert_eq!(drawn(&frame), expected);
     // Only (2, 2) is wholly inside (its far corner on the hypotenuse).
     assert_eq!(flagged(&frame), vec![(2, 2)]);
 }
@@ -197,7 +202,11 @@ fn agrees(scene: &Scene) -> Result<(), String> {
         let got = frame.fully_covered.as_ref().ok_or("no flag")?;
         for (i, class) in flags.iter().enumerate() {
             let drawn = frame.coverage[i] > 0;
-            if drawn && !class.admits(got[i]) || !drawn && got[i] {
+            // One triangle: the flag is exactly the sure one (S_u inside
+            // the triangle); several: whatever the last writer's class
+            // admits.
+            let exact = scene.primitives.len() == 1 && got[i] != (*class == PixelClass::Required);
+            if drawn && (exact || !class.admits(got[i])) || !drawn && got[i] {
                 return Err(format!(
                     "pixel ({}, {}): flag {} where the reference classes it {}",
                     i as u32 % frame.width,
@@ -211,18 +220,152 @@ fn agrees(scene: &Scene) -> Result<(), String> {
     Ok(())
 }
 
+/// A brute force of SPEC.md §19's sets, independent of production and of
+/// the reference: each triangle (snapped, in rationals) clipped against
+/// the pixel's grown square S_u by the four closed half-planes of its
+/// sides (Sutherland–Hodgman; a touch at one point leaves that point);
+/// S_u meets the triangle when anything is left. S_u lies inside when its
+/// four corners do. Returns (drawn, flag) per pixel, last writer's flag.
+fn brute_force(scene: &Scene) -> (Vec<bool>, Vec<bool>) {
+    let c = scene.effects.conservative.as_ref().expect("conservative");
+    let u = c.uncertainty.as_rbig().clone();
+    let (w, h) = (scene.canvas.width, scene.canvas.height);
+    let n = (w * h) as usize;
+    let (mut drawn, mut flags) = (vec![false; n], vec![false; n]);
+    for primitive in &scene.primitives {
+        let Primitive::Triangle(t) = primitive else {
+            panic!("triangles only")
+        };
+        let v: Vec<[RBig; 2]> = t
+            .vertices
+            .iter()
+            .map(|v| {
+                [&v.x, &v.y].map(|n| match scene.rules.subpixel_bits {
+                    Some(b) => n.snapped(b).as_rbig().clone(),
+                    None => n.as_rbig().clone(),
+                })
+            })
+            .collect();
+        let area = cross(&v[0], &v[1], &v[2]);
+        if area == RBig::ZERO && !c.degenerate_triangles {
+            continue;
+        }
+        if scene.rules.cull.discards(area.cmp(&RBig::ZERO)) {
+            continue;
+        }
+        for y in 0..h {
+            for x in 0..w {
+                let lo = [RBig::from(x) - &u, RBig::from(y) - &u];
+                let hi = [RBig::from(x + 1) + &u, RBig::from(y + 1) + &u];
+                let inside = area != RBig::ZERO
+                    && [&lo[0], &hi[0]].into_iter().all(|cx| {
+                        [&lo[1], &hi[1]].into_iter().all(|cy| {
+                            let p = [cx.clone(), cy.clone()];
+                            (0..3).all(|i| {
+                                let s = cross(&v[i], &v[(i + 1) % 3], &p);
+                                s == RBig::ZERO || (s > RBig::ZERO) == (area > RBig::ZERO)
+                            })
+                        })
+                    });
+                let draw = match c.mode {
+                    ConservativeMode::Overestimate => meets(v.clone(), &lo, &hi),
+                    ConservativeMode::Underestimate => inside,
+                };
+                if draw {
+                    let i = (y * w + x) as usize;
+                    drawn[i] = true;
+                    flags[i] = inside;
+                }
+            }
+        }
+    }
+    (drawn, flags)
+}
+
+fn cross(a: &[RBig; 2], b: &[RBig; 2], p: &[RBig; 2]) -> RBig {
+    (&b[0] - &a[0]) * (&p[1] - &a[1]) - (&b[1] - &a[1]) * (&p[0] - &a[0])
+}
+
+/// Whether the convex polygon `poly` meets the closed box [lo, hi].
+fn meets(mut poly: Vec<[RBig; 2]>, lo: &[RBig; 2], hi: &[RBig; 2]) -> bool {
+    for axis in 0..2 {
+        for (bound, keep_above) in [(&lo[axis], true), (&hi[axis], false)] {
+            let inside = |p: &[RBig; 2]| {
+                if keep_above {
+                    p[axis] >= *bound
+                } else {
+                    p[axis] <= *bound
+                }
+            };
+            let mut out = Vec::new();
+            for k in 0..poly.len() {
+                let (p, q) = (&poly[k], &poly[(k + 1) % poly.len()]);
+                if inside(p) {
+                    out.push(p.clone());
+                }
+                if inside(p) != inside(q) {
+                    let t = (bound - &p[axis]) / (&q[axis] - &p[axis]);
+                    out.push([0, 1].map(|a| &p[a] + &t * (&q[a] - &p[a])));
+                }
+            }
+            poly = out;
+            if poly.is_empty() {
+                return false;
+            }
+        }
+    }
+    true
+}
+
 #[test]
-fn production_is_exact_on_the_fuzzers_conservative_family() {
+fn production_matches_a_brute_force_of_the_sets() {
+    for index in 0..600 {
+        let (_, scene) = generate(35, index, Some(Family::Conservative));
+        let frame = draw(&scene);
+        let (drawn, flags) = brute_force(&scene);
+        let got: Vec<bool> = frame.coverage.iter().map(|&c| c > 0).collect();
+        let text = || rastercheck::explore::fuzz::case_json(&scene);
+        assert_eq!(got, drawn, "scene {index}: drawn pixels\n{}", text());
+        if let Some(f) = &frame.fully_covered {
+            assert_eq!(*f, flags, "scene {index}: flags\n{}", text());
+        }
+    }
+}
+
+/// Scenes `0..count` of the fuzzer's conservative family under `seed`,
+/// each held to [`agrees`]; panics with the first that differs, as a case
+/// file. Returns how many the reference judged.
+fn exact_over(seed: u64, count: u64) -> u64 {
     let mut judged = 0;
-    for index in 0..1500 {
-        let (_, scene) = generate(38, index, Some(Family::Conservative));
+    for index in 0..count {
+        let (_, scene) = generate(seed, index, Some(Family::Conservative));
         if let Err(why) = agrees(&scene) {
             panic!(
-                "scene {index}: {why}\n{}",
+                "scene {index} of seed {seed}: {why}\n{}",
                 rastercheck::explore::fuzz::case_json(&scene)
             );
         }
         judged += 1;
     }
-    assert_eq!(judged, 1500);
+    judged
+}
+
+#[test]
+fn production_is_exact_on_the_fuzzers_conservative_family() {
+    assert_eq!(exact_over(38, 1500), 1500);
+}
+
+/// The issue's done-when: 0 differences over at least 10^5 scenes
+/// (`CONSERVATIVE_SCENES` to change the count). Minutes, so ignored:
+/// `cargo test --release --test conservative_production -- --ignored`.
+#[test]
+#[ignore]
+fn production_is_exact_on_a_hundred_thousand_scenes() {
+    let count = std::env::var("CONSERVATIVE_SCENES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(100_000);
+    let started = std::time::Instant::now();
+    assert_eq!(exact_over(1, count), count);
+    eprintln!("{count} scenes, 0 differences, {:.1?}", started.elapsed());
 }

@@ -12,7 +12,7 @@
 
 use super::common::{any_bits, any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
-use crate::scene::rules::limits::COORD_LIMIT;
+use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS};
 use crate::scene::{
     Canvas, Conservative, ConservativeMode, Interpolation, Number, Primitive, Scene, Triangle,
     Vertex,
@@ -49,6 +49,16 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
         depth: false,
         w: false,
     };
+    if !snapped {
+        // Midpoints and small steps can leave the 2^-16 grid: put every
+        // coordinate back on it, so that fixed point holds it.
+        for p in &mut primitives {
+            for v in p.vertices_mut() {
+                v.x = v.x.snapped(MAX_SUBPIXEL_BITS);
+                v.y = v.y.snapped(MAX_SUBPIXEL_BITS);
+            }
+        }
+    }
     let mut scene = scene_of(canvas, rules, primitives, &values);
     let uncertainty = match rng.below(12) {
         0..=3 => Number::ZERO,
