@@ -170,6 +170,14 @@ pub(crate) fn print_outcome(
         if let Some(ties) = result.metrics.as_ref().and_then(|m| m.ties.as_ref()) {
             outln!("        {}", ties.line());
         }
+        // A conservative case (SPEC.md §19): the allowed band it used.
+        if let Some(m) = result
+            .metrics
+            .as_ref()
+            .and_then(|m| m.conservative.as_ref())
+        {
+            outln!("        {}", crate::metrics::conservative::summary(m));
+        }
         // The latitude for diamond-exit lines (SPEC.md §4.2.1): what used it.
         if let Some(lines) = result.metrics.as_ref().and_then(|m| m.latitude.as_ref()) {
             outln!("        {}", lines.line());

@@ -50,7 +50,7 @@ pub const ELSEWHERE: [(&str, &str); 3] = [
 
 /// The case families, in the order the README lists them, with what each
 /// holds. A family folder missing here still gets its row.
-const FAMILIES: [(&str, &str); 10] = [
+const FAMILIES: [(&str, &str); 11] = [
     ("triangles", "fill rules, shared edges and fans, snapping, interpolation, culling"),
     ("lines", "the midpoint rule, D3D11's diamond-exit rule, thin and wide rectangles, parallelograms"),
     ("polygons", "stars under even-odd and nonzero, holes, self-intersecting contours"),
@@ -60,6 +60,7 @@ const FAMILIES: [(&str, &str); 10] = [
     ("clip", "clip space (SPEC.md §16): w ≤ 0, near and far clipping, depth clamp, guard band, extreme w"),
     ("points", "points (SPEC.md §17): sizes, fill rules on their sides, snapping, popping, viewport bounds"),
     ("depth", "depth formats and polygon offset (SPEC.md §18): unorm16, unorm24, float32, both clamps"),
+    ("conservative", "conservative rasterization (SPEC.md §19): over- and underestimation, uncertainty bands, degenerate triangles, the fully-covered flag, meshes"),
     ("invalid", "malformed files, each with the error it must give (`run cases` skips them)"),
 ];
 

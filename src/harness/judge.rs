@@ -12,7 +12,7 @@ use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
 use crate::reference::{self, DiamondLine, TieSet};
-use crate::scene::Scene;
+use crate::scene::{Conservative, Scene};
 
 /// How a candidate did on a case.
 #[derive(Clone, Debug, PartialEq)]
@@ -175,6 +175,7 @@ pub fn run_candidate(
                 let oracle = Oracle {
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
+                    conservative: super::conservative::judged_under(&under, candidate),
                 };
                 judge(&under, &restated, frame, name, elapsed, oracle)
             }
@@ -182,6 +183,7 @@ pub fn run_candidate(
                 let oracle = Oracle {
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
+                    conservative: super::conservative::judged_under(&under, candidate),
                 };
                 judge(&under, reference, frame, name, elapsed, oracle)
             }
@@ -189,16 +191,23 @@ pub fn run_candidate(
         run.judged = own;
         return run;
     }
-    judge(scene, reference, frame, name, elapsed, Oracle::default())
+    let oracle = Oracle {
+        conservative: super::conservative::judged_under(scene, candidate),
+        ..Oracle::default()
+    };
+    judge(scene, reference, frame, name, elapsed, oracle)
 }
 
 /// What the oracle gives beyond its frame for a candidate judged under a
 /// convention that restates nothing: its tie set (no tie rule, SPEC.md
 /// §3.1.1) and each diamond-exit line's fragments (the latitude, §4.2.1).
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Default)]
 struct Oracle<'a> {
     ties: Option<&'a TieSet>,
     lines: Option<&'a [DiamondLine]>,
+    /// A conservative case: the state the candidate is judged under (the
+    /// case's, restated under what it declares, SPEC.md §19.6).
+    conservative: Option<Conservative>,
 }
 
 /// The restated case with its antialiasing bounds (`max_coverage_error`,
@@ -268,7 +277,14 @@ fn judge(
 ) -> CandidateRun {
     let ties = oracle.ties;
     if let Some(classes) = &reference.conservative {
-        return super::conservative::judge(scene, classes, frame, name, elapsed);
+        return super::conservative::judge(
+            scene,
+            classes,
+            oracle.conservative.as_ref(),
+            frame,
+            name,
+            elapsed,
+        );
     }
     if let Some(why) = shape_problem(&reference.frame, &frame) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");

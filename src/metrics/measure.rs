@@ -3,6 +3,7 @@
 
 use super::antialias::{self, AntialiasMetrics, AreaClass};
 use super::area;
+use super::conservative::ConservativeMetrics;
 use super::coverage::{self, CoverageMetrics};
 use super::depth;
 use super::interpolation::{self, ChannelError};
@@ -41,6 +42,11 @@ pub struct Metrics {
     /// A candidate that draws diamond-exit lines with its API's latitude
     /// (SPEC.md §4.2.1): its lines judged under it, what used it counted.
     pub latitude: Option<LatitudeMetrics>,
+    /// Conservative scenes (SPEC.md §19): the candidate's pixels and
+    /// fully-covered flags against the reference's three classes. Then
+    /// `coverage` holds the same pixels against the required set, a pixel
+    /// drawn in the allowed band counted neither missing nor extra.
+    pub conservative: Option<ConservativeMetrics>,
 }
 
 /// What the oracle knows exactly beyond the reference's frame, for the
@@ -162,6 +168,7 @@ pub fn measure_known(
             time,
             ties,
             latitude,
+            conservative: None,
         };
     }
     let expect = &scene.expect;
@@ -222,6 +229,7 @@ pub fn measure_known(
         time,
         ties,
         latitude,
+        conservative: None,
     }
 }
 

@@ -6,13 +6,15 @@
 //! `depth.rs`, `latitude.rs` (diamond-exit lines under their API's latitude),
 //! `antialias.rs` and `parts.rs` (an area method judged as one:
 //! `area.rs`), `time.rs`, `ties.rs` (a candidate with no tie rule judged off
-//! the ties); the per-pixel ones
+//! the ties); `conservative.rs` judges a conservative scene (SPEC.md §19)
+//! against the reference's three classes, apart; the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
 //! candidate fails.
 
 pub mod antialias;
 pub mod area;
+pub mod conservative;
 pub mod coverage;
 pub mod depth;
 pub(crate) mod difference;
@@ -28,6 +30,7 @@ pub mod time;
 pub mod watertight;
 
 pub use antialias::{AntialiasMetrics, AreaClass};
+pub use conservative::ConservativeMetrics;
 pub use coverage::{CoverageMetrics, SampleDiff};
 pub use failures::failures;
 pub use interpolation::ChannelError;

@@ -16,7 +16,7 @@ use std::sync::Mutex;
 use super::files::{relative, write_file};
 use super::json::CaseEntry;
 use super::limits::{MAX_PAGES, MAX_PICTURED, MAX_PROBLEM_PAGES};
-use super::{exr, html, png};
+use super::{conservative, exr, html, png};
 use crate::harness::judge::Verdict;
 use crate::harness::runner::CaseOutcome;
 
@@ -105,6 +105,26 @@ impl CaseWriter {
                 for path in paths {
                     files.push(relative(&self.dir, &path));
                     self.files.fetch_add(1, Ordering::Relaxed);
+                }
+            }
+            // A conservative case (SPEC.md §19): its three classes and the
+            // candidate's pixels in one picture, when it failed or drew in
+            // the allowed band.
+            if let Some(m) = &metrics.conservative {
+                let shows = !passed || m.band_drawn > 0;
+                if shows && take(&self.pictured, MAX_PICTURED) {
+                    let folder = self.dir.join("images").join(id);
+                    let paths = conservative::write_picture(
+                        scene,
+                        &run.rasterizer,
+                        m,
+                        &folder,
+                        png::auto_scale(frame),
+                    )?;
+                    for path in paths {
+                        files.push(relative(&self.dir, &path));
+                        self.files.fetch_add(1, Ordering::Relaxed);
+                    }
                 }
             }
             if exr::has_error(passed, metrics) {

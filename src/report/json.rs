@@ -318,6 +318,11 @@ pub struct ResultEntry {
     /// (SPEC.md §4.2.1): the fragments and lines that used it, counted.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub line_latitude: Option<crate::metrics::LatitudeMetrics>,
+    /// A conservative case (SPEC.md §19): required, allowed band and
+    /// forbidden pixels against the candidate's, "drawn in the allowed
+    /// band" counted apart, and the fully-covered flag.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conservative: Option<crate::metrics::ConservativeMetrics>,
     /// The clip conventions it was judged under, when they are its own and
     /// not the case's (`rules.clip`, SPEC.md §16).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -574,6 +579,7 @@ impl CaseEntry {
                 },
                 ties: run.metrics.as_ref().and_then(|m| m.ties.clone()),
                 line_latitude: run.metrics.as_ref().and_then(|m| m.latitude.clone()),
+                conservative: run.metrics.as_ref().and_then(|m| m.conservative.clone()),
                 judged_clip: run.judged.clip.map(|c| ClipInfo::of(&c)),
                 judged_subpixel_bits: run.judged.subpixel_bits,
                 judged_snapping: run.judged.snapping.map(|s| match s {

@@ -11,7 +11,9 @@
 //! DIR/images/<id>/*.png    reference, candidate and difference mask, for
 //!                          every result that is not a pass (antialiased
 //!                          cases: resolved coverage, signed error, samples;
-//!                          moving scenes: time coverage, signed error)
+//!                          moving scenes: time coverage, signed error;
+//!                          conservative cases: <rast>.conservative.png, the
+//!                          three classes and its pixels, conservative.rs)
 //! DIR/exr/<id>/<rast>.exr  signed float error maps, for every result that
 //!                          is not a pass or has any nonzero error (per
 //!                          sample; antialiased: resolved error per pixel;
@@ -39,6 +41,7 @@
 //! ([`remove_owned`]), never a user's own files.
 
 pub mod case_files;
+pub mod conservative;
 pub mod diff;
 pub mod escape;
 pub mod exr;

@@ -221,7 +221,7 @@ pub fn samples_picture(
 }
 
 /// Paints one colour per pixel, magnified, with grid lines and outlines.
-fn picture(scene: &Scene, scale: u32, colour: impl Fn(usize) -> [u8; 3]) -> RgbImage {
+pub(super) fn picture(scene: &Scene, scale: u32, colour: impl Fn(usize) -> [u8; 3]) -> RgbImage {
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let mut img = RgbImage::new(w * scale, h * scale);
     for (px, py, out) in img.enumerate_pixels_mut() {
@@ -365,7 +365,7 @@ fn write_resolved_comparison(
     save_all(dir, images)
 }
 
-fn save_all(
+pub(super) fn save_all(
     dir: &Path,
     images: impl IntoIterator<Item = (String, RgbImage)>,
 ) -> Result<Vec<PathBuf>, String> {

@@ -80,7 +80,7 @@ impl Conservative {
         format!(
             "{}, uncertainty {} px",
             self.mode.name(),
-            self.uncertainty.to_exact_string()
+            self.uncertainty.as_rbig()
         )
     }
 }
@@ -146,4 +146,22 @@ impl ConservativeSupport {
             points_and_lines: self.points_and_lines.unwrap_or(case.points_and_lines),
         }
     }
+}
+
+/// `expect.conservative`: what the reference's classes of a conservative
+/// case must be (SPEC.md §19), as counts and, for the worked examples,
+/// as the exact pixel sets. A broken promise fails every candidate, as
+/// `expect.samples_covered` does.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ConservativePromise {
+    /// How many pixels are required.
+    pub required: Option<u64>,
+    /// How many pixels are in the allowed band (allowed, not required).
+    pub allowed: Option<u64>,
+    /// How many pixels' fully-covered flag must be true.
+    pub fully_covered: Option<u64>,
+    /// The required pixels, exactly, in any order.
+    pub required_pixels: Option<Vec<[u32; 2]>>,
+    /// The allowed band's pixels, exactly, in any order.
+    pub allowed_pixels: Option<Vec<[u32; 2]>>,
 }

@@ -1,6 +1,7 @@
 //! What a case expects of a rasterizer under test, and the pixels whose
 //! time coverage it pins.
 
+use super::conservative::ConservativePromise;
 use super::number::Number;
 
 /// What a case expects of a rasterizer under test.
@@ -34,6 +35,9 @@ pub struct Expect {
     /// Moving scenes: exact time coverages of chosen pixels, which the
     /// reference must reproduce within its certified bound + 10^-12.
     pub time_coverage: Vec<TimePin>,
+    /// Conservative scenes: the reference's classes, pinned (SPEC.md
+    /// §19).
+    pub conservative: Option<ConservativePromise>,
 }
 
 impl Expect {

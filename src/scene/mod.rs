@@ -32,7 +32,7 @@ pub use case::{parse_case, CaseError, Limits};
 pub use clip::{
     ClipRules, ClipXy, ClipZ, DepthMode, InterpolateFrom, PointBounds, PointClip, Viewport,
 };
-pub use conservative::{Conservative, ConservativeMode, ConservativeSupport};
+pub use conservative::{Conservative, ConservativeMode, ConservativePromise, ConservativeSupport};
 pub use depth::{DepthBias, DepthFormat};
 pub use expect::{Expect, TimePin};
 pub use model::{Canvas, Effects, Scene};

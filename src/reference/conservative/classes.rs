@@ -56,6 +56,9 @@ pub struct ConservativeClasses {
     pub height: u32,
     pub drawn: Vec<PixelClass>,
     pub fully_covered: Option<Vec<PixelClass>>,
+    /// Index + 1 of the last primitive that must draw each pixel; 0 where
+    /// none must.
+    pub last_required: Vec<u32>,
 }
 
 impl ConservativeClasses {
@@ -67,6 +70,7 @@ impl ConservativeClasses {
             height,
             drawn: vec![PixelClass::Forbidden; n],
             fully_covered: flag.then(|| vec![PixelClass::Forbidden; n]),
+            last_required: vec![0; n],
         }
     }
 

@@ -1,21 +1,220 @@
-//! The classes of every pixel of a conservative scene, and the frame the
-//! reference draws from them (its required pixels).
+//! The classes of every pixel of a conservative scene (SPEC.md §19), and
+//! the frame the reference draws from them (its required pixels).
+//!
+//! Each vertex is snapped, then every coordinate, the uncertainty u and
+//! the pixel boundaries are put on one integer grid (the least common
+//! multiple of their denominators), so each test of `geometry.rs` is the
+//! sign of an integer. Per primitive, pixel (x, y)'s closed square S and
+//! S grown by u on every side, S_u, decide:
+//!
+//! - overestimate: required iff S meets T, allowed iff S_u meets T;
+//! - underestimate: required iff S_u ⊆ T, allowed iff S ⊆ T;
+//! - the fully-covered flag: true iff S_u ⊆ T, either iff S ⊆ T.
+//!
+//! Primitives combine in order (SPEC.md §19.5): a pixel is required when
+//! some primitive requires it, forbidden when none may draw it; its flag is
+//! the flag of its last writer, which may be any primitive that may draw
+//! it after the last one that must.
+
+use dashu_int::{IBig, UBig};
+use dashu_ratio::RBig;
 
 use super::classes::{ConservativeClasses, PixelClass};
+use super::geometry::{inside, meets, orient, GridPoint, Rect};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::scene::Scene;
+use crate::reference::exact::snap;
+use crate::scene::{Conservative, ConservativeMode, Number, Primitive, Scene};
 
 /// Each pixel's class for a conservative scene (SPEC.md §19), or why this
 /// version does not judge it.
 pub fn classify(scene: &Scene) -> Result<ConservativeClasses, RasterError> {
+    let Some(case) = &scene.effects.conservative else {
+        return Err(RasterError::Unsupported(
+            "the scene is not conservative (no effects.conservative)".to_owned(),
+        ));
+    };
     if let Some(why) = scene.conservative_unjudged() {
         return Err(RasterError::Unsupported(why));
     }
-    Err(RasterError::Unsupported(
-        "the exact conservative reference is not built yet".to_owned(),
-    ))
+    Ok(classify_under(scene, case))
+}
+
+/// [`classify`] under `case`, a conservative state of the caller's (a
+/// candidate's declared uncertainty, SPEC.md §19.6), whatever the scene
+/// states. The scene holds triangles only (`Scene::conservative_unjudged`).
+pub fn classify_under(scene: &Scene, case: &Conservative) -> ConservativeClasses {
+    let (width, height) = (scene.canvas.width, scene.canvas.height);
+    let mut out = ConservativeClasses::empty(width, height, case.fully_covered);
+    let triangles: Vec<(usize, [[RBig; 2]; 3])> = scene
+        .primitives
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| match p {
+            Primitive::Triangle(t) => Some((
+                i,
+                [0, 1, 2].map(|k| {
+                    let v = &t.vertices[k];
+                    [&v.x, &v.y].map(|c| snapped(c, scene.rules.subpixel_bits))
+                }),
+            )),
+            _ => None,
+        })
+        .collect();
+    let scale = common_scale(
+        triangles.iter().flat_map(|(_, t)| t.iter().flatten()),
+        case.uncertainty.as_rbig(),
+    );
+    let on_grid =
+        |q: &RBig| -> IBig { q.numerator() * (&scale / IBig::from(q.denominator().clone())) };
+    let u = on_grid(case.uncertainty.as_rbig());
+    // The fold of each pixel's possible last writers' flag classes.
+    let mut flag: Vec<Option<PixelClass>> = vec![None; out.drawn.len()];
+    for (index, triangle) in &triangles {
+        let t: [GridPoint; 3] = triangle.clone().map(|p| p.map(|c| on_grid(&c)));
+        let area = orient(&t[0], &t[1], &t[2]);
+        let degenerate = area == IBig::ZERO;
+        if degenerate && !case.degenerate_triangles {
+            continue;
+        }
+        if !degenerate && scene.rules.cull.discards(area.cmp(&IBig::ZERO)) {
+            continue;
+        }
+        let Some((xs, ys)) = pixel_range(&t, &u, &scale, width, height) else {
+            continue;
+        };
+        for y in ys {
+            for x in xs.clone() {
+                let (drawn, full) = pixel_class(case.mode, &t, x, y, &scale, &u);
+                if drawn == PixelClass::Forbidden {
+                    continue;
+                }
+                let i = y as usize * width as usize + x as usize;
+                out.drawn[i] = out.drawn[i].union(drawn);
+                flag[i] = match (drawn, flag[i]) {
+                    (PixelClass::Required, _) | (_, None) => Some(full),
+                    (_, Some(before)) if before == full => Some(full),
+                    _ => Some(PixelClass::Allowed),
+                };
+                if drawn == PixelClass::Required {
+                    out.last_required[i] = *index as u32 + 1;
+                }
+            }
+        }
+    }
+    if let Some(flags) = &mut out.fully_covered {
+        for (f, fold) in flags.iter_mut().zip(flag) {
+            *f = fold.unwrap_or(PixelClass::Forbidden);
+        }
+    }
+    out
+}
+
+/// One triangle's classes at pixel (x, y): whether it draws it, and its
+/// fragment's fully-covered flag there.
+fn pixel_class(
+    mode: ConservativeMode,
+    t: &[GridPoint; 3],
+    x: u32,
+    y: u32,
+    scale: &IBig,
+    u: &IBig,
+) -> (PixelClass, PixelClass) {
+    let x0 = IBig::from(x) * scale;
+    let y0 = IBig::from(y) * scale;
+    let square = Rect {
+        x1: &x0 + scale,
+        y1: &y0 + scale,
+        x0: x0.clone(),
+        y0: y0.clone(),
+    };
+    let grown = Rect {
+        x0: &square.x0 - u,
+        y0: &square.y0 - u,
+        x1: &square.x1 + u,
+        y1: &square.y1 + u,
+    };
+    let full = if inside(&grown, t) {
+        PixelClass::Required
+    } else if inside(&square, t) {
+        PixelClass::Allowed
+    } else {
+        PixelClass::Forbidden
+    };
+    let drawn = match mode {
+        ConservativeMode::Overestimate => {
+            if meets(&square, t) {
+                PixelClass::Required
+            } else if meets(&grown, t) {
+                PixelClass::Allowed
+            } else {
+                PixelClass::Forbidden
+            }
+        }
+        ConservativeMode::Underestimate => full,
+    };
+    (drawn, full)
+}
+
+/// The pixels whose grown square may meet the triangle: its bounding box
+/// grown by u and one pixel, within the canvas; `None` when that is empty.
+fn pixel_range(
+    t: &[GridPoint; 3],
+    u: &IBig,
+    scale: &IBig,
+    width: u32,
+    height: u32,
+) -> Option<(std::ops::Range<u32>, std::ops::Range<u32>)> {
+    let axis = |k: usize, size: u32| -> Option<std::ops::Range<u32>> {
+        let lo = t.iter().map(|p| &p[k]).min().expect("three vertices") - u;
+        let hi = t.iter().map(|p| &p[k]).max().expect("three vertices") + u;
+        let first = floor_div(&lo, scale) - IBig::ONE;
+        let last = floor_div(&hi, scale) + IBig::ONE;
+        let first = first.max(IBig::ZERO);
+        let last = last.min(IBig::from(size) - IBig::ONE);
+        if first > last {
+            return None;
+        }
+        let first: u32 = u32::try_from(&first).ok()?;
+        let last: u32 = u32::try_from(&last).ok()?;
+        Some(first..last + 1)
+    };
+    Some((axis(0, width)?, axis(1, height)?))
+}
+
+fn floor_div(a: &IBig, b: &IBig) -> IBig {
+    crate::reference::exact::floor_div(a, b)
+}
+
+/// A coordinate where the rasterizer puts it: snapped to 2^-bits, or as
+/// given.
+fn snapped(c: &Number, bits: Option<u32>) -> RBig {
+    match bits {
+        Some(bits) => snap(c, bits),
+        None => c.as_rbig().clone(),
+    }
+}
+
+/// The least common multiple of every denominator (and 1): the grid on
+/// which every coordinate, u and every pixel boundary is an integer.
+fn common_scale<'a>(coordinates: impl Iterator<Item = &'a RBig>, u: &'a RBig) -> IBig {
+    let mut scale = UBig::ONE;
+    for d in coordinates.map(RBig::denominator).chain([u.denominator()]) {
+        let g = gcd(&scale, d);
+        scale = &scale / &g * d;
+    }
+    scale.into()
+}
+
+fn gcd(a: &UBig, b: &UBig) -> UBig {
+    let (mut a, mut b) = (a.clone(), b.clone());
+    while b != UBig::ZERO {
+        let r = &a % &b;
+        a = b;
+        b = r;
+    }
+    a
 }
 
 /// The reference's own frame of a conservative scene: its required pixels
@@ -25,13 +224,15 @@ pub fn render(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     Ok(frame_of(scene, plan, &classes))
 }
 
-/// The frame of `classes`: every required pixel drawn once, its flag true
-/// where it must be (a frame that passes).
+/// The frame of `classes`: every required pixel drawn once, by the last
+/// primitive required there, its flag true where it must be (a frame that
+/// passes).
 pub fn frame_of(scene: &Scene, plan: &Plan, classes: &ConservativeClasses) -> Frame {
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
     for (i, class) in classes.drawn.iter().enumerate() {
         if *class == PixelClass::Required {
-            frame.hit(i, 0);
+            let last = classes.last_required[i].max(1) - 1;
+            frame.hit(i, last as usize);
         }
     }
     frame.fully_covered = classes.fully_covered.as_ref().map(|flags| {

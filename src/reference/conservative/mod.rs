@@ -2,11 +2,13 @@
 //! (required, allowed, forbidden) for whether it is drawn and for its
 //! fully-covered flag, decided in rationals.
 //!
-//! `classes.rs` holds the answer's types; `classify.rs` computes them for
-//! a scene.
+//! `classes.rs` holds the answer's types; `geometry.rs` the exact tests of
+//! a pixel's square against a triangle; `classify.rs` the classes of a
+//! scene, primitive by primitive, and the reference's frame from them.
 
 mod classes;
 mod classify;
+mod geometry;
 
 pub use classes::{ConservativeClasses, PixelClass};
-pub use classify::{classify, frame_of, render};
+pub use classify::{classify, classify_under, frame_of, render};

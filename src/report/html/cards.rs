@@ -248,6 +248,32 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
     if let Some(ties) = &result.ties {
         let _ = write!(html, "<p class=\"ties\">{}</p>", escape(&ties.line()));
     }
+    // A conservative case (SPEC.md §19): the band it used, never hidden,
+    // and its picture of the three classes with its pixels.
+    if let Some(m) = &result.conservative {
+        let _ = write!(
+            html,
+            "<p class=\"conservative\">{}</p>",
+            escape(&crate::metrics::conservative::summary(m))
+        );
+        let name = crate::report::conservative::file_name(&result.rasterizer);
+        if let Some(f) = result
+            .files
+            .iter()
+            .find(|f| f.ends_with(&format!("/{name}")))
+            .filter(|f| dir.join(f).is_file())
+        {
+            html.push_str("<h4>conservative classes</h4><div class=\"pictures\">");
+            html.push_str(&figure(
+                &escape(&file_url(f)),
+                "conservative",
+                &format!("{}: its pixels on the three classes", result.rasterizer),
+                None,
+            ));
+            html.push_str("</div>");
+            html.push_str(&colour_key(&crate::report::conservative::KEY));
+        }
+    }
 
     // An antialiased case: its resolved coverage, drawn from the frames; a
     // moving scene: its time coverage, likewise.
@@ -266,7 +292,9 @@ pub(super) fn result_card(dir: &Path, v: &ResultView) -> String {
     let pngs: Vec<&String> = result
         .files
         .iter()
-        .filter(|f| f.starts_with("images/") && f.ends_with(".png"))
+        .filter(|f| {
+            f.starts_with("images/") && f.ends_with(".png") && !f.ends_with(".conservative.png")
+        })
         .collect();
     if !pngs.is_empty() && resolved.is_none() {
         let find = |pred: &dyn Fn(&str) -> bool| pngs.iter().find(|f| pred(f)).copied();

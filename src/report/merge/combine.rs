@@ -516,6 +516,7 @@ mod tests {
                     judged_y: None,
                     judged_pixel_centre: None,
                     line_latitude: None,
+                    conservative: None,
                     metrics: None,
                     files: Vec::new(),
                 });

@@ -213,6 +213,7 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
                 judged_fill_rule: None,
                 ties: None,
                 line_latitude: None,
+                conservative: None,
                 judged_clip: None,
                 judged_subpixel_bits: None,
                 judged_snapping: None,

@@ -93,6 +93,7 @@ impl Reader<'_> {
         self.check_points(&scene)?;
         self.check_combinations(&scene, &fields)?;
         self.check_samples(&scene)?;
+        self.check_conservative(&scene)?;
         Ok(scene)
     }
 
@@ -652,9 +653,13 @@ impl Reader<'_> {
                 "max_time_error",
                 "max_time_rms",
                 "time_coverage",
+                "conservative",
             ],
         )?;
         let mut expect = Expect::default();
+        if let Some((v, p)) = fields.get("conservative") {
+            expect.conservative = Some(self.conservative_promise(v, &p)?);
+        }
         if let Some((v, p)) = fields.get("max_mismatched_samples") {
             expect.max_mismatched_samples = count(v, &p, u64::MAX >> 1)?;
         }
