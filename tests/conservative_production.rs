@@ -369,3 +369,29 @@ fn production_is_exact_on_a_hundred_thousand_scenes() {
     assert_eq!(exact_over(1, count), count);
     eprintln!("{count} scenes, 0 differences, {:.1?}", started.elapsed());
 }
+
+/// Every bundled conservative case: production's frame exactly the
+/// extreme the classes allow, and its verdict a pass.
+#[test]
+fn production_is_exact_and_passes_on_every_bundled_case() {
+    let mut judged = 0;
+    for entry in std::fs::read_dir("cases/conservative").expect("cases/conservative") {
+        let path = entry.expect("an entry").path();
+        let text = std::fs::read_to_string(&path).expect("a case file");
+        let scene = parse_case(&text, &path.display().to_string(), &Limits::default())
+            .unwrap_or_else(|e| panic!("{e}"));
+        if let Err(why) = agrees(&scene) {
+            panic!("{}: {why}", path.display());
+        }
+        let reference = rastercheck::harness::oracle::run_reference(&scene);
+        let run = rastercheck::harness::judge::run_candidate(&scene, &reference, &Production);
+        assert!(
+            matches!(run.verdict, rastercheck::harness::judge::Verdict::Pass),
+            "{}: {:?}",
+            path.display(),
+            run.verdict
+        );
+        judged += 1;
+    }
+    assert!(judged >= 40, "{judged} cases");
+}

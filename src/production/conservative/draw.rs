@@ -11,16 +11,24 @@
 //! What it does not do: multisampling, motion, clip space, polygons, lines,
 //! points, depth and attributes under conservative rasterization (the
 //! scene says why, `Scene::conservative_unjudged`); coordinates that are
-//! neither snapped nor dyadic (fixed point cannot hold them).
+//! not snapped whose common denominator exceeds 2^24.
+//!
+//! Coordinates are placed as production places any (snapped, or exact in
+//! fixed point); unsnapped ones that are not dyadic are held exactly in
+//! units of a half of their common denominator's reciprocal instead.
 
 use super::growth::Growth;
 use super::triangle::{Setup, Shape};
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::fixed::Fixed;
 use crate::production::scene_format::{format_for, place};
 use crate::rasterizer::RasterError;
-use crate::scene::{ConservativeMode, ConservativeSupport, Primitive, Scene};
+use crate::scene::{ConservativeMode, ConservativeSupport, Number, Primitive, Scene};
+
+/// The largest common denominator of unsnapped coordinates that are not
+/// dyadic this path holds: coordinates below 2^15 px times twice it stay
+/// below 2^41 units, edge functions below 2^85.
+const MAX_DENOMINATOR: u64 = 1 << 24;
 
 /// What production draws conservatively: both modes and the flag, each
 /// under the case's own uncertainty and properties.
@@ -43,27 +51,21 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     if let Some(why) = scene.conservative_unjudged() {
         return Err(RasterError::Unsupported(why));
     }
-    let format = format_for(scene, None)?;
-    let f = format.frac_bits;
-    let half = Growth::half_side(&case.uncertainty, f);
-    let margin = Growth::margin(&case.uncertainty, f);
-    // The flag's square: the pixel grown by u, whichever the mode.
+    let placed = placed(scene)?;
+    let half = Growth::half_side(&case.uncertainty, placed.one);
+    let margin = Growth::margin(&case.uncertainty, placed.one);
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let mut frame = Frame::for_plan(w, h, plan);
     let mut flags = case
         .fully_covered
         .then(|| vec![false; frame.coverage.len()]);
     for (index, primitive) in scene.primitives.iter().enumerate() {
-        let Primitive::Triangle(t) = primitive else {
+        let Primitive::Triangle(_) = primitive else {
             return Err(RasterError::Unsupported(
                 "production draws triangles only under conservative rasterization".to_owned(),
             ));
         };
-        let vertices: [[Fixed; 2]; 3] = t
-            .vertices
-            .each_ref()
-            .map(|v| [place(scene, format, &v.x), place(scene, format, &v.y)]);
-        let (setup, orientation) = Setup::new(vertices, f);
+        let (setup, orientation) = Setup::new(placed.vertices[index], placed.one);
         if setup.shape != Shape::Area && !case.degenerate_triangles {
             continue;
         }
@@ -90,4 +92,69 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     frame.fully_covered = flags;
     frame.coverage_only = true;
     Ok(frame)
+}
+
+/// A scene's triangles in integer units of 1/`one` px.
+struct PlacedScene {
+    one: i128,
+    /// Per primitive, its three vertices (nothing for others: refused).
+    vertices: Vec<[[i128; 2]; 3]>,
+}
+
+/// Every triangle's vertices in integers: production's fixed point where
+/// it holds them, else units of 1/(2D) px for D the coordinates' common
+/// denominator.
+fn placed(scene: &Scene) -> Result<PlacedScene, RasterError> {
+    let triangles = || {
+        scene.primitives.iter().filter_map(|p| match p {
+            Primitive::Triangle(t) => Some(t),
+            _ => None,
+        })
+    };
+    if let Ok(format) = format_for(scene, None) {
+        let vertices = triangles()
+            .map(|t| {
+                t.vertices
+                    .each_ref()
+                    .map(|v| [&v.x, &v.y].map(|n| i128::from(place(scene, format, n).0)))
+            })
+            .collect();
+        return Ok(PlacedScene {
+            one: 1 << format.frac_bits,
+            vertices,
+        });
+    }
+    let mut d: u64 = 1;
+    for n in scene.vertices().flat_map(|v| [&v.x, &v.y]) {
+        let q = u64::try_from(n.denominator()).ok();
+        d = q
+            .and_then(|q| {
+                let lcm = d / gcd(d, q) * q;
+                (lcm <= MAX_DENOMINATOR).then_some(lcm)
+            })
+            .ok_or_else(|| {
+                RasterError::Unsupported(format!(
+                    "unsnapped coordinates whose common denominator exceeds 2^24 are not held by production's conservative path ({})",
+                    n.to_exact_string()
+                ))
+            })?;
+    }
+    let one = 2 * i128::from(d);
+    let units = |n: &Number| {
+        let p = i128::try_from(n.numerator()).expect("coordinates are bounded by COORD_LIMIT");
+        let q = i128::try_from(n.denominator()).expect("q divides d");
+        p * (one / q)
+    };
+    let vertices = triangles()
+        .map(|t| t.vertices.each_ref().map(|v| [units(&v.x), units(&v.y)]))
+        .collect();
+    Ok(PlacedScene { one, vertices })
+}
+
+fn gcd(a: u64, b: u64) -> u64 {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
 }

@@ -10,10 +10,11 @@ use dashu_int::IBig;
 
 use crate::scene::Number;
 
-/// The half side s of the square a test asks about, in fixed-point units
-/// of 2^-f px: s = num / den = (½ + u)·2^f with u = p/q in lowest terms,
-/// so num = (q + 2p)·2^f and den = 2q; or the uncertainty alone,
-/// u·2^f = p·2^f / q (what the bounding-box tests compare with).
+/// The half side s of the square a test asks about, in units of 1/`one`
+/// px (2^-f px in fixed point): s = num / den = (½ + u)·one with u = p/q
+/// in lowest terms, so num = (q + 2p)·one and den = 2q; or the
+/// uncertainty alone, u·one = p·one / q (what the bounding-box tests
+/// compare with).
 #[derive(Clone, Debug)]
 pub(crate) struct Growth {
     num: IBig,
@@ -23,22 +24,22 @@ pub(crate) struct Growth {
 }
 
 impl Growth {
-    /// (½ + u) px in units of 2^-`frac_bits` px: the grown square's half side.
-    pub(crate) fn half_side(uncertainty: &Number, frac_bits: u32) -> Growth {
+    /// (½ + u) px in units of 1/`one` px: the grown square's half side.
+    pub(crate) fn half_side(uncertainty: &Number, one: i128) -> Growth {
         let p = uncertainty.numerator().clone();
         let q = IBig::from(uncertainty.denominator().clone());
         Growth::new(
-            (&q + &p * IBig::from(2u8)) << frac_bits as usize,
+            (&q + &p * IBig::from(2u8)) * IBig::from(one),
             q * IBig::from(2u8),
         )
     }
 
-    /// u px in units of 2^-`frac_bits` px: how far the grown square reaches
-    /// past the pixel's own border.
-    pub(crate) fn margin(uncertainty: &Number, frac_bits: u32) -> Growth {
+    /// u px in units of 1/`one` px: how far the grown square reaches past
+    /// the pixel's own border.
+    pub(crate) fn margin(uncertainty: &Number, one: i128) -> Growth {
         let p = uncertainty.numerator().clone();
         let q = IBig::from(uncertainty.denominator().clone());
-        Growth::new(p << frac_bits as usize, q)
+        Growth::new(p * IBig::from(one), q)
     }
 
     fn new(num: IBig, den: IBig) -> Growth {
@@ -88,7 +89,7 @@ mod tests {
             Number::ONE,
         ];
         for u in &cases {
-            let g = Growth::half_side(u, 17);
+            let g = Growth::half_side(u, 1 << 17);
             let big = Growth {
                 small: None,
                 ..g.clone()
@@ -104,9 +105,9 @@ mod tests {
             }
         }
         // s = (½ + ¾)·2 = 5/2 at one fraction bit: 5 ≤ 2·(5/2), 6 is not.
-        let g = Growth::half_side(&Number::ratio(3, 4), 1);
+        let g = Growth::half_side(&Number::ratio(3, 4), 2);
         assert!(g.at_most(5, 2) && !g.at_most(6, 2));
-        let m = Growth::margin(&Number::ratio(1, 3), 0);
+        let m = Growth::margin(&Number::ratio(1, 3), 1);
         assert!(m.at_most(0, 3) && m.at_most(1, 3) && !m.at_most(2, 3));
     }
 }

@@ -18,7 +18,6 @@
 //! a segment, the square meets its line from both sides.
 
 use super::growth::Growth;
-use crate::production::fixed::Fixed;
 
 /// Which way a triangle's area goes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,7 +31,7 @@ pub(crate) enum Shape {
 }
 
 /// One edge function in fixed-point units: E(x, y) = a·x + b·y + c, with
-/// a and b in units of 2^-f px and c in units of 2^-2f px².
+/// a and b in units of 1/one px and c in units of 1/one² px².
 #[derive(Clone, Copy, Debug)]
 struct Edge {
     a: i128,
@@ -80,15 +79,16 @@ pub(crate) struct Setup {
     edges: [Edge; 3],
     /// The bounding box of the vertices, in units: [x_min, y_min, x_max, y_max].
     pub(crate) bounds: [i128; 4],
-    /// Units per pixel: 2^f.
+    /// Units per pixel: 2^f in fixed point, or twice the coordinates'
+    /// common denominator.
     one: i128,
 }
 
 impl Setup {
-    /// The triangle on `vertices` (in units of 2^-`frac_bits` px) and the
-    /// sign of (b − a) × (c − a), what culling reads.
-    pub(crate) fn new(vertices: [[Fixed; 2]; 3], frac_bits: u32) -> (Setup, std::cmp::Ordering) {
-        let v = vertices.map(|[x, y]| [i128::from(x.0), i128::from(y.0)]);
+    /// The triangle on `vertices` (in units of 1/`one` px, `one` even, so
+    /// that pixel centres are whole units) and the sign of (b − a) × (c − a),
+    /// what culling reads.
+    pub(crate) fn new(v: [[i128; 2]; 3], one: i128) -> (Setup, std::cmp::Ordering) {
         let mut edges = [0, 1, 2].map(|i| Edge::through(v[i], v[(i + 1) % 3]));
         // (b − a) × (c − a) = E₀₁(c): positive when clockwise on screen.
         let cross = edges[0].at(v[2][0], v[2][1]);
@@ -116,7 +116,7 @@ impl Setup {
             shape,
             edges,
             bounds: [lo(0), lo(1), hi(0), hi(1)],
-            one: 1i128 << frac_bits,
+            one,
         };
         (setup, orientation)
     }
@@ -125,9 +125,8 @@ impl Setup {
     /// one pixel can meet the bounding box: a superset, the exact tests
     /// decide. Half-open, clipped to `0..size`.
     pub(crate) fn range(&self, axis: usize, size: u32) -> std::ops::Range<i64> {
-        let shift = self.one.trailing_zeros();
-        let first = (self.bounds[axis] >> shift) - 2;
-        let last = (self.bounds[axis + 2] >> shift) + 2;
+        let first = self.bounds[axis].div_euclid(self.one) - 2;
+        let last = self.bounds[axis + 2].div_euclid(self.one) + 2;
         let clip = |v: i128| v.clamp(0, i128::from(size)) as i64;
         clip(first)..clip(last)
     }
@@ -171,8 +170,7 @@ impl Setup {
         self.edges.iter().all(|e| half.at_least(e.at(cx, cy), e.k))
     }
 
-    /// The centre of pixel (x, y) in units of 2^-(f+1) px is odd; in units
-    /// of 2^-f px it is (x + ½)·2^f, an integer since f ≥ 1.
+    /// The centre of pixel (x, y): (x + ½)·one, whole since `one` is even.
     fn centre(&self, x: i128, y: i128) -> (i128, i128) {
         let half = self.one / 2;
         (x * self.one + half, y * self.one + half)
