@@ -514,7 +514,8 @@ mod tests {
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
             vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
-            foil-empty-antialias";
+            foil-empty-antialias foil-conservative-overgrow foil-conservative-centre-box \
+            foil-conservative-centre-flag";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());
