@@ -143,7 +143,7 @@ fn worked_examples_7_and_8_the_flag() {
     let c = classify(&case("flag_last_writer")).unwrap();
     let truth: Vec<[u32; 2]> = (0..4u32)
         .flat_map(|y| (0..4u32).map(move |x| [x, y]))
-        .filter(|&[x, y]| y >= x + 1 || y + 2 <= x)
+        .filter(|&[x, y]| y > x || y + 2 <= x)
         .collect();
     assert_eq!(flags(&c, PixelClass::Required), truth);
 }
@@ -350,4 +350,28 @@ fn a_declared_uncertainty_is_judged_under() {
         "{}",
         m.judged_under
     );
+}
+
+#[test]
+fn the_report_pictures_the_three_classes_and_the_pixels() {
+    use rastercheck::report::conservative::{write_picture, BAND_DRAWN, REQUIRED_DRAWN};
+    let scene = case("over_sliver_band");
+    let reference = run_reference(&scene);
+    let band = Edited {
+        name: "band",
+        edit: |_, f| {
+            let i = f.index(0, 3);
+            f.hit(i, 0);
+        },
+    };
+    let run = run_candidate(&scene, &reference, &band);
+    let m = run.metrics.unwrap().conservative.unwrap();
+    let dir = std::env::temp_dir().join(format!("rastercheck-cons-{}", std::process::id()));
+    let paths = write_picture(&scene, "band", &m, &dir, 8).unwrap();
+    let image = image::open(&paths[0]).unwrap().to_rgb8();
+    // Pixel (0,3) drawn in the band, (3,2) required and drawn: sampled
+    // inside each magnified pixel, off its grid lines and outlines.
+    assert_eq!(image.get_pixel(3, 3 * 8 + 6).0, BAND_DRAWN);
+    assert_eq!(image.get_pixel(3 * 8 + 3, 2 * 8 + 1).0, REQUIRED_DRAWN);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

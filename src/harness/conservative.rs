@@ -1,15 +1,10 @@
 //! A conservative case's candidate (SPEC.md §19): refused unsent when it
-//! draws no such case (or not this mode, or not the flag asked for), and
-//! otherwise judged pixel by pixel against the reference's three classes.
+//! draws no such case (or not this mode, or not the flag asked for); the
+//! oracle's classes, the case's promises about them, and the state a
+//! candidate is judged under. `judge.rs` judges its frame with them.
 
-use std::time::Duration;
-
-use super::judge::{CandidateRun, Verdict};
-use super::profile::OwnConventions;
-use crate::frame::Frame;
-use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer};
-use crate::reference::{self, conservative::ConservativeClasses, conservative::PixelClass};
+use crate::reference::conservative::{ConservativeClasses, PixelClass};
 use crate::scene::{Conservative, Scene};
 
 /// Why `candidate` is not asked to draw conservative `scene`, if it is
@@ -122,83 +117,4 @@ pub fn judged_under(scene: &Scene, candidate: &dyn Rasterizer) -> Option<Conserv
         Some(support) => support.restate(case),
         None => case.clone(),
     })
-}
-
-/// A conservative candidate's frame judged against the oracle's classes
-/// (SPEC.md §19.5): against `classes`, the reference's for the case, or,
-/// where the candidate declares an uncertainty or properties of its own
-/// (`under` differs from the case's), against the classes under those,
-/// reported as such.
-pub fn judge(
-    scene: &Scene,
-    classes: &Result<ConservativeClasses, RasterError>,
-    under: Option<&Conservative>,
-    frame: Frame,
-    name: String,
-    elapsed: Duration,
-) -> CandidateRun {
-    let run = |verdict: Verdict, metrics: Option<Metrics>, frame: Frame| CandidateRun {
-        rasterizer: name.clone(),
-        verdict,
-        metrics,
-        method: frame.method,
-        frame: Some(frame),
-        elapsed,
-        judged: OwnConventions::default(),
-    };
-    let classes = match classes {
-        Err(RasterError::Unsupported(why)) => {
-            return run(Verdict::Unsupported(why.clone()), None, frame)
-        }
-        Err(RasterError::Failed(why)) => return run(Verdict::Error(why.clone()), None, frame),
-        Ok(classes) => classes,
-    };
-    let case = scene
-        .effects
-        .conservative
-        .as_ref()
-        .expect("a conservative scene");
-    // The case's promises hold of the case's classes, whatever the
-    // candidate is judged under.
-    let promises = broken_promises(scene, classes);
-    let own;
-    let (judged, classes) = match under {
-        Some(under) if under != case => {
-            own = reference::conservative::classify_under(scene, under);
-            (under, &own)
-        }
-        _ => (case, classes),
-    };
-    if let Some(why) = metrics::conservative::shape_problem(classes, &frame) {
-        let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
-        return run(Verdict::Error(why), None, frame);
-    }
-    let mut words = judged.words();
-    if judged != case {
-        words.push_str(&format!(
-            ", its own conventions; the case states {}",
-            case.words()
-        ));
-    }
-    let m = metrics::conservative::measure(classes, &frame, words);
-    let mut failures = metrics::conservative::failures(&m);
-    failures.extend(promises);
-    let coverage = metrics::conservative::coverage(&m, &frame);
-    let metrics = Metrics {
-        coverage,
-        watertight: None,
-        lines: None,
-        channels: Vec::new(),
-        antialias: None,
-        time: None,
-        ties: None,
-        latitude: None,
-        conservative: Some(m),
-    };
-    let verdict = if failures.is_empty() {
-        Verdict::Pass
-    } else {
-        Verdict::Fail(failures)
-    };
-    run(verdict, Some(metrics), frame)
 }

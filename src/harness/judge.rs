@@ -11,6 +11,7 @@ use super::profile::OwnConventions;
 use crate::frame::Frame;
 use crate::metrics::{self, Metrics};
 use crate::rasterizer::{RasterError, Rasterizer, Snapping};
+use crate::reference::conservative::ConservativeClasses;
 use crate::reference::{self, DiamondLine, TieSet};
 use crate::scene::{Conservative, Scene};
 
@@ -277,7 +278,7 @@ fn judge(
 ) -> CandidateRun {
     let ties = oracle.ties;
     if let Some(classes) = &reference.conservative {
-        return super::conservative::judge(
+        return judge_conservative(
             scene,
             classes,
             oracle.conservative.as_ref(),
@@ -364,6 +365,85 @@ fn judge(
         elapsed,
         judged: OwnConventions::default(),
     }
+}
+
+/// A conservative candidate's frame judged against the oracle's classes
+/// (SPEC.md §19.5): against `classes`, the reference's for the case, or,
+/// where the candidate declares an uncertainty or properties of its own
+/// (`under` differs from the case's), against the classes under those,
+/// reported as such.
+fn judge_conservative(
+    scene: &Scene,
+    classes: &Result<ConservativeClasses, RasterError>,
+    under: Option<&Conservative>,
+    frame: Frame,
+    name: String,
+    elapsed: Duration,
+) -> CandidateRun {
+    let run = |verdict: Verdict, metrics: Option<Metrics>, frame: Frame| CandidateRun {
+        rasterizer: name.clone(),
+        verdict,
+        metrics,
+        method: frame.method,
+        frame: Some(frame),
+        elapsed,
+        judged: OwnConventions::default(),
+    };
+    let classes = match classes {
+        Err(RasterError::Unsupported(why)) => {
+            return run(Verdict::Unsupported(why.clone()), None, frame)
+        }
+        Err(RasterError::Failed(why)) => return run(Verdict::Error(why.clone()), None, frame),
+        Ok(classes) => classes,
+    };
+    let case = scene
+        .effects
+        .conservative
+        .as_ref()
+        .expect("a conservative scene");
+    // The case's promises hold of the case's classes, whatever the
+    // candidate is judged under.
+    let promises = super::conservative::broken_promises(scene, classes);
+    let own;
+    let (judged, classes) = match under {
+        Some(under) if under != case => {
+            own = reference::conservative::classify_under(scene, under);
+            (under, &own)
+        }
+        _ => (case, classes),
+    };
+    if let Some(why) = metrics::conservative::shape_problem(classes, &frame) {
+        let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
+        return run(Verdict::Error(why), None, frame);
+    }
+    let mut words = judged.words();
+    if judged != case {
+        words.push_str(&format!(
+            ", its own conventions; the case states {}",
+            case.words()
+        ));
+    }
+    let m = metrics::conservative::measure(classes, &frame, words);
+    let mut failures = metrics::conservative::failures(&m);
+    failures.extend(promises);
+    let coverage = metrics::conservative::coverage(&m, &frame);
+    let metrics = Metrics {
+        coverage,
+        watertight: None,
+        lines: None,
+        channels: Vec::new(),
+        antialias: None,
+        time: None,
+        ties: None,
+        latitude: None,
+        conservative: Some(m),
+    };
+    let verdict = if failures.is_empty() {
+        Verdict::Pass
+    } else {
+        Verdict::Fail(failures)
+    };
+    run(verdict, Some(metrics), frame)
 }
 
 /// Why a candidate's frame cannot be compared with the reference's, if it

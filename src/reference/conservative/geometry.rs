@@ -124,10 +124,10 @@ mod tests {
     #[test]
     fn a_segment_and_a_point_meet_what_they_touch() {
         let segment = [p(0, 0), p(10, 10), p(5, 5)];
-        assert!(meets(&rect(5, 0, 6, 4), &segment) == false);
+        assert!(!meets(&rect(5, 0, 6, 4), &segment));
         assert!(meets(&rect(4, 0, 6, 4), &segment));
         let point = [p(3, 3), p(3, 3), p(3, 3)];
-        assert!(meets(&rect(3, 0, 4, 2), &point) == false);
+        assert!(!meets(&rect(3, 0, 4, 2), &point));
         assert!(meets(&rect(3, 3, 4, 4), &point));
     }
 
