@@ -11,8 +11,9 @@
 
 use crate::adapters::external;
 use crate::production::foils::{
-    Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, DdaF32, DdaF64, EmptyAntialias,
-    FloatF32, FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
+    Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
+    ConservativeCentreFlag, ConservativeOvergrow, DdaF32, DdaF64, EmptyAntialias, FloatF32,
+    FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;
@@ -204,6 +205,15 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-alpha255", Kind::Foil, false,
         "an area method storing area × 255 in a byte (8-bit unorm), and declaring it",
         || boxed(Alpha::UNORM)),
+    row("foil-conservative-overgrow", Kind::Foil, false,
+        "conservative overestimation grown 1/8 px past the uncertainty it declares",
+        || boxed(ConservativeOvergrow)),
+    row("foil-conservative-centre-box", Kind::Foil, false,
+        "conservative overestimation tested only in the box of pixel centres (misses touched corner pixels)",
+        || boxed(ConservativeCentreBox)),
+    row("foil-conservative-centre-flag", Kind::Foil, false,
+        "conservative rasterization flagging a pixel fully covered when its centre is covered",
+        || boxed(ConservativeCentreFlag)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -513,7 +523,8 @@ mod tests {
             mutant:leaky-full mutant:motion-at-open mutant:motion-half-shutter vulkan \
             vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
-            foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255";
+            foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255 \
+            foil-conservative-overgrow foil-conservative-centre-box foil-conservative-centre-flag";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

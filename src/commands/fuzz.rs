@@ -25,12 +25,12 @@ pub struct FuzzArgs {
     #[arg(long, value_name = "DIR", default_value = crate::explore::fuzz::default_out().to_str())]
     pub out: PathBuf,
     /// Only this family: triangles, lines, meshes, polygons, antialias,
-    /// motion or clip (default: each in turn).
+    /// motion, clip or conservative (default: each in turn).
     #[arg(long)]
     pub family: Option<String>,
     /// Only failures of this check count: coverage, holes, overdraw,
-    /// watertight (holes or overdraw), lines, antialias, time,
-    /// interpolation or error.
+    /// watertight (holes or overdraw), lines, conservative, antialias,
+    /// time, interpolation or error.
     #[arg(long)]
     pub check: Option<String>,
     /// Keep searching until this many failures are shrunk and written.

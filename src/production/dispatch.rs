@@ -4,11 +4,11 @@
 
 use super::antialias::sampling::Sampling;
 use super::placed::{draw_frame, Placed, PreparedFrame};
-use super::{clip, depth, motion};
+use super::{clip, conservative, depth, motion};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::{Capabilities, Prepared, RasterError, Rasterizer};
-use crate::scene::Scene;
+use crate::scene::{ConservativeSupport, Scene};
 
 /// The production rasterizer.
 #[derive(Clone, Copy, Debug, Default)]
@@ -33,7 +33,14 @@ impl Rasterizer for Production {
         if scene.in_clip_space() {
             return clip::rasterize(scene, plan);
         }
+        if scene.is_conservative() {
+            return conservative::rasterize(scene, plan);
+        }
         rasterize_with(scene, plan, Sampling::for_plan(plan))
+    }
+
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        Some(conservative::support())
     }
 
     /// Any scene without motion: placed once, drawn into one frame.
@@ -42,7 +49,11 @@ impl Rasterizer for Production {
         scene: &'a Scene,
         plan: &'a Plan,
     ) -> Option<Result<Box<dyn Prepared + 'a>, RasterError>> {
-        if plan.motion.is_some() || scene.in_clip_space() || scene.depth_rules_need_attachment() {
+        if plan.motion.is_some()
+            || scene.in_clip_space()
+            || scene.depth_rules_need_attachment()
+            || scene.is_conservative()
+        {
             return None;
         }
         Some(

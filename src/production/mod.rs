@@ -5,7 +5,8 @@
 //! A scene flows through the files in this order:
 //!
 //! 1. `dispatch.rs` ([`Production`]): a clip-space scene (SPEC.md §16) goes
-//!    whole to `clip/`, whose `mod.rs` gives its own order; a plan with
+//!    whole to `clip/`, whose `mod.rs` gives its own order; a conservative
+//!    one (§19) whole to `conservative/`; a plan with
 //!    motion goes to the time loop (`motion/`), which tests the moving
 //!    primitives itself and draws the static ones from step 2 on.
 //! 2. `placed.rs` (`draw_frame`): the fixed-point format (`fixed.rs`,
@@ -37,6 +38,7 @@ pub mod adaptive;
 pub mod antialias;
 pub mod catalog;
 pub mod clip;
+pub mod conservative;
 pub mod depth;
 pub mod dispatch;
 pub mod fixed;

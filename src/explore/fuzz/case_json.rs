@@ -50,7 +50,11 @@ pub(super) fn valid(scene: &Scene) -> Result<(), String> {
     // moving scene): the scene must read back from its case file, so that
     // a shrunk counterexample is a case.
     let motion = scene.effects.motion_blur.is_some() || scene.vertices().any(|v| v.to.is_some());
-    if scene.has_polygons() || scene.effects.antialias.is_some() || motion {
+    if scene.has_polygons()
+        || scene.effects.antialias.is_some()
+        || motion
+        || scene.is_conservative()
+    {
         return reads_back(scene);
     }
     Ok(())
@@ -252,6 +256,17 @@ pub fn case_json(scene: &Scene) -> String {
             b.samples,
             b.pattern.name(),
             b.seed
+        ));
+    }
+    if let Some(c) = &scene.effects.conservative {
+        effects.push(format!(
+            "\"conservative\": {{ \"mode\": \"{}\", \"uncertainty\": {}, \"fully_covered\": {}, \"degenerate_triangles\": {}, \"degenerate_lines\": {}, \"points_and_lines\": {} }}",
+            c.mode.name(),
+            json_number(&c.uncertainty),
+            c.fully_covered,
+            c.degenerate_triangles,
+            c.degenerate_lines,
+            c.points_and_lines
         ));
     }
     let effects = if effects.is_empty() {

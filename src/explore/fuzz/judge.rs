@@ -21,6 +21,7 @@ use crate::metrics::{Metrics, SampleDiff};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
 use crate::reference;
+use crate::reference::conservative::ConservativeClasses;
 use crate::scene::{FillRule, LineRule, Primitive, Scene};
 
 /// Which check a candidate fails, in the order a scene failing several is
@@ -37,6 +38,9 @@ pub enum Kind {
     Lines,
     /// Coverage differs from the reference's (§6.1).
     Coverage,
+    /// A conservative scene's required pixel missing, forbidden pixel
+    /// drawn, or fully-covered flag the classes do not allow (§19).
+    Conservative,
     /// Resolved coverage against the exact areas: piglit's rule, the
     /// coverage error bounds, a resolve that is not the box resolve of the
     /// candidate's own mask (§14.3).
@@ -50,12 +54,13 @@ pub enum Kind {
 }
 
 impl Kind {
-    pub const ALL: [Kind; 8] = [
+    pub const ALL: [Kind; 9] = [
         Kind::Error,
         Kind::Holes,
         Kind::Overdraw,
         Kind::Lines,
         Kind::Coverage,
+        Kind::Conservative,
         Kind::Antialias,
         Kind::Time,
         Kind::Interpolation,
@@ -68,6 +73,7 @@ impl Kind {
             Kind::Overdraw => "overdraw",
             Kind::Lines => "lines",
             Kind::Coverage => "coverage",
+            Kind::Conservative => "conservative",
             Kind::Antialias => "antialias",
             Kind::Time => "time",
             Kind::Interpolation => "interpolation",
@@ -83,6 +89,9 @@ impl Kind {
             }
             Kind::Lines => "lights one pixel of a midpoint line per major-axis step",
             Kind::Coverage => "covers exactly the reference's samples, with the same owners",
+            Kind::Conservative => {
+                "draws every required pixel and no forbidden one, each fully-covered flag as the classes allow"
+            }
             Kind::Antialias => {
                 "resolves full pixels to exactly 1, empty ones to 0, within the coverage bounds"
             }
@@ -125,6 +134,7 @@ impl Failure {
             Kind::Holes | Kind::Overdraw => &["watertight:"],
             Kind::Lines => &["lines:"],
             Kind::Coverage => &["coverage:"],
+            Kind::Conservative => &["conservative"],
             Kind::Antialias => &["antialias:"],
             Kind::Time => &["time:"],
             Kind::Interpolation => &["depth:", "attribute "],
@@ -237,6 +247,15 @@ pub fn evaluate(scene: &Scene, candidate: &dyn Rasterizer) -> Outcome {
         }
     }
     let run = judge::run_candidate(scene, &reference, candidate);
+    if let (Some(Ok(classes)), Verdict::Fail(reasons), Some(frame)) =
+        (&reference.conservative, &run.verdict, &run.frame)
+    {
+        return Outcome::Fail(Failure {
+            kinds: vec![Kind::Conservative],
+            reasons: reasons.clone(),
+            focus: vec![(Kind::Conservative, conservative_focus(classes, frame))],
+        });
+    }
     match (run.verdict, run.metrics, run.frame) {
         (Verdict::Pass, ..) => Outcome::Pass,
         (Verdict::Unsupported(why), ..) => Outcome::Unsupported(why),
@@ -285,6 +304,13 @@ fn reference_run(scene: &Scene) -> Result<ReferenceRun, String> {
             }
             _ => return Ok(run),
         }
+    }
+    if scene.is_conservative() {
+        let run = oracle::run_reference(scene);
+        return match &run.conservative {
+            Some(Err(why)) => Err(why.to_string()),
+            _ => Ok(run),
+        };
     }
     let frame = reference::render(scene, &plan);
     let interior = if scene.expect.watertight {
@@ -498,6 +524,25 @@ fn time_focus(
     }
     let per_pixel = samples_per_pixel(scene);
     pixels.into_iter().map(|p| p * per_pixel).collect()
+}
+
+/// The pixels of a conservative frame its classes do not admit: a
+/// required one missing, a forbidden one drawn, or a flag not allowed.
+fn conservative_focus(classes: &ConservativeClasses, candidate: &Frame) -> Vec<usize> {
+    (0..classes.drawn.len())
+        .filter(|&i| {
+            let drawn = candidate.coverage.get(i).is_some_and(|&c| c > 0);
+            let flag = candidate
+                .fully_covered
+                .as_ref()
+                .is_some_and(|f| f.get(i).copied().unwrap_or(false));
+            !classes.drawn[i].admits(drawn)
+                || classes
+                    .fully_covered
+                    .as_ref()
+                    .is_some_and(|f| drawn && !f[i].admits(flag))
+        })
+        .collect()
 }
 
 /// Pixels of midpoint lines in steps where the line has more than one.

@@ -11,8 +11,13 @@
 //! vertices, `outline.rs` strokes hairlines over a fill, and
 //! `empty_antialias.rs` answers antialiased scenes with nothing, and
 //! `alpha.rs` stores coverage as a byte over 256 (or 255), declared truly
-//! or not: each a finding `probe` must make (issue 40). `coverage_only.rs`
-//! is what the coverage-only triangle foils share.
+//! or not: each a finding `probe` must make (issue 40). `declare.rs`'s
+//! `coverage_foil!` is what the coverage-only triangle foils share. Three draw conservatively
+//! (SPEC.md §19), each wrong in one way the verdict names (issue 38):
+//! `conservative_overgrow.rs` grows past its declared uncertainty,
+//! `conservative_centre_box.rs` misses touched corner pixels,
+//! `conservative_centre_flag.rs` flags partly covered pixels fully
+//! covered; `conservative_parts.rs` is what they share.
 
 mod declare;
 
@@ -22,6 +27,10 @@ pub mod any_coverage;
 pub mod area_sampler;
 pub mod coarse_edges;
 pub mod coarse_snap;
+pub mod conservative_centre_box;
+pub mod conservative_centre_flag;
+pub mod conservative_overgrow;
+mod conservative_parts;
 pub mod dda;
 pub mod empty_antialias;
 pub mod float_edges;
@@ -37,6 +46,9 @@ pub use any_coverage::AnyCoverage;
 pub use area_sampler::AreaSampler;
 pub use coarse_edges::CoarseEdges;
 pub use coarse_snap::CoarseSnap;
+pub use conservative_centre_box::ConservativeCentreBox;
+pub use conservative_centre_flag::ConservativeCentreFlag;
+pub use conservative_overgrow::ConservativeOvergrow;
 pub use dda::{DdaF32, DdaF64};
 pub use empty_antialias::EmptyAntialias;
 pub use float_edges::{FloatF32, FloatF64};

@@ -1,4 +1,4 @@
-//! The seven [`Family`]s the fuzzer generates, by name.
+//! The eight [`Family`]s the fuzzer generates, by name.
 
 /// What the fuzzer generates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,10 +26,14 @@ pub enum Family {
     /// w = 0, across the near and far planes, extreme ratios of w; every
     /// clip convention, depth clip or clamp, either provoking vertex.
     Clip,
+    /// Triangles drawn conservatively (SPEC.md §19): slivers, needles,
+    /// corner and border touches, degenerate and far-away triangles, both
+    /// modes, several uncertainties, the fully-covered flag on and off.
+    Conservative,
 }
 
 impl Family {
-    pub const ALL: [Family; 7] = [
+    pub const ALL: [Family; 8] = [
         Family::Triangles,
         Family::Meshes,
         Family::Lines,
@@ -37,6 +41,7 @@ impl Family {
         Family::Antialias,
         Family::Motion,
         Family::Clip,
+        Family::Conservative,
     ];
 
     pub fn name(self) -> &'static str {
@@ -48,6 +53,7 @@ impl Family {
             Family::Antialias => "antialias",
             Family::Motion => "motion",
             Family::Clip => "clip",
+            Family::Conservative => "conservative",
         }
     }
 

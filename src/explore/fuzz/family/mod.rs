@@ -1,4 +1,4 @@
-//! Scene generation: the seven [`Family`]s and [`generate`], which draws case
+//! Scene generation: the eight [`Family`]s and [`generate`], which draws case
 //! `index` of a seed from its own stream and keeps it only when it is a
 //! valid case (SPEC.md §8). One file per family; `common.rs` holds what
 //! several draw from.
@@ -9,6 +9,7 @@
 mod antialias;
 mod clip;
 mod common;
+mod conservative;
 mod generate;
 mod lines;
 mod list;

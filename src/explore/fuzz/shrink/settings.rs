@@ -1,6 +1,7 @@
 //! Shrinking passes on what a scene declares rather than on its geometry:
 //! depth, attributes, w, rules, line options and expectations,
-//! `effects.antialias`, `effects.motion_blur` and `subpixel_bits`.
+//! `effects.antialias`, `effects.motion_blur`, `effects.conservative`'s
+//! flag, degenerate triangles and uncertainty, and `subpixel_bits`.
 
 use super::state::{Edit, Shrinker};
 use super::values::coordinates;
@@ -92,6 +93,20 @@ impl Shrinker<'_> {
         }));
         edits.push(Box::new(|s| {
             std::mem::replace(&mut s.rules.cull, Cull::None) != Cull::None
+        }));
+        // A conservative scene's flag, degenerate triangles and uncertainty
+        // (SPEC.md §19), each dropped when the failure does not need it.
+        edits.push(Box::new(|s| {
+            let c = s.effects.conservative.as_mut();
+            c.is_some_and(|c| std::mem::take(&mut c.fully_covered))
+        }));
+        edits.push(Box::new(|s| {
+            let c = s.effects.conservative.as_mut();
+            c.is_some_and(|c| std::mem::take(&mut c.degenerate_triangles))
+        }));
+        edits.push(Box::new(|s| {
+            let c = s.effects.conservative.as_mut();
+            c.is_some_and(|c| std::mem::replace(&mut c.uncertainty, Number::ZERO) != Number::ZERO)
         }));
         if !matches!(self.kind, Kind::Holes | Kind::Overdraw) {
             edits.push(Box::new(|s| std::mem::take(&mut s.expect.watertight)));

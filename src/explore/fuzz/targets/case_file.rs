@@ -25,7 +25,8 @@ pub(super) fn limits() -> Limits {
 /// must run through the reference. Production must then draw it without
 /// an error (a panic is a finding too) and, where nothing moves, cover exactly the reference's
 /// samples with the same owners (values are judged against bounds, not
-/// here; a case's own expectations may be wrong, and are not judged).
+/// here; a case's own expectations may be wrong, and are not judged); a
+/// conservative case's pixels each as the reference's class allows.
 pub fn case_json(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
@@ -44,6 +45,30 @@ pub fn case_json(data: &[u8]) {
     }
     let reference = oracle::run_reference(&scene);
     if Production.capabilities().refuses(&scene).is_some() || reference.time.is_some() {
+        return;
+    }
+    // A conservative case (SPEC.md §19): every pixel as its class allows.
+    if let Some(classes) = &reference.conservative {
+        let Ok(classes) = classes else {
+            return;
+        };
+        match Production.rasterize(&scene, &reference.plan) {
+            Ok(frame) => {
+                let wrong = (0..classes.drawn.len())
+                    .filter(|&i| {
+                        !classes.drawn[i].admits(frame.coverage.get(i).is_some_and(|&c| c > 0))
+                    })
+                    .count();
+                assert!(
+                    wrong == 0,
+                    "{FOUND_BY_CASE_TARGET}: {wrong} pixels outside the conservative classes\n{written}"
+                );
+            }
+            Err(RasterError::Unsupported(_)) => {}
+            Err(RasterError::Failed(why)) => {
+                panic!("production breaks on an accepted case: {why}\n{written}")
+            }
+        }
         return;
     }
     match Production.rasterize(&scene, &reference.plan) {

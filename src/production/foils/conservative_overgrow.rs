@@ -1,0 +1,51 @@
+//! `foil-conservative-overgrow`: conservative overestimation that grows
+//! every triangle by ⅛ px more than the uncertainty it declares (the
+//! case's), as a driver whose reported `primitiveOverestimationSize` is
+//! smaller than what its hardware does. **A foil**, wrong in that one way:
+//! a pixel whose square lies more than u but at most u + ⅛ px from a
+//! triangle is drawn. Caught as a forbidden pixel drawn (SPEC.md §19.1).
+//! It draws overestimation only.
+
+use super::conservative_parts::capabilities;
+use crate::frame::Frame;
+use crate::plan::Plan;
+use crate::production::conservative;
+use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
+use crate::scene::{ConservativeSupport, Number, Scene};
+
+/// How much more it grows than it declares: ⅛ px.
+const EXCESS: (i64, i64) = (1, 8);
+
+/// Conservative overestimation grown ⅛ px past its declaration.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ConservativeOvergrow;
+
+impl Rasterizer for ConservativeOvergrow {
+    fn name(&self) -> &str {
+        "foil-conservative-overgrow"
+    }
+
+    fn is_foil(&self) -> bool {
+        true
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        capabilities()
+    }
+
+    fn conservative(&self) -> Option<ConservativeSupport> {
+        Some(ConservativeSupport {
+            underestimate: false,
+            ..conservative::support()
+        })
+    }
+
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut grown = scene.clone();
+        if let Some(c) = &mut grown.effects.conservative {
+            let excess = Number::ratio(EXCESS.0, EXCESS.1);
+            c.uncertainty = Number::from_rbig(c.uncertainty.as_rbig() + excess.as_rbig());
+        }
+        conservative::rasterize(&grown, plan)
+    }
+}
