@@ -153,6 +153,13 @@ fn an_unsupported_reason_must_name_the_device() {
     assert!(device_limit(
         "midpoint line: no Vulkan line mode draws the midpoint rule"
     ));
+    assert!(device_limit(
+        "conservative rasterization: the device offers no VK_EXT_conservative_rasterization"
+    ));
+    assert!(device_limit(
+        "conservative rasterization: the driver, llvmpipe (LLVM 15.0.6, 256 bits), offers \
+         neither GL_NV_conservative_raster nor GL_INTEL_conservative_rasterization"
+    ));
     // The reason this file's check was written against: the adapter's.
     assert!(!device_limit(
         "a point of size 4 whose square reaches outside a viewport rectangle with an edge off \

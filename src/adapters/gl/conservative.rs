@@ -29,7 +29,7 @@ fn why(extensions: &HashSet<String>, renderer: &str) -> String {
              drive yet"
         ),
         None => format!(
-            "conservative rasterization: {renderer} offers neither {} nor {}",
+            "conservative rasterization: the driver, {renderer}, offers neither {} nor {}",
             EXTENSIONS[0], EXTENSIONS[1]
         ),
     }
@@ -44,8 +44,8 @@ mod tests {
         let none = why(&HashSet::new(), "llvmpipe (LLVM 15.0.6, 256 bits)");
         assert_eq!(
             none,
-            "conservative rasterization: llvmpipe (LLVM 15.0.6, 256 bits) offers neither \
-             GL_NV_conservative_raster nor GL_INTEL_conservative_rasterization"
+            "conservative rasterization: the driver, llvmpipe (LLVM 15.0.6, 256 bits), offers \
+             neither GL_NV_conservative_raster nor GL_INTEL_conservative_rasterization"
         );
         let nv: HashSet<String> = ["GL_NV_conservative_raster".to_owned()].into();
         assert!(why(&nv, "NVIDIA H100").contains("does not drive yet"));
