@@ -18,30 +18,16 @@ pub const OWNED_FOLDERS: [&str; 4] = ["images", "exr", "pages", "plots"];
 /// over `path`, so a run killed mid-write leaves the old file or the new
 /// one, never a truncated one. Creates the folder.
 pub fn write_file(path: &Path, content: &[u8]) -> Result<PathBuf, String> {
-    let parent = path.parent().unwrap_or(Path::new("."));
-    if !parent.as_os_str().is_empty() {
-        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
-    }
-    let name = path
-        .file_name()
-        .ok_or_else(|| format!("{}: not a file name", path.display()))?;
-    let temporary = path.with_file_name(format!(
-        ".{}.{}{TEMPORARY_SUFFIX}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let written = std::fs::write(&temporary, content)
-        .and_then(|()| std::fs::rename(&temporary, path))
-        .map_err(|e| format!("{}: {e}", path.display()));
-    if written.is_err() {
-        let _ = std::fs::remove_file(&temporary);
-    }
-    written.map(|()| path.to_owned())
+    write_file_with(path, &mut |out| {
+        out.write_all(content)
+            .map_err(|e| format!("{}: {e}", path.display()))
+    })
 }
 
 /// Writes the file at `path` as `write` writes it, a piece at a time,
-/// whole or not at all as [`write_file`] does: a report file too large to
-/// hold in memory is written from what streams into it.
+/// whole or not at all as [`write_file`] (which writes through here) does:
+/// a report file too large to hold in memory is written from what streams
+/// into it.
 pub fn write_file_with(
     path: &Path,
     write: &mut dyn FnMut(&mut dyn std::io::Write) -> Result<(), String>,
