@@ -3,10 +3,26 @@
 //! `coverage_foil!`, one that draws triangles' coverage and nothing else.
 
 /// Declares a foil: a unit struct whose `Rasterizer` impl gives its name,
-/// says it is a foil, takes production's capabilities, and draws with the
-/// given function of the scene and plan.
+/// says it is a foil, takes production's capabilities (or, after
+/// `capabilities:`, the ones given), and draws with the given function of
+/// the scene and plan.
 macro_rules! foil {
     ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
+        $crate::production::foils::declare::foil!(
+            $(#[$doc])* $name,
+            $label,
+            capabilities: Capabilities {
+                polygons: false,
+                antialias: false,
+                motion_blur: false,
+                clip_space: false,
+                points: false,
+                ..Production.capabilities()
+            },
+            $draw
+        );
+    };
+    ($(#[$doc:meta])* $name:ident, $label:literal, capabilities: $capabilities:expr, $draw:expr) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, Default)]
         pub struct $name;
@@ -21,14 +37,7 @@ macro_rules! foil {
             }
 
             fn capabilities(&self) -> Capabilities {
-                Capabilities {
-                    polygons: false,
-                    antialias: false,
-                    motion_blur: false,
-                    clip_space: false,
-                    points: false,
-                    ..Production.capabilities()
-                }
+                $capabilities
             }
 
             fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
@@ -40,35 +49,21 @@ macro_rules! foil {
 
 pub(super) use foil;
 
-/// Declares a coverage-only triangle foil: a unit struct whose
-/// `Rasterizer` impl gives its name, says it is a foil, takes triangles
-/// (at any coordinates) and nothing else, refuses a plan that asks for
-/// depth or attributes, and draws with the given function of the scene
-/// and plan.
+/// Declares a coverage-only triangle foil: a [`foil!`] that takes
+/// triangles (at any coordinates) and nothing else, refuses a plan that
+/// asks for depth or attributes, and otherwise draws with the given
+/// function of the scene and plan.
 macro_rules! coverage_foil {
     ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, Default)]
-        pub struct $name;
-
-        impl Rasterizer for $name {
-            fn name(&self) -> &str {
-                $label
-            }
-
-            fn is_foil(&self) -> bool {
-                true
-            }
-
-            fn capabilities(&self) -> Capabilities {
-                Capabilities {
-                    triangles: true,
-                    ideal_geometry: true,
-                    ..Capabilities::none()
-                }
-            }
-
-            fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        $crate::production::foils::declare::foil!(
+            $(#[$doc])* $name,
+            $label,
+            capabilities: Capabilities {
+                triangles: true,
+                ideal_geometry: true,
+                ..Capabilities::none()
+            },
+            |scene: &Scene, plan: &Plan| -> Result<Frame, RasterError> {
                 if plan.interpolates() {
                     return Err(RasterError::Unsupported(
                         concat!($label, " draws coverage only, not depth or attributes").to_owned(),
@@ -76,7 +71,7 @@ macro_rules! coverage_foil {
                 }
                 $draw(scene, plan)
             }
-        }
+        );
     };
 }
 
