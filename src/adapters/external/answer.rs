@@ -19,12 +19,14 @@ use std::path::Path;
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use serde_json::Value;
 
-use crate::frame::{exr, Frame, Parts};
+use crate::frame::{Frame, Parts};
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
 use crate::scene::Scene;
 
+use super::answer_error::AnswerError;
 use super::envelope::not_json;
+use super::exr_answer::frame_from_exr;
 use super::hello::Answers;
 use super::motion::TimeAnswer;
 use super::protocol::{PROTOCOL, PROTOCOL_V2};
@@ -33,34 +35,6 @@ use super::values::{pixel_of, stored_depth, whole_below, Scalar, Text, NUMBER_TO
 /// The method a coverage-only frame of a scene with values names: what the
 /// reports show beside its verdict.
 pub const COVERAGE_ONLY: &str = "coverage only: depth and attributes not judged";
-
-/// How the failure of an answer that is the program's own `error` begins.
-const PROGRAM_ERROR: &str = "the program reported an error: ";
-
-/// Why a response line gave no frame, by whose doing: the program's own
-/// answer (`unsupported`, `error`: it is in step, and said so), or a line
-/// that does not fit its request (under protocol v1 it may be another
-/// request's answer).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum AnswerError {
-    /// The program answered `unsupported`, with its reason.
-    Unsupported(String),
-    /// The program answered `error`, with its text.
-    Program(String),
-    /// The line is not an answer to this request: not JSON, or not shaped
-    /// as its request asks (SPEC.md §12.2).
-    Unfit(String),
-}
-
-impl From<AnswerError> for RasterError {
-    fn from(e: AnswerError) -> RasterError {
-        match e {
-            AnswerError::Unsupported(why) => RasterError::Unsupported(why),
-            AnswerError::Program(why) => RasterError::Failed(format!("{PROGRAM_ERROR}{why}")),
-            AnswerError::Unfit(why) => RasterError::Failed(why),
-        }
-    }
-}
 
 /// Reads one response line into a frame, checking it against the request
 /// (SPEC.md §12.2), for a program whose hello declared how its answers are
@@ -812,60 +786,12 @@ impl<'de> Visitor<'de> for Item<'_> {
 }
 
 // ---------------------------------------------------------------------------
-// An EXR answer.
-
-/// Reads a frame from an EXR file with the channels of a golden file
-/// (`frame::exr`).
-fn frame_from_exr(path: &Path, scene: &Scene, plan: &Plan) -> Result<Frame, String> {
-    let (width, height) = (scene.canvas.width, scene.canvas.height);
-    let ((w, h), mut channels) = exr::read(path, (width as usize, height as usize))?;
-    if (w, h) != (width as usize, height as usize) {
-        return Err(format!(
-            "{}: the image is {w}×{h}; the canvas is {width}×{height}",
-            path.display()
-        ));
-    }
-    let mut take = |name: &str| {
-        channels
-            .iter()
-            .position(|(n, _)| n == name)
-            .map(|at| channels.swap_remove(at).1)
-            .ok_or_else(|| format!("{}: no channel {name}", path.display()))
-    };
-    let coverage = take("coverage")?;
-    let primitive = take("primitive")?;
-    let mut frame = Frame::new(width, height, plan.depth, plan.attributes);
-    let count = scene.primitives.len() as f32;
-    for (i, (&c, &p)) in coverage.iter().zip(&primitive).enumerate() {
-        let (x, y) = (i % w, i / w);
-        if !(c.fract() == 0.0 && (0.0..=f32::from(u16::MAX)).contains(&c)) {
-            return Err(format!("coverage at pixel ({x}, {y}) is {c}, not a count"));
-        }
-        if !(p.fract() == 0.0 && (0.0..=count).contains(&p)) || (p == 0.0) != (c == 0.0) {
-            return Err(format!(
-                "primitive at pixel ({x}, {y}) is {p} with coverage {c}: it must be index + 1 \
-                 of a primitive where coverage > 0, and 0 where coverage is 0"
-            ));
-        }
-        frame.coverage[i] = c as u16;
-        frame.last[i] = p as u32;
-    }
-    if let Some(depth) = &mut frame.depth {
-        *depth = take("depth")?.into_iter().map(f64::from).collect();
-    }
-    for k in 0..plan.attributes {
-        frame.attributes[k] = take(&format!("attribute.{k}"))?
-            .into_iter()
-            .map(f64::from)
-            .collect();
-    }
-    Ok(frame)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use serde_json::json;
+
+    use crate::adapters::external::answer_error::PROGRAM_ERROR;
 
     // The moving scene motion.rs's tests send: what its answers answer.
     use crate::adapters::external::motion::tests::scene;

@@ -9,7 +9,7 @@
 //! [`Rasterizer`](crate::rasterizer::Rasterizer), under `limits.rs`), then
 //! `one_shot.rs` or `pool.rs` (with `worker.rs`'s persistent processes and
 //! `process.rs`' waiting, killing and reading), whose requests are
-//! `protocol.rs`' and answers `answer.rs`' (`values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
+//! `protocol.rs`' and answers `answer.rs`' (`answer_error.rs`: why a line gave no frame; `exr_answer.rs`: an answer in an EXR file; `values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
 //! clip space, points and depth formats, declared, and `conservative.rs`:
 //! conservative rasterization, declared); `read.rs` reads
 //! one line apart from a process; `envelope.rs` looks at a line's id
@@ -17,8 +17,10 @@
 
 mod adapter;
 mod answer;
+mod answer_error;
 mod conservative;
 mod envelope;
+mod exr_answer;
 mod hello;
 mod limits;
 mod messages;
@@ -35,7 +37,8 @@ mod values;
 mod worker;
 
 pub use adapter::External;
-pub use answer::{frame_from_answer, frame_from_line, frame_from_response, AnswerError};
+pub use answer::{frame_from_answer, frame_from_line, frame_from_response};
+pub use answer_error::AnswerError;
 pub use hello::Answers;
 pub use limits::{
     check_environment, DEFAULT_MAX_OUTPUT, DEFAULT_TIMEOUT, MAX_OUTPUT_ENV, TIMEOUT_ENV,

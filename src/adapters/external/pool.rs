@@ -12,7 +12,8 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use super::adapter::External;
-use super::answer::{frame_from_line, AnswerError};
+use super::answer::frame_from_line;
+use super::answer_error::AnswerError;
 use super::envelope::check_json;
 use super::hello::{self, Hello};
 use super::limits::{BYE_GRACE, HELLO_WAIT, MAX_OUTPUT_ENV, MAX_SKIPPED_LINES};
