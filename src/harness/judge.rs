@@ -434,8 +434,16 @@ fn judge_conservative(
             case.words()
         ));
     }
-    let m = metrics::conservative::measure(classes, &frame, words);
+    let mut m = metrics::conservative::measure(classes, &frame, words);
     let mut failures = metrics::conservative::failures(&m);
+    match super::conservative_depth::judged(scene, judged, &frame) {
+        Some(Ok(depth)) => {
+            failures.extend(metrics::conservative_depth::failures(&depth));
+            m.depth = Some(depth);
+        }
+        Some(Err(why)) => failures.push(why),
+        None => {}
+    }
     failures.extend(promises);
     let coverage = metrics::conservative::coverage(&m, &frame);
     let metrics = Metrics {

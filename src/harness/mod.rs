@@ -13,12 +13,14 @@
 //! [`panics`] is the text of a caught panic; [`today`] the date reports are
 //! stamped with; [`case_hash`] the hash of a case file a report names.
 //! [`conservative`] refuses and judges a conservative case's candidate
-//! (SPEC.md §19) against the oracle's three classes.
+//! (SPEC.md §19) against the oracle's three classes; [`conservative_depth`]
+//! judges its depth (§19.9).
 
 pub mod baseline;
 pub mod case_hash;
 pub mod clipped;
 pub mod conservative;
+pub mod conservative_depth;
 pub mod discover;
 pub mod flaky;
 pub mod golden;

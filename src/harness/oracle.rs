@@ -94,7 +94,7 @@ fn run_planned_with(
     if scene.is_conservative() {
         let classes = super::conservative::oracle_classes(scene);
         let frame = match &classes {
-            Ok(classes) => reference::conservative::frame_of(scene, &plan, classes),
+            Ok(classes) => reference::conservative::frame_with_depth(scene, &plan, classes),
             Err(_) => Frame::for_plan(scene.canvas.width, scene.canvas.height, &plan),
         };
         return ReferenceRun {

@@ -6,6 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::conservative_depth::ConservativeDepthMetrics;
 use super::coverage::{CoverageMetrics, SampleDiff};
 use crate::frame::Frame;
 use crate::reference::conservative::{ConservativeClasses, PixelClass};
@@ -63,7 +64,7 @@ pub struct FlagMetrics {
 
 /// Everything measured for one conservative candidate (`report.json`'s
 /// `results[].conservative`, without the per-pixel map).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ConservativeMetrics {
     /// The mode and uncertainty judged under ("overestimate, uncertainty
     /// 1/256 px").
@@ -78,6 +79,10 @@ pub struct ConservativeMetrics {
     pub first_missing: Option<[u32; 2]>,
     pub first_forbidden: Option<[u32; 2]>,
     pub flag: Option<FlagMetrics>,
+    /// The depth at the drawn pixels, for a case with depth (SPEC.md
+    /// §19.9, `conservative_depth.rs`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub depth: Option<ConservativeDepthMetrics>,
     /// One entry per pixel, row-major (for the report's picture); not
     /// written to `report.json`.
     #[serde(skip)]
@@ -130,6 +135,7 @@ pub fn measure(
         first_missing: None,
         first_forbidden: None,
         flag: None,
+        depth: None,
         pixels: Vec::with_capacity(classes.drawn.len()),
     };
     for (i, &class) in classes.drawn.iter().enumerate() {
@@ -248,6 +254,10 @@ pub fn summary(m: &ConservativeMetrics) -> String {
             f.false_where_true + f.true_where_false,
             f.judged
         ));
+    }
+    if let Some(d) = &m.depth {
+        out.push_str("; ");
+        out.push_str(&super::conservative_depth::summary(d));
     }
     out
 }

@@ -7,7 +7,8 @@
 //! `antialias.rs` and `parts.rs` (an area method judged as one:
 //! `area.rs`), `time.rs`, `ties.rs` (a candidate with no tie rule judged off
 //! the ties); `conservative.rs` judges a conservative scene (SPEC.md §19)
-//! against the reference's three classes, apart; the per-pixel ones
+//! against the reference's three classes, apart, and
+//! `conservative_depth.rs` its depth (§19.9); the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
 //! candidate fails.
@@ -15,6 +16,7 @@
 pub mod antialias;
 pub mod area;
 pub mod conservative;
+pub mod conservative_depth;
 pub mod coverage;
 pub mod depth;
 pub(crate) mod difference;

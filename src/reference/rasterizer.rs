@@ -31,6 +31,7 @@ impl Rasterizer for Reference {
             overestimate: true,
             underestimate: true,
             fully_covered: true,
+            depth: true,
             ..ConservativeSupport::default()
         })
     }

@@ -106,6 +106,9 @@ pub struct ConservativeSupport {
     pub degenerate_lines: Option<bool>,
     /// `conservativePointAndLineRasterization`, when fixed.
     pub points_and_lines: Option<bool>,
+    /// Whether it gives the depth of each pixel it draws, judged against
+    /// the interval SPEC.md §19.9 allows.
+    pub depth: bool,
 }
 
 impl ConservativeSupport {
@@ -126,6 +129,16 @@ impl ConservativeSupport {
             return Some("this rasterizer gives no fully-covered flag (SPEC.md §19.4)".to_owned());
         }
         None
+    }
+
+    /// Why a conservative scene with depth (`has_depth`) is not asked of
+    /// this support, if it is not: it gives no depth under conservative
+    /// rasterization (SPEC.md §19.9).
+    pub fn refuses_depth(&self, has_depth: bool) -> Option<String> {
+        (has_depth && !self.depth).then(|| {
+            "this rasterizer gives no depth under conservative rasterization (SPEC.md §19.9)"
+                .to_owned()
+        })
     }
 
     /// The case's conservative state under this support's fixed

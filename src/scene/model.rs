@@ -97,7 +97,7 @@ impl Scene {
 
     /// Why a conservative scene is not judged in this version, if it is
     /// not (SPEC.md §19.7): multisampling, motion, clip space, polygons,
-    /// depth and attributes at conservative pixels, points and lines. Every candidate's verdict on it is `unsupported`
+    /// attributes at conservative pixels, points and lines. Every candidate's verdict on it is `unsupported`
     /// with this reason; `None` for a scene that is not conservative.
     pub fn conservative_unjudged(&self) -> Option<String> {
         self.effects.conservative.as_ref()?;
@@ -116,9 +116,6 @@ impl Scene {
             return Some(format!(
                 "conservative rasterization with {what} is not judged in this version (SPEC.md §19.7)"
             ));
-        }
-        if self.has_depth {
-            return Some("depth at conservatively drawn pixels is not judged in this version (SPEC.md §19.7)".to_owned());
         }
         if self.attribute_count > 0 {
             return Some("attributes at conservatively drawn pixels are not judged in this version (SPEC.md §19.7)".to_owned());

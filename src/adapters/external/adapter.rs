@@ -194,6 +194,7 @@ impl Rasterizer for External {
             overestimate: true,
             underestimate: true,
             fully_covered: true,
+            depth: true,
             ..ConservativeSupport::default()
         }))
     }

@@ -97,6 +97,9 @@ impl DeclaredConservative {
             degenerate_triangles: self.degenerate_triangles,
             degenerate_lines: self.degenerate_lines,
             points_and_lines: self.points_and_lines,
+            // The answer's conservative pixels carry no depth (SPEC.md
+            // §12.11): a case with depth is refused (§19.9).
+            depth: false,
         }
     }
 }

@@ -175,6 +175,7 @@ impl Rasterizer for Gl {
             overestimate: true,
             underestimate: true,
             fully_covered: true,
+            depth: true,
             ..ConservativeSupport::default()
         })
     }

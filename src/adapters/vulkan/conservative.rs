@@ -201,6 +201,7 @@ pub(super) fn support(offers: Option<&ConservativeOffers>) -> ConservativeSuppor
             overestimate: true,
             underestimate: true,
             fully_covered: true,
+            depth: true,
             ..ConservativeSupport::default()
         };
     };
@@ -214,6 +215,9 @@ pub(super) fn support(offers: Option<&ConservativeOffers>) -> ConservativeSuppor
         degenerate_triangles: Some(offers.degenerate_triangles),
         degenerate_lines: Some(offers.degenerate_lines),
         points_and_lines: Some(offers.points_and_lines),
+        // Its depth under conservative rasterization is not read back yet:
+        // a case with depth is refused with that reason (SPEC.md §19.9).
+        depth: false,
     }
 }
 

@@ -8,8 +8,11 @@
 //! flag it is sure of), and the last triangle to draw a pixel leaves its
 //! flag there.
 //!
+//! Depth, where the scene has it, is the triangle's plane at the pixel's
+//! centre (`depth.rs`, SPEC.md §19.9).
+//!
 //! What it does not do: multisampling, motion, clip space, polygons, lines,
-//! points, depth and attributes under conservative rasterization (the
+//! points and attributes under conservative rasterization (the
 //! scene says why, `Scene::conservative_unjudged`); coordinates that are
 //! not snapped whose common denominator exceeds 2^24.
 //!
@@ -17,6 +20,7 @@
 //! fixed point); unsnapped ones that are not dyadic are held exactly in
 //! units of a half of their common denominator's reciprocal instead.
 
+use super::depth::DepthPlane;
 use super::growth::Growth;
 use super::triangle::{Setup, Shape};
 use crate::frame::Frame;
@@ -37,6 +41,7 @@ pub fn support() -> ConservativeSupport {
         overestimate: true,
         underestimate: true,
         fully_covered: true,
+        depth: true,
         ..ConservativeSupport::default()
     }
 }
@@ -72,6 +77,10 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         if scene.rules.cull.discards(orientation) {
             continue;
         }
+        let plane = scene
+            .has_depth
+            .then(|| DepthPlane::new(scene, index, placed.vertices[index], placed.one))
+            .flatten();
         for y in setup.range(1, h) {
             for x in setup.range(0, w) {
                 let drawn = match case.mode {
@@ -83,6 +92,9 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
                 }
                 let i = frame.index(x as u32, y as u32);
                 frame.hit(i, index);
+                if let (Some(depth), Some(plane)) = (frame.depth.as_mut(), &plane) {
+                    depth[i] = plane.at(x, y);
+                }
                 if let Some(flags) = &mut flags {
                     flags[i] = setup.holds(x, y, &half);
                 }
@@ -90,7 +102,8 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         }
     }
     frame.fully_covered = flags;
-    frame.coverage_only = true;
+    // With depth it gives depth (SPEC.md §19.9); attributes are refused.
+    frame.coverage_only = !scene.has_depth;
     Ok(frame)
 }
 

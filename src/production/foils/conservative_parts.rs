@@ -64,6 +64,9 @@ pub(super) fn drawn_with(
                 let flag = own.fully_covered.as_ref().is_some_and(|f| f[i]);
                 if let Some(flag) = change(&snapped, x, y, flag) {
                     frame.hit(i, index);
+                    if let (Some(depth), Some(own)) = (frame.depth.as_mut(), own.depth.as_ref()) {
+                        depth[i] = own[i];
+                    }
                     if let Some(flags) = &mut frame.fully_covered {
                         flags[i] = flag;
                     }

@@ -113,7 +113,7 @@ pub fn classify_under(scene: &Scene, case: &Conservative) -> ConservativeClasses
 
 /// One triangle's classes at pixel (x, y): whether it draws it, and its
 /// fragment's fully-covered flag there.
-fn pixel_class(
+pub(super) fn pixel_class(
     mode: ConservativeMode,
     t: &[GridPoint; 3],
     x: u32,
@@ -159,7 +159,7 @@ fn pixel_class(
 
 /// The pixels whose grown square may meet the triangle: its bounding box
 /// grown by u and one pixel, within the canvas; `None` when that is empty.
-fn pixel_range(
+pub(super) fn pixel_range(
     t: &[GridPoint; 3],
     u: &IBig,
     scale: &IBig,
@@ -189,7 +189,7 @@ fn floor_div(a: &IBig, b: &IBig) -> IBig {
 
 /// A coordinate where the rasterizer puts it: snapped to 2^-bits, or as
 /// given.
-fn snapped(c: &Number, bits: Option<u32>) -> RBig {
+pub(super) fn snapped(c: &Number, bits: Option<u32>) -> RBig {
     match bits {
         Some(bits) => snap(c, bits),
         None => c.as_rbig().clone(),
@@ -198,7 +198,7 @@ fn snapped(c: &Number, bits: Option<u32>) -> RBig {
 
 /// The least common multiple of every denominator (and 1): the grid on
 /// which every coordinate, u and every pixel boundary is an integer.
-fn common_scale<'a>(coordinates: impl Iterator<Item = &'a RBig>, u: &'a RBig) -> IBig {
+pub(super) fn common_scale<'a>(coordinates: impl Iterator<Item = &'a RBig>, u: &'a RBig) -> IBig {
     let mut scale = UBig::ONE;
     for d in coordinates.map(RBig::denominator).chain([u.denominator()]) {
         let g = gcd(&scale, d);

@@ -4,11 +4,15 @@
 //!
 //! `classes.rs` holds the answer's types; `geometry.rs` the exact tests of
 //! a pixel's square against a triangle; `classify.rs` the classes of a
-//! scene, primitive by primitive, and the reference's frame from them.
+//! scene, primitive by primitive, and the reference's frame from them;
+//! `depth.rs` the depths a drawn pixel may hold (SPEC.md §19.9) and the
+//! reference's frame with its depth.
 
 mod classes;
 mod classify;
+mod depth;
 mod geometry;
 
 pub use classes::{ConservativeClasses, PixelClass};
-pub use classify::{classify, classify_under, frame_of, render};
+pub use classify::{classify, classify_under, frame_of};
+pub use depth::{depth_allowed, frame_with_depth, render, ConservativeDepth};
