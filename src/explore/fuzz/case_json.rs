@@ -285,6 +285,20 @@ pub fn case_json(scene: &Scene) -> String {
             scene.rules.provoking_vertex.name()
         ));
     }
+    if scene.rules.depth_format != crate::scene::depth::DepthFormat::Exact {
+        rules.push(format!(
+            "\"depth_format\": \"{}\"",
+            scene.rules.depth_format.name()
+        ));
+    }
+    if let Some(b) = &scene.rules.depth_bias {
+        rules.push(format!(
+            "\"depth_bias\": {{ \"constant\": {}, \"slope\": {}, \"clamp\": {} }}",
+            json_number(&b.constant),
+            json_number(&b.slope),
+            json_number(&b.clamp)
+        ));
+    }
     let mut viewport = String::new();
     if let Some(v) = &scene.viewport {
         let clip = scene.rules.clip;

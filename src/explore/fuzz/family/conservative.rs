@@ -2,7 +2,8 @@
 //! conservatively, in either mode, under an uncertainty of 0, a device's
 //! (2^-9, 1/256 px), D3D12 tier 1's ½ px, Vulkan's largest extra ¾ px, a
 //! whole pixel, a third or any 64th, with the fully-covered flag asked for
-//! or not and degenerate triangles drawn or culled. The triangles are
+//! or not and degenerate triangles drawn or culled, with depth in half of
+//! them (any format, an offset in some: SPEC.md §19.9). The triangles are
 //! what conservative tests get wrong: slivers thinner than a pixel,
 //! needles, vertices on pixel corners and edges along pixel borders (a
 //! touch of measure zero), degenerate triangles (collinear or coincident
@@ -12,6 +13,7 @@
 
 use super::common::{any_bits, any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
+use crate::scene::depth::{DepthBias, DepthFormat};
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS};
 use crate::scene::{
     Canvas, Conservative, ConservativeMode, Interpolation, Number, Primitive, Scene, Triangle,
@@ -44,9 +46,32 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
             interpolation: Interpolation::Perspective,
         }));
     }
+    // Depth in half the scenes (SPEC.md §19.9): depths from −1/4 to 5/4,
+    // so that extrapolated and clamped values come up, in any format, with
+    // a polygon offset in some of those with a format.
+    let depth = rng.chance(1, 2);
+    if depth {
+        for v in primitives.iter_mut().flat_map(|p| p.vertices_mut()) {
+            v.z = Number::ratio(rng.range(-16, 81), 64);
+        }
+        rules.depth_format = *rng.pick(&[
+            DepthFormat::Exact,
+            DepthFormat::Exact,
+            DepthFormat::Unorm16,
+            DepthFormat::Unorm24,
+            DepthFormat::Float32,
+        ]);
+        if rules.depth_format != DepthFormat::Exact && rng.chance(1, 3) {
+            rules.depth_bias = Some(DepthBias {
+                constant: Number::from_int(rng.range(-8, 9)),
+                slope: Number::ratio(rng.range(-4, 5), 2),
+                clamp: Number::ZERO,
+            });
+        }
+    }
     let values = Values {
         attributes: 0,
-        depth: false,
+        depth,
         w: false,
     };
     if !snapped {
