@@ -239,13 +239,16 @@ pub fn run(args: RunArgs) -> Exit {
     let mut names: std::collections::HashMap<String, usize> = Default::default();
     let colour = std::io::stdout().is_terminal();
     let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    let settings = runner::RunSettings {
+        limits: &limits,
+        candidates: &candidates,
+        root: &root,
+        threads: args.threads,
+        repeat: args.repeat,
+    };
     runner::run_streamed(
         &files,
-        &limits,
-        &candidates,
-        &root,
-        args.threads,
-        args.repeat,
+        &settings,
         &|k, outcome| {
             let entry = match &writer {
                 Some(writer) => writer.write(outcome),
