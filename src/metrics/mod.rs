@@ -10,11 +10,12 @@
 //! against the reference's three classes, apart; the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
-//! candidate fails.
+//! candidate fails, counting in words with `counted.rs`.
 
 pub mod antialias;
 pub mod area;
 pub mod conservative;
+pub mod counted;
 pub mod coverage;
 pub mod depth;
 pub(crate) mod difference;
