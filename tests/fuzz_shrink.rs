@@ -313,7 +313,10 @@ fn a_findings_printed_command_draws_it_again() {
     assert_eq!(at("--cases"), "1");
     let family = at("--family");
     let first: u64 = at("--first-case").parse().unwrap();
-    assert!(first > 0, "the seed's first case fails: --first-case is not tried");
+    assert!(
+        first > 0,
+        "the seed's first case fails: --first-case is not tried"
+    );
     assert!(
         log.contains(&format!("FAIL  case {first} ({family},")),
         "{log}"

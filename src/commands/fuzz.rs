@@ -51,8 +51,9 @@ pub struct FuzzArgs {
     #[arg(long, value_name = "DIR", conflicts_with_all = ["rasterizer", "from_crash"])]
     pub corpus: Option<PathBuf>,
     /// A profile written by `probe` for the rasterizer: it is judged under
-    /// the profile's fill rule instead of each scene's, and the cases
-    /// written state that rule, so that a plain `run` reproduces them.
+    /// the profile's fill rule, conventions and coverage encoding, as `run
+    /// --profile` judges it, and the cases written state the rule and the
+    /// conventions a case can state, so that a plain `run` reproduces them.
     #[arg(long, value_name = "FILE", conflicts_with = "corpus")]
     pub profile: Option<PathBuf>,
     /// The case files --corpus seeds the case_json target with.
