@@ -53,11 +53,13 @@ enum Command {
     /// matrix (rows: rasterizers, columns: case families) with findings.
     Matrix(MatrixArgs),
     /// Time and error of each method on the same seeded workloads
-    /// (triangles, lines); writes BENCH.md and bench.svg beside it.
+    /// (triangles, lines, antialiasing, motion blur); writes BENCH.md and
+    /// bench.svg beside it.
     Bench(BenchArgs),
     /// Find a rasterizer's conventions from its rendered frames: fill
-    /// rule, y direction, subpixel precision, sample position,
-    /// interpolation error; write them as a profile for `run --profile`.
+    /// rule, y direction, subpixel precision, sample position, coverage
+    /// encoding, clipping, interpolation error; write them as a profile for
+    /// `run --profile`.
     Probe(ProbeArgs),
     /// Compare two reports (report.json, or report folders): newly failing,
     /// fixed, added and removed cases, metric deltas worst first; exit 1

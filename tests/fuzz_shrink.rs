@@ -5,7 +5,8 @@
 //! likewise a wrong resolve, flipped ties on polygons, and the two motion
 //! mutants on moving scenes (a `time:` failure on a case of one or two
 //! primitives); the production rasterizer survives the search, moving
-//! scenes included; and a seed always writes the same file.
+//! scenes included; a seed always writes the same file; and the command a
+//! finding's case file gives (its seed, family and case) writes it again.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -272,4 +273,63 @@ fn production_survives_the_motion_search() {
         "60",
         "production-motion",
     );
+}
+
+/// The command a written case's description says found it: between
+/// "Found by `" and the next "`".
+fn found_by(case: &str) -> String {
+    let scene = parse_case(case, "found", &Limits::default()).expect("a valid case");
+    let (_, rest) = scene
+        .description
+        .split_once("Found by `")
+        .unwrap_or_else(|| panic!("no command in {:?}", scene.description));
+    rest.split_once('`').expect("a closing quote").0.to_owned()
+}
+
+#[test]
+fn a_findings_printed_command_draws_it_again() {
+    // A search naming no family finds a failure past its first cases; the
+    // command its case file and its log give names the family and the case
+    // (so that it stays valid when a version adds families, which changes
+    // the family an unnamed search gives each case), and running it
+    // writes the same file.
+    let args = ["--seed", "12345", "--cases", "100"];
+    let (dir, log, path) = fuzz_writes_one("mutant:flipped-ties", &args, "reproduce");
+    let case = std::fs::read_to_string(&path).unwrap();
+    let command = found_by(&case);
+    assert!(log.contains(&format!("found again by: {command}")), "{log}");
+    let words: Vec<String> = command
+        .split_whitespace()
+        .map(|w| w.trim_matches('\'').to_owned())
+        .collect();
+    let at = |flag: &str| {
+        let k = words.iter().position(|w| w == flag);
+        k.map(|k| words[k + 1].clone())
+            .unwrap_or_else(|| panic!("{command} has no {flag}"))
+    };
+    assert_eq!(words[..2], ["rastercheck", "fuzz"], "{command}");
+    assert_eq!(at("-r"), "mutant:flipped-ties");
+    assert_eq!(at("--seed"), "12345");
+    assert_eq!(at("--cases"), "1");
+    let family = at("--family");
+    let first: u64 = at("--first-case").parse().unwrap();
+    assert!(
+        first > 0,
+        "the seed's first case fails: --first-case is not tried"
+    );
+    assert!(
+        log.contains(&format!("FAIL  case {first} ({family},")),
+        "{log}"
+    );
+    let again: Vec<&str> = words[2..].iter().map(String::as_str).collect();
+    let (dir_again, log_again, path_again) =
+        fuzz_writes_one(again[1], &again[2..], "reproduce-again");
+    assert_eq!(path.file_name(), path_again.file_name(), "{log_again}");
+    assert_eq!(
+        std::fs::read(&path).unwrap(),
+        std::fs::read(&path_again).unwrap(),
+        "{log_again}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&dir_again);
 }

@@ -128,37 +128,26 @@ fn a_declared_line_parameter_drawn_is_judged_under_it_and_passes() {
 }
 
 #[test]
-fn foil_declaring_projected_while_drawing_major_is_caught() {
-    let run = judged(
-        &case(COLOURS),
-        &Foil {
-            draws: Draws::Parameter(LineParameter::Major),
-            parameter: clamped(LineParameter::Projected),
-            no_border_rule: false,
-        },
-    );
-    let reasons = reasons(&run);
-    assert!(
-        reasons.iter().any(|r| r.contains("attribute")),
-        "{reasons:?}"
-    );
-}
-
-#[test]
-fn foil_declaring_major_while_drawing_projected_is_caught() {
-    let run = judged(
-        &case(COLOURS),
-        &Foil {
-            draws: Draws::Parameter(LineParameter::Projected),
-            parameter: clamped(LineParameter::Major),
-            no_border_rule: false,
-        },
-    );
-    let reasons = reasons(&run);
-    assert!(
-        reasons.iter().any(|r| r.contains("attribute")),
-        "{reasons:?}"
-    );
+fn foil_declaring_one_parameter_while_drawing_the_other_is_caught() {
+    // Declaring projected while drawing major, and the reverse.
+    for (draws, declares) in [
+        (LineParameter::Major, LineParameter::Projected),
+        (LineParameter::Projected, LineParameter::Major),
+    ] {
+        let run = judged(
+            &case(COLOURS),
+            &Foil {
+                draws: Draws::Parameter(draws),
+                parameter: clamped(declares),
+                no_border_rule: false,
+            },
+        );
+        let reasons = reasons(&run);
+        assert!(
+            reasons.iter().any(|r| r.contains("attribute")),
+            "drawing {draws:?}, declaring {declares:?}: {reasons:?}"
+        );
+    }
 }
 
 #[test]

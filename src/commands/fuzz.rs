@@ -21,6 +21,11 @@ pub struct FuzzArgs {
     /// Seed of the scenes (default: from the clock; printed either way).
     #[arg(long)]
     pub seed: Option<u64>,
+    /// The number of the first case tried (as `FAIL  case N` numbers
+    /// them): cases N, N + 1, … of the seed. With --family and --cases 1,
+    /// one finding's case, as its case file's description gives it.
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub first_case: u64,
     /// Folder for the shrunk case files.
     #[arg(long, value_name = "DIR", default_value = crate::explore::fuzz::default_out().to_str())]
     pub out: PathBuf,
@@ -39,15 +44,16 @@ pub struct FuzzArgs {
     /// Judge the scene a crash input of the `scene_reference_vs_production`
     /// fuzz target draws (fuzz/artifacts/…), instead of searching; shrink
     /// and write it as a case file when the rasterizer fails it.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["cases", "seed", "family", "max_failures"])]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["cases", "seed", "first_case", "family", "max_failures"])]
     pub from_crash: Option<PathBuf>,
     /// Write the seed corpus of each fuzz target (fuzz/README.md) under
     /// DIR/<target>/, from the case files in --corpus-cases, and exit.
     #[arg(long, value_name = "DIR", conflicts_with_all = ["rasterizer", "from_crash"])]
     pub corpus: Option<PathBuf>,
     /// A profile written by `probe` for the rasterizer: it is judged under
-    /// the profile's fill rule instead of each scene's, and the cases
-    /// written state that rule, so that a plain `run` reproduces them.
+    /// the profile's fill rule, conventions and coverage encoding, as `run
+    /// --profile` judges it, and the cases written state the rule and the
+    /// conventions a case can state, so that a plain `run` reproduces them.
     #[arg(long, value_name = "FILE", conflicts_with = "corpus")]
     pub profile: Option<PathBuf>,
     /// The case files --corpus seeds the case_json target with.
@@ -127,18 +133,25 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
         );
     }
     let seed = args.seed.unwrap_or_else(fuzz::clock_seed);
-    let mut command = format!("rastercheck fuzz -r '{rasterizer}' --seed {seed}");
-    if let Some(f) = &args.family {
-        command += &format!(" --family {f}");
-    }
+    // What picks the cases (seed, family, first case, number) each finding
+    // adds for its own (`fuzz::reproduction`).
+    let mut command = format!("rastercheck fuzz -r '{rasterizer}'");
     if let Some(c) = &args.check {
         command += &format!(" --check {c}");
     }
     if let Some(p) = &args.profile {
         command += &format!(" --profile {}", p.display());
     }
+    let from = match args.first_case {
+        0 => String::new(),
+        n => format!(" from case {n}"),
+    };
+    let again = match args.first_case {
+        0 => String::new(),
+        n => format!(" --first-case {n}"),
+    };
     outln!(
-        "fuzz: {} on {} cases{}, seed {seed} (--seed {seed} repeats this run)",
+        "fuzz: {} on {} cases{}{from}, seed {seed} (--seed {seed}{again} repeats this run)",
         candidate.name(),
         args.cases,
         args.family
@@ -147,6 +160,7 @@ pub fn fuzz(args: FuzzArgs) -> Exit {
     );
     let options = fuzz::Options {
         seed,
+        first: args.first_case,
         cases: args.cases,
         family,
         check,
@@ -265,6 +279,7 @@ fn from_crash(
     }
     let options = fuzz::Options {
         seed: 0,
+        first: 0,
         cases: 1,
         family: None,
         check,

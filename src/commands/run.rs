@@ -31,8 +31,8 @@ pub struct RunArgs {
     /// Print only failures and the summary, and no progress bar.
     #[arg(long, short = 'q')]
     pub quiet: bool,
-    /// Write report.json, junit.xml, summary.md, index.html, images and
-    /// error maps into this folder.
+    /// Write report.json, junit.xml, summary.md, index.html, case pages,
+    /// plots, images and error maps into this folder.
     #[arg(long, value_name = "DIR")]
     pub report: Option<PathBuf>,
     /// Only cases whose id matches this glob (`*` within a segment, `**`
@@ -50,8 +50,10 @@ pub struct RunArgs {
     #[arg(long, value_parser = super::values::threads)]
     pub threads: Option<usize>,
     /// A profile written by `probe`: its rasterizer is judged under the
-    /// fill rule it declares instead of each case's (only the fill rule
-    /// is overridden). Repeat for several rasterizers.
+    /// fill rule it declares instead of each case's, and under the
+    /// conventions (snapping, sample pattern, y, pixel centre, diamond-exit
+    /// latitude) and coverage encoding it declares, if any (SPEC.md §13).
+    /// Repeat for several rasterizers.
     #[arg(long, value_name = "FILE")]
     pub profile: Vec<PathBuf>,
     /// Draw each case N times with every rasterizer (the reference once),
@@ -239,13 +241,16 @@ pub fn run(args: RunArgs) -> Exit {
     let mut names: std::collections::HashMap<String, usize> = Default::default();
     let colour = std::io::stdout().is_terminal();
     let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    let settings = runner::RunSettings {
+        limits: &limits,
+        candidates: &candidates,
+        root: &root,
+        threads: args.threads,
+        repeat: args.repeat,
+    };
     runner::run_streamed(
         &files,
-        &limits,
-        &candidates,
-        &root,
-        args.threads,
-        args.repeat,
+        &settings,
         &|k, outcome| {
             let entry = match &writer {
                 Some(writer) => writer.write(outcome),

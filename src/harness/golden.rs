@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 
 use crate::frame::exr::{layers, read_layers, LayerData, SAMPLES_LAYER};
 use crate::frame::Frame;
+use crate::metrics::counted::counted;
 
 pub use crate::frame::exr::{read, write, Channels, Values};
 
@@ -126,7 +127,8 @@ fn compare_channels(
                 String::new()
             };
             problems.push(format!(
-                "channel {name}: {differing} samples differ; first at pixel ({x}, {y}){sample}: now {}, golden {}",
+                "channel {name}: {}; first at pixel ({x}, {y}){sample}: now {}, golden {}",
+                counted(differing as u64, "sample differs", "samples differ"),
                 values.show(first),
                 golden.show(first)
             ));
@@ -237,7 +239,15 @@ mod tests {
         t[6] = f64::from_bits(t[6].to_bits() + 1);
         let err = check(&changed, &path).unwrap_err();
         assert!(
-            err.contains("channel time.f64.low: 1 samples differ; first at pixel (2, 1)"),
+            err.contains("channel time.f64.low: 1 sample differs; first at pixel (2, 1)"),
+            "{err}"
+        );
+        // And of pixels (2, 1) and (3, 1): counted in the plural.
+        let t = changed.time.as_mut().unwrap();
+        t[7] = f64::from_bits(t[7].to_bits() + 1);
+        let err = check(&changed, &path).unwrap_err();
+        assert!(
+            err.contains("channel time.f64.low: 2 samples differ; first at pixel (2, 1)"),
             "{err}"
         );
         assert!(!err.contains("channel time:"), "{err}");

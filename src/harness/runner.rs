@@ -257,18 +257,11 @@ pub fn run_case(
     outcome.candidates = candidates
         .iter()
         .map(|c| {
-            let started = std::time::Instant::now();
-            deadline::within(limit, || {
-                judge::run_candidate(&scene, &reference, c.as_ref())
-            })
-            .unwrap_or_else(|exceeded| {
+            let (run, exceeded) = run_in_time(&scene, &reference, c.as_ref(), limit);
+            if let Some(exceeded) = exceeded {
                 over.push(format!("{}: {} {exceeded}", file.path.display(), c.name()));
-                CandidateRun::without_frame(
-                    c.name().to_owned(),
-                    Verdict::Error(exceeded.to_string()),
-                    started.elapsed(),
-                )
-            })
+            }
+            run
         })
         .collect();
     if !over.is_empty() {
@@ -334,18 +327,40 @@ pub fn over_budget(
     })
 }
 
-/// Runs every case on `threads` threads (all cores when `None`), calling
-/// `done` with its index in `files` as each finishes, on the thread that
-/// ran it: it may write what it needs of the frames (pictures, error
-/// maps). Then the case's frames are
-/// released ([`CaseOutcome::release_frames`]), so a run holds the frames of
-/// the cases in flight only, never of the whole run. The outcomes come back
-/// in the order of `files`.
-///
-/// Once a stop is requested (`crate::stop`: SIGINT or SIGTERM), no new case
-/// starts, and a case that finishes after the request (its external
-/// programs were killed under it) is [`CaseOutcome::interrupted`] too: every
-/// verdict kept is one the case earned before the signal.
+/// What every case of a run is run with: its limits, the candidates, the
+/// folder golden files are looked up from, the threads, and how many times
+/// each candidate draws each case.
+#[derive(Clone, Copy)]
+pub struct RunSettings<'a> {
+    /// The limits on each case (`--max-*`, `--case-timeout`).
+    pub limits: &'a Limits,
+    /// The rasterizers judged, in order.
+    pub candidates: &'a [Box<dyn Rasterizer>],
+    /// The folder golden files are looked up from
+    /// ([`discover::golden_root`]).
+    pub root: &'a Path,
+    /// How many threads draw cases; all cores when `None`.
+    pub threads: Option<usize>,
+    /// How many times each candidate draws each case (`run --repeat N`;
+    /// 1 for once). The reference draws it once. Above 1, the selection is
+    /// taken in blocks of [`ROUND_CASES`]: every case of a block is run in
+    /// full (reference, golden file, the candidates' first repetition),
+    /// then the candidates draw the whole block again, in the same order,
+    /// once per further repetition, so that a case's repetitions have the
+    /// other cases of its block between them (a selection of one case has
+    /// none). A candidate whose later frame differs from its first, in any
+    /// channel, gets [`Verdict::Flaky`] with every repetition's outcome and
+    /// the differences; one whose repetitions agree keeps its first
+    /// verdict. Pictures, error maps and the page (`done`) are written from
+    /// the first repetition's frames, once the case's last repetition is
+    /// compared.
+    pub repeat: usize,
+}
+
+/// Runs every case once on `threads` threads (all cores when `None`),
+/// calling `done` with its index in `files` as each finishes, and keeps
+/// the outcomes, in the order of `files` ([`run_streamed`] with
+/// `repeat` 1).
 pub fn run_all(
     files: &[CaseFile],
     limits: &Limits,
@@ -354,17 +369,15 @@ pub fn run_all(
     threads: Option<usize>,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
 ) -> Vec<CaseOutcome> {
-    let mut outcomes = Vec::with_capacity(files.len());
-    run_streamed(
-        files,
+    let settings = RunSettings {
         limits,
         candidates,
         root,
         threads,
-        1,
-        done,
-        &mut |_, o| outcomes.push(o),
-    );
+        repeat: 1,
+    };
+    let mut outcomes = Vec::with_capacity(files.len());
+    run_streamed(files, &settings, done, &mut |_, o| outcomes.push(o));
     outcomes
 }
 
@@ -374,26 +387,36 @@ pub fn run_all(
 /// holds the others back once this many have finished after it).
 pub const AHEAD: usize = 1024;
 
-/// [`run_all_repeated`] without keeping the outcomes: each is handed to
-/// `emit`, released of its frames, in the order of `files`, on the calling
-/// thread, as soon as it and every case before it have finished. Cases are
-/// started in order and at most [`AHEAD`] cases past the oldest one not yet
-/// handed over, so a run of any number of cases holds at most that many
-/// outcomes: its memory does not grow with its number of cases.
-#[allow(clippy::too_many_arguments)]
+/// Runs every case under `settings`, calling `done` with its index in
+/// `files` as each finishes, on the thread that ran it: it may write what
+/// it needs of the frames (pictures, error maps). Then the case's frames
+/// are released ([`CaseOutcome::release_frames`]) and the outcome is
+/// handed to `emit`, in the order of `files`, on the calling thread, as
+/// soon as it and every case before it have finished. Cases are started in
+/// order and at most [`AHEAD`] cases past the oldest one not yet handed
+/// over, so a run of any number of cases holds at most that many outcomes:
+/// its memory does not grow with its number of cases.
+///
+/// Once a stop is requested (`crate::stop`: SIGINT or SIGTERM), no new case
+/// starts, and a case that finishes after the request (its external
+/// programs were killed under it) is [`CaseOutcome::interrupted`] too: every
+/// verdict kept is one the case earned before the signal.
 pub fn run_streamed(
     files: &[CaseFile],
-    limits: &Limits,
-    candidates: &[Box<dyn Rasterizer>],
-    root: &Path,
-    threads: Option<usize>,
-    repeat: usize,
+    settings: &RunSettings,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
     emit: &mut dyn FnMut(usize, CaseOutcome),
 ) {
-    if repeat > 1 {
-        return repeated(files, limits, candidates, root, threads, repeat, done, emit);
+    if settings.repeat > 1 {
+        return repeated(files, settings, done, emit);
     }
+    let RunSettings {
+        limits,
+        candidates,
+        root,
+        threads,
+        ..
+    } = *settings;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build();
@@ -460,60 +483,26 @@ pub fn run_streamed(
         }
     });
 }
-
 /// How many cases a round of a repeated run holds (`run --repeat N`): each
 /// case of a block of this many is drawn once by every candidate, then the
 /// block again, N times over, so that other cases' draws come between a
 /// case's repetitions, as in a run, while only one block's frames are kept.
 pub const ROUND_CASES: usize = 32;
 
-/// [`run_all`] with each case drawn `repeat` times by every candidate
-/// (`run --repeat N`); the reference draws it once. The selection is taken
-/// in blocks of [`ROUND_CASES`]: every case of a block is run in full
-/// (reference, golden file, the candidates' first repetition), then the
-/// candidates draw the whole block again, in the same order, once per
-/// further repetition, so that a case's repetitions have the other cases
-/// of its block between them (a selection of one case has none). A
-/// candidate whose later frame differs from its first, in any channel, gets
-/// [`Verdict::Flaky`] with every repetition's outcome and the differences;
-/// one whose repetitions agree keeps its first verdict. Pictures, error
-/// maps and the page (`done`) are written from the first repetition's
-/// frames, once the case's last repetition is compared.
-pub fn run_all_repeated(
+/// [`run_streamed`] of `repeat` > 1, block by block.
+fn repeated(
     files: &[CaseFile],
-    limits: &Limits,
-    candidates: &[Box<dyn Rasterizer>],
-    root: &Path,
-    threads: Option<usize>,
-    repeat: usize,
+    settings: &RunSettings,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
-) -> Vec<CaseOutcome> {
-    let mut outcomes = Vec::with_capacity(files.len());
-    run_streamed(
-        files,
+    emit: &mut dyn FnMut(usize, CaseOutcome),
+) {
+    let RunSettings {
         limits,
         candidates,
         root,
         threads,
         repeat,
-        done,
-        &mut |_, o| outcomes.push(o),
-    );
-    outcomes
-}
-
-/// [`run_streamed`] of `repeat` > 1, block by block.
-#[allow(clippy::too_many_arguments)]
-fn repeated(
-    files: &[CaseFile],
-    limits: &Limits,
-    candidates: &[Box<dyn Rasterizer>],
-    root: &Path,
-    threads: Option<usize>,
-    repeat: usize,
-    done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
-    emit: &mut dyn FnMut(usize, CaseOutcome),
-) {
+    } = *settings;
     let stopped = || crate::stop::requested().is_some();
     // Drawn on the pool, handed over on the calling thread, a block at a
     // time.
@@ -591,20 +580,31 @@ fn redraw(
     };
     candidates
         .iter()
-        .map(|c| {
-            let started = std::time::Instant::now();
-            deadline::within(limits.case_timeout, || {
-                judge::run_candidate(scene, reference, c.as_ref())
-            })
-            .unwrap_or_else(|exceeded| {
-                CandidateRun::without_frame(
-                    c.name().to_owned(),
-                    Verdict::Error(exceeded.to_string()),
-                    started.elapsed(),
-                )
-            })
-        })
+        .map(|c| run_in_time(scene, reference, c.as_ref(), limits.case_timeout).0)
         .collect()
+}
+
+/// One candidate's run of a case within the case's time limit. Past the
+/// limit, a run without a frame whose verdict is the error, and how the
+/// limit was exceeded.
+fn run_in_time(
+    scene: &Scene,
+    reference: &ReferenceRun,
+    candidate: &dyn Rasterizer,
+    limit: Option<Duration>,
+) -> (CandidateRun, Option<deadline::Exceeded>) {
+    let started = std::time::Instant::now();
+    match deadline::within(limit, || judge::run_candidate(scene, reference, candidate)) {
+        Ok(run) => (run, None),
+        Err(exceeded) => (
+            CandidateRun::without_frame(
+                candidate.name().to_owned(),
+                Verdict::Error(exceeded.to_string()),
+                started.elapsed(),
+            ),
+            Some(exceeded),
+        ),
+    }
 }
 
 /// One candidate's repetitions of one case, as they come in.

@@ -25,6 +25,7 @@
 use serde::Serialize;
 
 use super::area::{NothingDrawn, PixelAreas};
+use super::counted::counted;
 use super::error_bounds::{within, ErrorBounds};
 use super::parts::PartMetrics;
 use crate::frame::Frame;
@@ -312,20 +313,29 @@ pub fn failures(m: &AntialiasMetrics) -> Vec<String> {
     if m.piglit_violations > 0 {
         let [x, y] = m.first_violation.unwrap_or([0, 0]);
         out.push(format!(
-            "antialias: {} full or empty pixels do not resolve to exactly 1 or 0 (piglit's rule), first at ({x}, {y})",
-            m.piglit_violations
+            "antialias: {} to exactly 1 or 0 (piglit's rule), first at ({x}, {y})",
+            counted(
+                m.piglit_violations,
+                "full or empty pixel does not resolve",
+                "full or empty pixels do not resolve"
+            )
         ));
     }
     if m.invalid_values > 0 {
         out.push(format!(
-            "antialias: {} pixels resolve to a value that is not a finite number ≥ 0",
-            m.invalid_values
+            "antialias: {} to a value that is not a finite number ≥ 0",
+            counted(m.invalid_values, "pixel resolves", "pixels resolve")
         ));
     }
     if m.resolve_mismatches > 0 {
         out.push(format!(
-            "antialias: {} pixels resolve to other than the box resolve of their own samples",
-            m.resolve_mismatches
+            "antialias: {} to other than the box resolve of {} own samples",
+            counted(m.resolve_mismatches, "pixel resolves", "pixels resolve"),
+            if m.resolve_mismatches == 1 {
+                "its"
+            } else {
+                "their"
+            }
         ));
     }
     if let Some(nothing) = &m.nothing_drawn {
@@ -428,5 +438,35 @@ mod tests {
         );
         let m = measure(&reference, &candidate, None, (None, None)).unwrap();
         assert_eq!(m.piglit_violations, 1);
+    }
+
+    #[test]
+    fn pixel_count_reasons_take_the_number_of_their_counts() {
+        let reference = frame(2, &[1, 1, 1, 0], &[1.0, 0.5]);
+        let exact = measure(&reference, &reference, None, (None, None)).unwrap();
+        let with = |n: u64| {
+            let mut m = exact.clone();
+            m.piglit_violations = n;
+            m.invalid_values = n;
+            m.resolve_mismatches = n;
+            m.first_violation = Some([1, 0]);
+            failures(&m)
+        };
+        assert_eq!(
+            with(1),
+            [
+                "antialias: 1 full or empty pixel does not resolve to exactly 1 or 0 (piglit's rule), first at (1, 0)",
+                "antialias: 1 pixel resolves to a value that is not a finite number ≥ 0",
+                "antialias: 1 pixel resolves to other than the box resolve of its own samples",
+            ]
+        );
+        assert_eq!(
+            with(2),
+            [
+                "antialias: 2 full or empty pixels do not resolve to exactly 1 or 0 (piglit's rule), first at (1, 0)",
+                "antialias: 2 pixels resolve to a value that is not a finite number ≥ 0",
+                "antialias: 2 pixels resolve to other than the box resolve of their own samples",
+            ]
+        );
     }
 }

@@ -27,6 +27,7 @@
 
 use serde::Serialize;
 
+use super::counted::counted;
 use crate::frame::{Frame, Parts};
 
 /// What a declared step allows beyond itself: the program's own rounding
@@ -110,17 +111,19 @@ pub fn pixel_failures(m: &PixelAreas) -> Vec<String> {
     let mut out = Vec::new();
     if m.nothing_drawn_over_step > 0 {
         out.push(format!(
-            "antialias: drew nothing where the exact area of {} pixels exceeds {step:.3e} ({}) (SPEC.md §6.1)",
-            m.nothing_drawn_over_step,
+            "antialias: drew nothing where the exact area of {} {step:.3e} ({}) (SPEC.md §6.1)",
+            counted(m.nothing_drawn_over_step, "pixel exceeds", "pixels exceed"),
             whose_step(m.step)
         ));
     } else if m.over_step > 0 {
         let [x, y] = m.worst_pixel;
         out.push(format!(
-            "antialias: {} of {} pixels are more than {step:.3e} ({}) from their exact area; the largest error, {:.3e}, is at ({x}, {y}) (SPEC.md §14.4)",
+            "antialias: {} of {} {} more than {step:.3e} ({}) from {} exact area; the largest error, {:.3e}, is at ({x}, {y}) (SPEC.md §14.4)",
             m.over_step,
-            m.pixels,
+            counted(m.pixels, "pixel", "pixels"),
+            if m.over_step == 1 { "is" } else { "are" },
             whose_step(m.step),
+            if m.over_step == 1 { "its" } else { "their" },
             m.max_error
         ));
     }
@@ -199,8 +202,8 @@ pub fn nothing_drawn(candidate: &Frame, seen: &AreasSeen) -> Option<NothingDrawn
 pub fn failure(n: &NothingDrawn) -> String {
     let [p, x, y] = n.at;
     format!(
-        "antialias: drew nothing where the exact area of {} primitive-pixels exceeds {:.3e} ({}); the largest, {:.3e}, is primitive {p}'s at ({x}, {y}) (SPEC.md §6.1)",
-        n.pairs,
+        "antialias: drew nothing where the exact area of {} {:.3e} ({}); the largest, {:.3e}, is primitive {p}'s at ({x}, {y}) (SPEC.md §6.1)",
+        counted(n.pairs, "primitive-pixel exceeds", "primitive-pixels exceed"),
         if n.step > 0.0 { n.step } else { DEFAULT_STEP },
         whose_step(n.step),
         n.largest
@@ -278,5 +281,65 @@ mod tests {
         let tiny = Frame::resolved_only(2, 1, vec![0.003, 0.0]);
         let m = pixel_areas(&tiny, &nothing).unwrap();
         assert!(pixel_failures(&m).is_empty());
+    }
+
+    #[test]
+    fn pixel_area_reasons_take_the_number_of_their_counts() {
+        let areas = |over_step, pixels, nothing_drawn_over_step| PixelAreas {
+            step: 0.25,
+            pixels,
+            over_step,
+            max_error: 0.5,
+            worst_pixel: [1, 2],
+            nothing_drawn_over_step,
+        };
+        let one = pixel_failures(&areas(1, 1, 0));
+        assert!(
+            one[0].starts_with("antialias: 1 of 1 pixel is more than 2.500e-1 (one step of the declared quantization) from its exact area;"),
+            "{one:?}"
+        );
+        let two = pixel_failures(&areas(2, 4, 0));
+        assert!(
+            two[0].starts_with("antialias: 2 of 4 pixels are more than 2.500e-1 (one step of the declared quantization) from their exact area;"),
+            "{two:?}"
+        );
+        let one = pixel_failures(&areas(0, 4, 1));
+        assert!(
+            one[0].starts_with(
+                "antialias: drew nothing where the exact area of 1 pixel exceeds 2.500e-1"
+            ),
+            "{one:?}"
+        );
+        let two = pixel_failures(&areas(0, 4, 3));
+        assert!(
+            two[0].starts_with(
+                "antialias: drew nothing where the exact area of 3 pixels exceed 2.500e-1"
+            ),
+            "{two:?}"
+        );
+    }
+
+    #[test]
+    fn the_nothing_drawn_reason_takes_the_number_of_its_count() {
+        let nothing = |pairs| NothingDrawn {
+            pairs,
+            largest: 0.5,
+            at: [0, 1, 1],
+            step: 0.25,
+        };
+        assert!(
+            failure(&nothing(1)).starts_with(
+                "antialias: drew nothing where the exact area of 1 primitive-pixel exceeds 2.500e-1"
+            ),
+            "{}",
+            failure(&nothing(1))
+        );
+        assert!(
+            failure(&nothing(2)).starts_with(
+                "antialias: drew nothing where the exact area of 2 primitive-pixels exceed 2.500e-1"
+            ),
+            "{}",
+            failure(&nothing(2))
+        );
     }
 }

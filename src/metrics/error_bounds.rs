@@ -4,6 +4,8 @@
 //! the pixels that matter, their bounds, and the reasons a candidate fails
 //! them, worded once.
 
+use super::counted::counted;
+
 /// One family's error statistics and bounds, in the words its reasons use.
 pub struct ErrorBounds<'a> {
     /// The family the reasons start with: `antialias`, `time`.
@@ -50,14 +52,50 @@ impl ErrorBounds<'_> {
                 String::new()
             };
             out.push(format!(
-                "{family}: {quantity} RMS {:.3e} over {} {} pixels exceeds {:.3e} (bias {:+.3e}{worst})",
+                "{family}: {quantity} RMS {:.3e} over {} exceeds {:.3e} (bias {:+.3e}{worst})",
                 self.rms,
-                self.pixels,
-                self.kind,
+                counted(
+                    self.pixels,
+                    &format!("{} pixel", self.kind),
+                    &format!("{} pixels", self.kind)
+                ),
                 self.allowed_rms.unwrap_or(0.0),
                 self.bias
             ));
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_rms_reason_takes_the_number_of_its_pixels() {
+        let over = |pixels| {
+            ErrorBounds {
+                family: "time",
+                quantity: "time-coverage",
+                max_error: 0.5,
+                worst: "pixel (1, 2)".into(),
+                allowed_error: None,
+                rms: 0.5,
+                bias: 0.5,
+                pixels,
+                kind: "moving",
+                allowed_rms: Some(0.25),
+                worst_in_rms: false,
+            }
+            .failures()
+        };
+        assert_eq!(
+            over(1),
+            ["time: time-coverage RMS 5.000e-1 over 1 moving pixel exceeds 2.500e-1 (bias +5.000e-1)"]
+        );
+        assert_eq!(
+            over(3),
+            ["time: time-coverage RMS 5.000e-1 over 3 moving pixels exceeds 2.500e-1 (bias +5.000e-1)"]
+        );
     }
 }

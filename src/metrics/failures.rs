@@ -1,6 +1,7 @@
 //! The verdict: why a candidate fails a case, from its metrics.
 
 use super::antialias;
+use super::counted::counted;
 use super::measure::Metrics;
 use super::time;
 use crate::frame::Frame;
@@ -13,8 +14,8 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
     let c = &m.coverage;
     if c.mismatched() > expect.max_mismatched_samples {
         out.push(format!(
-            "coverage: {} samples differ from the reference ({} missing, {} extra, {} wrong owner; {} allowed)",
-            c.mismatched(),
+            "coverage: {} from the reference ({} missing, {} extra, {} wrong owner; {} allowed)",
+            counted(c.mismatched(), "sample differs", "samples differ"),
             c.missing,
             c.extra,
             c.wrong_owner,
@@ -35,24 +36,33 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
     if let Some(w) = &m.watertight {
         if !w.is_watertight() {
             out.push(format!(
-                "watertight: {} holes and {} overdrawn samples",
-                w.holes, w.overdraw
+                "watertight: {} and {}",
+                counted(w.holes, "hole", "holes"),
+                counted(w.overdraw, "overdrawn sample", "overdrawn samples")
             ));
         }
     }
     if let Some(l) = &m.lines {
         if l.crowded_steps > 0 {
             out.push(format!(
-                "lines: {} major-axis steps hold more than one pixel of the same midpoint line",
-                l.crowded_steps
+                "lines: {} more than one pixel of the same midpoint line",
+                counted(
+                    l.crowded_steps,
+                    "major-axis step holds",
+                    "major-axis steps hold"
+                )
             ));
         }
     }
     for ch in &m.channels {
         if let (Some(miss), false) = (&ch.depth_set, ch.within_bounds()) {
             out.push(format!(
-                "{}: {} samples outside the depths {} allows (largest distance {:.3e}), {} off its grid (SPEC.md §18)",
-                ch.channel, miss.outside, miss.format, ch.max_abs, miss.off_grid
+                "{}: {} outside the depths {} allows (largest distance {:.3e}), {} off its grid (SPEC.md §18)",
+                ch.channel,
+                counted(miss.outside, "sample", "samples"),
+                miss.format,
+                ch.max_abs,
+                miss.off_grid
             ));
         } else if !ch.within_bounds() {
             let ulp = ch
@@ -93,4 +103,114 @@ pub fn failures(scene: &Scene, reference: &Frame, m: &Metrics) -> Vec<String> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::metrics::interpolation::{ChannelError, DepthSetMiss};
+    use crate::metrics::line::LineMetrics;
+    use crate::metrics::measure::measure;
+    use crate::metrics::watertight::WatertightMetrics;
+    use crate::plan::Plan;
+    use crate::reference::render;
+    use crate::scene::{parse_case, Limits};
+
+    /// The reasons for one triangle drawn exactly, with `edit` made to its
+    /// metrics.
+    fn reasons(edit: impl Fn(&mut Metrics)) -> Vec<String> {
+        let scene = parse_case(
+            r#"{"name": "t", "canvas": {"width": 4, "height": 4},
+                "primitives": [{"triangle": [[0, 0], [4, 0], [0, 4]]}]}"#,
+            "t.json",
+            &Limits::default(),
+        )
+        .unwrap();
+        let reference = render(&scene, &Plan::for_scene(&scene));
+        let mut m = measure(&scene, &reference, &reference, None);
+        edit(&mut m);
+        failures(&scene, &reference, &m)
+    }
+
+    #[test]
+    fn the_coverage_reason_takes_the_number_of_its_count() {
+        let one = reasons(|m| m.coverage.missing = 1);
+        assert!(
+            one[0].starts_with("coverage: 1 sample differs from the reference (1 missing,"),
+            "{one:?}"
+        );
+        let two = reasons(|m| m.coverage.extra = 2);
+        assert!(
+            two[0]
+                .starts_with("coverage: 2 samples differ from the reference (0 missing, 2 extra,"),
+            "{two:?}"
+        );
+    }
+
+    #[test]
+    fn the_watertight_reason_takes_the_number_of_each_count() {
+        let with = |holes, overdraw| {
+            reasons(move |m| {
+                m.watertight = Some(WatertightMetrics {
+                    interior: 16,
+                    holes,
+                    overdraw,
+                })
+            })
+        };
+        assert_eq!(with(1, 0), ["watertight: 1 hole and 0 overdrawn samples"]);
+        assert_eq!(with(2, 1), ["watertight: 2 holes and 1 overdrawn sample"]);
+    }
+
+    #[test]
+    fn the_midpoint_line_reason_takes_the_number_of_its_count() {
+        let with = |crowded_steps| {
+            reasons(move |m| {
+                m.lines = Some(LineMetrics {
+                    lines: 1,
+                    crowded_steps,
+                })
+            })
+        };
+        assert_eq!(
+            with(1),
+            ["lines: 1 major-axis step holds more than one pixel of the same midpoint line"]
+        );
+        assert_eq!(
+            with(3),
+            ["lines: 3 major-axis steps hold more than one pixel of the same midpoint line"]
+        );
+    }
+
+    #[test]
+    fn the_depth_set_reason_takes_the_number_of_its_count() {
+        let with = |outside| {
+            reasons(move |m| {
+                m.channels = vec![ChannelError {
+                    channel: "depth".into(),
+                    samples: 8,
+                    max_abs: 0.5,
+                    max_ulp: 0.0,
+                    rms: 0.0,
+                    allowed_abs: 0.0,
+                    allowed_ulp: None,
+                    depth_set: Some(DepthSetMiss {
+                        format: "unorm16",
+                        off_grid: 0,
+                        outside,
+                    }),
+                }]
+            })
+        };
+        assert!(
+            with(1)[0].starts_with("depth: 1 sample outside the depths unorm16 allows"),
+            "{:?}",
+            with(1)
+        );
+        assert!(
+            with(7)[0].starts_with("depth: 7 samples outside the depths unorm16 allows"),
+            "{:?}",
+            with(7)
+        );
+    }
 }

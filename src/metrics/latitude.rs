@@ -30,6 +30,7 @@ use std::collections::{BTreeMap, HashSet};
 
 use serde::{Deserialize, Serialize};
 
+use super::counted::counted;
 use super::coverage::{CoverageMetrics, SampleDiff};
 use crate::frame::Frame;
 use crate::reference::DiamondLine;
@@ -61,11 +62,6 @@ pub struct LatitudeMetrics {
     pub underdrawn: u64,
 }
 
-/// `n` and the noun in the number it takes: "1 fragment", "2 fragments".
-fn counted(n: u64, one: &str, many: &str) -> String {
-    format!("{n} {}", if n == 1 { one } else { many })
-}
-
 impl LatitudeMetrics {
     /// The console's and the case page's line.
     pub fn line(&self) -> String {
@@ -84,36 +80,44 @@ impl LatitudeMetrics {
         line
     }
 
-    /// Why it breaks the latitude; empty when it keeps to it.
+    /// Why it breaks the latitude; empty when it keeps to it. Each reason
+    /// is said in the number its count takes ("1 line differs", "2 lines
+    /// differ").
     pub fn failures(&self) -> Vec<String> {
         let mut out = Vec::new();
-        let mut say = |n: u64, what: &str| {
+        let mut say = |n: u64, one: &str, many: &str| {
             if n > 0 {
-                out.push(format!("lines (latitude): {n} {what}"));
+                out.push(format!("lines (latitude): {}", counted(n, one, many)));
             }
         };
         say(
             self.too_far,
+            "fragment lies more than one unit from every diamond-exit fragment of its line",
             "fragments lie more than one unit from every diamond-exit fragment of their line",
         );
         say(
             self.count_off,
+            "line differs from the diamond-exit fragment count by more than one",
             "lines differ from the diamond-exit fragment count by more than one",
         );
         say(
             self.crowded,
+            "major-axis step holds two fragments of one line",
             "major-axis steps hold two fragments of one line",
         );
         say(
             self.duplicated,
+            "pixel is drawn by both of two connected segments",
             "pixels are drawn by both of two connected segments",
         );
         say(
             self.overdrawn,
+            "pixel is covered more often than the lines that may reach it allow",
             "pixels are covered more often than the lines that may reach them allow",
         );
         say(
             self.underdrawn,
+            "pixel near a line misses the other primitives' coverage",
             "pixels near a line miss the other primitives' coverage",
         );
         out
@@ -306,6 +310,50 @@ mod tests {
             set(f, 0, 0, 1, 1);
         });
         assert_eq!(m.count_off, 1, "{m:?}");
+    }
+
+    #[test]
+    fn failure_reasons_take_the_number_of_their_count() {
+        let one = LatitudeMetrics {
+            too_far: 1,
+            count_off: 1,
+            crowded: 1,
+            duplicated: 1,
+            overdrawn: 1,
+            underdrawn: 1,
+            ..LatitudeMetrics::default()
+        };
+        assert_eq!(
+            one.failures(),
+            [
+                "lines (latitude): 1 fragment lies more than one unit from every diamond-exit fragment of its line",
+                "lines (latitude): 1 line differs from the diamond-exit fragment count by more than one",
+                "lines (latitude): 1 major-axis step holds two fragments of one line",
+                "lines (latitude): 1 pixel is drawn by both of two connected segments",
+                "lines (latitude): 1 pixel is covered more often than the lines that may reach it allow",
+                "lines (latitude): 1 pixel near a line misses the other primitives' coverage",
+            ]
+        );
+        let two = LatitudeMetrics {
+            too_far: 2,
+            count_off: 2,
+            crowded: 2,
+            duplicated: 2,
+            overdrawn: 2,
+            underdrawn: 2,
+            ..LatitudeMetrics::default()
+        };
+        assert_eq!(
+            two.failures(),
+            [
+                "lines (latitude): 2 fragments lie more than one unit from every diamond-exit fragment of their line",
+                "lines (latitude): 2 lines differ from the diamond-exit fragment count by more than one",
+                "lines (latitude): 2 major-axis steps hold two fragments of one line",
+                "lines (latitude): 2 pixels are drawn by both of two connected segments",
+                "lines (latitude): 2 pixels are covered more often than the lines that may reach them allow",
+                "lines (latitude): 2 pixels near a line miss the other primitives' coverage",
+            ]
+        );
     }
 
     #[test]

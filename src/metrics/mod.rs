@@ -11,12 +11,13 @@
 //! `conservative_depth.rs` its depth (§19.9); the per-pixel ones
 //! start from `difference.rs`, and antialiasing and time share
 //! `error_bounds.rs`); `failures.rs` turns the metrics into the reasons a
-//! candidate fails.
+//! candidate fails, counting in words with `counted.rs`.
 
 pub mod antialias;
 pub mod area;
 pub mod conservative;
 pub mod conservative_depth;
+pub mod counted;
 pub mod coverage;
 pub mod depth;
 pub(crate) mod difference;

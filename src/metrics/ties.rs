@@ -6,6 +6,7 @@
 
 use serde::Serialize;
 
+use super::counted::counted;
 use crate::frame::Frame;
 use crate::reference::{TieOutcome, TieSet};
 
@@ -35,13 +36,11 @@ pub struct TieMetrics {
 impl TieMetrics {
     /// The console's and the case page's line.
     pub fn line(&self) -> String {
-        let plural =
-            |n: u64, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
         let mut line = format!(
             "judged off the ties: {}, {} overdrawn, {}",
-            plural(self.tie_samples, "tie sample", "tie samples"),
+            counted(self.tie_samples, "tie sample", "tie samples"),
             self.overdrawn,
-            plural(self.holes, "hole", "holes")
+            counted(self.holes, "hole", "holes")
         );
         if self.other_side > 0 {
             line.push_str(&format!(

@@ -24,6 +24,7 @@
 use serde::ser::{SerializeStruct, Serializer};
 use serde::Serialize;
 
+use super::counted::counted;
 use super::error_bounds::{within, ErrorBounds};
 use crate::frame::{Frame, SampleTests};
 use crate::scene::Scene;
@@ -243,8 +244,8 @@ pub fn failures(m: &TimeMetrics) -> Vec<String> {
     if m.invalid_values > 0 {
         let [x, y] = m.first_invalid.unwrap_or([0, 0]);
         out.push(format!(
-            "time: {} pixels have a time coverage that is not a finite number ≥ 0, first at ({x}, {y})",
-            m.invalid_values
+            "time: {} a time coverage that is not a finite number ≥ 0, first at ({x}, {y})",
+            counted(m.invalid_values, "pixel has", "pixels have")
         ));
     }
     out
@@ -374,5 +375,32 @@ mod tests {
             ["watertight", "max_coverage_rms"]
         );
         assert!(Expect::default().sample_expectations().is_empty());
+    }
+
+    #[test]
+    fn the_invalid_value_reason_takes_the_number_of_its_count() {
+        let reference = frame(&[0.0, 1.0, 0.25]);
+        let one = measure(
+            &reference,
+            &frame(&[0.0, 1.0, f64::NAN]),
+            None,
+            (None, None),
+        )
+        .unwrap();
+        assert_eq!(
+            failures(&one),
+            ["time: 1 pixel has a time coverage that is not a finite number ≥ 0, first at (2, 0)"]
+        );
+        let two = measure(
+            &reference,
+            &frame(&[-1.0, 1.0, f64::NAN]),
+            None,
+            (None, None),
+        )
+        .unwrap();
+        assert_eq!(
+            failures(&two),
+            ["time: 2 pixels have a time coverage that is not a finite number ≥ 0, first at (0, 0)"]
+        );
     }
 }

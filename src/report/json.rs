@@ -684,6 +684,37 @@ impl CaseEntry {
     }
 }
 
+#[cfg(test)]
+impl ResultEntry {
+    /// A result for tests: `rasterizer`'s `verdict`, with no reasons,
+    /// time, conventions, metrics or files; a test sets what it needs
+    /// with `..ResultEntry::bare(…)`.
+    pub fn bare(rasterizer: &str, verdict: Word) -> ResultEntry {
+        ResultEntry {
+            rasterizer: rasterizer.to_owned(),
+            verdict,
+            reasons: Vec::new(),
+            flaky: None,
+            time_ms: 0.0,
+            method: None,
+            judged_fill_rule: None,
+            ties: None,
+            line_latitude: None,
+            conservative: None,
+            judged_clip: None,
+            judged_subpixel_bits: None,
+            judged_snapping: None,
+            judged_sample_pattern: None,
+            judged_y: None,
+            judged_pixel_centre: None,
+            judged_line_parameter: None,
+            judged_line_border: None,
+            metrics: None,
+            files: Vec::new(),
+        }
+    }
+}
+
 /// The family of a case id: its first path segment.
 pub fn family(id: &str) -> String {
     match id.split_once('/') {

@@ -44,18 +44,34 @@ fn big_program(mode: &str) -> String {
     format!("external-persistent:{} {mode}", program.display())
 }
 
-/// The binary run in `dir` under `prlimit --as=CAP_BYTES` (the same
-/// process: prlimit execs it), its peak RSS held to `bound_mib`.
-fn run_capped(dir: &Path, args: &[&str], bound_mib: f64) -> std::process::Output {
+/// `run cases -r external_big.py MODE --threads 1 --report report` and
+/// `extra`, run in `dir` under `prlimit --as=CAP_BYTES` (the same process:
+/// prlimit execs it), its peak RSS held to [`BOUND_MIB`] and its exit
+/// status to 0: its report and what it printed.
+fn run_capped(dir: &Path, mode: &str, extra: &[&str]) -> (serde_json::Value, String) {
+    let program = big_program(mode);
+    let mut args = vec![
+        "run",
+        "cases",
+        "-r",
+        &program,
+        "--threads",
+        "1",
+        "--report",
+        "report",
+    ];
+    args.extend(extra);
     let mut command = std::process::Command::new("prlimit");
     command
         .arg(format!("--as={CAP_BYTES}"))
         .arg(env!("CARGO_BIN_EXE_rastercheck"))
-        .args(args)
+        .args(&args)
         .current_dir(dir);
     let m = run_measured(&mut command, std::time::Duration::from_secs(600));
-    crate::common::cli::assert_peak_rss(&format!("{args:?}"), &m, bound_mib);
-    m.output
+    crate::common::cli::assert_peak_rss(&format!("{args:?}"), &m, BOUND_MIB);
+    let log = text(&m.output);
+    assert_eq!(m.output.status.code(), Some(0), "{log}");
+    (read_json(&dir.join("report/report.json")), log)
 }
 
 /// The verdict of case `id`'s only candidate, or its status when it has none.
@@ -76,24 +92,7 @@ fn a_right_answer_for_a_4096_square_case_is_judged_under_a_gibibyte() {
             ("cases/small/full8.json", FULL_8),
         ],
     );
-    let program = big_program("full");
-    let out = run_capped(
-        &dir,
-        &[
-            "run",
-            "cases",
-            "-r",
-            &program,
-            "--threads",
-            "1",
-            "--report",
-            "report",
-        ],
-        BOUND_MIB,
-    );
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(0), "{log}");
-    let report = read_json(&dir.join("report/report.json"));
+    let (report, log) = run_capped(&dir, "full", &[]);
     assert_eq!(verdict(&report, "big/answer4096"), "pass", "{log}");
     assert_eq!(verdict(&report, "small/full8"), "pass", "{log}");
 }
@@ -104,26 +103,7 @@ fn a_moving_2048_square_request_at_16_instants_is_streamed_under_a_gibibyte() {
         "bounded-request",
         &[("cases/big/motion2048.json", MOTION_2048)],
     );
-    let program = big_program("motion");
-    let out = run_capped(
-        &dir,
-        &[
-            "run",
-            "cases",
-            "-r",
-            &program,
-            "--threads",
-            "1",
-            "--case-timeout",
-            "600",
-            "--report",
-            "report",
-        ],
-        BOUND_MIB,
-    );
-    let log = text(&out);
-    assert_eq!(out.status.code(), Some(0), "{log}");
-    let report = read_json(&dir.join("report/report.json"));
+    let (report, log) = run_capped(&dir, "motion", &["--case-timeout", "600"]);
     assert_eq!(verdict(&report, "big/motion2048"), "pass", "{log}");
 }
 

@@ -107,7 +107,7 @@ fn the_mask_is_compared_sample_by_sample() {
     let why = reasons(&r);
     assert!(
         why.iter()
-            .any(|m| m.starts_with("coverage: 1 samples differ") && m.contains("1 extra")),
+            .any(|m| m.starts_with("coverage: 1 sample differs") && m.contains("1 extra")),
         "{why:?}"
     );
     // Its own resolve is right, so only the mask fails.

@@ -231,7 +231,7 @@ fn golden_check_catches_a_changed_oracle() {
     changed.attributes[0][i] = f64::from(f32::from_bits(v.to_bits() + 1));
     let err = rastercheck::harness::golden::check(&changed, &path).unwrap_err();
     assert!(
-        err.contains("channel attribute.0: 1 samples differ"),
+        err.contains("channel attribute.0: 1 sample differs"),
         "{err}"
     );
 

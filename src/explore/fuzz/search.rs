@@ -24,6 +24,9 @@ use crate::scene::{Number, Primitive, Scene, TimePin};
 #[derive(Clone, Debug)]
 pub struct Options {
     pub seed: u64,
+    /// The number of the first case tried (`--first-case`; 0 by default):
+    /// cases `first`, `first + 1`, … of the seed.
+    pub first: u64,
     /// Scenes to try.
     pub cases: u64,
     /// One family, or all of them in turn.
@@ -34,7 +37,11 @@ pub struct Options {
     pub max_failures: usize,
     /// Folder for the case files.
     pub out: PathBuf,
-    /// The command line that reproduces the search, for descriptions.
+    /// The command line that draws the scenes again, for descriptions,
+    /// less what picks a case (`--seed`, `--family`, `--first-case`,
+    /// `--cases`), which each finding adds for its own: `rastercheck fuzz
+    /// -r R` with `--check` and `--profile`, or with `--from-crash FILE`,
+    /// which draws its one scene.
     pub command: String,
 }
 
@@ -138,7 +145,6 @@ fn describe_size(scene: &Scene) -> String {
 /// reference's sample count pinned.
 fn finished_case(
     candidate: &dyn Rasterizer,
-    options: &Options,
     origin: &Origin,
     family: Family,
     original: &Scene,
@@ -157,7 +163,7 @@ fn finished_case(
     let reasons = shrunk.failure.reasons_for(kind).join("; ");
     scene.description = format!(
         "Found by `{}`: {} ({} family), originally {}, shrunk to {} in {} evaluations. {} fails it: {reasons}. A correct rasterizer {}.",
-        options.command,
+        origin.command,
         origin.said,
         family.name(),
         describe_size(original),
@@ -219,7 +225,7 @@ pub fn search(
             candidate.name()
         ));
     }
-    for index in 0..options.cases {
+    for index in options.first..options.first.saturating_add(options.cases) {
         let (family, scene) = generate(options.seed, index, options.family);
         summary.cases += 1;
         let failure = match evaluate(&scene, candidate) {
@@ -260,6 +266,7 @@ pub fn search(
         let origin = Origin {
             tag: format!("{}_{index}", options.seed),
             said: format!("case {index} of seed {}", options.seed),
+            command: reproduction(options, index, family),
         };
         let (path, shrunk) = keep(
             candidate, options, &origin, family, &scene, failure, kind, log,
@@ -279,11 +286,28 @@ pub fn search(
     Ok(summary)
 }
 
-/// Where a failing scene came from: a tag for its file name, and words for
-/// its description.
+/// Where a failing scene came from: a tag for its file name, words for its
+/// description, and the command that draws it again.
 struct Origin {
     tag: String,
     said: String,
+    command: String,
+}
+
+/// The command that draws case `index` of the search, of `family`, again:
+/// the search's command with `--seed`, `--family`, `--first-case` and
+/// `--cases 1`. It names the family even when the search named none: a
+/// case's scene depends only on the seed, its number and its family, while
+/// which family an unnamed search gives case `index` depends on the
+/// families a version has ([`Family::ALL`]), so this command stays valid
+/// when families are added.
+fn reproduction(options: &Options, index: u64, family: Family) -> String {
+    format!(
+        "{} --seed {} --family {} --first-case {index} --cases 1",
+        options.command,
+        options.seed,
+        family.name()
+    )
 }
 
 /// Shrinks a failure of `kind`, pins the reference's result, reads the case
@@ -300,7 +324,7 @@ fn keep(
     log: &mut dyn FnMut(&str),
 ) -> Result<(PathBuf, Shrunk), String> {
     let shrunk = shrink(scene, failure, kind, candidate);
-    let case = finished_case(candidate, options, origin, family, scene, kind, &shrunk);
+    let case = finished_case(candidate, origin, family, scene, kind, &shrunk);
     let text = case_json(&case);
     // The file must say what the shrinker saw: read it back and judge
     // it again.
@@ -329,6 +353,7 @@ fn keep(
     for reason in shrunk.failure.reasons_for(kind) {
         log(&format!("        {reason}"));
     }
+    log(&format!("      found again by: {}", origin.command));
     Ok((path, shrunk))
 }
 
@@ -376,6 +401,7 @@ pub fn from_tape(
     let origin = Origin {
         tag: format!("crash_{:08x}", hash as u32),
         said: format!("the libFuzzer input {file}"),
+        command: options.command.clone(),
     };
     let (path, shrunk) = keep(
         candidate, options, &origin, family, &scene, failure, kind, log,

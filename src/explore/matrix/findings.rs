@@ -5,15 +5,11 @@ use super::table::Row;
 use crate::explore::probe::diagnosis::{SamplerKind, Symptom, CENTRE};
 use crate::harness::judge::Verdict;
 use crate::harness::runner::CaseOutcome;
+use crate::metrics::counted::counted;
 use crate::scene::{FillRule, Primitive};
 
 /// Lines at least this long (in pixels) are "long lines" in the findings.
 pub const LONG_LINE: f64 = 256.0;
-
-pub(super) fn plural(n: impl Into<u64>, one: &str, many: &str) -> String {
-    let n = n.into();
-    format!("{n} {}", if n == 1 { one } else { many })
-}
 
 fn examples(ids: &[String]) -> String {
     let shown: Vec<&str> = ids.iter().take(3).map(String::as_str).collect();
@@ -111,9 +107,9 @@ pub(super) fn findings(
             said = true;
             out.push(format!(
                 "{name} is not watertight under the {judged} rule: {} in {} of {} ({}). {}",
-                plural(overdraw, "overdrawn sample", "overdrawn samples"),
+                counted(overdraw, "overdrawn sample", "overdrawn samples"),
                 od_cases.len(),
-                plural(meshes as u64, "mesh case", "mesh cases"),
+                counted(meshes as u64, "mesh case", "mesh cases"),
                 examples(&od_cases),
                 cause(Symptom::Overdraw)
             ));
@@ -122,9 +118,9 @@ pub(super) fn findings(
             said = true;
             out.push(format!(
                 "{name} leaves {} in {} of {} ({}): samples inside the mesh that no triangle draws. {}",
-                plural(holes, "hole", "holes"),
+                counted(holes, "hole", "holes"),
                 hole_cases.len(),
-                plural(meshes as u64, "mesh case", "mesh cases"),
+                counted(meshes as u64, "mesh case", "mesh cases"),
                 examples(&hole_cases),
                 cause(Symptom::Holes)
             ));
@@ -133,8 +129,8 @@ pub(super) fn findings(
             said = true;
             out.push(format!(
                 "{name} keeps {} watertight (no overdraw, no holes) but gives {} to the other triangle ({}). {}",
-                plural(owner_cases.len() as u64, "mesh case", "mesh cases"),
-                plural(owner, "tie sample", "tie samples"),
+                counted(owner_cases.len() as u64, "mesh case", "mesh cases"),
+                counted(owner, "tie sample", "tie samples"),
                 examples(&owner_cases),
                 cause(Symptom::WrongOwner)
             ));
@@ -217,7 +213,7 @@ pub(super) fn findings(
             said = true;
             out.push(format!(
                 "{name} interpolates beyond the bound in {} (worst: {channel} of `{id}`, {ratio:.1}× the bound).",
-                plural(beyond as u64, "case", "cases")
+                counted(beyond as u64, "case", "cases")
             ));
         }
         let errors: Vec<String> = runs()
@@ -228,7 +224,7 @@ pub(super) fn findings(
             said = true;
             out.push(format!(
                 "{name} broke (error) on {} ({}).",
-                plural(errors.len() as u64, "case", "cases"),
+                counted(errors.len() as u64, "case", "cases"),
                 examples(&errors)
             ));
         }

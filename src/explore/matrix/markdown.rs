@@ -1,7 +1,7 @@
 //! The matrix as markdown, and the README block between its markers.
 
-use super::findings::plural;
 use super::table::{Cell, Matrix};
+use crate::metrics::counted::counted;
 
 pub const BEGIN: &str = "<!-- matrix:begin -->";
 pub const END: &str = "<!-- matrix:end -->";
@@ -16,7 +16,7 @@ fn cell_text(cell: &Cell, foil: bool) -> String {
     let mut parts = if foil {
         vec![
             format!("{} exact", cell.pass),
-            plural(cell.departures as u64, "departure", "departures"),
+            counted(cell.departures as u64, "departure", "departures"),
         ]
     } else {
         vec![format!("{} pass", cell.pass), format!("{} fail", cell.fail)]
@@ -25,7 +25,7 @@ fn cell_text(cell: &Cell, foil: bool) -> String {
         parts.push(format!("{} unsupported", cell.unsupported));
     }
     if cell.error > 0 {
-        parts.push(plural(cell.error as u64, "error", "errors"));
+        parts.push(counted(cell.error as u64, "error", "errors"));
     }
     let mut metrics = vec![format!("{} mismatched", cell.mismatched)];
     if cell.mesh_cases > 0 {

@@ -204,26 +204,8 @@ fn case(id: &str, rules: RulesInfo, results: Vec<(&str, MetricsEntry)>) -> CaseE
         results: results
             .into_iter()
             .map(|(r, m)| ResultEntry {
-                rasterizer: r.into(),
-                verdict: "pass",
-                reasons: Vec::new(),
-                flaky: None,
-                time_ms: 0.0,
-                method: None,
-                judged_fill_rule: None,
-                ties: None,
-                line_latitude: None,
-                conservative: None,
-                judged_clip: None,
-                judged_subpixel_bits: None,
-                judged_snapping: None,
-                judged_sample_pattern: None,
-                judged_y: None,
-                judged_pixel_centre: None,
-                judged_line_parameter: None,
-                judged_line_border: None,
                 metrics: Some(m),
-                files: Vec::new(),
+                ..ResultEntry::bare(r, "pass")
             })
             .collect(),
     }

@@ -82,6 +82,19 @@ mod tests {
     }
 
     #[test]
+    fn a_case_of_a_search_naming_no_family_is_the_same_case_of_its_family() {
+        // What makes `--family F --first-case I --cases 1` (a finding's
+        // reproduction) draw case I of a search that named no family, in
+        // this version and in one with more families.
+        for i in 0..2 * Family::ALL.len() as u64 {
+            let (family, unnamed) = generate(11, i, None);
+            let (named_family, named) = generate(11, i, Some(family));
+            assert_eq!(named_family, family);
+            assert_eq!(case_json(&unnamed), case_json(&named), "case {i}");
+        }
+    }
+
+    #[test]
     fn tapes_draw_the_cases_they_were_recorded_from() {
         for family in Family::ALL {
             for i in 0..8 {
