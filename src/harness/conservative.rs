@@ -20,7 +20,9 @@ pub fn refusal(scene: &Scene, candidate: &dyn Rasterizer) -> Option<String> {
         None => Some(
             "this rasterizer does not draw conservative rasterization (SPEC.md §19)".to_owned(),
         ),
-        Some(support) => support.refuses(case),
+        Some(support) => support
+            .refuses(case)
+            .or_else(|| scene.conservative_lines_refused(&support.restate(case))),
     }
 }
 
