@@ -12,7 +12,7 @@
 use crate::adapters::external;
 use crate::production::foils::{
     Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
-    ConservativeCentreFlag, ConservativeOvergrow, DdaF32, DdaF64, EmptyAntialias, FloatF32,
+    ConservativeCentreFlag, ConservativeOpenEnds, ConservativeOvergrow, DdaF32, DdaF64, EmptyAntialias, FloatF32,
     FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
@@ -214,6 +214,9 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-conservative-centre-flag", Kind::Foil, false,
         "conservative rasterization flagging a pixel fully covered when its centre is covered",
         || boxed(ConservativeCentreFlag)),
+    row("foil-conservative-open-ends", Kind::Foil, false,
+        "conservative lines drawn with open end caps (misses pixels touching a line's end only)",
+        || boxed(ConservativeOpenEnds)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -524,7 +527,8 @@ mod tests {
             vulkan-passes lavapipe gl softpipe tiny-skia euc vello-cpu foil-slope-ties \
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
             foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255 \
-            foil-conservative-overgrow foil-conservative-centre-box foil-conservative-centre-flag";
+            foil-conservative-overgrow foil-conservative-centre-box foil-conservative-centre-flag \
+            foil-conservative-open-ends";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

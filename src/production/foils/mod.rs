@@ -18,6 +18,7 @@
 //! `conservative_centre_box.rs` misses touched corner pixels,
 //! `conservative_centre_flag.rs` flags partly covered pixels fully
 //! covered; `conservative_parts.rs` is what they share.
+//! `conservative_open_ends.rs` draws conservative lines with open end caps.
 
 mod declare;
 
@@ -29,6 +30,7 @@ pub mod coarse_edges;
 pub mod coarse_snap;
 pub mod conservative_centre_box;
 pub mod conservative_centre_flag;
+pub mod conservative_open_ends;
 pub mod conservative_overgrow;
 mod conservative_parts;
 pub mod dda;
@@ -48,6 +50,7 @@ pub use coarse_edges::CoarseEdges;
 pub use coarse_snap::CoarseSnap;
 pub use conservative_centre_box::ConservativeCentreBox;
 pub use conservative_centre_flag::ConservativeCentreFlag;
+pub use conservative_open_ends::ConservativeOpenEnds;
 pub use conservative_overgrow::ConservativeOvergrow;
 pub use dda::{DdaF32, DdaF64};
 pub use empty_antialias::EmptyAntialias;
