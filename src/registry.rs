@@ -12,8 +12,9 @@
 use crate::adapters::external;
 use crate::production::foils::{
     Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
-    ConservativeCentreFlag, ConservativeOpenEnds, ConservativeOvergrow, DdaF32, DdaF64, EmptyAntialias, FloatF32,
-    FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies, Truncate,
+    ConservativeCentreFlag, ConservativeOpenEnds, ConservativeOvergrow, DdaF32, DdaF64,
+    EmptyAntialias, FloatF32, FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies,
+    Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;

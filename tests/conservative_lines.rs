@@ -8,6 +8,7 @@
 //! judged under its own value and reported so; the exact Python example
 //! draws points and lines, and its `--open` variant is caught on them.
 
+use rastercheck::frame::Frame;
 use rastercheck::harness::judge::{run_candidate, Verdict};
 use rastercheck::harness::oracle::run_reference;
 use rastercheck::plan::Plan;
@@ -15,7 +16,6 @@ use rastercheck::production::foils::ConservativeOpenEnds;
 use rastercheck::production::Production;
 use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer};
 use rastercheck::scene::{parse_case, ConservativeSupport, Limits, Scene};
-use rastercheck::frame::Frame;
 
 fn case_file(name: &str) -> Scene {
     let path = format!(
@@ -76,7 +76,10 @@ fn open_end_caps_are_a_required_pixel_missing() {
     }
     // Its points and triangles are production's: a point case passes.
     let point = case_file("point_over_flag");
-    assert!(matches!(verdict(&point, &ConservativeOpenEnds), Verdict::Pass));
+    assert!(matches!(
+        verdict(&point, &ConservativeOpenEnds),
+        Verdict::Pass
+    ));
 }
 
 #[test]
@@ -95,8 +98,14 @@ fn lines_not_drawn_conservatively_and_midpoint_lines_are_unsupported() {
         Verdict::Unsupported(why) => assert!(why.contains("no conservative shape"), "{why}"),
         other => panic!("{other:?}"),
     }
-    let point = scene(r#"{ "point": [2, 2], "size": 2 }"#, r#""mode": "overestimate""#);
-    assert!(matches!(verdict(&point, &Production), Verdict::Unsupported(_)));
+    let point = scene(
+        r#"{ "point": [2, 2], "size": 2 }"#,
+        r#""mode": "overestimate""#,
+    );
+    assert!(matches!(
+        verdict(&point, &Production),
+        Verdict::Unsupported(_)
+    ));
 }
 
 /// Production under fixed properties of its own (SPEC.md §19.6).
@@ -133,7 +142,10 @@ fn declared_points_and_lines_and_degenerate_lines_are_what_a_candidate_is_judged
     });
     match verdict(&case_file("line_over_diagonal"), &no_lines) {
         Verdict::Unsupported(why) => {
-            assert!(why.contains("this rasterizer declares points_and_lines false"), "{why}")
+            assert!(
+                why.contains("this rasterizer declares points_and_lines false"),
+                "{why}"
+            )
         }
         other => panic!("{other:?}"),
     }
@@ -174,4 +186,53 @@ fn the_python_example_draws_points_and_lines_and_its_open_variant_is_caught() {
         }
         other => panic!("--open was not caught: {other:?}"),
     }
+}
+
+/// Production's sets are the reference's exactly on the fuzz family's
+/// point and line scenes: overestimation draws every required and allowed
+/// pixel and no other, underestimation every required one, and the flag
+/// is true exactly where it must be. (The fuzzer's verdict only checks
+/// that production keeps within the classes; this checks the band too.)
+#[test]
+fn production_draws_exactly_the_reference_classes_on_fuzzed_points_and_lines() {
+    use rastercheck::explore::fuzz::{generate, Family};
+    use rastercheck::reference::conservative::{classify, PixelClass};
+    use rastercheck::scene::{ConservativeMode, Primitive};
+    let mut lines = 0;
+    for index in 0..3000 {
+        let (_, scene) = generate(38, index, Some(Family::Conservative));
+        if !scene
+            .primitives
+            .iter()
+            .any(|p| matches!(p, Primitive::Line(_) | Primitive::Point(_)))
+        {
+            continue;
+        }
+        lines += 1;
+        let case = scene.effects.conservative.clone().unwrap();
+        let classes = classify(&scene).unwrap();
+        let frame = Production
+            .rasterize(&scene, &Plan::for_scene(&scene))
+            .unwrap();
+        for (i, class) in classes.drawn.iter().enumerate() {
+            let want = match case.mode {
+                ConservativeMode::Overestimate => *class != PixelClass::Forbidden,
+                ConservativeMode::Underestimate => *class == PixelClass::Required,
+            };
+            assert_eq!(frame.coverage[i] > 0, want, "{} pixel {i}", scene.name);
+        }
+        if let (Some(flags), Some(given)) = (&classes.fully_covered, &frame.fully_covered) {
+            for (i, f) in flags.iter().enumerate() {
+                if frame.coverage[i] > 0 && scene.primitives.len() == 1 {
+                    assert_eq!(
+                        given[i],
+                        *f == PixelClass::Required,
+                        "{} flag {i}",
+                        scene.name
+                    );
+                }
+            }
+        }
+    }
+    assert!(lines > 500, "{lines} point and line scenes");
 }

@@ -360,7 +360,10 @@ mod tests {
         .unwrap();
         let mut o = h100();
         let why = ask(&line, Some(&o)).unwrap_err();
-        assert!(why.contains("conservativePointAndLineRasterization"), "{why}");
+        assert!(
+            why.contains("conservativePointAndLineRasterization"),
+            "{why}"
+        );
         assert_eq!(support(Some(&o)).points_and_lines, Some(false));
         o.points_and_lines = true;
         assert!(ask(&line, Some(&o)).unwrap().is_some());

@@ -59,9 +59,7 @@ impl Rasterizer for ConservativeOpenEnds {
             };
             let [a, b] = &line.vertices;
             let step = |from: &Number, to: &Number| {
-                Number::from_rbig(
-                    (to.as_rbig() - from.as_rbig()) / dashu_ratio::RBig::from(SHORT),
-                )
+                Number::from_rbig((to.as_rbig() - from.as_rbig()) / dashu_ratio::RBig::from(SHORT))
             };
             let (sx, sy) = (step(&a.x, &b.x), step(&a.y, &b.y));
             let moved = |n: &Number, by: &Number, sign: bool| {

@@ -80,7 +80,7 @@ pub fn grid_scene(scene: &Scene, case: &Conservative) -> GridScene {
                         }
                         Rational::Hull(vec![a])
                     } else if l.rule == LineRule::Rectangle {
-                        Rational::Rectangle(a, b, half(&l.width))
+                        Rational::Rectangle(Box::new((a, b, half(&l.width))))
                     } else {
                         // The parallelogram: each end swept by the half
                         // width along the minor axis (|dx| ≥ |dy|: x-major).
@@ -112,7 +112,8 @@ pub fn grid_scene(scene: &Scene, case: &Conservative) -> GridScene {
             Rational::Hull(points) => {
                 denominators.extend(points.iter().flatten().map(RBig::denominator));
             }
-            Rational::Rectangle(a, b, h) => {
+            Rational::Rectangle(line) => {
+                let (a, b, h) = &**line;
                 denominators.extend(a.iter().chain(b).chain([h]).map(RBig::denominator));
             }
         }
@@ -138,10 +139,10 @@ pub fn grid_scene(scene: &Scene, case: &Conservative) -> GridScene {
                 }
                 Outline::Hull(points)
             }
-            Rational::Rectangle(a, b, h) => Outline::Rectangle {
-                a: point(&a),
-                b: point(&b),
-                half_width: on_grid(&h),
+            Rational::Rectangle(line) => Outline::Rectangle {
+                a: point(&line.0),
+                b: point(&line.1),
+                half_width: on_grid(&line.2),
             },
         };
         shapes.push((i, outline));
@@ -156,7 +157,7 @@ pub fn grid_scene(scene: &Scene, case: &Conservative) -> GridScene {
 /// A shape before the grid is known.
 enum Rational {
     Hull(Vec<[RBig; 2]>),
-    Rectangle([RBig; 2], [RBig; 2], RBig),
+    Rectangle(Box<([RBig; 2], [RBig; 2], RBig)>),
 }
 
 impl Outline {
