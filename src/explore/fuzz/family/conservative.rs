@@ -10,10 +10,9 @@
 //! far outside the canvas, and neighbours sharing an edge. Coordinates are
 //! dyadic when the scene is unsnapped, so that fixed point holds them.
 //! One scene in three is of points and lines instead
-//! (`conservative_lines.rs`, SPEC.md §19.8).
+//! (`conservative_lines.rs`, SPEC.md §19.8; `generate.rs` picks).
 
 use super::common::{any_bits, any_rules, scene_of, Values};
-use super::conservative_lines::points_and_lines_scene;
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS};
 use crate::scene::{
@@ -22,15 +21,6 @@ use crate::scene::{
 };
 
 pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
-    if rng.chance(1, 3) {
-        let mut scene = points_and_lines_scene(rng);
-        scene.effects.conservative = Some(Conservative {
-            points_and_lines: true,
-            degenerate_lines: rng.chance(1, 2),
-            ..any_conservative(rng)
-        });
-        return scene;
-    }
     let side = |rng: &mut Rng| *rng.pick(&[3, 4, 6, 8, 12, 16]);
     let canvas = Canvas {
         width: side(rng),
@@ -78,7 +68,7 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
 
 /// A mode, an uncertainty, the flag asked for or not, degenerate
 /// triangles drawn or culled.
-fn any_conservative(rng: &mut Rng) -> Conservative {
+pub(super) fn any_conservative(rng: &mut Rng) -> Conservative {
     let uncertainty = match rng.below(12) {
         0..=3 => Number::ZERO,
         4 => Number::ratio(1, 512),

@@ -9,16 +9,16 @@
 //! borders, and thin and wide widths.
 
 use super::common::{any_bits, any_rules, scene_of, Values};
-use super::conservative::{grid, point, small, whole};
+use super::conservative::{any_conservative, grid, point, small, whole};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::rules::limits::MAX_SUBPIXEL_BITS;
 use crate::scene::{
-    Canvas, Interpolation, LastPixel, Line, LineParameter, LineRule, Number, Point, Primitive,
-    Scene, Triangle, Vertex,
+    Canvas, Conservative, Interpolation, LastPixel, Line, LineParameter, LineRule, Number, Point,
+    Primitive, Scene, Triangle, Vertex,
 };
 
-/// A conservative scene of points and lines, its `effects.conservative`
-/// left for the caller.
+/// A conservative scene of points and lines: any mode, uncertainty and
+/// flag, `points_and_lines` true, degenerate lines drawn or culled.
 pub(super) fn points_and_lines_scene(rng: &mut Rng) -> Scene {
     let side = |rng: &mut Rng| *rng.pick(&[3, 4, 6, 8, 12, 16]);
     let canvas = Canvas {
@@ -59,7 +59,13 @@ pub(super) fn points_and_lines_scene(rng: &mut Rng) -> Scene {
         depth: false,
         w: false,
     };
-    scene_of(canvas, rules, primitives, &values)
+    let mut scene = scene_of(canvas, rules, primitives, &values);
+    scene.effects.conservative = Some(Conservative {
+        points_and_lines: true,
+        degenerate_lines: rng.chance(1, 2),
+        ..any_conservative(rng)
+    });
+    scene
 }
 
 /// A `rectangle` or `parallelogram` line of one of the shapes above.
