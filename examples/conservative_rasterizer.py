@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """An exact conservative rasterizer speaking protocol v2 (SPEC.md §12.7,
-§12.11), in plain Python: triangles only, each drawn by overestimation or
+§12.11), in plain Python: triangles, points and `rectangle` and
+`parallelogram` lines (SPEC.md §19.8), each drawn by overestimation or
 underestimation as the request's `rules.conservative` asks, in exact
 rational arithmetic (Python's integers and fractions; no float decides a
 pixel).
@@ -21,6 +22,13 @@ uncertainty.
 
 Underestimation: pixel (x, y) is drawn when its closed square lies inside
 the closed triangle (its four corners do): the most it may draw.
+
+Points and lines (SPEC.md §19.8) are their closed shapes: a point's
+square and a parallelogram line's quad are convex polygons, tested as a
+triangle is; a rectangle line's corners are irrational, so its tests
+compare squares (the reach h·|d| of its half width h along its normal,
+h·|d_y|/|d| past its ends on x). A line of zero length after snapping is
+culled, or drawn as its point when the case's `degenerate_lines` is true.
 
 The fully-covered flag (`rules.conservative.fully_covered`): a fragment
 [x, y, f] with f = 1 when the square lies inside the triangle, else 0.
@@ -84,8 +92,8 @@ def axes(pts):
     """The separating axes: the pixel axes and each edge's normal (a zero
     edge has none)."""
     out = [(1, 0), (0, 1)]
-    for i in range(3):
-        (x0, y0), (x1, y1) = pts[i], pts[(i + 1) % 3]
+    for i in range(len(pts)):
+        (x0, y0), (x1, y1) = pts[i], pts[(i + 1) % len(pts)]
         n = (y0 - y1, x1 - x0)
         if n != (0, 0):
             out.append(n)
@@ -108,16 +116,20 @@ def meets(pts, normals, x, y, grow):
     return True
 
 
+def polygon_area(pts):
+    return sum(twice_area(pts[0], pts[i], pts[i + 1]) for i in range(1, len(pts) - 1))
+
+
 def inside(pts, x, y):
     """Whether the closed square of pixel (x, y) lies inside the closed
-    triangle (not degenerate)."""
-    area = twice_area(*pts)
+    convex polygon (a triangle, a point's square, a parallelogram)."""
+    area = polygon_area(pts) if len(pts) >= 3 else 0
     if area == 0:
         return False
     sign = 1 if area > 0 else -1
     for cx, cy in [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)]:
-        for i in range(3):
-            a, b = pts[i], pts[(i + 1) % 3]
+        for i in range(len(pts)):
+            a, b = pts[i], pts[(i + 1) % len(pts)]
             if sign * twice_area(a, b, (cx, cy)) < 0:
                 return False
     return True
@@ -128,21 +140,89 @@ def culled(pts, cull):
     return (cull == "cw" and area > 0) or (cull == "ccw" and area < 0)
 
 
-def draw(pts, width, height, mode, flagged):
-    """The fragments of one triangle: [x, y] (or [x, y, f])."""
-    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+class Rectangle:
+    """A rectangle line from a to b (a != b), half width h: the points p
+    with 0 <= (p - a).d <= |d|^2 and |(p - a) x d| <= h |d|."""
+
+    def __init__(self, a, b, h):
+        self.a, self.b, self.h = a, b, h
+        self.d = (b[0] - a[0], b[1] - a[1])
+        self.l2 = self.d[0] ** 2 + self.d[1] ** 2
+
+    def box(self):
+        xs, ys = [self.a[0], self.b[0]], [self.a[1], self.b[1]]
+        return min(xs) - self.h, min(ys) - self.h, max(xs) + self.h, max(ys) + self.h
+
+    def meets(self, x, y, grow):
+        (a, d, h, l2) = (self.a, self.d, self.h, self.l2)
+        lo = (x - grow, y - grow)
+        hi = (x + 1 + grow, y + 1 + grow)
+        corners = [(lo[0], lo[1]), (hi[0], lo[1]), (lo[0], hi[1]), (hi[0], hi[1])]
+
+        def apart(gap, reach2, scale2):
+            # gap * sqrt(scale2) > sqrt(reach2), or >= with --open
+            if gap < 0 or (gap == 0 and not OPEN):
+                return False
+            if gap == 0:
+                return reach2 == 0
+            return gap * gap * scale2 >= reach2 if OPEN else gap * gap * scale2 > reach2
+
+        along = [(c[0] - a[0]) * d[0] + (c[1] - a[1]) * d[1] for c in corners]
+        if apart(-max(along), 0, 1) or apart(min(along) - l2, 0, 1):
+            return False
+        across = [(c[1] - a[1]) * d[0] - (c[0] - a[0]) * d[1] for c in corners]
+        if apart(min(across), h * h * l2, 1) or apart(-max(across), h * h * l2, 1):
+            return False
+        for k in range(2):
+            ends = sorted([self.a[k], self.b[k]])
+            reach2 = h * h * d[1 - k] ** 2
+            if apart(lo[k] - ends[1], reach2, l2) or apart(ends[0] - hi[k], reach2, l2):
+                return False
+        return True
+
+    def inside(self, x, y):
+        (a, d, h, l2) = (self.a, self.d, self.h, self.l2)
+        for cx, cy in [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)]:
+            along = (cx - a[0]) * d[0] + (cy - a[1]) * d[1]
+            across = (cy - a[1]) * d[0] - (cx - a[0]) * d[1]
+            if along < 0 or along > l2 or across * across > h * h * l2:
+                return False
+        return True
+
+
+class Polygon:
+    """A closed convex polygon: a triangle (or the segment or point a
+    degenerate one is), a point's square, a parallelogram line."""
+
+    def __init__(self, pts):
+        self.pts = pts
+        self.normals = axes(pts)
+
+    def box(self):
+        xs, ys = [p[0] for p in self.pts], [p[1] for p in self.pts]
+        return min(xs), min(ys), max(xs), max(ys)
+
+    def meets(self, x, y, grow):
+        return meets(self.pts, self.normals, x, y, grow)
+
+    def inside(self, x, y):
+        return inside(self.pts, x, y)
+
+
+def draw(shape, width, height, mode, flagged):
+    """The fragments of one shape: [x, y] (or [x, y, f])."""
+    bx0, by0, bx1, by1 = shape.box()
     reach = GROW + 1
-    x0, x1 = max(0, int(min(xs) - reach)), min(width - 1, int(max(xs) + reach))
-    y0, y1 = max(0, int(min(ys) - reach)), min(height - 1, int(max(ys) + reach))
-    normals = axes(pts)
+    x0, x1 = max(0, int(bx0 - reach)), min(width - 1, int(bx1 + reach))
+    y0, y1 = max(0, int(by0 - reach)), min(height - 1, int(by1 + reach))
     out = []
     for y in range(y0, y1 + 1):
         for x in range(x0, x1 + 1):
-            full = inside(pts, x, y)
+            full = shape.inside(x, y)
             if mode == "underestimate":
                 hit = full
             else:
-                hit = meets(pts, normals, x, y, GROW)
+                hit = shape.meets(x, y, GROW)
             if not hit:
                 continue
             if flagged:
@@ -150,6 +230,28 @@ def draw(pts, width, height, mode, flagged):
             else:
                 out.append([x, y])
     return out
+
+
+def point_or_line(p, bits, conservative):
+    """A point's square or a line's shape; None for a line culled."""
+    if "point" in p:
+        (x, y), = vertices([p["point"]], bits)
+        h = Fraction(p["exact"]["size"]) / 2
+        return Polygon([(x - h, y - h), (x + h, y - h), (x + h, y + h), (x - h, y + h)])
+    a, b = vertices(p["line"], bits)
+    if a == b:
+        return Polygon([a]) if conservative.get("degenerate_lines") else None
+    h = Fraction(p["exact"]["width"]) / 2
+    if p["rule"] == "rectangle":
+        return Rectangle(a, b, h)
+    minor = 1 if abs(b[0] - a[0]) >= abs(b[1] - a[1]) else 0
+
+    def shift(q, by):
+        q = list(q)
+        q[minor] += by
+        return tuple(q)
+
+    return Polygon([shift(a, -h), shift(b, -h), shift(b, h), shift(a, h)])
 
 
 def answer(req):
@@ -165,8 +267,14 @@ def answer(req):
     width, height = req["canvas"]["width"], req["canvas"]["height"]
     prims = []
     for p in req["primitives"]:
+        if ("point" in p or "line" in p) and conservative is not None:
+            if p.get("rule", "rectangle") not in ("rectangle", "parallelogram"):
+                return {"unsupported": "this example draws rectangle and parallelogram lines only"}
+            shape = point_or_line(p, rules["subpixel_bits"], conservative)
+            prims.append({"fragments": [] if shape is None else draw(shape, width, height, mode, flagged)})
+            continue
         if "triangle" not in p:
-            return {"unsupported": "this example draws triangles only"}
+            return {"unsupported": "this example draws triangles, points and lines only"}
         pts = vertices(p["triangle"], rules["subpixel_bits"])
         degenerate = twice_area(*pts) == 0
         if degenerate and ALWAYS is None and not conservative.get("degenerate_triangles"):
@@ -175,7 +283,7 @@ def answer(req):
         if culled(pts, rules.get("cull", "none")):
             prims.append({"fragments": []})
             continue
-        prims.append({"fragments": draw(pts, width, height, mode, flagged)})
+        prims.append({"fragments": draw(Polygon(pts), width, height, mode, flagged)})
     return {"primitives": prims}
 
 
@@ -183,10 +291,13 @@ def main():
     hello = {"protocol": 2, "name": "conservative-example", "version": "1"}
     caps = {"primitives": ["triangles"], "coverage_only": True}
     if ALWAYS is None:
+        caps["primitives"] = ["triangles", "lines", "points"]
+        caps["line_rules"] = ["rectangle", "parallelogram"]
         caps["conservative"] = {
             "modes": ["overestimate", "underestimate"],
             "uncertainty": str(UNCERTAINTY),
             "fully_covered": True,
+            "points_and_lines": True,
         }
     hello["capabilities"] = caps
     print(json.dumps({"hello": hello}), flush=True)

@@ -12,7 +12,8 @@
 use crate::adapters::external;
 use crate::production::foils::{
     Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
-    ConservativeCentreFlag, ConservativeDepthUnclamped, ConservativeOvergrow, DdaF32, DdaF64,
+    ConservativeCentreFlag, ConservativeDepthUnclamped, ConservativeOpenEnds, ConservativeOvergrow,
+    DdaF32, DdaF64,
     EmptyAntialias, FloatF32, FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies,
     Truncate,
 };
@@ -218,6 +219,9 @@ pub const ENTRIES: &[Entry] = &[
     row("foil-conservative-depth-unclamped", Kind::Foil, false,
         "conservative rasterization writing an extrapolated depth past [0, 1] without the format's clamp",
         || boxed(ConservativeDepthUnclamped)),
+    row("foil-conservative-open-ends", Kind::Foil, false,
+        "conservative lines drawn with open end caps (misses pixels touching a line's end only)",
+        || boxed(ConservativeOpenEnds)),
     row("polygon-convex", Kind::Production, false,
         "convex-polygon span fill, two monotone chains per sample row",
         || method("polygon-convex")),
@@ -529,7 +533,7 @@ mod tests {
             foil-truncate foil-truncate-undeclared foil-coarse-edges foil-outline-over-fill \
             foil-empty-antialias foil-alpha256 foil-alpha256-as-unorm foil-alpha255 \
             foil-conservative-overgrow foil-conservative-centre-box foil-conservative-centre-flag \
-            foil-conservative-depth-unclamped";
+            foil-conservative-depth-unclamped foil-conservative-open-ends";
         let rows: Vec<&str> = ENTRIES.iter().map(|e| e.name).collect();
         let mut before: Vec<&str> = before.split_whitespace().collect();
         assert_eq!(before.len(), rows.len());

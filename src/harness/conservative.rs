@@ -22,7 +22,8 @@ pub fn refusal(scene: &Scene, candidate: &dyn Rasterizer) -> Option<String> {
         ),
         Some(support) => support
             .refuses(case)
-            .or_else(|| support.refuses_depth(scene.has_depth)),
+            .or_else(|| support.refuses_depth(scene.has_depth))
+            .or_else(|| scene.conservative_lines_refused(&support.restate(case))),
     }
 }
 

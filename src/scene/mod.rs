@@ -18,6 +18,7 @@ mod names;
 pub mod case;
 pub mod clip;
 pub mod conservative;
+mod conservative_lines;
 pub mod depth;
 pub mod expect;
 pub mod model;

@@ -117,17 +117,13 @@ impl Scene {
                 "conservative rasterization with {what} is not judged in this version (SPEC.md §19.7)"
             ));
         }
+        if self.has_depth && self.has_points_or_lines() {
+            return Some("the depth of conservatively drawn points and lines is not judged in this version (SPEC.md §19.7)".to_owned());
+        }
         if self.attribute_count > 0 {
             return Some("attributes at conservatively drawn pixels are not judged in this version (SPEC.md §19.7)".to_owned());
         }
-        if self
-            .primitives
-            .iter()
-            .any(|p| matches!(p, Primitive::Line(_) | Primitive::Point(_)))
-        {
-            return Some("conservative scenes with lines or points are not judged in this version (SPEC.md §19.7)".to_owned());
-        }
-        None
+        self.conservative_lines_unjudged()
     }
 
     /// Whether any primitive moves: only then is there a time loop.

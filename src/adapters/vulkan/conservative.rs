@@ -166,6 +166,13 @@ pub(super) fn ask(
             "conservative underestimate: the device's {EXTENSION} has no primitiveUnderestimation"
         ));
     }
+    if scene.has_points_or_lines() && !offers.points_and_lines {
+        return Err(format!(
+            "conservative points and lines: the device's {EXTENSION} has no \
+             conservativePointAndLineRasterization, and a point or line pipeline must then have \
+             conservative rasterization disabled (VUID-VkGraphicsPipelineCreateInfo-conservativePointAndLineRasterization-08892)"
+        ));
+    }
     if case.fully_covered {
         return Err(if offers.fully_covered {
             "the fully-covered flag: the device offers FullyCoveredEXT, but this adapter's \
@@ -338,5 +345,31 @@ mod tests {
             &Limits::default(),
         )
         .unwrap()
+    }
+
+    /// A device without `conservativePointAndLineRasterization` refuses a
+    /// conservative case with a line (SPEC.md §19.8); one with it asks.
+    #[test]
+    fn points_and_lines_need_the_device_property() {
+        let line = parse_case(
+            &json!({
+                "name": "c", "canvas": {"width": 4, "height": 4},
+                "effects": {"conservative": {"mode": "overestimate", "points_and_lines": true}},
+                "primitives": [{"line": [[0.5, 0.5], [3.5, 2.5]], "rule": "rectangle", "width": 1}],
+            })
+            .to_string(),
+            "c",
+            &Limits::default(),
+        )
+        .unwrap();
+        let mut o = h100();
+        let why = ask(&line, Some(&o)).unwrap_err();
+        assert!(
+            why.contains("conservativePointAndLineRasterization"),
+            "{why}"
+        );
+        assert_eq!(support(Some(&o)).points_and_lines, Some(false));
+        o.points_and_lines = true;
+        assert!(ask(&line, Some(&o)).unwrap().is_some());
     }
 }

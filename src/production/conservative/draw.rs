@@ -8,11 +8,16 @@
 //! flag it is sure of), and the last triangle to draw a pixel leaves its
 //! flag there.
 //!
+//! Points and lines (SPEC.md §19.8) are their own shapes (`lines.rs`),
+//! tested pixel by pixel the same way; a line of zero length after placing
+//! is culled, or, with `degenerate_lines`, drawn as the point it is.
+//!
 //! Depth, where the scene has it, is the triangle's plane at the pixel's
 //! centre (`depth.rs`, SPEC.md §19.9).
 //!
-//! What it does not do: multisampling, motion, clip space, polygons, lines,
-//! points and attributes under conservative rasterization (the
+//! What it does not do: multisampling, motion, clip space, polygons,
+//! attributes, and the depth of points and lines under conservative
+//! rasterization (the
 //! scene says why, `Scene::conservative_unjudged`); coordinates that are
 //! not snapped whose common denominator exceeds 2^24.
 //!
@@ -20,14 +25,17 @@
 //! fixed point); unsnapped ones that are not dyadic are held exactly in
 //! units of a half of their common denominator's reciprocal instead.
 
+use dashu_int::IBig;
+
 use super::depth::DepthPlane;
 use super::growth::Growth;
+use super::lines::{Frac, LineShape};
 use super::triangle::{Setup, Shape};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::scene_format::{format_for, place};
 use crate::rasterizer::RasterError;
-use crate::scene::{ConservativeMode, ConservativeSupport, Number, Primitive, Scene};
+use crate::scene::{ConservativeMode, ConservativeSupport, LineRule, Number, Primitive, Scene};
 
 /// The largest common denominator of unsnapped coordinates that are not
 /// dyadic this path holds: coordinates below 2^15 px times twice it stay
@@ -41,7 +49,6 @@ pub fn support() -> ConservativeSupport {
         overestimate: true,
         underestimate: true,
         fully_covered: true,
-        depth: true,
         ..ConservativeSupport::default()
     }
 }
@@ -65,39 +72,75 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         .fully_covered
         .then(|| vec![false; frame.coverage.len()]);
     for (index, primitive) in scene.primitives.iter().enumerate() {
-        let Primitive::Triangle(_) = primitive else {
-            return Err(RasterError::Unsupported(
-                "production draws triangles only under conservative rasterization".to_owned(),
-            ));
+        let v = &placed.vertices[index];
+        let mut mark = |x: i64, y: i64, full: bool, plane: Option<&DepthPlane>| {
+            let i = frame.index(x as u32, y as u32);
+            frame.hit(i, index);
+            if let (Some(depth), Some(plane)) = (frame.depth.as_mut(), plane) {
+                depth[i] = plane.at(x, y);
+            }
+            if let Some(flags) = &mut flags {
+                flags[i] = full;
+            }
         };
-        let (setup, orientation) = Setup::new(placed.vertices[index], placed.one);
-        if setup.shape != Shape::Area && !case.degenerate_triangles {
-            continue;
-        }
-        if scene.rules.cull.discards(orientation) {
-            continue;
-        }
-        let plane = scene
-            .has_depth
-            .then(|| DepthPlane::new(scene, index, placed.vertices[index], placed.one))
-            .flatten();
-        for y in setup.range(1, h) {
-            for x in setup.range(0, w) {
-                let drawn = match case.mode {
-                    ConservativeMode::Overestimate => setup.meets(x, y, &half, &margin),
-                    ConservativeMode::Underestimate => setup.holds(x, y, &half),
-                };
-                if !drawn {
+        match primitive {
+            Primitive::Triangle(_) => {
+                let (setup, orientation) = Setup::new([v[0], v[1], v[2]], placed.one);
+                if setup.shape != Shape::Area && !case.degenerate_triangles {
                     continue;
                 }
-                let i = frame.index(x as u32, y as u32);
-                frame.hit(i, index);
-                if let (Some(depth), Some(plane)) = (frame.depth.as_mut(), &plane) {
-                    depth[i] = plane.at(x, y);
+                if scene.rules.cull.discards(orientation) {
+                    continue;
                 }
-                if let Some(flags) = &mut flags {
-                    flags[i] = setup.holds(x, y, &half);
+                let triangle = [v[0], v[1], v[2]];
+                let plane = scene
+                    .has_depth
+                    .then(|| DepthPlane::new(scene, index, triangle, placed.one))
+                    .flatten();
+                for y in setup.range(1, h) {
+                    for x in setup.range(0, w) {
+                        let drawn = match case.mode {
+                            ConservativeMode::Overestimate => setup.meets(x, y, &half, &margin),
+                            ConservativeMode::Underestimate => setup.holds(x, y, &half),
+                        };
+                        if drawn {
+                            mark(x, y, setup.holds(x, y, &half), plane.as_ref());
+                        }
+                    }
                 }
+            }
+            Primitive::Line(_) | Primitive::Point(_) => {
+                let Some(shape) = line_shape(primitive, v, placed.one, case.degenerate_lines)
+                else {
+                    continue;
+                };
+                let (num, den) = half.fraction();
+                let bounds = shape.bounds();
+                let range = |axis: usize, size: u32| {
+                    let first = bounds[axis].div_euclid(placed.one) - 2;
+                    let last = bounds[axis + 2].div_euclid(placed.one) + 2;
+                    let clip = |v: i128| v.clamp(0, i128::from(size)) as i64;
+                    clip(first)..clip(last)
+                };
+                let centre = |p: i64| i128::from(p) * placed.one + placed.one / 2;
+                for y in range(1, h) {
+                    for x in range(0, w) {
+                        let c = [centre(x), centre(y)];
+                        let full = shape.holds(c, num, den);
+                        let drawn = match case.mode {
+                            ConservativeMode::Overestimate => shape.meets(c, num, den),
+                            ConservativeMode::Underestimate => full,
+                        };
+                        if drawn {
+                            mark(x, y, full, None);
+                        }
+                    }
+                }
+            }
+            Primitive::Polygon(_) => {
+                return Err(RasterError::Unsupported(
+                    "production draws no polygons under conservative rasterization".to_owned(),
+                ))
             }
         }
     }
@@ -107,29 +150,65 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     Ok(frame)
 }
 
-/// A scene's triangles in integer units of 1/`one` px.
+/// A scene's primitives in integer units of 1/`one` px.
 struct PlacedScene {
     one: i128,
-    /// Per primitive, its three vertices (nothing for others: refused).
-    vertices: Vec<[[i128; 2]; 3]>,
+    /// Per primitive, its vertices.
+    vertices: Vec<Vec<[i128; 2]>>,
+}
+
+/// A point's square or a line's shape in units (SPEC.md §19.8); `None`
+/// for a line of zero length after placing when `degenerate_lines` is
+/// false (culled). A degenerate line drawn is its point.
+fn line_shape(
+    primitive: &Primitive,
+    v: &[[i128; 2]],
+    one: i128,
+    degenerate_lines: bool,
+) -> Option<LineShape> {
+    // n·one/2 as an exact fraction of units.
+    let half = |n: &Number| Frac {
+        n: n.numerator() * IBig::from(one),
+        d: IBig::from(n.denominator().clone()) * IBig::from(2u8),
+    };
+    match primitive {
+        Primitive::Point(p) => Some(LineShape::Square {
+            c: v[0],
+            h: half(&p.size),
+        }),
+        Primitive::Line(l) => {
+            let (a, b) = (v[0], v[1]);
+            if a == b {
+                return degenerate_lines.then(|| LineShape::Square {
+                    c: a,
+                    h: half(&Number::ZERO),
+                });
+            }
+            let h = half(&l.width);
+            Some(if l.rule == LineRule::Rectangle {
+                LineShape::Rectangle { a, b, h }
+            } else {
+                let k = usize::from((b[0] - a[0]).abs() < (b[1] - a[1]).abs());
+                LineShape::Band { a, b, k, h }
+            })
+        }
+        _ => None,
+    }
 }
 
 /// Every triangle's vertices in integers: production's fixed point where
 /// it holds them, else units of 1/(2D) px for D the coordinates' common
 /// denominator.
 fn placed(scene: &Scene) -> Result<PlacedScene, RasterError> {
-    let triangles = || {
-        scene.primitives.iter().filter_map(|p| match p {
-            Primitive::Triangle(t) => Some(t),
-            _ => None,
-        })
-    };
     if let Ok(format) = format_for(scene, None) {
-        let vertices = triangles()
-            .map(|t| {
-                t.vertices
-                    .each_ref()
+        let vertices = scene
+            .primitives
+            .iter()
+            .map(|p| {
+                p.vertices()
+                    .iter()
                     .map(|v| [&v.x, &v.y].map(|n| i128::from(place(scene, format, n).0)))
+                    .collect()
             })
             .collect();
         return Ok(PlacedScene {
@@ -158,8 +237,15 @@ fn placed(scene: &Scene) -> Result<PlacedScene, RasterError> {
         let q = i128::try_from(n.denominator()).expect("q divides d");
         p * (one / q)
     };
-    let vertices = triangles()
-        .map(|t| t.vertices.each_ref().map(|v| [units(&v.x), units(&v.y)]))
+    let vertices = scene
+        .primitives
+        .iter()
+        .map(|p| {
+            p.vertices()
+                .iter()
+                .map(|v| [units(&v.x), units(&v.y)])
+                .collect()
+        })
         .collect();
     Ok(PlacedScene { one, vertices })
 }

@@ -47,6 +47,12 @@ impl Growth {
         Growth { num, den, small }
     }
 
+    /// s as num / den, den > 0: what the line and point tests compare
+    /// with (`lines.rs`).
+    pub(crate) fn fraction(&self) -> (&IBig, &IBig) {
+        (&self.num, &self.den)
+    }
+
     /// value against k·s exactly (k ≥ 0, s this growth): value·den
     /// against k·num. In i128 when both products fit (always, for the
     /// uncertainties a case can state with a denominator below 2^40:

@@ -7,13 +7,15 @@
 //!
 //! `growth.rs` (the grown square's half side as an exact fraction, and the
 //! one comparison made with it) → `triangle.rs` (one triangle's edges and
-//! box, and the per-pixel tests), `depth.rs` (the depth a drawn pixel
-//! gets: the plane at its centre) → `draw.rs` (a scene to a frame, and what
-//! production declares it draws).
+//! box, and the per-pixel tests), `lines.rs` (a point's square and a
+//! line's band or rectangle, and theirs), `depth.rs` (the depth a drawn
+//! pixel gets: the plane at its centre) → `draw.rs` (a scene to a frame,
+//! and what production declares it draws).
 
 mod depth;
 mod draw;
 mod growth;
+mod lines;
 mod triangle;
 
 pub use draw::{rasterize, support};

@@ -20,6 +20,7 @@
 //! covered; `conservative_parts.rs` is what they share.
 //! `conservative_depth_unclamped.rs` writes an extrapolated depth past
 //! [0, 1] unclamped (SPEC.md §19.9).
+//! `conservative_open_ends.rs` draws conservative lines with open end caps.
 
 mod declare;
 
@@ -32,6 +33,7 @@ pub mod coarse_snap;
 pub mod conservative_centre_box;
 pub mod conservative_centre_flag;
 pub mod conservative_depth_unclamped;
+pub mod conservative_open_ends;
 pub mod conservative_overgrow;
 mod conservative_parts;
 pub mod dda;
@@ -52,6 +54,7 @@ pub use coarse_snap::CoarseSnap;
 pub use conservative_centre_box::ConservativeCentreBox;
 pub use conservative_centre_flag::ConservativeCentreFlag;
 pub use conservative_depth_unclamped::ConservativeDepthUnclamped;
+pub use conservative_open_ends::ConservativeOpenEnds;
 pub use conservative_overgrow::ConservativeOvergrow;
 pub use dda::{DdaF32, DdaF64};
 pub use empty_antialias::EmptyAntialias;

@@ -3,9 +3,10 @@
 //!
 //! Each vertex is snapped, then every coordinate, the uncertainty u and
 //! the pixel boundaries are put on one integer grid (the least common
-//! multiple of their denominators), so each test of `geometry.rs` is the
-//! sign of an integer. Per primitive, pixel (x, y)'s closed square S and
-//! S grown by u on every side, S_u, decide:
+//! multiple of their denominators), and each primitive becomes its closed
+//! shape T there (`outline.rs`), so each test is the sign of an integer.
+//! Per primitive, pixel (x, y)'s closed square S and S grown by u on every
+//! side, S_u, decide:
 //!
 //! - overestimate: required iff S meets T, allowed iff S_u meets T;
 //! - underestimate: required iff S_u ⊆ T, allowed iff S ⊆ T;
@@ -16,16 +17,15 @@
 //! the flag of its last writer, which may be any primitive that may draw
 //! it after the last one that must.
 
-use dashu_int::{IBig, UBig};
-use dashu_ratio::RBig;
+use dashu_int::IBig;
 
 use super::classes::{ConservativeClasses, PixelClass};
-use super::geometry::{inside, meets, orient, GridPoint, Rect};
+use super::geometry::Rect;
+use super::outline::{grid_scene, GridScene, Outline};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
-use crate::reference::exact::snap;
-use crate::scene::{Conservative, ConservativeMode, Number, Primitive, Scene};
+use crate::scene::{Conservative, ConservativeMode, Scene};
 
 /// Each pixel's class for a conservative scene (SPEC.md §19), or why this
 /// version does not judge it.
@@ -43,50 +43,21 @@ pub fn classify(scene: &Scene) -> Result<ConservativeClasses, RasterError> {
 
 /// [`classify`] under `case`, a conservative state of the caller's (a
 /// candidate's declared uncertainty, SPEC.md §19.6), whatever the scene
-/// states. The scene holds triangles only (`Scene::conservative_unjudged`).
+/// states. The scene holds triangles, points and area lines only
+/// (`Scene::conservative_unjudged`).
 pub fn classify_under(scene: &Scene, case: &Conservative) -> ConservativeClasses {
     let (width, height) = (scene.canvas.width, scene.canvas.height);
     let mut out = ConservativeClasses::empty(width, height, case.fully_covered);
-    let triangles: Vec<(usize, [[RBig; 2]; 3])> = scene
-        .primitives
-        .iter()
-        .enumerate()
-        .filter_map(|(i, p)| match p {
-            Primitive::Triangle(t) => Some((
-                i,
-                [0, 1, 2].map(|k| {
-                    let v = &t.vertices[k];
-                    [&v.x, &v.y].map(|c| snapped(c, scene.rules.subpixel_bits))
-                }),
-            )),
-            _ => None,
-        })
-        .collect();
-    let scale = common_scale(
-        triangles.iter().flat_map(|(_, t)| t.iter().flatten()),
-        case.uncertainty.as_rbig(),
-    );
-    let on_grid =
-        |q: &RBig| -> IBig { q.numerator() * (&scale / IBig::from(q.denominator().clone())) };
-    let u = on_grid(case.uncertainty.as_rbig());
+    let GridScene { scale, u, shapes } = grid_scene(scene, case);
     // The fold of each pixel's possible last writers' flag classes.
     let mut flag: Vec<Option<PixelClass>> = vec![None; out.drawn.len()];
-    for (index, triangle) in &triangles {
-        let t: [GridPoint; 3] = triangle.clone().map(|p| p.map(|c| on_grid(&c)));
-        let area = orient(&t[0], &t[1], &t[2]);
-        let degenerate = area == IBig::ZERO;
-        if degenerate && !case.degenerate_triangles {
-            continue;
-        }
-        if !degenerate && scene.rules.cull.discards(area.cmp(&IBig::ZERO)) {
-            continue;
-        }
-        let Some((xs, ys)) = pixel_range(&t, &u, &scale, width, height) else {
+    for (index, shape) in &shapes {
+        let Some((xs, ys)) = pixel_range(&shape.bounds(), &u, &scale, width, height) else {
             continue;
         };
         for y in ys {
             for x in xs.clone() {
-                let (drawn, full) = pixel_class(case.mode, &t, x, y, &scale, &u);
+                let (drawn, full) = pixel_class(case.mode, shape, x, y, &scale, &u);
                 if drawn == PixelClass::Forbidden {
                     continue;
                 }
@@ -111,11 +82,11 @@ pub fn classify_under(scene: &Scene, case: &Conservative) -> ConservativeClasses
     out
 }
 
-/// One triangle's classes at pixel (x, y): whether it draws it, and its
+/// One primitive's classes at pixel (x, y): whether it draws it, and its
 /// fragment's fully-covered flag there.
 pub(super) fn pixel_class(
     mode: ConservativeMode,
-    t: &[GridPoint; 3],
+    t: &Outline,
     x: u32,
     y: u32,
     scale: &IBig,
@@ -135,18 +106,18 @@ pub(super) fn pixel_class(
         x1: &square.x1 + u,
         y1: &square.y1 + u,
     };
-    let full = if inside(&grown, t) {
+    let full = if t.holds(&grown) {
         PixelClass::Required
-    } else if inside(&square, t) {
+    } else if t.holds(&square) {
         PixelClass::Allowed
     } else {
         PixelClass::Forbidden
     };
     let drawn = match mode {
         ConservativeMode::Overestimate => {
-            if meets(&square, t) {
+            if t.meets(&square) {
                 PixelClass::Required
-            } else if meets(&grown, t) {
+            } else if t.meets(&grown) {
                 PixelClass::Allowed
             } else {
                 PixelClass::Forbidden
@@ -157,18 +128,19 @@ pub(super) fn pixel_class(
     (drawn, full)
 }
 
-/// The pixels whose grown square may meet the triangle: its bounding box
-/// grown by u and one pixel, within the canvas; `None` when that is empty.
+/// The pixels whose grown square may meet a shape of box `bounds`: the
+/// box grown by u and one pixel, within the canvas; `None` when that is
+/// empty.
 pub(super) fn pixel_range(
-    t: &[GridPoint; 3],
+    bounds: &[IBig; 4],
     u: &IBig,
     scale: &IBig,
     width: u32,
     height: u32,
 ) -> Option<(std::ops::Range<u32>, std::ops::Range<u32>)> {
     let axis = |k: usize, size: u32| -> Option<std::ops::Range<u32>> {
-        let lo = t.iter().map(|p| &p[k]).min().expect("three vertices") - u;
-        let hi = t.iter().map(|p| &p[k]).max().expect("three vertices") + u;
+        let lo = &bounds[k] - u;
+        let hi = &bounds[k + 2] + u;
         let first = floor_div(&lo, scale) - IBig::ONE;
         let last = floor_div(&hi, scale) + IBig::ONE;
         let first = first.max(IBig::ZERO);
@@ -185,36 +157,6 @@ pub(super) fn pixel_range(
 
 fn floor_div(a: &IBig, b: &IBig) -> IBig {
     crate::reference::exact::floor_div(a, b)
-}
-
-/// A coordinate where the rasterizer puts it: snapped to 2^-bits, or as
-/// given.
-pub(super) fn snapped(c: &Number, bits: Option<u32>) -> RBig {
-    match bits {
-        Some(bits) => snap(c, bits),
-        None => c.as_rbig().clone(),
-    }
-}
-
-/// The least common multiple of every denominator (and 1): the grid on
-/// which every coordinate, u and every pixel boundary is an integer.
-pub(super) fn common_scale<'a>(coordinates: impl Iterator<Item = &'a RBig>, u: &'a RBig) -> IBig {
-    let mut scale = UBig::ONE;
-    for d in coordinates.map(RBig::denominator).chain([u.denominator()]) {
-        let g = gcd(&scale, d);
-        scale = &scale / &g * d;
-    }
-    scale.into()
-}
-
-fn gcd(a: &UBig, b: &UBig) -> UBig {
-    let (mut a, mut b) = (a.clone(), b.clone());
-    while b != UBig::ZERO {
-        let r = &a % &b;
-        a = b;
-        b = r;
-    }
-    a
 }
 
 /// The reference's own frame of a conservative scene: its required pixels

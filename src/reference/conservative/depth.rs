@@ -25,8 +25,9 @@ use dashu_int::IBig;
 use dashu_ratio::RBig;
 
 use super::classes::{ConservativeClasses, PixelClass};
-use super::classify::{common_scale, frame_of, pixel_class, pixel_range, snapped};
+use super::classify::{frame_of, pixel_class, pixel_range};
 use super::geometry::{orient, GridPoint};
+use super::outline::{common_scale, snapped, Outline};
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::rasterizer::RasterError;
@@ -93,8 +94,10 @@ pub fn depth_allowed(scene: &Scene, case: &Conservative) -> Option<ConservativeD
     let scale = common_scale(
         triangles
             .iter()
-            .flat_map(|(_, t)| t.iter().flat_map(|p| &p[..2])),
-        case.uncertainty.as_rbig(),
+            .flat_map(|(_, t)| t.iter().flat_map(|p| &p[..2]))
+            .chain([case.uncertainty.as_rbig()])
+            .map(RBig::denominator)
+            .collect(),
     );
     let on_grid =
         |q: &RBig| -> IBig { q.numerator() * (&scale / IBig::from(q.denominator().clone())) };
@@ -115,14 +118,15 @@ pub fn depth_allowed(scene: &Scene, case: &Conservative) -> Option<ConservativeD
         if !degenerate && scene.rules.cull.discards(area.cmp(&IBig::ZERO)) {
             continue;
         }
-        let Some((xs, ys)) = pixel_range(&t, &u, &scale, width, height) else {
+        let outline = Outline::Hull(t.to_vec());
+        let Some((xs, ys)) = pixel_range(&outline.bounds(), &u, &scale, width, height) else {
             continue;
         };
         let plane = Plane::of(triangle, scene.rules.provoking_vertex);
         let offset = rules.as_ref().and_then(|r| r.offset(*index));
         for y in ys {
             for x in xs.clone() {
-                let (drawn, _) = pixel_class(case.mode, &t, x, y, &scale, &u);
+                let (drawn, _) = pixel_class(case.mode, &outline, x, y, &scale, &u);
                 if drawn == PixelClass::Forbidden {
                     continue;
                 }

@@ -18,7 +18,7 @@ pub struct Rect {
 }
 
 impl Rect {
-    fn corners(&self) -> [GridPoint; 4] {
+    pub fn corners(&self) -> [GridPoint; 4] {
         [
             [self.x0.clone(), self.y0.clone()],
             [self.x1.clone(), self.y0.clone()],
@@ -51,16 +51,18 @@ fn projection<'a>(n: &GridPoint, points: impl Iterator<Item = &'a GridPoint>) ->
 }
 
 /// Whether the closed rectangle `r` meets the closed convex hull of
-/// `vertices` (a triangle, or the segment or point a degenerate one is).
+/// `vertices`, given in order round it (a triangle, or the segment or point
+/// a degenerate one is; a point's square; a parallelogram line).
 /// Two compact convex polygons are disjoint exactly when a line parallel
 /// to an edge of one separates them strictly, so the axes tried are x, y
 /// and each non-zero edge's normal: they meet iff every axis's closed
 /// projections overlap.
-pub fn meets(r: &Rect, vertices: &[GridPoint; 3]) -> bool {
+pub fn meets(r: &Rect, vertices: &[GridPoint]) -> bool {
     let corners = r.corners();
     let mut axes: Vec<GridPoint> = vec![[IBig::ONE, IBig::ZERO], [IBig::ZERO, IBig::ONE]];
-    for i in 0..3 {
-        let (a, b) = (&vertices[i], &vertices[(i + 1) % 3]);
+    let n = vertices.len();
+    for i in 0..n {
+        let (a, b) = (&vertices[i], &vertices[(i + 1) % n]);
         let d = [&b[0] - &a[0], &b[1] - &a[1]];
         if d[0] != IBig::ZERO || d[1] != IBig::ZERO {
             axes.push([d[1].clone(), -&d[0]]);
@@ -73,18 +75,26 @@ pub fn meets(r: &Rect, vertices: &[GridPoint; 3]) -> bool {
     })
 }
 
-/// Whether the closed rectangle `r` lies inside the closed triangle
-/// `vertices`: every corner on the inner side of (or on) every edge. A
-/// degenerate triangle contains no rectangle of positive size.
-pub fn inside(r: &Rect, vertices: &[GridPoint; 3]) -> bool {
-    let area = orient(&vertices[0], &vertices[1], &vertices[2]);
+/// Whether the closed rectangle `r` lies inside the closed convex polygon
+/// `vertices` (in order round it): every corner on the inner side of (or
+/// on) every edge. A polygon of zero area contains no rectangle of
+/// positive size.
+pub fn inside(r: &Rect, vertices: &[GridPoint]) -> bool {
+    let n = vertices.len();
+    if n < 3 {
+        return false;
+    }
+    // Twice the signed area, as a fan from the first vertex.
+    let area = (1..n - 1)
+        .map(|i| orient(&vertices[0], &vertices[i], &vertices[i + 1]))
+        .fold(IBig::ZERO, |sum, o| sum + o);
     if area == IBig::ZERO {
         return false;
     }
     let positive = area > IBig::ZERO;
     r.corners().iter().all(|p| {
-        (0..3).all(|i| {
-            let o = orient(&vertices[i], &vertices[(i + 1) % 3], p);
+        (0..n).all(|i| {
+            let o = orient(&vertices[i], &vertices[(i + 1) % n], p);
             if positive {
                 o >= IBig::ZERO
             } else {

@@ -10,6 +10,8 @@
 //! vertices, on the snapping grid so that they stay degenerate), vertices
 //! far outside the canvas, and neighbours sharing an edge. Coordinates are
 //! dyadic when the scene is unsnapped, so that fixed point holds them.
+//! One scene in three is of points and lines instead
+//! (`conservative_lines.rs`, SPEC.md §19.8; `generate.rs` picks).
 
 use super::common::{any_bits, any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
@@ -85,6 +87,13 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
         }
     }
     let mut scene = scene_of(canvas, rules, primitives, &values);
+    scene.effects.conservative = Some(any_conservative(rng));
+    scene
+}
+
+/// A mode, an uncertainty, the flag asked for or not, degenerate
+/// triangles drawn or culled.
+pub(super) fn any_conservative(rng: &mut Rng) -> Conservative {
     let uncertainty = match rng.below(12) {
         0..=3 => Number::ZERO,
         4 => Number::ratio(1, 512),
@@ -95,7 +104,7 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
         9 => Number::ratio(1, 3),
         _ => Number::ratio(rng.range(0, 65), 64),
     };
-    scene.effects.conservative = Some(Conservative {
+    Conservative {
         mode: *rng.pick(&[
             ConservativeMode::Overestimate,
             ConservativeMode::Underestimate,
@@ -104,8 +113,7 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
         fully_covered: rng.chance(1, 2),
         degenerate_triangles: rng.chance(1, 2),
         ..Conservative::overestimate()
-    });
-    scene
+    }
 }
 
 /// Three vertices of one of the shapes conservative tests get wrong.
@@ -200,7 +208,7 @@ fn shape(rng: &mut Rng, canvas: Canvas, snapped: bool) -> [Vertex; 3] {
 
 /// A random point near the canvas: on whole or half pixels, a fine dyadic
 /// grid, or (snapped scenes only) a free rational.
-fn point(rng: &mut Rng, canvas: Canvas, snapped: bool) -> Vertex {
+pub(super) fn point(rng: &mut Rng, canvas: Canvas, snapped: bool) -> Vertex {
     let coordinate = |rng: &mut Rng, size: u32| match rng.below(if snapped { 6 } else { 5 }) {
         0 => whole(rng, size),
         1 => grid(rng, size, 2),
@@ -218,18 +226,18 @@ fn point(rng: &mut Rng, canvas: Canvas, snapped: bool) -> Vertex {
 }
 
 /// A whole pixel coordinate within a pixel of a side of `size`.
-fn whole(rng: &mut Rng, size: u32) -> Number {
+pub(super) fn whole(rng: &mut Rng, size: u32) -> Number {
     Number::from_int(rng.range(-1, i64::from(size) + 2))
 }
 
 /// A multiple of 1/`den` within two pixels of a side of `size`.
-fn grid(rng: &mut Rng, size: u32, den: i64) -> Number {
+pub(super) fn grid(rng: &mut Rng, size: u32, den: i64) -> Number {
     Number::ratio(rng.range(-2 * den, (i64::from(size) + 2) * den), den)
 }
 
 /// A small step, positive or negative, from 2^-16 to ¼ px: dyadic, so
 /// that unsnapped scenes stay in fixed point.
-fn small(rng: &mut Rng) -> Number {
+pub(super) fn small(rng: &mut Rng) -> Number {
     let den = 1i64 << rng.range(2, 17);
     Number::ratio(rng.range(-1, 2) * rng.range(0, 5), den)
 }

@@ -5,6 +5,7 @@
 use super::antialias::antialias_scene;
 use super::clip::clip_scene;
 use super::conservative::conservative_scene;
+use super::conservative_lines::points_and_lines_scene;
 use super::lines::line_scene;
 use super::list::Family;
 use super::mesh::mesh_scene;
@@ -35,6 +36,7 @@ fn generate_with(rng: &mut Rng, family: Family) -> Scene {
             Family::Antialias => Some(antialias_scene(rng)),
             Family::Motion => Some(motion_scene(rng)),
             Family::Clip => Some(clip_scene(rng)),
+            Family::Conservative if rng.chance(1, 3) => Some(points_and_lines_scene(rng)),
             Family::Conservative => Some(conservative_scene(rng)),
         };
         if let Some(scene) = scene.filter(|s| valid(s).is_ok()) {

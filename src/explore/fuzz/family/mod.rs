@@ -10,6 +10,7 @@ mod antialias;
 mod clip;
 mod common;
 mod conservative;
+mod conservative_lines;
 mod generate;
 mod lines;
 mod list;
