@@ -18,8 +18,8 @@ use rastercheck::harness::judge::{run_candidate, Verdict};
 use rastercheck::harness::{discover, load, oracle};
 use rastercheck::plan::Plan;
 use rastercheck::production::Production;
-use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer, ScreenViewport};
-use rastercheck::scene::{ClipXy, ClipZ, Limits, Scene};
+use rastercheck::rasterizer::{Capabilities, RasterError, Rasterizer, ScreenViewport, Snapping};
+use rastercheck::scene::{parse_case, ClipXy, ClipZ, Limits, Scene};
 
 fn scene(id: &str) -> Scene {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
@@ -149,4 +149,74 @@ fn a_viewport_without_declared_clipping_restates_nothing() {
     };
     let (verdict, _) = judged("hard/far_b8_bands", &whole);
     assert!(matches!(verdict, Verdict::Pass), "{verdict:?}");
+}
+
+/// A 1 px canvas at 3 subpixel bits, found by `fuzz -r gl --seed 11
+/// --family polygons --check coverage`: the degenerate far triangle puts
+/// a vertex past every viewport, so the adapter draws through the canvas,
+/// and the first triangle's edge crosses it at y = 0.4426 (x = 0) and
+/// 0.5533 (x = 1). On the case's 1/8 grid both new vertices snap to 0.5,
+/// putting the pixel centre on the edge (owned under bottom-left); on a
+/// driver's 1/256 grid they do not, and the centre is outside.
+const COARSE: &str = r#"{"name": "coarse", "canvas": {"width": 1, "height": 1},
+  "rules": {"subpixel_bits": 3, "fill_rule": "bottom-left", "cull": "none"},
+  "primitives": [{"triangle": [[-4, 0], [57, 6.75], [0, 0]]},
+                 {"triangle": [[0, 0], [22038, 0], [0, 0]]}]}"#;
+
+/// The 1 px canvas, as a viewport.
+const PIXEL: ScreenViewport = ScreenViewport {
+    origin: [0, 0],
+    size: [1, 1],
+};
+
+/// Production declaring 8 subpixel bits and `clip-then-snap` at the
+/// canvas, drawing the case's vertices on its own grid (all of
+/// [`COARSE`]'s lie on it) and the new vertices snapped to `.0` bits.
+struct NewVerticesAt(u32);
+
+impl Rasterizer for NewVerticesAt {
+    fn name(&self) -> &str {
+        "new-vertices-at"
+    }
+    fn capabilities(&self) -> Capabilities {
+        Production.capabilities()
+    }
+    fn fixed_clip_rules(&self) -> Option<(ClipXy, ClipZ)> {
+        Some((ClipXy::ClipThenSnap, ClipZ::ClipThenSnap))
+    }
+    fn fixed_snapping(&self) -> Option<Snapping> {
+        Some(Snapping::Bits(8))
+    }
+    fn screen_viewport(&self, _scene: &Scene, _plan: &Plan) -> Option<ScreenViewport> {
+        Some(PIXEL)
+    }
+    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+        let mut drawn = scene.clone();
+        clip_scene(&mut drawn, PIXEL, scene.rules.subpixel_bits);
+        drawn.rules.subpixel_bits = Some(self.0);
+        Production.rasterize(&drawn, plan)
+    }
+}
+
+/// A case at fewer subpixel bits than the driver's own is restated at the
+/// driver's (SPEC.md §16.9, `clipped::clip_scene_on_grid`): a driver that
+/// snaps the new vertices to its 8 bits passes, and one that declares 8
+/// bits but snaps them to the case's 3 is caught.
+#[test]
+fn new_vertices_are_judged_on_the_drivers_finer_grid() {
+    let scene = parse_case(COARSE, "coarse.json", &Limits::default()).unwrap();
+    let reference = oracle::run_reference(&scene);
+    let driver = run_candidate(&scene, &reference, &NewVerticesAt(8));
+    assert!(
+        matches!(driver.verdict, Verdict::Pass),
+        "{:?}",
+        driver.verdict
+    );
+    assert_eq!(driver.judged.viewport, Some(PIXEL));
+    let coarse = run_candidate(&scene, &reference, &NewVerticesAt(3));
+    assert!(
+        matches!(coarse.verdict, Verdict::Fail(_)),
+        "{:?}",
+        coarse.verdict
+    );
 }

@@ -128,6 +128,19 @@ fn triangles_past_the_target_are_not_clipped() {
     common::viewport_drivers::assert_drawn_unclipped(&VULKAN);
 }
 
+/// An antialiased polygon far past the largest viewport, drawn by shifted
+/// passes, is clipped at the one rectangle the adapter reports, so that
+/// it passes under the restatement (SPEC.md §16.9): each pass's viewport
+/// moves with its shift. The foil, each pass through a viewport that
+/// stays while the scene moves (what the adapter did before), is caught.
+#[test]
+fn shifted_passes_are_clipped_at_one_rectangle() {
+    let Some(_record) = available() else {
+        return;
+    };
+    common::shifted_view_drivers::assert_passes_clipped_at_one_rectangle(&VULKAN);
+}
+
 #[test]
 fn matches_the_reference_on_top_left_tie_and_winding_cases() {
     let Some(_record) = available() else {
@@ -673,6 +686,7 @@ const FAILING_ON_SWIFTSHADER: &[(&str, &str)] = &[
     ("clip_space_values_come_from_the_declared_positions", "clip/interp_perspective_clipped_gb_cts departs 9.7e-3 from the snapped positions' values it declares: SwiftShader sets a clipped piece's planes up from the whole triangle's snapped vertices (departure swiftshader/clipped-piece-values-from-the-whole-triangle; the unclipped clip/spec_interpolate_snapped matches)"),
     ("depth_formats_and_offset_pass", "depth/offset_negative_standard4 (departure swiftshader/multisampled-depth-at-mirrored-x) and, in some runs, depth/offset_line_ignored (departure swiftshader/line-depth-offset-from-an-earlier-draw) fail on depth; unorm24 is left out as a device limit"),
     ("multisampled_depth_is_read_back_sample_by_sample", "depth/offset_negative_standard4: 100 samples outside the float32 depths allowed (1.17e-2 = 2 x 0.375 px x dz/dx 1/64): departure swiftshader/multisampled-depth-at-mirrored-x"),
+    ("shifted_passes_are_clipped_at_one_rectangle", "hard/poly_far_zigzag_b8_*_standard16: 25 missing samples of 3392 each, along two edges through the canvas drawn from new vertices SwiftShader clips in f32, which land across a rounding boundary of its 1/16 px grid (departure swiftshader/far-meshes-clipped-in-float); the foil, each pass through a viewport that stays while the scene moves, fails too (36 missing, 12 extra)"),
     ("polygons_by_stencil_then_cover_match_the_reference", "every judged polygon case passes; polygons/circle_64_aa_stratified256 is unsupported (its offsets are off the 4-bit grid, a device limit), which the test does not allow"),
     (
         "judges_at_least_85_percent_of_the_bundled_cases",

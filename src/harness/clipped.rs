@@ -7,7 +7,9 @@
 //! contour clipped exactly at the rectangle (`reference::clip::window`)
 //! from its vertices snapped to the case's grid, as the adapter sends them,
 //! the new vertices left for the reference to snap to the rasterizer's
-//! grid.
+//! grid: its own where it is coarser than the case's (SPEC.md §3.2), and
+//! where it is finer, too (`clip_scene_on_grid`: the case restated at the
+//! driver's bits).
 //!
 //! A clipped triangle is a convex polygon: it is restated as a polygon of
 //! one contour under `nonzero`, one primitive, so it keeps its place (and
@@ -95,6 +97,31 @@ pub fn clip_scene(scene: &mut Scene, viewport: ScreenViewport, bits: Option<u32>
         *primitive = Primitive::Polygon(clipped);
     }
     scene.expect.area = None;
+}
+
+/// [`clip_scene`] for a driver that snaps the new vertices to `finer`
+/// bits where the case states fewer, `bits` (SPEC.md §16.9): the adapter
+/// sends the case's vertices on the case's grid, which lies on the finer
+/// one, and the driver clips them and snaps the new vertices to its own.
+/// So every vertex is snapped to the case's grid first, the scene clipped,
+/// and the restated case stated at `finer` bits, at which the old vertices
+/// stay where they are and the new ones snap as the driver's do. Otherwise
+/// (no finer grid) [`clip_scene`].
+pub fn clip_scene_on_grid(
+    scene: &mut Scene,
+    viewport: ScreenViewport,
+    bits: Option<u32>,
+    finer: Option<u32>,
+) {
+    let Some((bits, finer)) = bits.zip(finer).filter(|(bits, finer)| finer > bits) else {
+        return clip_scene(scene, viewport, bits);
+    };
+    for v in scene.primitives.iter_mut().flat_map(|p| p.vertices_mut()) {
+        v.x = v.x.snapped(bits);
+        v.y = v.y.snapped(bits);
+    }
+    clip_scene(scene, viewport, Some(bits));
+    scene.rules.subpixel_bits = Some(finer);
 }
 
 /// Whether a triangle of these (snapped) vertices draws nothing: zero

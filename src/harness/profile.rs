@@ -473,6 +473,9 @@ pub struct OwnConventions {
     /// viewport under its own `clip-then-snap` (SPEC.md §16.9): the
     /// rectangle ([`Rasterizer::screen_viewport`]).
     pub viewport: Option<ScreenViewport>,
+    /// With `viewport`: its own subpixel bits where the case states fewer,
+    /// at which it snaps the new vertices (`clipped::clip_scene_on_grid`).
+    pub viewport_bits: Option<u32>,
 }
 
 impl OwnConventions {
@@ -554,6 +557,7 @@ impl OwnConventions {
                     .iter()
                     .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::Rectangle)),
             viewport: None,
+            viewport_bits: None,
         }
     }
 
@@ -573,6 +577,10 @@ impl OwnConventions {
         }
         if let Some(viewport) = candidate.screen_viewport(scene, plan) {
             self.viewport = Some(viewport);
+            self.viewport_bits = match (candidate.fixed_snapping(), scene.rules.subpixel_bits) {
+                (Some(Snapping::Bits(own)), Some(bits)) if own > bits => Some(own),
+                _ => None,
+            };
             self.clip = Some(ClipRules {
                 xy: ClipXy::ClipThenSnap,
                 ..self.clip.unwrap_or(scene.rules.clip)
@@ -660,7 +668,8 @@ impl OwnConventions {
         let mut s = scene.clone();
         if let Some(viewport) = self.viewport {
             // First, from the positions the adapter sent: the case's own.
-            clipped::clip_scene(&mut s, viewport, scene.rules.subpixel_bits);
+            let bits = scene.rules.subpixel_bits;
+            clipped::clip_scene_on_grid(&mut s, viewport, bits, self.viewport_bits);
         }
         if let Some(rule) = self.fill_rule {
             s.rules.fill_rule = rule;

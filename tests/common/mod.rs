@@ -12,6 +12,7 @@ pub mod departures;
 pub mod depth_drivers;
 pub mod point_drivers;
 pub mod sample_drivers;
+pub mod shifted_view_drivers;
 pub mod viewport_drivers;
 
 #[allow(unused_imports)] // not every binary runs the binary

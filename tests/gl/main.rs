@@ -97,6 +97,19 @@ fn triangles_past_the_target_are_not_clipped() {
     common::viewport_drivers::assert_drawn_unclipped(&GL);
 }
 
+/// An antialiased polygon far past the largest viewport, drawn by shifted
+/// passes, is clipped at the one rectangle the adapter reports, so that
+/// it passes under the restatement (SPEC.md §16.9): each pass's viewport
+/// moves with its shift. The foil, each pass through a viewport that
+/// stays while the scene moves (what the adapter did before), is caught.
+#[test]
+fn shifted_passes_are_clipped_at_one_rectangle() {
+    let Some(_record) = available() else {
+        return;
+    };
+    common::shifted_view_drivers::assert_passes_clipped_at_one_rectangle(&GL);
+}
+
 #[test]
 fn probe_finds_a_point_sampler_with_bottom_left_ties() {
     let Some(_record) = available() else {

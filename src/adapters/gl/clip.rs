@@ -181,15 +181,17 @@ impl Stage {
     /// scene's: [0, 1], clamped where it has a depth attachment), and the
     /// viewport
     /// of a pass whose tile (`P × Q`, `tile`) has its lower-left window
-    /// corner at `origin`: the tile for screen space, the case's viewport
-    /// (the module's notes) for clip space.
+    /// corner at `origin`: for screen space, `view` in the tile with its
+    /// corner (canvas pixels, y down) at `corner`, the view's moved by the
+    /// pass's shift (`gpu::Stream::viewport_corner`); for clip space, the
+    /// case's viewport (the module's notes).
     pub(super) unsafe fn set(
         &self,
         gl: &glow::Context,
         provoking: ProvokingFn,
         origin: (u32, u32),
         tile: (u32, u32),
-        view: gpu::View,
+        (view, corner): (gpu::View, [f32; 2]),
     ) {
         provoking(if self.provoking_last {
             glow::LAST_VERTEX_CONVENTION
@@ -200,11 +202,19 @@ impl Stage {
         let Some(([x, y, w, h], [near, far], clamp)) = self.clip else {
             // The view in window coordinates (y up, the tile's canvas row
             // y at window row Q − 1 − y): `Offers::screen_limits` kept it
-            // within the context's bounds for every tile.
+            // within the context's bounds for every tile, with a pixel to
+            // spare for the shift. Exact: integers within the bounds
+            // (±32768) and a shift on the 8-bit grid fit an f32 (and f64,
+            // where they are summed).
             let (vw, vh) = view.size;
-            let gx = i64::from(ox) + view.origin[0];
-            let gy = i64::from(oy) + i64::from(tile.1) - view.origin[1] - i64::from(vh);
-            gl.viewport(gx as i32, gy as i32, vw as i32, vh as i32);
+            let gx = f64::from(ox) + f64::from(corner[0]);
+            let gy = f64::from(oy) + f64::from(tile.1) - f64::from(corner[1]) - f64::from(vh);
+            if gx.fract() == 0.0 && gy.fract() == 0.0 {
+                gl.viewport(gx as i32, gy as i32, vw as i32, vh as i32);
+            } else {
+                // `GlContext::set_up` refused this without float viewports.
+                gl.viewport_f32_slice(0, 1, &[[gx as f32, gy as f32, vw as f32, vh as f32]]);
+            }
             gl.depth_range_f64(0.0, 1.0);
             if self.screen_clamp {
                 gl.enable(glow::DEPTH_CLAMP);

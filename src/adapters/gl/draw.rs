@@ -65,9 +65,19 @@ impl GlContext {
         let groups = gpu::groups(plan);
         let layout = self.layout(scene, plan, bits, (tile, view), depth.is_some())?;
         let stencils = layout.stencils();
+        let off_the_integers = layout.corners.iter().flatten().any(|c| c.fract() != 0.0);
+        if off_the_integers && scene.viewport.is_none() && !self.clip.float_viewports {
+            return Err(RasterError::Unsupported(
+                "shifted passes move the viewport by a fraction of a pixel, which needs \
+                 glViewportIndexedf (GL 4.1, ARB_viewport_array): the context offers \
+                 neither"
+                    .to_owned(),
+            ));
+        }
         let passes::Layout {
             vertices,
             streams,
+            corners,
             passes,
             size,
             reading,
@@ -84,6 +94,7 @@ impl GlContext {
             cull: scene.rules.cull,
             stage: Stage::of(scene),
             streams,
+            corners,
             passes,
             samples: reading.target_samples(),
             reading,
@@ -270,7 +281,8 @@ impl GlContext {
     }
 
     /// Issues `drawing`'s draw calls into its attachments as they stand:
-    /// per pass, its tile's viewport and the canvas's scissor in it (or its
+    /// per pass, its tile's viewport (its corner moved by the pass's
+    /// shift) and the canvas's scissor in it (or its
     /// one pixel's, for a time pass), then one `glDrawArrays` per run of its
     /// stream, with the state the run needs (the
     /// context's state is every case's, so it is set each time, and the
@@ -287,9 +299,14 @@ impl GlContext {
         gl.bind_vertex_array(Some(drawing.vao));
         for pass in &drawing.passes {
             let (ox, oy) = pass.origin;
-            drawing
-                .stage
-                .set(gl, self.provoking, pass.origin, (tw, th), drawing.view);
+            let corner = drawing.corners[pass.stream];
+            drawing.stage.set(
+                gl,
+                self.provoking,
+                pass.origin,
+                (tw, th),
+                (drawing.view, corner),
+            );
             match pass.pixel {
                 // Canvas row y is window row Q − 1 − y of the tile.
                 Some((x, y)) => gl.scissor((ox + x) as i32, (oy + th - 1 - y) as i32, 1, 1),

@@ -30,6 +30,8 @@ pub(super) struct Drawing<'a> {
     pub(super) stage: Stage,
     /// Each stream's runs, indexing the vertex buffer.
     pub(super) streams: Vec<Vec<gpu::Run>>,
+    /// Each stream's viewport corner: the view's, moved by its shift.
+    pub(super) corners: Vec<[f32; 2]>,
     /// One pass per tile (one sample slot, slot order), or one per time
     /// test, each scissored to its pixel.
     pub(super) passes: Vec<Pass>,

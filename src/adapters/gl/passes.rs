@@ -6,6 +6,9 @@
 //! sample slot s, the whole scene moved by the shift that brings slot s's
 //! offset onto the pixel centre, where the single-sample driver samples,
 //! so that the pass's pixel (x, y) decides slot s of pixel (x, y). The
+//! shift moves the viewport (`gpu/stream.rs`: its corner off the integers,
+//! set by `glViewportIndexedf`), so that a driver clipping at it clips
+//! every pass at one rectangle of the case (SPEC.md §16.9). The
 //! passes are drawn into tiles of `P × Q` texels laid out in a grid in one
 //! framebuffer (at most the driver's largest side), each with its own
 //! viewport and scissor, so that one clear, one draw and one read-back
@@ -74,6 +77,9 @@ pub(super) struct Layout {
     pub vertices: Vec<f32>,
     /// Each stream's runs, indexing `vertices`.
     pub streams: Vec<Vec<gpu::Run>>,
+    /// Each stream's viewport corner (`gpu::Stream::viewport_corner`): the
+    /// view's, moved by its placement's shift.
+    pub corners: Vec<[f32; 2]>,
     pub passes: Vec<Pass>,
     /// The framebuffer holding every tile.
     pub size: (u32, u32),
@@ -86,6 +92,7 @@ impl Layout {
         Layout {
             vertices: Vec::new(),
             streams: Vec::new(),
+            corners: Vec::new(),
             passes: Vec::new(),
             size,
             reading,
@@ -96,6 +103,7 @@ impl Layout {
     pub(super) fn push(&mut self, stream: gpu::Stream) -> usize {
         let base = (self.vertices.len() / VERTEX_FLOATS) as u32;
         self.vertices.extend(stream.vertices);
+        self.corners.push(stream.viewport_corner);
         self.streams.push(
             stream
                 .runs

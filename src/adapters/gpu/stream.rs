@@ -25,9 +25,18 @@
 //! nudge when the rule is top-left. So the stencil holds each sample's
 //! winding number (modulo 256) under the driver's own rule.
 //!
-//! Positions are the snapped vertices plus a shift, both exact, rounded
-//! once to f32: the shift moves a sample slot's offset onto the pixel
-//! centre for a shifted pass (`passes.rs`).
+//! Positions are the snapped vertices, exact, rounded once to f32 in the
+//! viewport's normalised coordinates. A shifted pass (`passes.rs`) moves
+//! the scene by a shift that brings a sample slot's offset onto the pixel
+//! centre; it moves the driver's **viewport** by that shift, not the
+//! vertices: the stream's positions are the shifted vertex relative to the
+//! shifted viewport corner, `(x + s) − (x0 + s)`, the same for every pass,
+//! and [`Stream::viewport_corner`] is where the adapter must put the viewport's
+//! corner, `x0 + s`. So a driver that clips at its viewport clips every
+//! pass at the one rectangle `view` is in the case's coordinates, the
+//! rectangle `Rasterizer::screen_viewport` reports (SPEC.md §16.9), and
+//! the driver's viewport transform adds the shift back: `x_w = ndc·V/2 +
+//! (x0 + s + V/2)`, exact in f32 for the viewports `view.rs` chooses.
 
 use dashu_ratio::RBig;
 
@@ -80,6 +89,11 @@ pub(crate) struct Run {
 pub(crate) struct Stream {
     pub vertices: Vec<f32>,
     pub runs: Vec<Run>,
+    /// Where the driver's viewport corner must be for a screen-space
+    /// stream, in the target's pixels (x right, y down): the placement's
+    /// view's corner moved by its shift, `x0 + s`, exact in f32 (the
+    /// module's notes). A clip-space scene's viewport is its own.
+    pub viewport_corner: [f32; 2],
     /// A clip-space scene's depth range `[lo, hi]` (SPEC.md §16.1): its
     /// vertices are its clip coordinates, placed by the driver's viewport
     /// (the adapter sets it from `Scene::viewport`), and the placement's
@@ -136,6 +150,12 @@ impl Placement {
         let [x, y] = at;
         [x + &self.shift[0], y + &self.shift[1]]
     }
+
+    /// The viewport's corner, moved by the shift, exact: `x0 + s`.
+    fn viewport_corner(&self) -> [RBig; 2] {
+        let [x0, y0] = self.view.origin.map(RBig::from);
+        [x0 + &self.shift[0], y0 + &self.shift[1]]
+    }
 }
 
 impl Stream {
@@ -144,6 +164,7 @@ impl Stream {
         let mut stream = Stream {
             vertices: Vec::with_capacity(scene.primitives.len() * 3 * VERTEX_FLOATS),
             runs: Vec::new(),
+            viewport_corner: place.viewport_corner().each_ref().map(to_f32),
             clip_depth: scene.viewport.as_ref().map(|v| {
                 let [a, b] = [&v.min_depth, &v.max_depth].map(f32_of);
                 [a.min(b), a.max(b)]
@@ -216,11 +237,12 @@ impl Stream {
 
     /// A snapped, shifted position (at the placement's instant, if the
     /// vertex moves) in normalised device coordinates over the viewport
-    /// `(x0, y0, P, Q)`: `(x − x0) · 2/P − 1`, `1 − (y − y0) · 2/Q` (y down
-    /// on screen), x − x0 exact before the one rounding; exact in f32 for
-    /// the viewports `view.rs` chooses.
+    /// `(x0 + s, y0 + s, P, Q)`, moved by the same shift:
+    /// `(x − x0) · 2/P − 1`, `1 − (y − y0) · 2/Q` (y down on screen), the
+    /// difference exact before the one rounding; exact in f32 for the
+    /// viewports `view.rs` chooses.
     fn position(&self, v: &Vertex, place: &Placement) -> [f32; 2] {
-        let [x0, y0] = place.view.origin.map(RBig::from);
+        let [x0, y0] = place.viewport_corner();
         let [x, y] = place.pixels(v);
         let [x, y] = [x - x0, y - y0].map(|c| to_f32(&c));
         let (sx, sy) = (
@@ -231,7 +253,10 @@ impl Stream {
     }
 
     /// Appends a bare vertex at a position in pixels (a cover's corner,
-    /// an integer as is the viewport's corner: the difference is exact).
+    /// an integer as is the view's unshifted corner: the difference is
+    /// exact). Drawn through the shifted viewport it lands the shift
+    /// (under half a pixel) away, inside the pixel of margin the cover
+    /// keeps around the polygon.
     fn corner(&mut self, x: f32, y: f32, id: f32, place: &Placement) {
         let [x0, y0] = place.view.origin.map(|c| c as f32);
         let (sx, sy) = (

@@ -19,9 +19,15 @@
 //! and x0 an integer, x − x0 ∈ [0, V] needs `fine + log2 V` bits and ndc
 //! one more below 1, `ndc·V/2` is a power-of-two scaling, and the sum is
 //! x, exact when x, x0 and x0 + V/2 fit in f32's 24 bits at `2^-fine`. A
-//! scene whose rectangle breaks that budget, or the device's largest
-//! viewport or its bounds, is drawn through the target as before (the
-//! driver may then clip it).
+//! shifted pass (`stream.rs`) moves the viewport's corner by its shift s,
+//! under half a pixel on the driver's grid, and the driver computes
+//! `ndc·V/2 + (x0 + s + V/2) = x + s`: so the budget keeps a pixel to
+//! spare (every coordinate below `2^(24 − fine)` by one), and so do the
+//! device's bounds (the corner moved by s stays within them). A scene
+//! whose rectangle breaks that budget, or the device's largest viewport
+//! or its bounds, is drawn through the target as before (the driver may
+//! then clip it, at the target moved by each pass's shift: in the case's
+//! coordinates, at the target).
 
 use dashu_int::IBig;
 
@@ -119,8 +125,9 @@ pub(crate) fn screen_view(
         }
         // Centred: the slack split, the integer half to the low side.
         let x0 = low - ((side - span) / 2) as i64;
+        // A pixel to spare on each side for a shifted pass's viewport.
         let range = if axis == 0 { limits.x } else { limits.y };
-        if x0 < range[0] || x0 + side as i64 > range[1] {
+        if x0 - 1 < range[0] || x0 + side as i64 + 1 > range[1] {
             return whole;
         }
         origin[axis] = x0;
@@ -160,15 +167,16 @@ pub(crate) fn clipped_at(scene: &Scene, bits: u32, view: &View) -> Option<Screen
 }
 
 /// Whether every position of `view` at `2^-fine` pixel, and the
-/// viewport's centre, are f32s, as the module's notes need: every
-/// coordinate in it, and its sides, are at most `2^24` steps of `2^-fine`.
+/// viewport's centre, are f32s, also moved by a shifted pass's shift (under
+/// a pixel), as the module's notes need: every coordinate in it, and its
+/// sides, are below `2^24` steps of `2^-fine` by a pixel.
 fn exact(view: &View, fine: u32) -> bool {
     let sides = [view.size.0, view.size.1];
     (0..2).all(|axis| {
         let x0 = view.origin[axis].unsigned_abs();
         let x1 = (view.origin[axis] + i64::from(sides[axis])).unsigned_abs();
         let largest = x0.max(x1).max(u64::from(sides[axis]));
-        fine < F32_BITS && largest <= 1 << (F32_BITS - fine)
+        fine < F32_BITS && largest < 1 << (F32_BITS - fine)
     })
 }
 
@@ -324,12 +332,18 @@ mod tests {
             size: (64, 32),
         };
         assert!(exact(&view, 8));
-        // x − x0 reaches 2^17: at 2^-7 that is 2^24 steps, at 2^-8 too many.
+        // x − x0 reaches 2^16: at 2^-7 that is 2^23 steps, at 2^-8 2^24,
+        // a pixel short of the spare a shift needs.
         let far = View {
-            origin: [-65536, 0],
-            size: (131072, 32),
+            origin: [-65535, 0],
+            size: (65536, 32),
         };
         assert!(exact(&far, 7));
         assert!(!exact(&far, 8));
+        let lower = View {
+            origin: [-65534, 0],
+            size: (32768, 32),
+        };
+        assert!(exact(&lower, 8));
     }
 }

@@ -41,7 +41,8 @@ pub(super) struct Job {
     /// multisampling (one pass, read back sample by sample).
     pub samples: u32,
     /// The viewport a screen-space scene's streams are placed on
-    /// (`gpu/view.rs`), every placement's.
+    /// (`gpu/view.rs`), every placement's, each drawn with its corner moved
+    /// by the placement's shift (`Stream::viewport_corner`).
     pub view: View,
 }
 
@@ -64,9 +65,16 @@ impl Job {
 /// the device's bounds), else `view`, the rectangle enclosing the target
 /// and the scene onto which the stream's screen-space positions map
 /// exactly (`gpu/view.rs`, which kept it within the device's
-/// `maxViewportDimensions` and `viewportBoundsRange`); the scissor, at the
-/// canvas, bounds what is drawn.
-fn viewport(scene: &Scene, view: View) -> vk::Viewport {
+/// `maxViewportDimensions` and `viewportBoundsRange`, with a pixel to
+/// spare), its corner at `corner`: the view's moved by the stream's shift
+/// (`Stream::viewport_corner`), so that every shifted pass is clipped at
+/// the one rectangle `view` is in the case's coordinates. SwiftShader and
+/// Mesa report `viewportSubPixelBits` 0 but take the corner as the float
+/// it is (SwiftShader's `X0 = x + width/2` in `Renderer.cpp`, Mesa's
+/// viewport scale and translate): the bundled antialiased cases drawn by
+/// shifted passes, and `tests/vulkan.rs`, hold them to it. The scissor,
+/// at the canvas, bounds what is drawn.
+fn viewport(scene: &Scene, view: View, corner: [f32; 2]) -> vk::Viewport {
     match &scene.viewport {
         Some(v) => vk::Viewport {
             x: f32_of(&v.x),
@@ -77,8 +85,8 @@ fn viewport(scene: &Scene, view: View) -> vk::Viewport {
             max_depth: f32_of(&v.max_depth),
         },
         None => vk::Viewport {
-            x: view.origin[0] as f32,
-            y: view.origin[1] as f32,
+            x: corner[0],
+            y: corner[1],
             width: view.size.0 as f32,
             height: view.size.1 as f32,
             min_depth: 0.0,
@@ -264,10 +272,11 @@ pub(super) fn render(
                 })
                 .clear_values(&clears);
             d.cmd_begin_render_pass(cb, &begin, vk::SubpassContents::INLINE);
-            d.cmd_set_viewport(cb, 0, &[viewport(scene, job.view)]);
             let mut bound = vk::Pipeline::null();
             for &(scissor, stream) in draws {
                 let (offset, runs) = &placed[stream];
+                let corner = streams[stream].viewport_corner;
+                d.cmd_set_viewport(cb, 0, &[viewport(scene, job.view, corner)]);
                 d.cmd_set_scissor(cb, 0, &[scissor]);
                 d.cmd_bind_vertex_buffers(cb, 0, &[vertex_buffer], &[*offset]);
                 for &(pipeline, first, end) in runs {
