@@ -49,6 +49,7 @@ pub fn support() -> ConservativeSupport {
         overestimate: true,
         underestimate: true,
         fully_covered: true,
+        depth: true,
         ..ConservativeSupport::default()
     }
 }
