@@ -434,7 +434,10 @@ fn judge_conservative(
             case.words()
         ));
     }
-    let m = metrics::conservative::measure(classes, &frame, words);
+    let mut m = metrics::conservative::measure(classes, &frame, words);
+    if judged != case {
+        m.case_states = Some(case.words());
+    }
     let mut failures = metrics::conservative::failures(&m);
     failures.extend(promises);
     let coverage = metrics::conservative::coverage(&m, &frame);

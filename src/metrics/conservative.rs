@@ -68,6 +68,12 @@ pub struct ConservativeMetrics {
     /// The mode and uncertainty judged under ("overestimate, uncertainty
     /// 1/256 px").
     pub judged_under: String,
+    /// Where the candidate is judged under its own declared uncertainty or
+    /// properties (SPEC.md §19.6), the mode and uncertainty the case
+    /// states: a convention, counted apart in the run's summary, never a
+    /// failure and never hidden. `None` when judged under the case's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub case_states: Option<String>,
     /// Pixels the reference requires, and in its allowed band.
     pub required: u64,
     pub band: u64,
@@ -122,6 +128,7 @@ pub fn measure(
     let at = |i: usize| [(i % width) as u32, (i / width) as u32];
     let mut m = ConservativeMetrics {
         judged_under,
+        case_states: None,
         required: classes.count(PixelClass::Required) as u64,
         band: classes.count(PixelClass::Allowed) as u64,
         required_missing: 0,

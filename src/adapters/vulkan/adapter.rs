@@ -171,6 +171,18 @@ impl Rasterizer for Vulkan {
         Some(support)
     }
 
+    /// [`Rasterizer::conservative`] for `scene`: its overestimation
+    /// uncertainty is the device's base size plus the extra size the case
+    /// asks for (SPEC.md §19.6, `conservative.rs`).
+    fn conservative_for(&self, scene: &Scene) -> Option<ConservativeSupport> {
+        let shared = self.shared().ok()?;
+        let support = super::conservative::support_for(
+            scene,
+            lock(shared).device.offers.conservative.as_ref(),
+        );
+        Some(support)
+    }
+
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let shared = self
             .shared()
