@@ -423,7 +423,8 @@ fn judge_conservative(
         }
         _ => (case, classes),
     };
-    if let Some(why) = metrics::conservative::shape_problem(classes, &frame) {
+    let samples = scene.effects.antialias.as_ref().map_or(1, |aa| aa.samples);
+    if let Some(why) = metrics::conservative::shape_problem(classes, &frame, samples) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return run(Verdict::Error(why), None, frame);
     }

@@ -96,14 +96,12 @@ impl Scene {
     }
 
     /// Why a conservative scene is not judged in this version, if it is
-    /// not (SPEC.md §19.7): multisampling, motion, clip space, polygons,
+    /// not (SPEC.md §19.7): motion, clip space, polygons,
     /// depth and attributes at conservative pixels, points and lines. Every candidate's verdict on it is `unsupported`
     /// with this reason; `None` for a scene that is not conservative.
     pub fn conservative_unjudged(&self) -> Option<String> {
         self.effects.conservative.as_ref()?;
-        let clash = if self.effects.antialias.is_some() {
-            Some("multisampling (effects.antialias)")
-        } else if self.effects.motion_blur.is_some() {
+        let clash = if self.effects.motion_blur.is_some() {
             Some("effects.motion_blur")
         } else if self.in_clip_space() {
             Some("clip space")

@@ -203,6 +203,14 @@ impl Rasterizer for Vulkan {
             let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
             return draw::slots(&bytes, scene, plan, &job);
         }
+        if scene.is_conservative() && plan.antialias.is_some() {
+            return Err(RasterError::Unsupported(
+                "conservative and multisampled, not natively: each shifted single-sample pass \
+                 would draw every pixel its shifted triangle touches, not the case's pixels with \
+                 all their samples (SPEC.md §19.10)"
+                    .to_owned(),
+            ));
+        }
         let shifts = match &plan.antialias {
             Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)
                 .map_err(|why| RasterError::Unsupported(format!("shifted passes: {why}")))?,

@@ -8,7 +8,9 @@
 //! flag it is sure of), and the last triangle to draw a pixel leaves its
 //! flag there.
 //!
-//! What it does not do: multisampling, motion, clip space, polygons, lines,
+//! Multisampled (SPEC.md §19.10), a drawn pixel covers every sample of it.
+//!
+//! What it does not do: motion, clip space, polygons, lines,
 //! points, depth and attributes under conservative rasterization (the
 //! scene says why, `Scene::conservative_unjudged`); coordinates that are
 //! not snapped whose common denominator exceeds 2^24.
@@ -56,9 +58,9 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     let margin = Growth::margin(&case.uncertainty, placed.one);
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let mut frame = Frame::for_plan(w, h, plan);
-    let mut flags = case
-        .fully_covered
-        .then(|| vec![false; frame.coverage.len()]);
+    let mut flags = case.fully_covered.then(|| vec![false; frame.pixel_count()]);
+    // Multisampled (SPEC.md §19.10): a drawn pixel covers all its samples.
+    let samples = frame.samples.max(1) as usize;
     for (index, primitive) in scene.primitives.iter().enumerate() {
         let Primitive::Triangle(_) = primitive else {
             return Err(RasterError::Unsupported(
@@ -82,14 +84,17 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
                     continue;
                 }
                 let i = frame.index(x as u32, y as u32);
-                frame.hit(i, index);
+                frame.hit_run(i, i + samples, index);
                 if let Some(flags) = &mut flags {
-                    flags[i] = setup.holds(x, y, &half);
+                    flags[i / samples] = setup.holds(x, y, &half);
                 }
             }
         }
     }
     frame.fully_covered = flags;
+    if frame.resolved.is_some() {
+        frame.resolved = Some(frame.box_resolve());
+    }
     frame.coverage_only = true;
     Ok(frame)
 }
