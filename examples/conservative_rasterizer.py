@@ -25,6 +25,9 @@ the closed triangle (its four corners do): the most it may draw.
 The fully-covered flag (`rules.conservative.fully_covered`): a fragment
 [x, y, f] with f = 1 when the square lies inside the triangle, else 0.
 
+Multisampled (SPEC.md §19.10): a drawn pixel covers all its samples, one
+fragment [x, y, s] (or [x, y, s, f]) for each.
+
 Flags:
   --uncertainty U   declare U (an exact number, "1/256") as its
                     overestimation uncertainty (default "0")
@@ -128,8 +131,10 @@ def culled(pts, cull):
     return (cull == "cw" and area > 0) or (cull == "ccw" and area < 0)
 
 
-def draw(pts, width, height, mode, flagged):
-    """The fragments of one triangle: [x, y] (or [x, y, f])."""
+def draw(pts, width, height, mode, flagged, samples):
+    """The fragments of one triangle: [x, y] (or [x, y, f]); multisampled
+    (`samples` a count, SPEC.md §19.10), [x, y, s] (or [x, y, s, f]) for
+    every sample s of a drawn pixel: its samples are all covered."""
     xs, ys = [p[0] for p in pts], [p[1] for p in pts]
     reach = GROW + 1
     x0, x1 = max(0, int(min(xs) - reach)), min(width - 1, int(max(xs) + reach))
@@ -145,10 +150,9 @@ def draw(pts, width, height, mode, flagged):
                 hit = meets(pts, normals, x, y, GROW)
             if not hit:
                 continue
-            if flagged:
-                out.append([x, y, 1 if full or "--flag-partial" in FLAGS else 0])
-            else:
-                out.append([x, y])
+            flag = [1 if full or "--flag-partial" in FLAGS else 0] if flagged else []
+            slots = [[]] if samples is None else [[s] for s in range(samples)]
+            out.extend([x, y] + slot + flag for slot in slots)
     return out
 
 
@@ -163,6 +167,8 @@ def answer(req):
         mode = conservative["mode"]
     flagged = bool(conservative and conservative.get("fully_covered"))
     width, height = req["canvas"]["width"], req["canvas"]["height"]
+    aa = req.get("plan", {}).get("antialias")
+    samples = None if aa is None else len(aa["offsets"])
     prims = []
     for p in req["primitives"]:
         if "triangle" not in p:
@@ -175,7 +181,7 @@ def answer(req):
         if culled(pts, rules.get("cull", "none")):
             prims.append({"fragments": []})
             continue
-        prims.append({"fragments": draw(pts, width, height, mode, flagged)})
+        prims.append({"fragments": draw(pts, width, height, mode, flagged, samples)})
     return {"primitives": prims}
 
 
