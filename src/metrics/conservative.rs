@@ -97,6 +97,16 @@ pub struct ConservativeMetrics {
     pub pixels: Vec<ConservativePixel>,
 }
 
+/// Whether `frame` draws pixel `i` (row-major): `Some(drawn)` when its
+/// samples are all covered or none, `None` when only some are, which no
+/// class admits (SPEC.md §19.10).
+pub fn pixel_drawn(frame: &Frame, i: usize) -> Option<bool> {
+    let n = frame.samples.max(1) as usize;
+    let run = frame.coverage.get(i * n..(i + 1) * n)?;
+    let any = run.iter().any(|&c| c > 0);
+    (run.iter().all(|&c| c > 0) == any).then_some(any)
+}
+
 /// Why a candidate's frame cannot be judged against conservative classes:
 /// another canvas, or other than `samples` samples per pixel (the case's
 /// `effects.antialias` count, 1 without it).
