@@ -33,6 +33,9 @@ culled, or drawn as its point when the case's `degenerate_lines` is true.
 The fully-covered flag (`rules.conservative.fully_covered`): a fragment
 [x, y, f] with f = 1 when the square lies inside the triangle, else 0.
 
+Multisampled (SPEC.md §19.10): a drawn pixel covers all its samples, one
+fragment [x, y, s] (or [x, y, s, f]) for each.
+
 Flags:
   --uncertainty U   declare U (an exact number, "1/256") as its
                     overestimation uncertainty (default "0")
@@ -209,8 +212,10 @@ class Polygon:
         return inside(self.pts, x, y)
 
 
-def draw(shape, width, height, mode, flagged):
-    """The fragments of one shape: [x, y] (or [x, y, f])."""
+def draw(shape, width, height, mode, flagged, samples):
+    """The fragments of one shape: [x, y] (or [x, y, f]); multisampled
+    (`samples` a count, SPEC.md §19.10), [x, y, s] (or [x, y, s, f]) for
+    every sample s of a drawn pixel: its samples are all covered."""
     bx0, by0, bx1, by1 = shape.box()
     reach = GROW + 1
     x0, x1 = max(0, int(bx0 - reach)), min(width - 1, int(bx1 + reach))
@@ -225,10 +230,9 @@ def draw(shape, width, height, mode, flagged):
                 hit = shape.meets(x, y, GROW)
             if not hit:
                 continue
-            if flagged:
-                out.append([x, y, 1 if full or "--flag-partial" in FLAGS else 0])
-            else:
-                out.append([x, y])
+            flag = [1 if full or "--flag-partial" in FLAGS else 0] if flagged else []
+            slots = [[]] if samples is None else [[s] for s in range(samples)]
+            out.extend([x, y] + slot + flag for slot in slots)
     return out
 
 
@@ -265,13 +269,15 @@ def answer(req):
         mode = conservative["mode"]
     flagged = bool(conservative and conservative.get("fully_covered"))
     width, height = req["canvas"]["width"], req["canvas"]["height"]
+    aa = req.get("plan", {}).get("antialias")
+    samples = None if aa is None else len(aa["offsets"])
     prims = []
     for p in req["primitives"]:
         if ("point" in p or "line" in p) and conservative is not None:
             if p.get("rule", "rectangle") not in ("rectangle", "parallelogram"):
                 return {"unsupported": "this example draws rectangle and parallelogram lines only"}
             shape = point_or_line(p, rules["subpixel_bits"], conservative)
-            prims.append({"fragments": [] if shape is None else draw(shape, width, height, mode, flagged)})
+            prims.append({"fragments": [] if shape is None else draw(shape, width, height, mode, flagged, samples)})
             continue
         if "triangle" not in p:
             return {"unsupported": "this example draws triangles, points and lines only"}
@@ -283,7 +289,7 @@ def answer(req):
         if culled(pts, rules.get("cull", "none")):
             prims.append({"fragments": []})
             continue
-        prims.append({"fragments": draw(Polygon(pts), width, height, mode, flagged)})
+        prims.append({"fragments": draw(Polygon(pts), width, height, mode, flagged, samples)})
     return {"primitives": prims}
 
 

@@ -544,6 +544,15 @@ pub trait Rasterizer: Send + Sync {
         None
     }
 
+    /// What this rasterizer declares for conservative `scene`: by default
+    /// [`Rasterizer::conservative`]. One whose uncertainty depends on what
+    /// it asks its device for per case (Vulkan's extra overestimation
+    /// size, SPEC.md §19.6) answers per case; the harness asks this one.
+    fn conservative_for(&self, scene: &Scene) -> Option<ConservativeSupport> {
+        let _ = scene;
+        self.conservative()
+    }
+
     /// The method's own draw call for `scene`, set up once so that it can
     /// be drawn again and again: what `rastercheck bench` times as the
     /// method's work, apart from what an adapter does around it. `None`

@@ -182,12 +182,25 @@ fn agrees(scene: &Scene) -> Result<(), String> {
         .as_ref()
         .expect("conservative")
         .mode;
+    // Multisampled (SPEC.md §19.10): a pixel's samples all or none.
+    let n = frame.samples.max(1) as usize;
+    let covered = |i: usize| {
+        let run = &frame.coverage[i * n..(i + 1) * n];
+        match (run.iter().all(|&c| c > 0), run.iter().any(|&c| c > 0)) {
+            (all, any) if all == any => Ok(all),
+            _ => Err(format!(
+                "pixel ({}, {}): only some of its samples covered",
+                i as u32 % frame.width,
+                i as u32 / frame.width
+            )),
+        }
+    };
     for (i, class) in classes.drawn.iter().enumerate() {
         let expected = match mode {
             ConservativeMode::Overestimate => *class != PixelClass::Forbidden,
             ConservativeMode::Underestimate => *class == PixelClass::Required,
         };
-        let got = frame.coverage[i] > 0;
+        let got = covered(i)?;
         if got != expected {
             return Err(format!(
                 "pixel ({}, {}): the reference classes it {}, production {}",
@@ -201,7 +214,7 @@ fn agrees(scene: &Scene) -> Result<(), String> {
     if let Some(flags) = &classes.fully_covered {
         let got = frame.fully_covered.as_ref().ok_or("no flag")?;
         for (i, class) in flags.iter().enumerate() {
-            let drawn = frame.coverage[i] > 0;
+            let drawn = covered(i)?;
             // One triangle: the flag is exactly the sure one (S_u inside
             // the triangle); several: whatever the last writer's class
             // admits.

@@ -11,7 +11,8 @@
 //! (what is measured), `timing.rs` (medians, pools, the parallel ceiling),
 //! `draw_call.rs` (a method's own draw call, timed apart from its adapter),
 //! one file per workload family (`triangles.rs` with `declared.rs`,
-//! `lines.rs`, `antialias.rs`, `motion.rs` with `translation.rs`), scored by
+//! `lines.rs`, `antialias.rs`, `conservative.rs`, `motion.rs` with
+//! `translation.rs`), scored by
 //! `score.rs`; `llvmpipe.rs` and `machine.rs` (the drivers and the machine),
 //! `suite.rs` (the bundled cases through production), `targets.rs`
 //! (judging), then the writers `markdown.rs` and `chart.rs`
@@ -20,6 +21,7 @@
 
 mod antialias;
 mod chart;
+mod conservative;
 mod declared;
 mod draw_call;
 mod foils;

@@ -4,6 +4,7 @@
 use std::time::Instant;
 
 use super::antialias::measure_antialias;
+use super::conservative::measure_conservative;
 use super::lines::measure_lines;
 use super::llvmpipe::pin_llvmpipe_threads;
 use super::machine::{load_average, machine};
@@ -47,6 +48,11 @@ pub fn run(options: Options, progress: &mut dyn FnMut(&str)) -> Report {
         sizes.antialias.1, sizes.antialias.0
     ));
     workloads.push(measure_antialias(&sizes, &mut notes));
+    progress(&format!(
+        "conservative: {} triangles, L={}",
+        sizes.conservative.1, sizes.conservative.0
+    ));
+    workloads.push(measure_conservative(&sizes, &mut notes));
     let (leg, count, _) = sizes.motion;
     progress(&format!("motion blur: {count} moving triangles, L={leg}"));
     workloads.push(measure_motion(&sizes, &mut notes));

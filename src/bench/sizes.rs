@@ -26,6 +26,9 @@ pub(super) struct Sizes {
     /// Antialiasing: (leg, triangles), and the sample counts swept.
     pub(super) antialias: (u32, usize),
     pub(super) antialias_samples: &'static [u32],
+    /// Conservative rasterization: (leg, triangles, triangles the
+    /// reference is timed on).
+    pub(super) conservative: (u32, usize, usize),
     /// Motion blur: (leg, triangles, largest translation in pixels).
     pub(super) motion: (u32, usize, f64),
     pub(super) repetitions: usize,
@@ -48,6 +51,7 @@ impl Sizes {
                 lines_verified: 20,
                 antialias: (50, 40),
                 antialias_samples: &[4, 16, 64],
+                conservative: (10, 500, 20),
                 motion: (30, 16, 12.0),
                 repetitions: 5,
                 ceiling_steps: 1 << 20,
@@ -64,6 +68,7 @@ impl Sizes {
                 lines_verified: 100,
                 antialias: (50, 400),
                 antialias_samples: &[1, 4, 16, 64, 256],
+                conservative: (10, 5_000, 100),
                 motion: (50, 400, 25.0),
                 repetitions: 5,
                 ceiling_steps: 1 << 23,

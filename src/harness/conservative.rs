@@ -16,7 +16,7 @@ pub fn refusal(scene: &Scene, candidate: &dyn Rasterizer) -> Option<String> {
     if let Some(why) = scene.conservative_unjudged() {
         return Some(why);
     }
-    match candidate.conservative() {
+    match candidate.conservative_for(scene) {
         None => Some(
             "this rasterizer does not draw conservative rasterization (SPEC.md §19)".to_owned(),
         ),
@@ -116,7 +116,7 @@ pub fn broken_promises(scene: &Scene, classes: &ConservativeClasses) -> Vec<Stri
 /// restated under what it declares it cannot choose (SPEC.md §19.6).
 pub fn judged_under(scene: &Scene, candidate: &dyn Rasterizer) -> Option<Conservative> {
     let case = scene.effects.conservative.as_ref()?;
-    Some(match candidate.conservative() {
+    Some(match candidate.conservative_for(scene) {
         Some(support) => support.restate(case),
         None => case.clone(),
     })

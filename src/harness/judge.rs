@@ -423,7 +423,8 @@ fn judge_conservative(
         }
         _ => (case, classes),
     };
-    if let Some(why) = metrics::conservative::shape_problem(classes, &frame) {
+    let samples = scene.effects.antialias.as_ref().map_or(1, |aa| aa.samples);
+    if let Some(why) = metrics::conservative::shape_problem(classes, &frame, samples) {
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return run(Verdict::Error(why), None, frame);
     }
@@ -435,6 +436,9 @@ fn judge_conservative(
         ));
     }
     let mut m = metrics::conservative::measure(classes, &frame, words);
+    if judged != case {
+        m.case_states = Some(case.words());
+    }
     let mut failures = metrics::conservative::failures(&m);
     match super::conservative_depth::judged(scene, judged, &frame) {
         Some(Ok(depth)) => {

@@ -336,6 +336,9 @@ impl Rasterizer for Profiled {
     fn conservative(&self) -> Option<crate::scene::ConservativeSupport> {
         self.inner.conservative()
     }
+    fn conservative_for(&self, scene: &Scene) -> Option<crate::scene::ConservativeSupport> {
+        self.inner.conservative_for(scene)
+    }
     fn diamond_exit_latitude(&self) -> bool {
         self.conventions
             .diamond_exit_latitude

@@ -69,6 +69,12 @@ pub struct ConservativeMetrics {
     /// The mode and uncertainty judged under ("overestimate, uncertainty
     /// 1/256 px").
     pub judged_under: String,
+    /// Where the candidate is judged under its own declared uncertainty or
+    /// properties (SPEC.md §19.6), the mode and uncertainty the case
+    /// states: a convention, counted apart in the run's summary, never a
+    /// failure and never hidden. `None` when judged under the case's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub case_states: Option<String>,
     /// Pixels the reference requires, and in its allowed band.
     pub required: u64,
     pub band: u64,
@@ -78,6 +84,13 @@ pub struct ConservativeMetrics {
     pub band_drawn: u64,
     pub first_missing: Option<[u32; 2]>,
     pub first_forbidden: Option<[u32; 2]>,
+    /// Multisampled (SPEC.md §19.10): drawn pixels with only some of their
+    /// samples covered (a conservatively drawn pixel covers all), and the
+    /// first.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub partly_covered: u64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_partly_covered: Option<[u32; 2]>,
     pub flag: Option<FlagMetrics>,
     /// The depth at the drawn pixels, for a case with depth (SPEC.md
     /// §19.9, `conservative_depth.rs`).
@@ -89,18 +102,29 @@ pub struct ConservativeMetrics {
     pub pixels: Vec<ConservativePixel>,
 }
 
+/// Whether `frame` draws pixel `i` (row-major): `Some(drawn)` when its
+/// samples are all covered or none, `None` when only some are, which no
+/// class admits (SPEC.md §19.10).
+pub fn pixel_drawn(frame: &Frame, i: usize) -> Option<bool> {
+    let n = frame.samples.max(1) as usize;
+    let run = frame.coverage.get(i * n..(i + 1) * n)?;
+    let any = run.iter().any(|&c| c > 0);
+    (run.iter().all(|&c| c > 0) == any).then_some(any)
+}
+
 /// Why a candidate's frame cannot be judged against conservative classes:
-/// another canvas, or other than one sample per pixel.
-pub fn shape_problem(classes: &ConservativeClasses, frame: &Frame) -> Option<String> {
+/// another canvas, or other than `samples` samples per pixel (the case's
+/// `effects.antialias` count, 1 without it).
+pub fn shape_problem(classes: &ConservativeClasses, frame: &Frame, samples: u32) -> Option<String> {
     if (frame.width, frame.height) != (classes.width, classes.height) {
         return Some(format!(
             "{}×{} for a {}×{} canvas",
             frame.width, frame.height, classes.width, classes.height
         ));
     }
-    if frame.samples != 1 || frame.coverage.len() != frame.pixel_count() {
+    if frame.samples != samples || frame.coverage.len() != frame.pixel_count() * samples as usize {
         return Some(format!(
-            "{} samples per pixel; a conservative scene is drawn with one per pixel (SPEC.md §19.5)",
+            "{} samples per pixel; this conservative scene is drawn with {samples} per pixel (SPEC.md §19.5, §19.10)",
             frame.samples
         ));
     }
@@ -127,6 +151,7 @@ pub fn measure(
     let at = |i: usize| [(i % width) as u32, (i / width) as u32];
     let mut m = ConservativeMetrics {
         judged_under,
+        case_states: None,
         required: classes.count(PixelClass::Required) as u64,
         band: classes.count(PixelClass::Allowed) as u64,
         required_missing: 0,
@@ -134,12 +159,28 @@ pub fn measure(
         band_drawn: 0,
         first_missing: None,
         first_forbidden: None,
+        partly_covered: 0,
+        first_partly_covered: None,
         flag: None,
         depth: None,
         pixels: Vec::with_capacity(classes.drawn.len()),
     };
+    // A pixel's samples are of its class (SPEC.md §19.10): a required
+    // pixel is drawn when all its samples are, any other when any is.
+    let samples = frame.samples.max(1) as usize;
+    let covered = |i: usize| frame.coverage[i * samples..(i + 1) * samples].iter();
+    let any = |i: usize| covered(i).any(|&c| c > 0);
     for (i, &class) in classes.drawn.iter().enumerate() {
-        let pixel = ConservativePixel::of(class, frame.coverage[i] > 0);
+        let all = covered(i).all(|&c| c > 0);
+        if any(i) && !all {
+            m.partly_covered += 1;
+            m.first_partly_covered.get_or_insert(at(i));
+        }
+        let drawn = match class {
+            PixelClass::Required => all,
+            _ => any(i),
+        };
+        let pixel = ConservativePixel::of(class, drawn);
         match pixel {
             ConservativePixel::RequiredMissing => {
                 m.required_missing += 1;
@@ -163,7 +204,7 @@ pub fn measure(
             return f;
         };
         for (i, (&class, &flag)) in flag_classes.iter().zip(flags).enumerate() {
-            if frame.coverage[i] == 0 {
+            if !any(i) {
                 continue;
             }
             f.judged += 1;
@@ -201,7 +242,11 @@ pub fn coverage(m: &ConservativeMetrics, frame: &Frame) -> CoverageMetrics {
     CoverageMetrics {
         samples: mask.len() as u64,
         reference_covered: m.required,
-        candidate_covered: frame.coverage.iter().filter(|&&c| c > 0).count() as u64,
+        candidate_covered: frame
+            .coverage
+            .chunks(frame.samples.max(1) as usize)
+            .filter(|run| run.iter().any(|&c| c > 0))
+            .count() as u64,
         missing: m.required_missing,
         extra: m.forbidden_drawn,
         wrong_owner: 0,
@@ -222,6 +267,12 @@ pub fn failures(m: &ConservativeMetrics) -> Vec<String> {
         out.push(format!(
             "conservative: {} forbidden pixel(s) drawn, first ({x}, {y}): beyond the allowed band ({})",
             m.forbidden_drawn, m.judged_under
+        ));
+    }
+    if let Some([x, y]) = m.first_partly_covered {
+        out.push(format!(
+            "conservative: {} drawn pixel(s) with only some of their samples covered, first ({x}, {y}): a conservatively drawn pixel covers all its samples (SPEC.md §19.10)",
+            m.partly_covered
         ));
     }
     if let Some(f) = &m.flag {
@@ -248,6 +299,9 @@ pub fn summary(m: &ConservativeMetrics) -> String {
         "conservative ({}): required {} (missing {}), drawn in the allowed band {} of {}, forbidden drawn {}",
         m.judged_under, m.required, m.required_missing, m.band_drawn, m.band, m.forbidden_drawn
     );
+    if m.partly_covered > 0 {
+        out.push_str(&format!(", partly covered {}", m.partly_covered));
+    }
     if let Some(f) = &m.flag {
         out.push_str(&format!(
             "; flag wrong at {} of {} drawn",
@@ -260,4 +314,8 @@ pub fn summary(m: &ConservativeMetrics) -> String {
         out.push_str(&super::conservative_depth::summary(d));
     }
     out
+}
+
+fn is_zero(n: &u64) -> bool {
+    *n == 0
 }

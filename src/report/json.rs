@@ -177,7 +177,11 @@ impl Totals {
                     || result.judged_y.is_some()
                     || result.judged_pixel_centre.is_some()
                     || result.judged_line_parameter.is_some()
-                    || result.judged_line_border.is_some(),
+                    || result.judged_line_border.is_some()
+                    || result
+                        .conservative
+                        .as_ref()
+                        .is_some_and(|c| c.case_states.is_some()),
             );
         }
     }

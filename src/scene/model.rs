@@ -96,14 +96,13 @@ impl Scene {
     }
 
     /// Why a conservative scene is not judged in this version, if it is
-    /// not (SPEC.md §19.7): multisampling, motion, clip space, polygons,
-    /// attributes at conservative pixels, points and lines. Every candidate's verdict on it is `unsupported`
+    /// not (SPEC.md §19.7): motion, clip space, polygons, attributes at
+    /// conservative pixels, the depth of points and lines or of multisampled
+    /// scenes, and lines without an area. Every candidate's verdict on it is `unsupported`
     /// with this reason; `None` for a scene that is not conservative.
     pub fn conservative_unjudged(&self) -> Option<String> {
         self.effects.conservative.as_ref()?;
-        let clash = if self.effects.antialias.is_some() {
-            Some("multisampling (effects.antialias)")
-        } else if self.effects.motion_blur.is_some() {
+        let clash = if self.effects.motion_blur.is_some() {
             Some("effects.motion_blur")
         } else if self.in_clip_space() {
             Some("clip space")
@@ -119,6 +118,9 @@ impl Scene {
         }
         if self.has_depth && self.has_points_or_lines() {
             return Some("the depth of conservatively drawn points and lines is not judged in this version (SPEC.md §19.7)".to_owned());
+        }
+        if self.has_depth && self.effects.antialias.is_some() {
+            return Some("the depth of a multisampled conservative scene is not judged in this version (SPEC.md §19.7)".to_owned());
         }
         if self.attribute_count > 0 {
             return Some("attributes at conservatively drawn pixels are not judged in this version (SPEC.md §19.7)".to_owned());

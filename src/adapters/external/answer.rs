@@ -417,9 +417,11 @@ impl Fragments {
         let frame = &mut self.frame;
         let i = frame.index(x, y) + slot as usize;
         frame.hit(i, p);
-        // The last fragment written at a pixel leaves its flag (SPEC.md §19.4).
+        // The last fragment written at a pixel leaves its flag (SPEC.md §19.4),
+        // one per pixel, multisampled too (§19.10).
+        let pixel = i / frame.samples.max(1) as usize;
         if let (Some(slot), Some(flag)) = (
-            frame.fully_covered.as_mut().and_then(|f| f.get_mut(i)),
+            frame.fully_covered.as_mut().and_then(|f| f.get_mut(pixel)),
             flag,
         ) {
             *slot = flag;

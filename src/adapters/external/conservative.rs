@@ -2,7 +2,9 @@
 //! §12.11, §19): the hello's `capabilities.conservative` (its modes, its
 //! uncertainty, its degenerate-primitive behaviour, points and lines, the
 //! fully-covered flag), what a conservative case asks of it (refused
-//! unsent, naming the declaration, when it asks for more), and the
+//! unsent, naming the declaration, when it asks for a mode, the flag or
+//! conservative lines it does not declare; never for its uncertainty,
+//! which it cannot choose and is judged under, SPEC.md §19.6), and the
 //! conservative state a request carries. Like §12.10's, the declaration is
 //! asked for: a conservative case goes only to a persistent program whose
 //! hello makes it, since a program written before §12.11 would draw the
@@ -128,14 +130,6 @@ pub fn refuses(
             modes.join(", ")
         ));
     }
-    if case.uncertainty < d.uncertainty {
-        return Some(format!(
-            "the case allows an uncertainty of {} px; {who} declares {} px (its hello's \
-             conservative.uncertainty): a tighter case is not sent (SPEC §12.11)",
-            case.uncertainty.to_exact_string(),
-            d.uncertainty.to_exact_string()
-        ));
-    }
     if case.fully_covered && !d.fully_covered {
         return Some(format!(
             "{who} gives no fully-covered flag (its hello's conservative.fully_covered is not true)"
@@ -241,8 +235,10 @@ mod tests {
         );
     }
 
-    /// A case asking for a mode not offered, a tighter uncertainty, or the
-    /// flag undeclared is refused, naming the declaration.
+    /// A case asking for a mode not offered or the flag undeclared is
+    /// refused, naming the declaration; a case stating another uncertainty
+    /// is sent either way (the program is judged under its own, SPEC.md
+    /// §19.6).
     #[test]
     fn a_case_asking_more_than_declared_is_refused_naming_it() {
         let who = "the program (toy 1)";
@@ -250,12 +246,12 @@ mod tests {
         let over = |u: &str| scene(json!({"mode": "overestimate", "uncertainty": u}));
         assert_eq!(refuses(&over("1/256"), Some(&d), who), None);
         assert_eq!(refuses(&over("1/2"), Some(&d), who), None);
-        let tight = refuses(&over("1/512"), Some(&d), who).unwrap();
-        assert!(
-            tight.contains("allows an uncertainty of 0.001953125 px"),
-            "{tight}"
+        assert_eq!(
+            refuses(&over("1/512"), Some(&d), who),
+            None,
+            "a tighter case is sent and judged under the declared 1/256"
         );
-        assert!(tight.contains("declares 0.00390625 px"), "{tight}");
+        assert_eq!(refuses(&over("0"), Some(&d), who), None);
         let under = refuses(
             &scene(json!({"mode": "underestimate", "uncertainty": "1/2"})),
             Some(&d),

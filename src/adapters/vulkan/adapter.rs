@@ -171,6 +171,18 @@ impl Rasterizer for Vulkan {
         Some(support)
     }
 
+    /// [`Rasterizer::conservative`] for `scene`: its overestimation
+    /// uncertainty is the device's base size plus the extra size the case
+    /// asks for (SPEC.md §19.6, `conservative.rs`).
+    fn conservative_for(&self, scene: &Scene) -> Option<ConservativeSupport> {
+        let shared = self.shared().ok()?;
+        let support = super::conservative::support_for(
+            scene,
+            lock(shared).device.offers.conservative.as_ref(),
+        );
+        Some(support)
+    }
+
     fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         let shared = self
             .shared()
@@ -190,6 +202,14 @@ impl Rasterizer for Vulkan {
             };
             let bytes = draw::render(device, pipelines, unpack, scene, plan, &job)?;
             return draw::slots(&bytes, scene, plan, &job);
+        }
+        if scene.is_conservative() && plan.antialias.is_some() {
+            return Err(RasterError::Unsupported(
+                "conservative and multisampled, not natively: each shifted single-sample pass \
+                 would draw every pixel its shifted triangle touches, not the case's pixels with \
+                 all their samples (SPEC.md §19.10)"
+                    .to_owned(),
+            ));
         }
         let shifts = match &plan.antialias {
             Some(aa) => gpu::shifts(aa, device.offers.subpixel_bits)

@@ -7,19 +7,21 @@
 //! declared to have, and why it cannot draw a case.
 //!
 //! **The uncertainty.** Vulkan grows the primitive "at each of its edges"
-//! by `primitiveOverestimationSize`, plus the pipeline's
-//! `extraPrimitiveOverestimationSize` (0 to
-//! `maxExtraPrimitiveOverestimationSize`, in steps of
-//! `extraPrimitiveOverestimationSizeGranularity`). A case (SPEC.md §19)
-//! states the uncertainty it allows, not an extra size to grow by, so the
-//! pipeline asks for no extra size (0, which every device takes exactly)
-//! and the device is declared to have its own base size as its
-//! uncertainty (`ConservativeSupport::overestimation_uncertainty`): every
-//! overestimating case is judged under it, reported as judged under the
-//! device's own where the case states another (SPEC.md §19.6). A case
-//! format that asked for an extra size e would be handed ⌈e / g⌉·g (g the
-//! granularity, or 2^-subPixelPrecisionBits where it is 0), refused above
-//! the maximum, and declared as base + that; none does today.
+//! by `primitiveOverestimationSize` p, plus the pipeline's
+//! `extraPrimitiveOverestimationSize` e ("in steps of
+//! `extraPrimitiveOverestimationSizeGranularity` up to and including"
+//! `maxExtraPrimitiveOverestimationSize`; a granularity of 0 "means the
+//! implementation can use the smallest representable non-zero value in the
+//! screen space pixel fixed-point grid", 2^-subPixelPrecisionBits). A case
+//! (SPEC.md §19) states the uncertainty u it allows, so an overestimating
+//! case stating u > p asks for the largest e ≤ u − p on the granularity and
+//! within the maximum ([`extra`]), and 0 otherwise; the device is declared
+//! to have p + e as its uncertainty for that case
+//! ([`support_for`], `ConservativeSupport::overestimation_uncertainty`)
+//! and judged under it, reported as judged under the device's own where
+//! the case states another (SPEC.md §19.6). The size asked is the largest
+//! f32 not above e, so that a device rounding to its steps cannot go past
+//! e.
 //!
 //! What it does not do: read `FullyCoveredEXT` (the shaders are naga's
 //! WGSL, which has no such built-in: a case asking for the flag is
@@ -58,6 +60,9 @@ pub(super) struct ConservativeOffers {
     pub fully_covered: bool,
     /// `conservativeRasterizationPostDepthCoverage`.
     pub post_depth_coverage: bool,
+    /// `subPixelPrecisionBits`: the grid of the extra size when its
+    /// granularity is 0.
+    pub grid_bits: u32,
 }
 
 impl ConservativeOffers {
@@ -73,6 +78,26 @@ impl ConservativeOffers {
             degenerate_lines: p.degenerate_lines_rasterized == vk::TRUE,
             fully_covered: p.fully_covered_fragment_shader_input_variable == vk::TRUE,
             post_depth_coverage: p.conservative_rasterization_post_depth_coverage == vk::TRUE,
+            grid_bits: 8,
+        }
+    }
+
+    /// These offers on a device of `subpixel_bits` (`subPixelPrecisionBits`).
+    pub(super) fn on_grid(self, subpixel_bits: u32) -> Self {
+        ConservativeOffers {
+            grid_bits: subpixel_bits,
+            ..self
+        }
+    }
+
+    /// The step of the extra size, exact: the granularity, or the
+    /// subpixel grid's step where it is 0.
+    fn step(&self) -> Number {
+        let g = number(self.extra_granularity);
+        if g.is_positive() {
+            g
+        } else {
+            Number::ratio(1, 1i64 << self.grid_bits.min(62))
         }
     }
 
@@ -117,6 +142,39 @@ fn number(v: f32) -> Number {
         .map(Number::from_rbig)
         .filter(|n| n.is_positive())
         .unwrap_or(Number::ZERO)
+}
+
+/// The extra overestimation size, exact, that an overestimating case
+/// stating uncertainty `u` asks of a device offering `offers`: the largest
+/// k·g (g the step, [`ConservativeOffers::step`]) with k·g ≤ u − p (p the
+/// base size) and k·g ≤ the maximum; 0 where u ≤ p or the device offers no
+/// extra (SPEC.md §19.6).
+pub(super) fn extra(u: &Number, offers: &ConservativeOffers) -> Number {
+    let p = number(offers.overestimation_size);
+    let max = number(offers.max_extra);
+    let slack = u.as_rbig() - p.as_rbig();
+    let room = if &slack < max.as_rbig() {
+        slack
+    } else {
+        max.as_rbig().clone()
+    };
+    if room <= RBig::ZERO {
+        return Number::ZERO;
+    }
+    let step = offers.step();
+    let k = (room / step.as_rbig()).floor();
+    Number::from_rbig(RBig::from(k) * step.as_rbig())
+}
+
+/// The largest f32 not above `e` (an exact extra size, from 0 to ¾ px or
+/// so): what the pipeline is handed, so that the device, rounding to its
+/// steps, grows by no more than `e`.
+fn f32_at_most(e: &Number) -> f32 {
+    let mut v = e.to_f64_lossy() as f32;
+    while v > 0.0 && RBig::try_from(v).is_ok_and(|r| &r > e.as_rbig()) {
+        v = f32::from_bits(v.to_bits() - 1);
+    }
+    v.max(0.0)
 }
 
 /// What a conservative case asks the pipeline for.
@@ -192,13 +250,14 @@ pub(super) fn ask(
         },
         ConservativeMode::Overestimate => Ask {
             underestimate: false,
-            extra: 0.0f32.to_bits(),
+            extra: f32_at_most(&extra(&case.uncertainty, offers)).to_bits(),
         },
     }))
 }
 
-/// What the device declares for conservative cases (SPEC.md §19.6): the
-/// modes it offers, its base size as its overestimation uncertainty, and
+/// What the device declares for conservative cases with no extra size
+/// (SPEC.md §19.6): the modes it offers, its base size as its
+/// overestimation uncertainty ([`support_for`] adds a case's extra), and
 /// its degenerate-primitive properties. Without the extension it still
 /// claims both modes, so that a case comes to `rasterize` and is refused
 /// there with the device's reason.
@@ -226,6 +285,25 @@ pub(super) fn support(offers: Option<&ConservativeOffers>) -> ConservativeSuppor
         // a case with depth is refused with that reason (SPEC.md §19.9).
         depth: false,
     }
+}
+
+/// What the device declares for conservative `scene` (SPEC.md §19.6):
+/// [`support`], its overestimation uncertainty p + e, e the extra size the
+/// case asks for ([`extra`]).
+pub(super) fn support_for(
+    scene: &Scene,
+    offers: Option<&ConservativeOffers>,
+) -> ConservativeSupport {
+    let mut declared = support(offers);
+    if let (Some(offers), Some(case)) = (offers, &scene.effects.conservative) {
+        if case.mode == ConservativeMode::Overestimate {
+            let p = number(offers.overestimation_size);
+            let e = extra(&case.uncertainty, offers);
+            declared.overestimation_uncertainty =
+                Some(Number::from_rbig(p.as_rbig() + e.as_rbig()));
+        }
+    }
+    declared
 }
 
 #[cfg(test)]
@@ -268,33 +346,60 @@ mod tests {
     }
 
     /// What the pipeline is asked for, and what the device then declares,
-    /// on an H100's properties: the case's mode, no extra size, the
-    /// structure type the chain needs; the uncertainty 2^-9 px whatever
-    /// the case allows (judged under it).
+    /// on an H100's properties (p = 2^-9, steps of 2^-8 up to ¾): the
+    /// case's mode, the structure type the chain needs, and the largest
+    /// extra size e on the steps with p + e ≤ the case's u (0 where u ≤ p),
+    /// the device judged under p + e.
     #[test]
-    fn a_case_asks_for_its_mode_and_no_extra_size() {
+    fn a_case_asks_for_the_largest_extra_size_it_allows() {
         let o = h100();
-        for u in ["0", "1/64", "3/4"] {
+        // (the case's u, the extra asked, the uncertainty declared)
+        for (u, e, declared) in [
+            ("0", "0", "1/512"),
+            ("1/1024", "0", "1/512"),
+            ("1/512", "0", "1/512"),
+            ("1/256", "0", "1/512"),
+            ("3/512", "1/256", "3/512"),
+            ("1/64", "3/256", "7/512"),
+            ("1/2", "127/256", "255/512"),
+            ("3/4", "191/256", "383/512"),
+            ("1", "3/4", "385/512"),
+        ] {
             let over = scene(json!({"mode": "overestimate", "uncertainty": u}));
             let info = ask(&over, Some(&o)).unwrap().unwrap().create_info();
             assert_eq!(
                 info.conservative_rasterization_mode,
                 vk::ConservativeRasterizationModeEXT::OVERESTIMATE
             );
-            assert_eq!(info.extra_primitive_overestimation_size, 0.0);
+            assert_eq!(
+                Number::from_rbig(
+                    RBig::try_from(info.extra_primitive_overestimation_size).unwrap()
+                ),
+                n(e),
+                "u = {u}"
+            );
             assert_eq!(
                 info.s_type,
                 vk::StructureType::PIPELINE_RASTERIZATION_CONSERVATIVE_STATE_CREATE_INFO_EXT
             );
+            let support = support_for(&over, Some(&o));
+            assert_eq!(
+                support.overestimation_uncertainty,
+                Some(n(declared)),
+                "u = {u}"
+            );
+            assert!(
+                n(declared) <= n(u) || e == "0",
+                "u = {u}: never above the case's but for p"
+            );
+            let judged = support.restate(over.effects.conservative.as_ref().unwrap());
+            assert_eq!(judged.uncertainty, n(declared));
         }
         let declared = support(Some(&o));
         assert_eq!(declared.overestimation_uncertainty, Some(n("1/512")));
         assert_eq!(declared.underestimation_uncertainty, None);
         assert_eq!(declared.degenerate_triangles, Some(true));
         assert!(declared.overestimate && declared.underestimate);
-        let case = scene(json!({"mode": "overestimate"}));
-        let judged = declared.restate(case.effects.conservative.as_ref().unwrap());
-        assert_eq!(judged.uncertainty, n("1/512"));
         let under = scene(json!({"mode": "underestimate", "uncertainty": "1/8"}));
         let info = ask(&under, Some(&o)).unwrap().unwrap().create_info();
         assert_eq!(
@@ -302,6 +407,11 @@ mod tests {
             vk::ConservativeRasterizationModeEXT::UNDERESTIMATE
         );
         assert_eq!(info.extra_primitive_overestimation_size, 0.0);
+        assert_eq!(
+            support_for(&under, Some(&o)).underestimation_uncertainty,
+            None,
+            "underestimation has no size: it follows the case"
+        );
         assert!(
             o.words().contains(
                 "primitiveOverestimationSize 0.001953125, extra up to 0.75 in steps of 0.00390625"
@@ -309,6 +419,55 @@ mod tests {
             "{}",
             o.words()
         );
+    }
+
+    /// A device offering no extra size is judged at its base size; one
+    /// whose granularity is 0 steps on its subpixel grid; one whose
+    /// granularity is no power of two is handed an f32 not above k·g.
+    #[test]
+    fn the_extra_size_follows_the_maximum_and_the_granularity() {
+        let half = scene(json!({"mode": "overestimate", "uncertainty": "1/2"}));
+        let none = ConservativeOffers {
+            max_extra: 0.0,
+            ..h100()
+        };
+        assert_eq!(
+            ask(&half, Some(&none))
+                .unwrap()
+                .unwrap()
+                .create_info()
+                .extra_primitive_overestimation_size,
+            0.0
+        );
+        assert_eq!(
+            support_for(&half, Some(&none)).overestimation_uncertainty,
+            Some(n("1/512"))
+        );
+        let grid = ConservativeOffers {
+            extra_granularity: 0.0,
+            ..h100()
+        }
+        .on_grid(4);
+        // u − p = 255/512: 7 steps of 1/16.
+        assert_eq!(extra(&n("1/2"), &grid), n("7/16"));
+        let tenth = ConservativeOffers {
+            extra_granularity: 0.1,
+            ..h100()
+        };
+        let e = extra(&n("1/2"), &tenth);
+        let g = Number::from_rbig(RBig::try_from(0.1f32).unwrap());
+        assert_eq!(e, Number::from_rbig(RBig::from(4) * g.as_rbig()));
+        let asked = ask(&half, Some(&tenth))
+            .unwrap()
+            .unwrap()
+            .create_info()
+            .extra_primitive_overestimation_size;
+        let asked = Number::from_rbig(RBig::try_from(asked).unwrap());
+        assert!(
+            asked <= e && asked > Number::from_rbig(RBig::from(3) * g.as_rbig()),
+            "{asked}"
+        );
+        assert_eq!(support_for(&half, None).overestimation_uncertainty, None);
     }
 
     /// Without the extension (lavapipe, SwiftShader): refused with the

@@ -412,7 +412,7 @@ impl Device {
             max_viewport: limits.max_viewport_dimensions,
             interpolate_from: interpolate_from(driver.driver_id),
             line_parameter: line_parameter(driver.driver_id),
-            conservative,
+            conservative: conservative.map(|c| c.on_grid(limits.sub_pixel_precision_bits)),
         };
         Ok(Device {
             _entry: entry,

@@ -531,7 +531,9 @@ fn time_focus(
 fn conservative_focus(classes: &ConservativeClasses, candidate: &Frame) -> Vec<usize> {
     (0..classes.drawn.len())
         .filter(|&i| {
-            let drawn = candidate.coverage.get(i).is_some_and(|&c| c > 0);
+            let Some(drawn) = crate::metrics::conservative::pixel_drawn(candidate, i) else {
+                return true; // partly covered (SPEC.md §19.10)
+            };
             let flag = candidate
                 .fully_covered
                 .as_ref()

@@ -15,8 +15,10 @@
 //! Depth, where the scene has it, is the triangle's plane at the pixel's
 //! centre (`depth.rs`, SPEC.md §19.9).
 //!
-//! What it does not do: multisampling, motion, clip space, polygons,
-//! attributes, and the depth of points and lines under conservative
+//! Multisampled (SPEC.md §19.10), a drawn pixel covers every sample of it.
+//!
+//! What it does not do: motion, clip space, polygons, attributes, and the
+//! depth of points and lines or of multisampled scenes under conservative
 //! rasterization (the
 //! scene says why, `Scene::conservative_unjudged`); coordinates that are
 //! not snapped whose common denominator exceeds 2^24.
@@ -69,19 +71,20 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     let margin = Growth::margin(&case.uncertainty, placed.one);
     let (w, h) = (scene.canvas.width, scene.canvas.height);
     let mut frame = Frame::for_plan(w, h, plan);
-    let mut flags = case
-        .fully_covered
-        .then(|| vec![false; frame.coverage.len()]);
+    let mut flags = case.fully_covered.then(|| vec![false; frame.pixel_count()]);
+    // Multisampled (SPEC.md §19.10): a drawn pixel covers all its samples.
+    let samples = frame.samples.max(1) as usize;
     for (index, primitive) in scene.primitives.iter().enumerate() {
         let v = &placed.vertices[index];
         let mut mark = |x: i64, y: i64, full: bool, plane: Option<&DepthPlane>| {
             let i = frame.index(x as u32, y as u32);
-            frame.hit(i, index);
+            frame.hit_run(i, i + samples, index);
             if let (Some(depth), Some(plane)) = (frame.depth.as_mut(), plane) {
+                // Depth is judged single-sampled only (SPEC.md §19.7).
                 depth[i] = plane.at(x, y);
             }
             if let Some(flags) = &mut flags {
-                flags[i] = full;
+                flags[i / samples] = full;
             }
         };
         match primitive {
@@ -146,6 +149,9 @@ pub fn rasterize(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
         }
     }
     frame.fully_covered = flags;
+    if frame.resolved.is_some() {
+        frame.resolved = Some(frame.box_resolve());
+    }
     // With depth it gives depth (SPEC.md §19.9); attributes are refused.
     frame.coverage_only = !scene.has_depth;
     Ok(frame)

@@ -166,16 +166,23 @@ pub fn render(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
     Ok(frame_of(scene, plan, &classes))
 }
 
-/// The frame of `classes`: every required pixel drawn once, by the last
-/// primitive required there, its flag true where it must be (a frame that
+/// The frame of `classes`: every required pixel drawn once (all its
+/// samples, multisampled), by the last primitive required there, its flag true where it must be (a frame that
 /// passes).
 pub fn frame_of(scene: &Scene, plan: &Plan, classes: &ConservativeClasses) -> Frame {
     let mut frame = Frame::for_plan(scene.canvas.width, scene.canvas.height, plan);
+    // Multisampled (SPEC.md §19.10): every sample of a drawn pixel.
+    let samples = frame.samples.max(1) as usize;
     for (i, class) in classes.drawn.iter().enumerate() {
         if *class == PixelClass::Required {
             let last = classes.last_required[i].max(1) - 1;
-            frame.hit(i, last as usize);
+            for slot in i * samples..(i + 1) * samples {
+                frame.hit(slot, last as usize);
+            }
         }
+    }
+    if frame.resolved.is_some() {
+        frame.resolved = Some(frame.box_resolve());
     }
     frame.fully_covered = classes.fully_covered.as_ref().map(|flags| {
         flags
