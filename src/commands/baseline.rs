@@ -18,6 +18,7 @@ use crate::harness::discover;
 use crate::harness::runner::{self, Selection};
 use crate::rasterizer::Rasterizer;
 use crate::registry;
+use crate::report::baseline_rows;
 
 #[derive(Subcommand)]
 pub enum BaselineCommand {
@@ -44,8 +45,17 @@ pub enum BaselineCommand {
         paths: Vec<PathBuf>,
         /// Rasterizer to check (default: every one in FILE). NAME=RECORDED
         /// runs NAME and holds it to the results recorded for RECORDED.
+        /// With --report, NAME is a row of the report (a rasterizer, or in a
+        /// merged report of several devices "NAME on DEVICE").
         #[arg(long = "rasterizer", short = 'r', value_name = "NAME[=RECORDED]")]
         rasterizers: Vec<String>,
+        /// Hold the results of this report (a report.json or its folder;
+        /// one run's, or a merge of shards or devices) to FILE instead of
+        /// running anything. Each recorded rasterizer is held to the row of
+        /// its name; a row of another name (a device's) is chosen with
+        /// -r "ROW=RECORDED".
+        #[arg(long, value_name = "REPORT", conflicts_with = "paths")]
+        report: Option<PathBuf>,
         #[command(flatten)]
         select: BaselineSelectArgs,
     },
@@ -120,8 +130,9 @@ pub fn baseline(command: BaselineCommand) -> Exit {
             file,
             paths,
             rasterizers,
+            report,
             select,
-        } => baseline_check(file, paths, rasterizers, select),
+        } => baseline_check(file, paths, rasterizers, report, select),
     }
 }
 
@@ -180,10 +191,100 @@ fn baseline_save(
     Exit::Pass
 }
 
+/// The baseline's cases run again, each candidate named by `pairs`
+/// observed under its recorded name; and whether no case was found.
+#[allow(clippy::too_many_arguments)]
+fn observe_run(
+    baseline: &Baseline,
+    shown: &str,
+    paths: Vec<PathBuf>,
+    names: &[String],
+    pairs: &[(String, String)],
+    recorded: &[String],
+    selection: &Selection,
+    select: &BaselineSelectArgs,
+) -> Result<(Observed, bool), Exit> {
+    let mut candidates = Vec::new();
+    for (run, _) in pairs {
+        // First: a command that cannot be split, or a program that cannot
+        // start, is said as such, not as an unknown name.
+        super::names::environment_for(run).and_then(|()| super::names::startable(run))?;
+        match registry::by_name(run) {
+            Some(r) => candidates.push(r),
+            None if names.is_empty() => {
+                eprintln!(
+                    "error: {shown}: the baseline records {}",
+                    unknown_rasterizer(run)
+                );
+                return Err(Exit::BadInput);
+            }
+            None => {
+                eprintln!("error: {}", unknown_rasterizer(run));
+                return Err(Exit::BadInput);
+            }
+        }
+    }
+    let paths = if paths.is_empty() {
+        baseline.selection.paths.iter().map(PathBuf::from).collect()
+    } else {
+        paths
+    };
+    // Empty is allowed: the baseline's cases that are gone are regressions.
+    let files = baseline_cases(paths, selection, true)?;
+    Ok((
+        observe(&files, &candidates, recorded, select),
+        files.is_empty(),
+    ))
+}
+
+/// The rows of the report at `path` named by `pairs` (row, recorded), its
+/// cases that `selection` keeps, observed under their recorded names; and
+/// whether it has no such case. A row the report lacks is bad input naming
+/// the report and its rows.
+fn observe_report(
+    path: &std::path::Path,
+    pairs: &[(String, String)],
+    selection: &Selection,
+) -> Result<(Observed, bool), Exit> {
+    let mut input = match crate::report::merge::read::read_input(path) {
+        Ok(input) => input,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return Err(Exit::BadInput);
+        }
+    };
+    let rows = baseline_rows::rows(&input.report);
+    for (row, recorded) in pairs {
+        if !rows.contains(row) {
+            eprintln!(
+                "error: {}: no row {row:?} to hold to {recorded:?} (its rows: {}); choose one with -r \"ROW={recorded}\"",
+                input.file.display(),
+                rows.join(", "),
+            );
+            return Err(Exit::BadInput);
+        }
+    }
+    let ids: Vec<discover::CaseFile> = input
+        .report
+        .cases
+        .iter()
+        .map(|c| discover::CaseFile {
+            id: c.id.clone(),
+            path: Default::default(),
+        })
+        .collect();
+    let kept: std::collections::HashSet<String> =
+        selection.apply(ids).into_iter().map(|c| c.id).collect();
+    input.report.cases.retain(|c| kept.contains(&c.id));
+    let observed = baseline_rows::observed(&input.report, pairs);
+    Ok((observed, input.report.cases.is_empty()))
+}
+
 fn baseline_check(
     file: PathBuf,
     paths: Vec<PathBuf>,
     names: Vec<String>,
+    report: Option<PathBuf>,
     select: BaselineSelectArgs,
 ) -> Exit {
     let baseline = match Baseline::load(&file) {
@@ -200,6 +301,15 @@ fn baseline_check(
             .rasterizers
             .iter()
             .map(|n| (n.clone(), n.clone()))
+            .collect()
+    } else if report.is_some() {
+        // Rows of a report: `ROW` or `ROW=RECORDED`.
+        names
+            .iter()
+            .map(|n| match n.split_once('=') {
+                Some((row, recorded)) => (row.trim().to_owned(), recorded.trim().to_owned()),
+                None => (n.clone(), n.clone()),
+            })
             .collect()
     } else {
         if let Err(exit) = super::names::check_names(&names) {
@@ -225,7 +335,6 @@ fn baseline_check(
         );
         return Exit::BadInput;
     }
-    let mut candidates = Vec::new();
     for (run, recorded) in &pairs {
         if !baseline.rasterizers.contains(recorded) {
             eprintln!(
@@ -235,45 +344,32 @@ fn baseline_check(
             );
             return Exit::BadInput;
         }
-        // First: a command that cannot be split, or a program that cannot
-        // start, is said as such, not as an unknown name.
-        if let Err(exit) =
-            super::names::environment_for(run).and_then(|()| super::names::startable(run))
-        {
-            return exit;
-        }
-        match registry::by_name(run) {
-            Some(r) => candidates.push(r),
-            None if names.is_empty() => {
-                eprintln!(
-                    "error: {shown}: the baseline records {}",
-                    unknown_rasterizer(run)
-                );
-                return Exit::BadInput;
-            }
-            None => {
-                eprintln!("error: {}", unknown_rasterizer(run));
-                return Exit::BadInput;
-            }
-        }
     }
-    let paths = if paths.is_empty() {
-        baseline.selection.paths.iter().map(PathBuf::from).collect()
-    } else {
-        paths
-    };
     let selection = Selection {
         filter: select.filter.clone().or(baseline.selection.filter.clone()),
         family: select.family.clone().or(baseline.selection.family.clone()),
         shard: None,
     };
-    // Empty is allowed: the baseline's cases that are gone are regressions.
-    let files = match baseline_cases(paths, &selection, true) {
-        Ok(files) => files,
-        Err(exit) => return exit,
-    };
     let recorded: Vec<String> = pairs.iter().map(|p| p.1.clone()).collect();
-    let observed = observe(&files, &candidates, &recorded, &select);
+    let (observed, found_none) = match &report {
+        Some(report) => match observe_report(report, &pairs, &selection) {
+            Ok(observed) => observed,
+            Err(exit) => return exit,
+        },
+        None => match observe_run(
+            &baseline,
+            &shown.to_string(),
+            paths,
+            &names,
+            &pairs,
+            &recorded,
+            &selection,
+            &select,
+        ) {
+            Ok(observed) => observed,
+            Err(exit) => return exit,
+        },
+    };
     let comparison = baseline.compare(&observed, &recorded, &selection);
     let shown_as = |recorded: &str| {
         pairs
@@ -316,7 +412,7 @@ fn baseline_check(
         Exit::BadInput
     } else if comparison.regressions() > 0 {
         Exit::Fail
-    } else if files.is_empty() && comparison.results == 0 {
+    } else if found_none && comparison.results == 0 {
         eprintln!(
             "error: no case files found that match the selection, and {shown} records none; nothing was judged"
         );

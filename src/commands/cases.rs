@@ -4,7 +4,8 @@
 use std::path::PathBuf;
 
 use super::console::outln;
-use crate::harness::discover::{self, CaseFile, Discovery};
+use crate::harness::case_list::CaseList;
+use crate::harness::discover::{self, Discovery};
 
 /// The case paths given, or `cases` when none is.
 pub(crate) fn default_paths(paths: Vec<PathBuf>) -> Vec<PathBuf> {
@@ -18,7 +19,16 @@ pub(crate) fn default_paths(paths: Vec<PathBuf>) -> Vec<PathBuf> {
 /// Discovers cases, printing what was skipped and what could not be found;
 /// the flag says whether something could not be found.
 pub(crate) fn discover(paths: Vec<PathBuf>) -> (Discovery, bool) {
-    let found = discover::discover(&default_paths(paths));
+    printed(discover::discover(&default_paths(paths)))
+}
+
+/// [`discover`] with the cases held compactly (`run`).
+pub(crate) fn discover_list(paths: Vec<PathBuf>) -> (Discovery<CaseList>, bool) {
+    printed(discover::discover_list(&default_paths(paths)))
+}
+
+/// What was skipped and what could not be found, printed.
+fn printed<C>(found: Discovery<C>) -> (Discovery<C>, bool) {
     for dir in &found.skipped {
         outln!(
             "note: skipping {} (negative tests; name it explicitly to check it)",
@@ -34,13 +44,15 @@ pub(crate) fn discover(paths: Vec<PathBuf>) -> (Discovery, bool) {
 
 /// "did you mean" for a `--family` no case found has: the nearest family
 /// among the cases found, if one is plausibly meant.
-pub(crate) fn family_hint(family: &str, cases: &[CaseFile]) -> Option<String> {
-    let mut families: Vec<&str> = cases
-        .iter()
-        .filter_map(|c| c.id.split_once('/').map(|(f, _)| f))
+pub(crate) fn family_hint<'a>(
+    family: &str,
+    ids: impl IntoIterator<Item = &'a str>,
+) -> Option<String> {
+    let families: std::collections::BTreeSet<&str> = ids
+        .into_iter()
+        .filter_map(|id| id.split_once('/').map(|(f, _)| f))
         .collect();
-    families.sort_unstable();
-    families.dedup();
+    let families: Vec<&str> = families.into_iter().collect();
     if families.contains(&family) {
         return None;
     }

@@ -9,12 +9,13 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::cases::{discover, family_hint};
+use super::cases::{discover_list, family_hint};
 use super::console::{print_outcome, Progress};
 use super::exit::Exit;
 use super::limits::LimitArgs;
 use super::names::rasterizers_named;
 use crate::harness::runner::{self, Problem, Selection};
+use crate::harness::unique_names::UniqueNames;
 use crate::report;
 use crate::report::digest::Digest;
 use crate::report::json::{CaseEntry, LimitsInfo, RasterizerInfo, Report, Totals};
@@ -128,12 +129,13 @@ pub fn run(args: RunArgs) -> Exit {
         family: args.family.clone(),
         shard,
     };
-    let (found, mut bad_input) = discover(args.paths.clone());
+    // Held compactly: a run of a million cases keeps tens of bytes a case.
+    let (found, mut bad_input) = discover_list(args.paths.clone());
     let hint = args
         .family
         .as_deref()
-        .and_then(|f| family_hint(f, &found.cases));
-    let files = selection.apply(found.cases);
+        .and_then(|f| family_hint(f, found.cases.ids()));
+    let files = selection.apply_list(found.cases);
     if files.is_empty() {
         if let Some(hint) = hint {
             eprintln!("note: {hint}");
@@ -198,7 +200,9 @@ pub fn run(args: RunArgs) -> Exit {
         // Written first, so that a run that is killed still leaves a report
         // that lists what did not run.
         let mut not_run = |f: &mut dyn FnMut(&CaseEntry)| {
-            files.iter().for_each(|c| f(&CaseEntry::not_run(c)));
+            (0..files.len())
+                .filter_map(|k| runner::Cases::case(&files, k))
+                .for_each(|c| f(&CaseEntry::not_run(&c)));
             Ok(())
         };
         report.totals = Totals::of(&report.rasterizers);
@@ -236,11 +240,12 @@ pub fn run(args: RunArgs) -> Exit {
         None => None,
     };
     let mut digest = Digest::new(&report.rasterizers);
-    // Case names already used, and by which file (names identify cases in
-    // reports and baselines, so they must be unique in a run).
-    let mut names: std::collections::HashMap<String, usize> = Default::default();
+    // Case names already used, by hash, and by which file (names identify
+    // cases in reports and baselines, so they must be unique in a run).
+    let mut names = UniqueNames::with_capacity(files.len());
+    let name_of = |j| runner::name_in_file(&files, j, &limits);
     let colour = std::io::stdout().is_terminal();
-    let width = files.iter().map(|c| c.id.len()).max().unwrap_or(0);
+    let width = files.ids().map(str::len).max().unwrap_or(0);
     let settings = runner::RunSettings {
         limits: &limits,
         candidates: &candidates,
@@ -264,7 +269,8 @@ pub fn run(args: RunArgs) -> Exit {
         },
         &mut |k, mut outcome| {
             let kept = entries.lock().unwrap_or_else(|e| e.into_inner()).remove(&k);
-            let duplicate = runner::reject_duplicate_name(&mut outcome, k, &files, &mut names);
+            let duplicate =
+                runner::reject_duplicate_name(&mut outcome, k, &files, &mut names, &name_of);
             // A case that did not finish gets its entry now; one marked
             // since (a duplicate name) a fresh one, with the facts of its
             // scene kept.

@@ -4,6 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::harness::case_list::{CaseList, MAX_CASES};
+
 /// A case file and its id: its path under `cases/`, without `.json`
 /// (`triangles/fan_center`).
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -12,10 +14,12 @@ pub struct CaseFile {
     pub path: PathBuf,
 }
 
-/// What a walk over the given paths found.
+/// What a walk over the given paths found: its cases as a `Vec` of
+/// [`CaseFile`]s ([`discover`]) or as a compact [`CaseList`]
+/// ([`discover_list`]).
 #[derive(Debug, Default)]
-pub struct Discovery {
-    pub cases: Vec<CaseFile>,
+pub struct Discovery<C = Vec<CaseFile>> {
+    pub cases: C,
     /// `invalid/` folders passed over (they hold negative tests; name one
     /// explicitly to read it).
     pub skipped: Vec<PathBuf>,
@@ -32,24 +36,59 @@ pub struct Discovery {
 /// path, is kept), since an id names a case's images, golden file and
 /// baseline entry.
 pub fn discover(paths: &[PathBuf]) -> Discovery {
-    let mut found = Discovery::default();
+    let found = discover_list(paths);
+    Discovery {
+        cases: found
+            .cases
+            .into_vec()
+            .into_iter()
+            .map(|(id, path)| CaseFile { id, path })
+            .collect(),
+        skipped: found.skipped,
+        errors: found.errors,
+    }
+}
+
+/// [`discover`] with the cases held compactly: what a run of a million
+/// cases deals out from. The walk keeps only the folders of one folder
+/// whole; its case files go straight into the list, which is then sorted.
+pub fn discover_list(paths: &[PathBuf]) -> Discovery<CaseList> {
+    let mut found = Discovery::<CaseList>::default();
     let mut walk_state = Walk::default();
     for path in paths {
         if path.is_dir() {
             walk_state.walk(path, &mut found);
         } else if path.exists() {
             // A regular file, or something the reader refuses by name.
-            found.cases.push(case_file(path));
+            add(&mut found, path);
         } else {
             found
                 .errors
                 .push(format!("{}: no such file or folder", path.display()));
         }
     }
-    found.cases.sort();
-    found.cases.dedup();
+    found.cases = std::mem::take(&mut found.cases).sorted();
     keep_each_id_once(&mut found);
     found
+}
+
+/// Adds the case file at `path`; past [`MAX_CASES`], says once that the
+/// rest are not run.
+fn add(found: &mut Discovery<CaseList>, path: &Path) {
+    let case = case_file(path);
+    if !found.cases.push(&case.id, &case.path) {
+        let full = format!(
+            "{}: more than {MAX_CASES} case files in one run; this and the rest are not run",
+            path.display()
+        );
+        if !found
+            .errors
+            .last()
+            .is_some_and(|e| e.contains("case files in one run"))
+        {
+            found.errors.push(full);
+        }
+    }
 }
 
 /// A file's or folder's identity: (device, inode) where there is one.
@@ -72,26 +111,28 @@ fn identity(path: &Path) -> Option<(u64, u64)> {
 
 /// Drops a second path to the same file under one id, and turns two
 /// different files with one id into an error naming both.
-fn keep_each_id_once(found: &mut Discovery) {
-    let mut kept: Vec<CaseFile> = Vec::with_capacity(found.cases.len());
-    let mut kept_identity = None;
-    for case in std::mem::take(&mut found.cases) {
-        let this = identity(&case.path);
-        if let Some(first) = kept.last().filter(|k| k.id == case.id) {
+fn keep_each_id_once(found: &mut Discovery<CaseList>) {
+    let cases = std::mem::take(&mut found.cases);
+    // The case last kept, and its file's identity.
+    let mut last: Option<(usize, Option<(u64, u64)>)> = None;
+    let mut errors = Vec::new();
+    found.cases = cases.retain(|list, k| {
+        let this = identity(list.path(k));
+        if let Some((first, kept_identity)) = last.filter(|(f, _)| list.id(*f) == list.id(k)) {
             if this.is_none() || this != kept_identity {
-                found.errors.push(format!(
+                errors.push(format!(
                     "two different files have the case id {:?}: {} and {} (ids name images, golden files and baseline entries; only the first is run)",
-                    case.id,
-                    first.path.display(),
-                    case.path.display()
+                    list.id(k),
+                    list.path(first).display(),
+                    list.path(k).display()
                 ));
             }
-            continue;
+            return false;
         }
-        kept_identity = this;
-        kept.push(case);
-    }
-    found.cases = kept;
+        last = Some((k, this));
+        true
+    });
+    found.errors.extend(errors);
 }
 
 /// The folders a walk has entered, by identity, and those it is inside.
@@ -102,7 +143,7 @@ struct Walk {
 }
 
 impl Walk {
-    fn walk(&mut self, dir: &Path, found: &mut Discovery) {
+    fn walk(&mut self, dir: &Path, found: &mut Discovery<CaseList>) {
         let Some(id) = identity(dir) else {
             return found
                 .errors
@@ -121,18 +162,23 @@ impl Walk {
             Ok(entries) => entries,
             Err(e) => return found.errors.push(format!("{}: {e}", dir.display())),
         };
-        let mut paths: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-        paths.sort();
-        self.inside.push(id);
-        for path in paths {
+        // Case files go straight into the list (sorted once the walk is
+        // over); folders are walked in order, after this one is read.
+        let mut folders: Vec<PathBuf> = Vec::new();
+        for path in entries.filter_map(|e| e.ok().map(|e| e.path())) {
             if path.is_dir() {
-                if path.file_name().is_some_and(|n| n == "invalid") {
-                    found.skipped.push(path);
-                } else {
-                    self.walk(&path, found);
-                }
+                folders.push(path);
             } else if path.extension().is_some_and(|e| e == "json") {
-                found.cases.push(case_file(&path));
+                add(found, &path);
+            }
+        }
+        folders.sort();
+        self.inside.push(id);
+        for path in folders {
+            if path.file_name().is_some_and(|n| n == "invalid") {
+                found.skipped.push(path);
+            } else {
+                self.walk(&path, found);
             }
         }
         self.inside.pop();

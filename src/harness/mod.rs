@@ -12,12 +12,16 @@
 //! [`clipped`] restates a screen-space case clipped at a driver's viewport.
 //! [`panics`] is the text of a caught panic; [`today`] the date reports are
 //! stamped with; [`case_hash`] the hash of a case file a report names.
+//! [`case_list`] holds a selection compactly (a million cases at tens of
+//! bytes each); [`unique_names`] checks a run's case names are unique from
+//! their 64-bit hashes.
 //! [`conservative`] refuses and judges a conservative case's candidate
 //! (SPEC.md §19) against the oracle's three classes; [`conservative_depth`]
 //! judges its depth (§19.9).
 
 pub mod baseline;
 pub mod case_hash;
+pub mod case_list;
 pub mod clipped;
 pub mod conservative;
 pub mod conservative_depth;
@@ -32,3 +36,4 @@ pub mod panics;
 pub mod profile;
 pub mod runner;
 pub mod today;
+pub mod unique_names;

@@ -13,11 +13,13 @@ use rayon::prelude::*;
 
 use crate::deadline;
 use crate::frame::Frame;
+use crate::harness::case_list::CaseList;
 use crate::harness::discover::CaseFile;
 use crate::harness::flaky::{self, Flaky, Repetition};
 use crate::harness::golden::GoldenStatus;
 use crate::harness::judge::{CandidateRun, Verdict};
 use crate::harness::oracle::ReferenceRun;
+use crate::harness::unique_names::UniqueNames;
 use crate::harness::{discover, golden, judge, load, oracle, panics};
 use crate::plan::Plan;
 use crate::rasterizer::Rasterizer;
@@ -55,19 +57,34 @@ impl Selection {
     /// the shards is exactly that set, each case once, and shards stay
     /// balanced as cases are added.
     pub fn apply(&self, cases: Vec<CaseFile>) -> Vec<CaseFile> {
-        let kept = cases.into_iter().filter(|c| {
-            self.family
+        let mut keeps = self.keeps();
+        cases.into_iter().filter(|c| keeps(&c.id)).collect()
+    }
+
+    /// [`Selection::apply`] to a compact list.
+    pub fn apply_list(&self, cases: CaseList) -> CaseList {
+        if *self == Selection::default() {
+            return cases;
+        }
+        let mut keeps = self.keeps();
+        cases.retain(|list, k| keeps(list.id(k)))
+    }
+
+    /// Whether to keep each id of the selection, given in order.
+    fn keeps(&self) -> impl FnMut(&str) -> bool + '_ {
+        // How many ids the filter and family left so far.
+        let mut left = 0usize;
+        move |id| {
+            let kept = self
+                .family
                 .as_ref()
-                .is_none_or(|f| c.id.split('/').next() == Some(f.as_str()))
-                && self.filter.as_ref().is_none_or(|g| glob_match(g, &c.id))
-        });
-        match self.shard {
-            None => kept.collect(),
-            Some((i, n)) => kept
-                .enumerate()
-                .filter(|(k, _)| k % n == i - 1)
-                .map(|(_, c)| c)
-                .collect(),
+                .is_none_or(|f| id.split('/').next() == Some(f.as_str()))
+                && self.filter.as_ref().is_none_or(|g| glob_match(g, id));
+            if !kept {
+                return false;
+            }
+            left += 1;
+            self.shard.is_none_or(|(i, n)| (left - 1) % n == i - 1)
         }
     }
 }
@@ -91,6 +108,33 @@ pub fn glob_match(pattern: &str, text: &str) -> bool {
         }
     }
     go(pattern.as_bytes(), text.as_bytes())
+}
+
+/// Cases a run deals out by index: a compact [`CaseList`] or a slice of
+/// [`CaseFile`]s.
+pub trait Cases: Sync {
+    /// How many cases there are.
+    fn count(&self) -> usize;
+    /// Case `k`, or `None` past the end.
+    fn case(&self, k: usize) -> Option<CaseFile>;
+}
+
+impl Cases for [CaseFile] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn case(&self, k: usize) -> Option<CaseFile> {
+        self.get(k).cloned()
+    }
+}
+
+impl Cases for CaseList {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn case(&self, k: usize) -> Option<CaseFile> {
+        self.get(k).map(|(id, path)| CaseFile { id, path })
+    }
 }
 
 /// Everything that happened to one case.
@@ -401,8 +445,8 @@ pub const AHEAD: usize = 1024;
 /// starts, and a case that finishes after the request (its external
 /// programs were killed under it) is [`CaseOutcome::interrupted`] too: every
 /// verdict kept is one the case earned before the signal.
-pub fn run_streamed(
-    files: &[CaseFile],
+pub fn run_streamed<F: Cases + ?Sized>(
+    files: &F,
     settings: &RunSettings,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
     emit: &mut dyn FnMut(usize, CaseOutcome),
@@ -434,9 +478,10 @@ pub fn run_streamed(
     let (sender, receiver) = std::sync::mpsc::channel::<(usize, CaseOutcome)>();
     let work = |sender: std::sync::mpsc::Sender<(usize, CaseOutcome)>| loop {
         let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let Some(file) = files.get(k) else {
+        let Some(file) = files.case(k) else {
             return;
         };
+        let file = &file;
         {
             let mut oldest = handed.lock().unwrap_or_else(|e| e.into_inner());
             while k >= *oldest + AHEAD {
@@ -490,8 +535,8 @@ pub fn run_streamed(
 pub const ROUND_CASES: usize = 32;
 
 /// [`run_streamed`] of `repeat` > 1, block by block.
-fn repeated(
-    files: &[CaseFile],
+fn repeated<F: Cases + ?Sized>(
+    files: &F,
     settings: &RunSettings,
     done: &(dyn Fn(usize, &mut CaseOutcome) + Sync),
     emit: &mut dyn FnMut(usize, CaseOutcome),
@@ -509,7 +554,11 @@ fn repeated(
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build();
-    for (block, chunk) in files.chunks(ROUND_CASES).enumerate() {
+    for block in 0..files.count().div_ceil(ROUND_CASES) {
+        let chunk: Vec<CaseFile> = (block * ROUND_CASES
+            ..files.count().min((block + 1) * ROUND_CASES))
+            .filter_map(|k| files.case(k))
+            .collect();
         let work = || {
             let mut firsts: Vec<CaseOutcome> = chunk
                 .par_iter()
@@ -667,10 +716,14 @@ fn repetition(verdict: &Verdict, k: usize) -> Repetition {
 /// a run. Returns the indices of those marked.
 pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
     let files: Vec<CaseFile> = outcomes.iter().map(|o| o.file.clone()).collect();
-    let mut names = std::collections::HashMap::new();
+    let spelled: Vec<Option<String>> = outcomes
+        .iter()
+        .map(|o| o.scene.as_ref().map(|s| s.name.clone()))
+        .collect();
+    let mut names = UniqueNames::new();
     let mut marked = Vec::new();
     for (k, outcome) in outcomes.iter_mut().enumerate() {
-        if reject_duplicate_name(outcome, k, &files, &mut names) {
+        if reject_duplicate_name(outcome, k, &files[..], &mut names, &|j| spelled[j].clone()) {
             marked.push(k);
         }
     }
@@ -678,37 +731,45 @@ pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
 }
 
 /// [`reject_duplicate_names`] one case at a time, in order: `outcome` is
-/// case `k` of `files`, and `names` the names of the cases before it, each
-/// with the index of the first case that used it. Returns whether the case
-/// was marked as bad input.
-pub fn reject_duplicate_name(
+/// case `k` of `files`, and `names` the names of the cases before it, by
+/// hash; `name_of` reads the name of an earlier case again, when its hash
+/// meets this one's ([`name_in_file`]). Returns whether the case was marked
+/// as bad input.
+pub fn reject_duplicate_name<F: Cases + ?Sized>(
     outcome: &mut CaseOutcome,
     k: usize,
-    files: &[CaseFile],
-    names: &mut std::collections::HashMap<String, usize>,
+    files: &F,
+    names: &mut UniqueNames,
+    name_of: &dyn Fn(usize) -> Option<String>,
 ) -> bool {
-    let Some(name) = outcome.scene.as_ref().map(|s| s.name.clone()) else {
+    let Some(name) = outcome.scene.as_ref().map(|s| &s.name) else {
         return false;
     };
-    let first = match names.get(&name) {
-        None => {
-            names.insert(name, k);
-            return false;
-        }
-        Some(&first) => first,
+    let Some(first) = names.used_before(name, k, name_of) else {
+        return false;
     };
     let path = outcome.file.path.display().to_string();
     let first = files
-        .get(first)
+        .case(first)
         .map_or_else(String::new, |f| f.path.display().to_string());
     outcome.problem = Some(Problem::Unreadable(format!(
         "{path}: $.name: the case name {} is also used by {first}; case names must be unique",
-        crate::scene::number::echo(&name)
+        crate::scene::number::echo(name)
     )));
     outcome.reference = None;
     outcome.golden = None;
     outcome.candidates.clear();
     true
+}
+
+/// The name of case `k` of `files`, read from its file again (`None` when
+/// it no longer reads).
+pub fn name_in_file<F: Cases + ?Sized>(files: &F, k: usize, limits: &Limits) -> Option<String> {
+    let file = files.case(k)?;
+    load::load_hashed(&file, limits)
+        .1
+        .ok()
+        .map(|scene| scene.name)
 }
 
 /// Counts of verdicts for one rasterizer.

@@ -32,7 +32,9 @@
 //! `report.json` names the machine it was made on (`machine.rs`: host and
 //! day) and reads back into its model (`interned.rs`: the model's words),
 //! so that `merge/` can put the reports of shards and of other machines
-//! together and write them with the same writers.
+//! together and write them with the same writers, and so that
+//! `baseline_rows.rs` can hold a report's rows (a merged one's devices
+//! among them) to a baseline (`baseline check --report`).
 //!
 //! Every file is written whole or not at all (`files.rs`'s [`write_file`]:
 //! a temporary name, then a rename). A run writes only into a folder it
@@ -40,6 +42,7 @@
 //! while it writes), and first removes what an earlier run wrote there
 //! ([`remove_owned`]), never a user's own files.
 
+pub mod baseline_rows;
 pub mod case_files;
 pub mod conservative;
 pub mod diff;

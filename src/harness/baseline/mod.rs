@@ -17,7 +17,7 @@ mod tolerance;
 pub use compare::{Change, Comparison, Finding};
 pub use entry::{Entry, Value};
 pub use file::{Baseline, SelectionInfo, Tool, SCHEMA};
-pub use observe::{metrics_of, Observed};
+pub use observe::{metrics_of, MetricParts, Observed};
 pub use tolerance::{is_error_metric, Tolerance, Tolerances};
 
 #[cfg(test)]
