@@ -13,9 +13,8 @@ use crate::adapters::external;
 use crate::production::foils::{
     Alpha, AnyCoverage, AreaSampler, CoarseEdges, CoarseSnap, ConservativeCentreBox,
     ConservativeCentreFlag, ConservativeDepthUnclamped, ConservativeOpenEnds, ConservativeOvergrow,
-    DdaF32, DdaF64,
-    EmptyAntialias, FloatF32, FloatF64, GridSamples, OffsetSampler, OutlineOverFill, SlopeTies,
-    Truncate,
+    DdaF32, DdaF64, EmptyAntialias, FloatF32, FloatF64, GridSamples, OffsetSampler,
+    OutlineOverFill, SlopeTies, Truncate,
 };
 use crate::production::mutants::{Mutant, Mutation};
 use crate::production::Production;

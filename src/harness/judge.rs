@@ -428,17 +428,13 @@ fn judge_conservative(
         let why = format!("returned a frame of the wrong size or with the wrong channels: {why}");
         return run(Verdict::Error(why), None, frame);
     }
-    let mut words = judged.words();
-    if judged != case {
-        words.push_str(&format!(
-            ", its own conventions; the case states {}",
-            case.words()
-        ));
-    }
+    let restated = judged.restated_words(case, scene.has_points_or_lines());
+    let words = match &restated {
+        Some((own, stated)) => format!("{own}, its own conventions; the case states {stated}"),
+        None => judged.words(),
+    };
     let mut m = metrics::conservative::measure(classes, &frame, words);
-    if judged != case {
-        m.case_states = Some(case.words());
-    }
+    m.case_states = restated.map(|(_, stated)| stated);
     let mut failures = metrics::conservative::failures(&m);
     match super::conservative_depth::judged(scene, judged, &frame) {
         Some(Ok(depth)) => {

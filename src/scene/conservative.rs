@@ -75,6 +75,46 @@ impl Conservative {
         }
     }
 
+    /// Whether a candidate judged under `self` is judged under other
+    /// conventions than `case` states, in what matters to a scene (its
+    /// points and lines only where it has them, `has_points_or_lines`), and
+    /// the words for both: "overestimate, uncertainty 1/4 px,
+    /// degenerate_lines true" against what the case states. `None` when
+    /// they agree.
+    pub fn restated_words(
+        &self,
+        case: &Conservative,
+        has_points_or_lines: bool,
+    ) -> Option<(String, String)> {
+        let mut properties: Vec<(&str, bool, bool)> = vec![(
+            "degenerate_triangles",
+            self.degenerate_triangles,
+            case.degenerate_triangles,
+        )];
+        if has_points_or_lines {
+            properties.push((
+                "points_and_lines",
+                self.points_and_lines,
+                case.points_and_lines,
+            ));
+            properties.push((
+                "degenerate_lines",
+                self.degenerate_lines,
+                case.degenerate_lines,
+            ));
+        }
+        properties.retain(|(_, own, stated)| own != stated);
+        if self.mode == case.mode && self.uncertainty == case.uncertainty && properties.is_empty() {
+            return None;
+        }
+        let (mut own, mut stated) = (self.words(), case.words());
+        for (name, o, c) in properties {
+            own.push_str(&format!(", {name} {o}"));
+            stated.push_str(&format!(", {name} {c}"));
+        }
+        Some((own, stated))
+    }
+
     /// The words reports use: "overestimate, uncertainty 1/256 px".
     pub fn words(&self) -> String {
         format!(
@@ -177,4 +217,32 @@ pub struct ConservativePromise {
     pub required_pixels: Option<Vec<[u32; 2]>>,
     /// The allowed band's pixels, exactly, in any order.
     pub allowed_pixels: Option<Vec<[u32; 2]>>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn restated_words_name_only_what_differs_and_matters() {
+        let case = Conservative::overestimate();
+        let mut own = Conservative {
+            points_and_lines: true,
+            ..Conservative::overestimate()
+        };
+        // A declared property of points and lines is no restatement of a
+        // scene of triangles.
+        assert_eq!(own.restated_words(&case, false), None);
+        assert_eq!(
+            own.restated_words(&case, true),
+            Some((
+                "overestimate, uncertainty 0 px, points_and_lines true".to_owned(),
+                "overestimate, uncertainty 0 px, points_and_lines false".to_owned()
+            ))
+        );
+        own.uncertainty = Number::ratio(1, 4);
+        let (mine, stated) = own.restated_words(&case, false).unwrap();
+        assert_eq!(mine, "overestimate, uncertainty 1/4 px");
+        assert_eq!(stated, "overestimate, uncertainty 0 px");
+    }
 }
