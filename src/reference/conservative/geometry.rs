@@ -104,22 +104,26 @@ pub fn inside(r: &Rect, vertices: &[GridPoint]) -> bool {
     })
 }
 
+/// A grid point from integers, for tests.
+#[cfg(test)]
+pub(super) fn p(x: i64, y: i64) -> GridPoint {
+    [IBig::from(x), IBig::from(y)]
+}
+
+/// A rectangle from integers, for tests.
+#[cfg(test)]
+pub(super) fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Rect {
+    Rect {
+        x0: x0.into(),
+        y0: y0.into(),
+        x1: x1.into(),
+        y1: y1.into(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn p(x: i64, y: i64) -> GridPoint {
-        [IBig::from(x), IBig::from(y)]
-    }
-
-    fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Rect {
-        Rect {
-            x0: x0.into(),
-            y0: y0.into(),
-            x1: x1.into(),
-            y1: y1.into(),
-        }
-    }
 
     #[test]
     fn touching_at_a_corner_meets_and_a_gap_does_not() {

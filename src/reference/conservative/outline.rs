@@ -281,20 +281,8 @@ fn gcd(a: &UBig, b: &UBig) -> UBig {
 
 #[cfg(test)]
 mod tests {
+    use super::super::geometry::{p, rect};
     use super::*;
-
-    fn p(x: i64, y: i64) -> GridPoint {
-        [IBig::from(x), IBig::from(y)]
-    }
-
-    fn rect(x0: i64, y0: i64, x1: i64, y1: i64) -> Rect {
-        Rect {
-            x0: x0.into(),
-            y0: y0.into(),
-            x1: x1.into(),
-            y1: y1.into(),
-        }
-    }
 
     #[test]
     fn a_diagonal_rectangle_reaches_its_irrational_corners_and_no_further() {

@@ -17,12 +17,16 @@ use super::common::{any_bits, any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::depth::{DepthBias, DepthFormat};
 use crate::scene::rules::limits::{COORD_LIMIT, MAX_SUBPIXEL_BITS};
+use crate::scene::rules::Rules;
 use crate::scene::{
     Canvas, Conservative, ConservativeMode, Interpolation, Number, Primitive, Scene, Triangle,
     Vertex,
 };
 
-pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
+/// A conservative scene's canvas (3 to 16 px a side), its rules, any
+/// subpixel bits, and whether they snap: what both the triangles' scenes
+/// and the points' and lines' (`conservative_lines.rs`) start from.
+pub(super) fn canvas_and_rules(rng: &mut Rng) -> (Canvas, Rules, bool) {
     let side = |rng: &mut Rng| *rng.pick(&[3, 4, 6, 8, 12, 16]);
     let canvas = Canvas {
         width: side(rng),
@@ -31,6 +35,11 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
     let mut rules = any_rules(rng);
     rules.subpixel_bits = any_bits(rng);
     let snapped = rules.subpixel_bits.is_some();
+    (canvas, rules, snapped)
+}
+
+pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
+    let (canvas, mut rules, snapped) = canvas_and_rules(rng);
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 5) {
         let vertices = match primitives.last() {

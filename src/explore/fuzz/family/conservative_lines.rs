@@ -8,8 +8,8 @@
 //! zero length, points on pixel corners and of sizes that end on pixel
 //! borders, and thin and wide widths.
 
-use super::common::{any_bits, any_rules, scene_of, Values};
-use super::conservative::{any_conservative, grid, point, small, whole};
+use super::common::{scene_of, Values};
+use super::conservative::{any_conservative, canvas_and_rules, grid, point, small, whole};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::rules::limits::MAX_SUBPIXEL_BITS;
 use crate::scene::{
@@ -20,14 +20,7 @@ use crate::scene::{
 /// A conservative scene of points and lines: any mode, uncertainty and
 /// flag, `points_and_lines` true, degenerate lines drawn or culled.
 pub(super) fn points_and_lines_scene(rng: &mut Rng) -> Scene {
-    let side = |rng: &mut Rng| *rng.pick(&[3, 4, 6, 8, 12, 16]);
-    let canvas = Canvas {
-        width: side(rng),
-        height: side(rng),
-    };
-    let mut rules = any_rules(rng);
-    rules.subpixel_bits = any_bits(rng);
-    let snapped = rules.subpixel_bits.is_some();
+    let (canvas, rules, snapped) = canvas_and_rules(rng);
     let mut primitives: Vec<Primitive> = Vec::new();
     for _ in 0..rng.range(1, 5) {
         primitives.push(match rng.below(8) {
