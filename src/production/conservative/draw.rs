@@ -207,20 +207,23 @@ fn line_shape(
 /// it holds them, else units of 1/(2D) px for D the coordinates' common
 /// denominator.
 fn placed(scene: &Scene) -> Result<PlacedScene, RasterError> {
-    if let Ok(format) = format_for(scene, None) {
-        let vertices = scene
+    // Each primitive's vertices, each coordinate through `units`.
+    let each = |units: &dyn Fn(&Number) -> i128| -> Vec<Vec<[i128; 2]>> {
+        scene
             .primitives
             .iter()
             .map(|p| {
                 p.vertices()
                     .iter()
-                    .map(|v| [&v.x, &v.y].map(|n| i128::from(place(scene, format, n).0)))
+                    .map(|v| [units(&v.x), units(&v.y)])
                     .collect()
             })
-            .collect();
+            .collect()
+    };
+    if let Ok(format) = format_for(scene, None) {
         return Ok(PlacedScene {
             one: 1 << format.frac_bits,
-            vertices,
+            vertices: each(&|n| i128::from(place(scene, format, n).0)),
         });
     }
     let mut d: u64 = 1;
@@ -244,17 +247,10 @@ fn placed(scene: &Scene) -> Result<PlacedScene, RasterError> {
         let q = i128::try_from(n.denominator()).expect("q divides d");
         p * (one / q)
     };
-    let vertices = scene
-        .primitives
-        .iter()
-        .map(|p| {
-            p.vertices()
-                .iter()
-                .map(|v| [units(&v.x), units(&v.y)])
-                .collect()
-        })
-        .collect();
-    Ok(PlacedScene { one, vertices })
+    Ok(PlacedScene {
+        one,
+        vertices: each(&units),
+    })
 }
 
 fn gcd(a: u64, b: u64) -> u64 {
