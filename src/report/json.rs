@@ -719,6 +719,24 @@ impl ResultEntry {
     }
 }
 
+#[cfg(test)]
+impl Report {
+    /// An empty report of `run` by production under the default limits,
+    /// for tests to fill.
+    pub fn of_production_run() -> Report {
+        Report::new(
+            vec!["run".into()],
+            vec![RasterizerInfo {
+                name: "production".into(),
+                foil: false,
+                declared: None,
+                api_record: None,
+            }],
+            LimitsInfo::of(&crate::scene::Limits::default()),
+        )
+    }
+}
+
 /// The family of a case id: its first path segment.
 pub fn family(id: &str) -> String {
     match id.split_once('/') {

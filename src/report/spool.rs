@@ -114,20 +114,11 @@ impl Drop for Spool {
 mod tests {
     use super::*;
     use crate::harness::discover::CaseFile;
-    use crate::report::json::{LimitsInfo, RasterizerInfo, Report, ResultEntry};
+    use crate::report::json::{Report, ResultEntry};
     use crate::report::write::write_json_streamed;
 
     fn report() -> Report {
-        let mut report = Report::new(
-            vec!["run".into()],
-            vec![RasterizerInfo {
-                name: "production".into(),
-                foil: false,
-                declared: None,
-                api_record: None,
-            }],
-            LimitsInfo::of(&crate::scene::Limits::default()),
-        );
+        let mut report = Report::of_production_run();
         for (k, id) in ["lines/a", "lines/b \"quoted\"\nline", "points/c"]
             .iter()
             .enumerate()
@@ -140,26 +131,10 @@ mod tests {
             // Not finite: written as null, read back as NaN.
             case.reference_ms = if k == 1 { f64::NAN } else { 0.1 + k as f64 };
             case.results.push(ResultEntry {
-                rasterizer: "production".into(),
-                verdict: "fail",
                 reasons: vec![format!("reason {k}\nover two lines")],
-                flaky: None,
                 time_ms: 1.0 / 3.0,
-                method: None,
-                judged_fill_rule: None,
-                ties: None,
-                judged_clip: None,
-                judged_subpixel_bits: None,
-                judged_snapping: None,
-                judged_sample_pattern: None,
-                judged_y: None,
-                judged_pixel_centre: None,
-                line_latitude: None,
-                judged_line_parameter: None,
-                judged_line_border: None,
-                conservative: None,
-                metrics: None,
                 files: vec!["images/x.png".into()],
+                ..ResultEntry::bare("production", "fail")
             });
             report.cases.push(case);
         }

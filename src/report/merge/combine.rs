@@ -576,20 +576,11 @@ fn sum_records(records: &[&ApiRecord]) -> Option<ApiRecord> {
 mod tests {
     use super::*;
     use crate::harness::discover::CaseFile;
-    use crate::report::json::{LimitsInfo, ResultEntry};
+    use crate::report::json::ResultEntry;
 
     /// A report of `ids` judged `pass` by production, as shard `shard` on `host`.
     fn input(ids: &[&str], shard: Option<&str>, host: &str) -> Input {
-        let mut report = Report::new(
-            vec!["run".into()],
-            vec![RasterizerInfo {
-                name: "production".into(),
-                foil: false,
-                declared: None,
-                api_record: None,
-            }],
-            LimitsInfo::of(&crate::scene::Limits::default()),
-        );
+        let mut report = Report::of_production_run();
         report.shard = shard.map(str::to_owned);
         report.machine.host = host.into();
         report.cases = ids
@@ -600,28 +591,7 @@ mod tests {
                     path: PathBuf::from(format!("cases/{id}.json")),
                 });
                 case.status = "ran";
-                case.results.push(ResultEntry {
-                    rasterizer: "production".into(),
-                    verdict: "pass",
-                    reasons: Vec::new(),
-                    flaky: None,
-                    time_ms: 0.0,
-                    method: None,
-                    judged_fill_rule: None,
-                    ties: None,
-                    judged_clip: None,
-                    judged_subpixel_bits: None,
-                    judged_snapping: None,
-                    judged_sample_pattern: None,
-                    judged_y: None,
-                    judged_pixel_centre: None,
-                    judged_line_parameter: None,
-                    judged_line_border: None,
-                    line_latitude: None,
-                    conservative: None,
-                    metrics: None,
-                    files: Vec::new(),
-                });
+                case.results.push(ResultEntry::bare("production", "pass"));
                 case
             })
             .collect();
