@@ -4,7 +4,7 @@ falling out of step with rastercheck in the ways of issue 36, for
 tests/faults/persistent.rs.
 
     out_of_step.py [--v2] [--exit-after-answer] [--idle-flood BYTES]
-                   [KIND=CASE ...]
+                   [--busy-gap MS] [KIND=CASE ...]
 
 Version 1 (no hello, no ids) unless --v2 (the example's hello, ids echoed).
 
@@ -13,6 +13,9 @@ Version 1 (no hello, no ids) unless --v2 (the example's hello, ids echoed).
   that is no answer ({"progress": 0.5}). Under version 1 nothing tells the
   extra line from an answer: a rastercheck that takes it for one stays an
   answer behind for the rest of the run.
+- --busy-gap MS: between the extra line and the answer, computes for MS
+  milliseconds (never sleeping), as a program slow to encode its answer
+  would: for a while only the extra line is there to read.
 - --exit-after-answer: exits after every answer (the next request finds a
   process that is gone).
 - --idle-flood BYTES: after every answer, writes BYTES more to stdout, in
@@ -25,6 +28,7 @@ import importlib.util
 import json
 import os
 import sys
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "python_rasterizer.py")
@@ -45,6 +49,9 @@ def main():
     flood = 0
     if "--idle-flood" in args:
         flood = int(args[args.index("--idle-flood") + 1])
+    gap = 0.0
+    if "--busy-gap" in args:
+        gap = float(args[args.index("--busy-gap") + 1]) / 1000.0
     extra = dict(reversed(a.split("=", 1)) for a in args if "=" in a)
     if v2:
         print(json.dumps(example.HELLO), flush=True)
@@ -58,6 +65,9 @@ def main():
         kind = extra.get(request["case"])
         if kind is not None:
             print(json.dumps(EXTRA[kind]), flush=True)
+            end = time.perf_counter() + gap
+            while time.perf_counter() < end:
+                pass
         print(json.dumps(response), flush=True)
         if exit_after:
             return

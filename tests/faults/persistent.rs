@@ -132,6 +132,33 @@ fn a_v1_program_out_of_step_changes_no_other_verdict() {
     assert_eq!(second.1, "error", "{second:?}");
 }
 
+/// The same fault with the program computing for 300 ms between the extra
+/// line and its answer (as one slow to encode its answer would; CI once
+/// hit the same window by chance, the program not yet scheduled). Before
+/// the fix the extra line was read as the answer, nothing else was there
+/// yet, the next request was written, and the real answer was judged as
+/// the next case's (`shared_edge_fractions_offgrid` pass -> fail). Now a
+/// version 1 process still running after its answer is waited for, its
+/// second line is seen, and no other verdict changes.
+#[test]
+fn a_v1_program_slow_between_its_two_lines_changes_no_other_verdict() {
+    let cases = some();
+    let clean = clean("slow-clean", "", &cases, 16);
+    let faulted = ["cull_ccw_mixed_windings", "fan_16_square_ring"];
+    let got = run(
+        "v1-slow",
+        &format!(
+            "--busy-gap 300 unsupported={} object={}",
+            faulted[0], faulted[1]
+        ),
+        &cases,
+        crate::RSS_BOUND_MIB,
+    );
+    same_but(&clean, &got, &faulted);
+    let second = verdict_of(&got, faulted[1]);
+    assert_eq!(second.1, "error", "{second:?}");
+}
+
 /// Issue 36 item 6: a program that exits after every answer. Before the
 /// fix every other case was an error ("closed its output"): the idle
 /// process was reused without looking whether it was alive. Now every

@@ -24,6 +24,14 @@ pub(super) const MAX_SKIPPED_LINES: usize = 1000;
 /// anything else is a program out of step.
 pub(super) const UNREAD_GRACE: Duration = Duration::from_millis(200);
 
+/// How long a version 1 process still running after its answer, or
+/// before its next request, is waited for to fall asleep (waiting for its
+/// next request) or to write, so that a line it writes after its answer is
+/// not taken for the next answer ([`Worker::unread`](super::worker::Worker::unread)).
+/// A process that runs on past it (a thread that never sleeps) is not
+/// waited for again: its version 1 answers are matched by order alone.
+pub(super) const SETTLE_WAIT: Duration = Duration::from_secs(1);
+
 /// How many ids of requests that timed out a v2 process remembers, so
 /// that their late answers are told apart from stray lines.
 pub(super) const OWED_IDS: usize = 64;

@@ -12,7 +12,7 @@
 //! `protocol.rs`' and answers `answer.rs`' (`answer_error.rs`: why a line gave no frame; `exr_answer.rs`: an answer in an EXR file; `values.rs`, `motion.rs`, `hello.rs` with `space.rs`:
 //! clip space, points and depth formats, declared, and `conservative.rs`:
 //! conservative rasterization, declared); `read.rs` reads
-//! one line apart from a process; `envelope.rs` looks at a line's id
+//! one line apart from a process; `running.rs` says whether one still runs; `envelope.rs` looks at a line's id
 //! and shape; `messages.rs` quotes values.
 
 mod adapter;
@@ -32,6 +32,7 @@ mod preflight;
 mod process;
 mod protocol;
 mod read;
+mod running;
 mod space;
 mod values;
 mod worker;

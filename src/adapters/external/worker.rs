@@ -20,10 +20,11 @@ use serde_json::Value;
 
 use super::envelope::{Envelope, Id};
 use super::hello::{self, Hello};
-use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE, UNREAD_GRACE};
+use super::limits::{MAX_SKIPPED_LINES, OWED_IDS, PIPE_GRACE, SETTLE_WAIT, UNREAD_GRACE};
 use super::messages::shorten;
 use super::process::*;
 use super::protocol::Outgoing;
+use super::running::running;
 
 /// What a persistent exchange got instead of a line.
 pub(super) enum Exchange {
@@ -74,6 +75,9 @@ pub(super) struct Worker {
     /// Its stdout's pipe (a duplicate of the reader's descriptor), to
     /// look for bytes written and not yet read.
     pipe: Option<OwnedFd>,
+    /// v1: whether it ran on past [`SETTLE_WAIT`] once (it is not waited
+    /// for again).
+    restless: bool,
 }
 
 /// The bytes of a process's stdout its reader thread has taken from the
@@ -216,6 +220,7 @@ impl Worker {
             sent: 0,
             flow,
             pipe,
+            restless: false,
         }
     }
 
@@ -280,6 +285,27 @@ impl Worker {
         }
     }
 
+    /// Version 1: waits while it runs with nothing written, up to
+    /// [`SETTLE_WAIT`]. Its answers carry no id: a line written after an
+    /// answer (a second line for one request) is told from the next answer
+    /// only by coming first, and a program may be between its two writes
+    /// (or not yet scheduled) when the first one is read. Looked at in
+    /// this order: whether it runs, then whether bytes wait, so that bytes
+    /// written before it fell asleep are seen.
+    fn settle(&mut self) {
+        if self.restless || self.speaks_v2() || self.pending.is_some() {
+            return;
+        }
+        let end = Instant::now() + SETTLE_WAIT;
+        while running(self.child.id()) == Some(true) && self.unread_wait().is_zero() {
+            if Instant::now() >= end {
+                self.restless = true;
+                return;
+            }
+            thread::sleep(Duration::from_micros(200));
+        }
+    }
+
     /// What it wrote that no exchange has read yet, blank lines skipped: a
     /// line already read (kept from the hello's wait, or handed on by the
     /// reader), or bytes still in its pipe or in the reader, waited for
@@ -287,6 +313,7 @@ impl Worker {
     /// pipe, then the reader, then the channel), so that a byte moving on
     /// between two looks is seen by the later one.
     pub(super) fn unread(&mut self) -> Unread {
+        self.settle();
         let mut wait = self.unread_wait();
         loop {
             let line = match self.pending.take() {
