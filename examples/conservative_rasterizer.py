@@ -36,6 +36,16 @@ The fully-covered flag (`rules.conservative.fully_covered`): a fragment
 Multisampled (SPEC.md §19.10): a drawn pixel covers all its samples, one
 fragment [x, y, s] (or [x, y, s, f]) for each.
 
+Depth (SPEC.md §19.9; declared as `conservative.depth`, SPEC.md §12.11):
+a triangle's plane through its snapped vertices at the pixel centre,
+extrapolated where the centre is outside the triangle (Vulkan's and
+D3D12's "extrapolated" value, always in the interval §19.9 allows), plus
+the polygon offset (SPEC.md §18.2, m = max(|dz/dx|, |dz/dy|) and r the
+least the format allows), clamped to [0, 1] and stored in the case's
+format (a unorm integer rounded to nearest); a degenerate triangle drawn
+writes its provoking vertex's z. All in fractions: a fragment
+[x, y, depth] (or [x, y, depth, f]).
+
 Flags:
   --uncertainty U   declare U (an exact number, "1/256") as its
                     overestimation uncertainty (default "0")
@@ -51,6 +61,12 @@ Flags:
   --always U        draw every triangle conservatively (overestimation,
                     growing by U), whatever the case asks, and declare
                     nothing of it (for `probe`, which measures U)
+  --depth-unclamped store the depth without the format's clamp to [0, 1]:
+                    caught (a float32 depth below 0 outside the allowed
+                    depths; a unorm integer past its range an error)
+  --depth-first-vertex
+                    write the first vertex's z at every pixel (a far
+                    vertex's depth, not the plane's there): caught
 """
 
 import json
@@ -138,6 +154,68 @@ def inside(pts, x, y):
     return True
 
 
+def exponent(z):
+    """The e with 2^e <= |z| < 2^(e+1), at least -126 (SPEC.md §18.2)."""
+    z = abs(z)
+    if z == 0:
+        return -126
+    e = z.numerator.bit_length() - z.denominator.bit_length()
+    if Fraction(2) ** e > z:
+        e -= 1
+    return max(e, -126)
+
+
+class Depth:
+    """The depth a triangle writes at pixel (x, y) (SPEC.md §19.9): the
+    plane at the centre plus the offset, or the provoking vertex's z of a
+    degenerate one, then the format's clamp and storage."""
+
+    def __init__(self, pts, zs, rules):
+        self.format = rules.get("depth_format", "exact")
+        first = 0 if rules.get("provoking_vertex", "first") == "first" else 2
+        area = twice_area(*pts)
+        if "--depth-first-vertex" in FLAGS:
+            area = 0
+            first = 0
+        self.flat = zs[first] if area == 0 else None
+        if self.flat is not None:
+            return
+        (x0, y0), (x1, y1), (x2, y2) = pts
+        dx1, dy1, dz1 = x1 - x0, y1 - y0, zs[1] - zs[0]
+        dx2, dy2, dz2 = x2 - x0, y2 - y0, zs[2] - zs[0]
+        self.a = (dz1 * dy2 - dz2 * dy1) / area  # dz/dx
+        self.b = (dx1 * dz2 - dx2 * dz1) / area  # dz/dy
+        self.origin = (x0, y0, zs[0])
+        self.offset = Fraction(0)
+        bias = rules.get("depth_bias")
+        if bias is not None:
+            exact = bias["exact"]
+            s, c, k = (Fraction(exact.get(key, "0")) for key in ("slope", "constant", "clamp"))
+            m = max(abs(self.a), abs(self.b))
+            if self.format in ("unorm16", "unorm24"):
+                r = Fraction(1, 2 ** int(self.format[5:]))
+            else:
+                r = Fraction(2) ** (exponent(max(abs(z) for z in zs)) - 23)
+            o = m * s + r * c
+            self.offset = min(o, k) if k > 0 else max(o, k) if k < 0 else o
+
+    def at(self, x, y):
+        if self.flat is not None:
+            z = self.flat
+        else:
+            x0, y0, z0 = self.origin
+            cx, cy = Fraction(2 * x + 1, 2), Fraction(2 * y + 1, 2)
+            z = z0 + self.a * (cx - x0) + self.b * (cy - y0) + self.offset
+        if self.format == "exact":
+            return float(z)
+        if "--depth-unclamped" not in FLAGS:
+            z = min(max(z, Fraction(0)), Fraction(1))
+        if self.format in ("unorm16", "unorm24"):
+            top = 2 ** int(self.format[5:]) - 1
+            return int((z * top + Fraction(1, 2)) // 1)
+        return float(z)
+
+
 def culled(pts, cull):
     area = twice_area(*pts)
     return (cull == "cw" and area > 0) or (cull == "ccw" and area < 0)
@@ -212,10 +290,11 @@ class Polygon:
         return inside(self.pts, x, y)
 
 
-def draw(shape, width, height, mode, flagged, samples):
+def draw(shape, width, height, mode, flagged, samples, depth=None):
     """The fragments of one shape: [x, y] (or [x, y, f]); multisampled
     (`samples` a count, SPEC.md §19.10), [x, y, s] (or [x, y, s, f]) for
-    every sample s of a drawn pixel: its samples are all covered."""
+    every sample s of a drawn pixel: its samples are all covered. With
+    `depth` (a `Depth`), its value follows x, y (and s)."""
     bx0, by0, bx1, by1 = shape.box()
     reach = GROW + 1
     x0, x1 = max(0, int(bx0 - reach)), min(width - 1, int(bx1 + reach))
@@ -232,7 +311,8 @@ def draw(shape, width, height, mode, flagged, samples):
                 continue
             flag = [1 if full or "--flag-partial" in FLAGS else 0] if flagged else []
             slots = [[]] if samples is None else [[s] for s in range(samples)]
-            out.extend([x, y] + slot + flag for slot in slots)
+            z = [] if depth is None else [depth.at(x, y)]
+            out.extend([x, y] + slot + z + flag for slot in slots)
     return out
 
 
@@ -271,8 +351,11 @@ def answer(req):
     width, height = req["canvas"]["width"], req["canvas"]["height"]
     aa = req.get("plan", {}).get("antialias")
     samples = None if aa is None else len(aa["offsets"])
+    deep = bool(req.get("plan", {}).get("depth"))
     prims = []
     for p in req["primitives"]:
+        if ("point" in p or "line" in p) and deep:
+            return {"unsupported": "this example gives no depth of points and lines"}
         if ("point" in p or "line" in p) and conservative is not None:
             if p.get("rule", "rectangle") not in ("rectangle", "parallelogram"):
                 return {"unsupported": "this example draws rectangle and parallelogram lines only"}
@@ -289,7 +372,11 @@ def answer(req):
         if culled(pts, rules.get("cull", "none")):
             prims.append({"fragments": []})
             continue
-        prims.append({"fragments": draw(Polygon(pts), width, height, mode, flagged, samples)})
+        depth = None
+        if deep:
+            zs = [Fraction(v["exact"]["z"]) for v in p["triangle"]]
+            depth = Depth(pts, zs, rules)
+        prims.append({"fragments": draw(Polygon(pts), width, height, mode, flagged, samples, depth)})
     return {"primitives": prims}
 
 
@@ -299,11 +386,15 @@ def main():
     if ALWAYS is None:
         caps["primitives"] = ["triangles", "lines", "points"]
         caps["line_rules"] = ["rectangle", "parallelogram"]
+        del caps["coverage_only"]  # it gives depth (SPEC.md §19.9)
+        caps["depth_formats"] = ["unorm16", "unorm24", "float32"]
+        caps["polygon_offset"] = True
         caps["conservative"] = {
             "modes": ["overestimate", "underestimate"],
             "uncertainty": str(UNCERTAINTY),
             "fully_covered": True,
             "points_and_lines": True,
+            "depth": True,
         }
     hello["capabilities"] = caps
     print(json.dumps({"hello": hello}), flush=True)

@@ -8,7 +8,10 @@
 //! classes forbid or miss what they require; a case asking for a mode or
 //! flag the hello does not declare is refused unsent, naming the
 //! declaration, and one stating another uncertainty is judged under the
-//! program's own, said so and counted apart. The drivers
+//! program's own, said so and counted apart. Its depth (SPEC.md §19.9,
+//! declared as `conservative.depth`) passes the depth cases, and its
+//! wrong depths (`--depth-unclamped`, `--depth-first-vertex`) are caught
+//! by the depth check. The drivers
 //! here (lavapipe and SwiftShader through `vulkan`, llvmpipe through `gl`)
 //! offer no conservative rasterization and refuse every conservative case
 //! with the device's reason, under the validation layer with 0 messages.
@@ -329,4 +332,86 @@ fn a_declared_uncertainty_is_judged_under_and_said_so() {
         line.contains("1 passed") && line.contains("1 judged under its own conventions"),
         "{console}"
     );
+}
+
+/// The example's depth over the nine conservative depth cases (SPEC.md
+/// §12.11, §19.9, through the binary): every one passes; storing the
+/// plane unclamped fails the float32 case below 0 on its depth (and the
+/// unorm16 one is an error: no unorm integer above 65535); the first
+/// vertex's z everywhere fails a sloped plane's depth.
+#[test]
+fn the_example_gives_conservative_depth_and_wrong_depths_are_caught() {
+    use common::cli::{rastercheck, read_json, scratch, text, verdicts};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = scratch("conservative_example_depth");
+    let cases = dir.join("cases");
+    std::fs::create_dir_all(&cases).unwrap();
+    for entry in std::fs::read_dir(root.join("cases/conservative")).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_str().unwrap().to_owned();
+        if name.starts_with("depth_") {
+            std::fs::copy(&path, cases.join(&name)).unwrap();
+        }
+    }
+    let run = |tag: &str, flags: &str| {
+        let report = dir.join(format!("report_{tag}"));
+        let spec = format!(
+            "example=external-persistent:python3 {}/examples/conservative_rasterizer.py {flags}",
+            root.display()
+        );
+        let out = rastercheck(
+            &dir,
+            &[
+                "run",
+                "cases",
+                "-r",
+                &spec,
+                "--report",
+                report.to_str().unwrap(),
+            ],
+        );
+        (
+            verdicts(&read_json(&report.join("report.json"))),
+            text(&out),
+        )
+    };
+    let of = |v: &[(String, String, String)], case: &str| {
+        v.iter()
+            .find(|(id, _, _)| id.ends_with(case))
+            .cloned()
+            .unwrap_or_else(|| panic!("{case} not run: {v:?}"))
+    };
+    let (exact, out) = run("exact", "");
+    assert_eq!(exact.len(), 9, "{out}");
+    for (id, verdict, why) in &exact {
+        assert_eq!(verdict, "pass", "{id}: {why}\n{out}");
+    }
+    let (unclamped, out) = run("unclamped", "--depth-unclamped");
+    let (_, verdict, why) = of(&unclamped, "depth_clamp_float32_below");
+    assert_eq!(verdict, "fail", "{out}");
+    assert!(
+        why.contains("conservative depth:") && why.contains("outside the depths float32 allows"),
+        "{why}"
+    );
+    let (_, verdict, why) = of(&unclamped, "depth_clamp_unorm16");
+    assert_eq!(verdict, "error", "{out}");
+    assert!(why.contains("is not a unorm16 depth"), "{why}");
+    let (first, out) = run("first_vertex", "--depth-first-vertex");
+    let (_, verdict, why) = of(&first, "depth_inside");
+    assert_eq!(verdict, "fail", "{out}");
+    assert!(
+        why.contains("conservative depth:") && why.contains("outside the depths"),
+        "{why}"
+    );
+    for (flags, v) in [
+        ("--depth-unclamped", &unclamped),
+        ("--depth-first-vertex", &first),
+    ] {
+        let caught: Vec<_> = v
+            .iter()
+            .filter(|(_, w, _)| w != "pass")
+            .map(|(id, w, _)| format!("{id} {w}"))
+            .collect();
+        eprintln!("{flags}: {} caught: {caught:?}", caught.len());
+    }
 }

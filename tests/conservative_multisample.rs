@@ -144,6 +144,36 @@ fn covering_only_the_samples_inside_is_caught() {
     }
 }
 
+/// The fuzzer's conservative family multisamples some of its scenes
+/// (SPEC.md §19.10): production passes each, and the samples-inside foil
+/// is caught on some, so the family's multisampled scenes can fail.
+#[test]
+fn the_fuzz_familys_multisampled_scenes_catch_the_samples_inside_foil() {
+    use rastercheck::explore::fuzz::{generate, Family};
+    let (mut multisampled, mut caught) = (0, 0);
+    for index in 0..400 {
+        let (_, scene) = generate(38, index, Some(Family::Conservative));
+        if scene.effects.antialias.is_none() {
+            continue;
+        }
+        multisampled += 1;
+        let v = verdict(&scene, &Production);
+        assert!(matches!(v, Verdict::Pass), "scene {index}: {v:?}");
+        if let Verdict::Fail(reasons) = verdict(&scene, &SamplesInside) {
+            let text = reasons.join("; ");
+            assert!(
+                text.contains("required pixel(s) not drawn")
+                    || text.contains("with only some of their samples covered"),
+                "scene {index}: {text}"
+            );
+            caught += 1;
+        }
+    }
+    eprintln!("{multisampled} multisampled scenes, the foil caught on {caught}");
+    assert!(multisampled >= 40, "{multisampled}");
+    assert!(caught * 4 >= multisampled, "{caught} of {multisampled}");
+}
+
 /// A frame with one sample per pixel for a multisampled case cannot be
 /// judged: an error naming the counts, never a pass.
 #[test]

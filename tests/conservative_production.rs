@@ -382,7 +382,14 @@ fn production_matches_a_brute_force_of_the_sets() {
             continue;
         };
         forced += 1;
-        let got: Vec<bool> = frame.coverage.iter().map(|&c| c > 0).collect();
+        // Multisampled (SPEC.md §19.10): a pixel is drawn when any of
+        // its samples is (`agrees` holds it to all or none).
+        let n = frame.samples.max(1) as usize;
+        let got: Vec<bool> = frame
+            .coverage
+            .chunks(n)
+            .map(|run| run.iter().any(|&c| c > 0))
+            .collect();
         let text = || rastercheck::explore::fuzz::case_json(&scene);
         assert_eq!(got, drawn, "scene {index}: drawn pixels\n{}", text());
         if let Some(f) = &frame.fully_covered {
@@ -413,6 +420,36 @@ fn exact_over(seed: u64, count: u64) -> u64 {
 #[test]
 fn production_is_exact_on_the_fuzzers_conservative_family() {
     assert_eq!(exact_over(38, 1500), 1500);
+}
+
+/// The family draws multisampled scenes (SPEC.md §19.10), of more than one
+/// sample and never with depth (not judged, §19.7), each judged: held to
+/// [`agrees`] above, and production's verdict on it a pass.
+#[test]
+fn the_fuzzers_conservative_family_draws_multisampled_scenes() {
+    let (mut multisampled, mut many) = (0, 0);
+    for index in 0..1500 {
+        let (_, scene) = generate(38, index, Some(Family::Conservative));
+        let Some(aa) = &scene.effects.antialias else {
+            continue;
+        };
+        multisampled += 1;
+        many += usize::from(aa.samples > 1);
+        assert!(!scene.has_depth, "scene {index}");
+        assert_eq!(scene.conservative_unjudged(), None, "scene {index}");
+        let reference = rastercheck::harness::oracle::run_reference(&scene);
+        let run = rastercheck::harness::judge::run_candidate(&scene, &reference, &Production);
+        assert!(
+            matches!(run.verdict, rastercheck::harness::judge::Verdict::Pass),
+            "scene {index}: {:?}\n{}",
+            run.verdict,
+            rastercheck::explore::fuzz::case_json(&scene)
+        );
+    }
+    assert!(
+        multisampled > 150 && many > 100,
+        "{multisampled} multisampled, {many} of more than one sample"
+    );
 }
 
 /// The done-when: 0 differences over at least 10^5 scenes

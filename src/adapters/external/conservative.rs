@@ -1,10 +1,11 @@
 //! What a program declares about conservative rasterization (SPEC.md
 //! §12.11, §19): the hello's `capabilities.conservative` (its modes, its
 //! uncertainty, its degenerate-primitive behaviour, points and lines, the
-//! fully-covered flag), what a conservative case asks of it (refused
-//! unsent, naming the declaration, when it asks for a mode, the flag or
-//! conservative lines it does not declare; never for its uncertainty,
-//! which it cannot choose and is judged under, SPEC.md §19.6), and the
+//! fully-covered flag, its depth), what a conservative case asks of it
+//! (refused unsent, naming the declaration, when it asks for a mode, the
+//! flag, conservative lines or depth it does not declare; never for its
+//! uncertainty, which it cannot choose and is judged under, SPEC.md
+//! §19.6), and the
 //! conservative state a request carries. Like §12.10's, the declaration is
 //! asked for: a conservative case goes only to a persistent program whose
 //! hello makes it, since a program written before §12.11 would draw the
@@ -32,6 +33,9 @@ pub struct DeclaredConservative {
     pub points_and_lines: Option<bool>,
     /// It gives the fully-covered flag (`fully_covered: true`).
     pub fully_covered: bool,
+    /// It gives the depth of a conservatively drawn pixel (`depth: true`,
+    /// SPEC.md §12.11, judged by §19.9).
+    pub depth: bool,
 }
 
 /// The keys of `capabilities.conservative` (their kinds are in
@@ -84,6 +88,7 @@ impl DeclaredConservative {
             degenerate_lines: flag("degenerate_lines"),
             points_and_lines: flag("points_and_lines"),
             fully_covered: flag("fully_covered") == Some(true),
+            depth: flag("depth") == Some(true),
         })
     }
 
@@ -99,9 +104,9 @@ impl DeclaredConservative {
             degenerate_triangles: self.degenerate_triangles,
             degenerate_lines: self.degenerate_lines,
             points_and_lines: self.points_and_lines,
-            // The answer's conservative pixels carry no depth (SPEC.md
-            // §12.11): a case with depth is refused (§19.9).
-            depth: false,
+            // A program that gives no depth there is refused a case with
+            // depth (SPEC.md §12.11, §19.9).
+            depth: self.depth,
         }
     }
 }
@@ -143,6 +148,12 @@ pub fn refuses(
         return Some(format!(
             "{who} declares no conservative points and lines (its hello's \
              conservative.points_and_lines is not true)"
+        ));
+    }
+    if scene.has_depth && !d.depth {
+        return Some(format!(
+            "{who} gives no depth under conservative rasterization (its hello's \
+             conservative.depth is not true; SPEC §12.11)"
         ));
     }
     None
@@ -274,6 +285,39 @@ mod tests {
             none.contains("declares no conservative rasterization"),
             "{none}"
         );
+    }
+
+    /// A conservative case with depth goes only to a program declaring
+    /// `depth: true` (SPEC.md §12.11); the same case without z to either.
+    #[test]
+    fn a_case_with_depth_needs_the_depth_declared() {
+        let who = "the program (toy 1)";
+        let deep = parse_case(
+            &json!({
+                "name": "d", "canvas": {"width": 4, "height": 4},
+                "effects": {"conservative": {"mode": "overestimate"}},
+                "primitives": [{"triangle": [{"position": [0, 0], "z": 0},
+                                             {"position": [4, 0], "z": 1},
+                                             {"position": [0, 4], "z": 0}]}],
+            })
+            .to_string(),
+            "d",
+            &Limits::default(),
+        )
+        .unwrap();
+        let without = declared(json!({"modes": ["overestimate"]})).unwrap();
+        let why = refuses(&deep, Some(&without), who).unwrap();
+        assert!(
+            why.contains("gives no depth under conservative rasterization")
+                && why.contains("conservative.depth is not true"),
+            "{why}"
+        );
+        assert!(!without.support().depth);
+        let with = declared(json!({"modes": ["overestimate"], "depth": true})).unwrap();
+        assert_eq!(refuses(&deep, Some(&with), who), None);
+        assert!(with.support().depth);
+        let flat = scene(json!({"mode": "overestimate"}));
+        assert_eq!(refuses(&flat, Some(&without), who), None);
     }
 
     #[test]

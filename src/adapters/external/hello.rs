@@ -237,6 +237,7 @@ const KEYS: &[(&str, &str, Kind)] = &[
     ("capabilities.conservative", "degenerate_lines", Kind::Flag),
     ("capabilities.conservative", "points_and_lines", Kind::Flag),
     ("capabilities.conservative", "fully_covered", Kind::Flag),
+    ("capabilities.conservative", "depth", Kind::Flag),
 ];
 
 /// The objects whose other keys are descriptions for people rather than
@@ -477,6 +478,13 @@ impl Hello {
             .and_then(Value::as_object)
             .map(DeclaredConservative::parse)
             .transpose()?;
+        if conservative.as_ref().is_some_and(|c| c.depth) && flag("coverage_only") == Some(true) {
+            return Err(format!(
+                "{}.depth is true, but capabilities.coverage_only is true: a coverage-only \
+                 program gives no depth (SPEC §12.9, §12.11)",
+                conservative::PATH
+            ));
+        }
         Ok(Hello {
             protocol,
             name: text("name"),
@@ -787,6 +795,11 @@ mod tests {
             (
                 json!({"protocol": 2, "capabilities": {"conservative": true}}),
                 "$.hello.capabilities.conservative must be an object",
+            ),
+            (
+                json!({"protocol": 2, "capabilities": {"coverage_only": true,
+                                                       "conservative": {"depth": true}}}),
+                "$.hello.capabilities.conservative.depth is true, but capabilities.coverage_only is true",
             ),
         ];
         for (hello, expected) in cases {

@@ -23,6 +23,10 @@
 //! f32 not above e, so that a device rounding to its steps cannot go past
 //! e.
 //!
+//! Depth (SPEC.md §19.9) is drawn and read back as in any case: the same
+//! depth attachment and state (`pipelines.rs`' `Stage::asked`), the
+//! conservative state chained beside them.
+//!
 //! What it does not do: read `FullyCoveredEXT` (the shaders are naga's
 //! WGSL, which has no such built-in: a case asking for the flag is
 //! refused, naming why), or draw points and lines conservatively (not
@@ -281,9 +285,11 @@ pub(super) fn support(offers: Option<&ConservativeOffers>) -> ConservativeSuppor
         degenerate_triangles: Some(offers.degenerate_triangles),
         degenerate_lines: Some(offers.degenerate_lines),
         points_and_lines: Some(offers.points_and_lines),
-        // Its depth under conservative rasterization is not read back yet:
-        // a case with depth is refused with that reason (SPEC.md §19.9).
-        depth: false,
+        // Its depth is read back as an ordinary case's is: the depth
+        // attachment (clamped to the viewport's [0, 1], SPEC.md §19.9) or,
+        // under `exact`, the fragment's interpolated z (`pipelines.rs`'
+        // `Stage::asked`).
+        depth: true,
     }
 }
 

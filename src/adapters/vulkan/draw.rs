@@ -216,11 +216,8 @@ pub(super) fn render(
     // runs, chosen before recording.
     let mut placed = Vec::with_capacity(streams.len());
     let mut base = 0u64;
-    let stage = Stage {
-        conservative: super::conservative::ask(scene, gpu.offers.conservative.as_ref())
-            .map_err(RasterError::Unsupported)?,
-        ..Stage::of(scene)
-    };
+    let stage =
+        Stage::asked(scene, gpu.offers.conservative.as_ref()).map_err(RasterError::Unsupported)?;
     for stream in streams {
         let mut runs = Vec::with_capacity(stream.runs.len());
         for run in &stream.runs {

@@ -21,7 +21,7 @@ use std::collections::HashMap;
 use ash::vk;
 
 use super::super::gpu::{self, Draw, VERTEX_FLOATS};
-use super::conservative::Ask;
+use super::conservative::{Ask, ConservativeOffers};
 use super::device::{depth_attachment, Device};
 use super::shaders;
 use crate::scene::{
@@ -65,6 +65,20 @@ pub(super) struct Stage {
 }
 
 impl Stage {
+    /// What the pipelines drawing `scene` on a device offering
+    /// `conservative` are asked for: [`Stage::of`], with the conservative
+    /// state ([`super::conservative::ask`]) beside the depth attachment,
+    /// or why the device cannot draw it conservatively.
+    pub(super) fn asked(
+        scene: &Scene,
+        conservative: Option<&ConservativeOffers>,
+    ) -> Result<Stage, String> {
+        Ok(Stage {
+            conservative: super::conservative::ask(scene, conservative)?,
+            ..Stage::of(scene)
+        })
+    }
+
     pub(super) fn of(scene: &Scene) -> Stage {
         let requested = gpu::depth::requested(scene);
         let depth = requested.map(|t| t.format);
@@ -548,5 +562,103 @@ impl Drop for Pipelines {
                 self.layout,
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::{parse_case, Limits};
+
+    /// A device offering the extension as an NVIDIA H100 does
+    /// (ANCHORS.md): base 2^-9 px, extra up to 3/4 px in steps of 2^-8,
+    /// underestimation, degenerate triangles rasterized.
+    fn h100() -> ConservativeOffers {
+        ConservativeOffers::of(
+            &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default()
+                .primitive_overestimation_size(1.0 / 512.0)
+                .max_extra_primitive_overestimation_size(0.75)
+                .extra_primitive_overestimation_size_granularity(1.0 / 256.0)
+                .primitive_underestimation(true)
+                .degenerate_triangles_rasterized(true),
+        )
+    }
+
+    fn case(name: &str) -> Scene {
+        let path = format!(
+            "{}/cases/conservative/{name}.json",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let text = std::fs::read_to_string(&path).expect("the case file");
+        parse_case(&text, &path, &Limits::default()).expect("a valid case")
+    }
+
+    /// The conservative depth cases (SPEC.md §19.9) ask the device for
+    /// what an ordinary depth case asks (the depth attachment of the
+    /// case's format, clamped to the viewport's [0, 1] and written by
+    /// every fragment, its polygon offset; under `exact`, no attachment:
+    /// the fragment's z) with the conservative state beside it. No device
+    /// here offers the extension, so this is what is asked, never drawn.
+    #[test]
+    fn a_conservative_depth_case_asks_for_depth_and_the_conservative_state() {
+        let offers = h100();
+        let attached = [
+            ("depth_inside", None, None),
+            ("depth_touch_extrapolated", None, None),
+            ("depth_band_grown", None, None),
+            ("depth_last_writer", None, None),
+            ("depth_degenerate_provoking", None, None),
+            ("depth_under", None, None),
+            ("depth_clamp_unorm16", Some(DepthFormat::Unorm16), None),
+            (
+                "depth_clamp_float32_below",
+                Some(DepthFormat::Float32),
+                None,
+            ),
+            (
+                "depth_offset_unorm16",
+                Some(DepthFormat::Unorm16),
+                Some([4.0f32.to_bits(), 0, 0]),
+            ),
+        ];
+        for (name, format, bias) in attached {
+            let scene = case(name);
+            assert!(scene.has_depth, "{name}");
+            let stage = Stage::asked(&scene, Some(&offers)).unwrap();
+            assert_eq!(stage.depth, format, "{name}");
+            assert_eq!(stage.depth_clamp, format.is_some(), "{name}");
+            assert_eq!(stage.bias, bias, "{name}");
+            let ask = stage.conservative.expect(name);
+            let under = name == "depth_under";
+            assert_eq!(ask.underestimate, under, "{name}");
+            let extra = f32::from_bits(ask.extra);
+            let expected = match name {
+                // u = 1/4: the largest 2^-8 step at most 1/4 − 2^-9.
+                "depth_band_grown" | "depth_last_writer" => 63.0 / 256.0,
+                _ => 0.0,
+            };
+            assert_eq!(extra, expected, "{name}");
+            assert_eq!(
+                ask.create_info().conservative_rasterization_mode,
+                if under {
+                    vk::ConservativeRasterizationModeEXT::UNDERESTIMATE
+                } else {
+                    vk::ConservativeRasterizationModeEXT::OVERESTIMATE
+                },
+                "{name}"
+            );
+            // The device's declaration no longer refuses the case for
+            // its depth (SPEC.md §19.9).
+            let support = super::super::conservative::support_for(&scene, Some(&offers));
+            assert!(support.depth, "{name}");
+            assert_eq!(support.refuses_depth(true), None, "{name}");
+        }
+        // Without the extension the device's reason still comes first.
+        let scene = case("depth_inside");
+        let why = Stage::asked(&scene, None).unwrap_err();
+        assert!(
+            why.contains("offers no VK_EXT_conservative_rasterization"),
+            "{why}"
+        );
     }
 }

@@ -3,7 +3,10 @@
 //! (2^-9, 1/256 px), D3D12 tier 1's ½ px, Vulkan's largest extra ¾ px, a
 //! whole pixel, a third or any 64th, with the fully-covered flag asked for
 //! or not and degenerate triangles drawn or culled, with depth in half of
-//! them (any format, an offset in some: SPEC.md §19.9). The triangles are
+//! them (any format, an offset in some: SPEC.md §19.9), and multisampled
+//! in half of those without depth (any pattern and count of the
+//! `antialias` family's: SPEC.md §19.10, a pixel's samples all drawn or
+//! none; a multisampled scene's depth is not judged, §19.7). The triangles are
 //! what conservative tests get wrong: slivers thinner than a pixel,
 //! needles, vertices on pixel corners and edges along pixel borders (a
 //! touch of measure zero), degenerate triangles (collinear or coincident
@@ -13,6 +16,7 @@
 //! One scene in three is of points and lines instead
 //! (`conservative_lines.rs`, SPEC.md §19.8; `generate.rs` picks).
 
+use super::antialias::antialias;
 use super::common::{any_bits, any_rules, scene_of, Values};
 use crate::explore::fuzz::rng::Rng;
 use crate::scene::depth::{DepthBias, DepthFormat};
@@ -97,6 +101,9 @@ pub(super) fn conservative_scene(rng: &mut Rng) -> Scene {
     }
     let mut scene = scene_of(canvas, rules, primitives, &values);
     scene.effects.conservative = Some(any_conservative(rng));
+    if !depth && rng.chance(1, 2) {
+        scene.effects.antialias = Some(antialias(rng, canvas));
+    }
     scene
 }
 
