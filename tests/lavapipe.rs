@@ -169,6 +169,19 @@ fn clipping_at_the_viewport_moves_ties_on_clipped_edges() {
     assert!(w.is_watertight(), "{}", judge::describe(&r));
 }
 
+/// Far triangles with attributes, clipped at the target (the viewport
+/// wgpu allows), pass under the restatement whose pieces take their
+/// values from the whole triangles (SPEC.md §16.9;
+/// `tests/data/far_values_clipped.json`, found by `fuzz -r gl`); the frame
+/// fails the case judged unclipped and the pieces judged without values.
+#[test]
+fn far_values_clipped_at_the_viewport_pass() {
+    if !available() {
+        return;
+    }
+    common::viewport_drivers::assert_far_values_judged_clipped(&Lavapipe);
+}
+
 /// Lines are reported unsupported, never passed; unsnapped geometry is
 /// judged at the driver's own bits (SPEC.md §3.2).
 #[test]

@@ -220,3 +220,37 @@ fn new_vertices_are_judged_on_the_drivers_finer_grid() {
         coarse.verdict
     );
 }
+
+/// A far case with attributes (`tests/data/far_values_clipped.json`,
+/// SPEC.md §16.9) is restated clipped with its pieces' values from the
+/// whole triangles, and said so; a candidate that clips at the viewport it
+/// reports but draws the pieces without their values (production on the
+/// polygons: a restatement that loses the values) is caught on them.
+#[test]
+fn a_clip_that_loses_the_values_is_caught() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/far_values_clipped.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let scene = parse_case(&text, "far_values_clipped.json", &Limits::default()).unwrap();
+    let canvas = ScreenViewport {
+        origin: [0, 0],
+        size: [scene.canvas.width, scene.canvas.height],
+    };
+    let loses = Clips {
+        reported: canvas,
+        clips_at: Some(canvas),
+        declares: true,
+    };
+    let reference = oracle::run_reference(&scene);
+    let run = run_candidate(&scene, &reference, &loses);
+    assert!(run.judged.viewport_values, "its values not restated");
+    let Verdict::Fail(reasons) = &run.verdict else {
+        panic!("{:?}", run.verdict);
+    };
+    assert!(
+        reasons.iter().any(|r| r.starts_with("attribute 0")),
+        "{reasons:?}"
+    );
+    // Its coverage is the restated case's: only the values are wrong.
+    let coverage = &run.metrics.as_ref().unwrap().coverage;
+    assert_eq!((coverage.missing, coverage.extra), (0, 0), "{reasons:?}");
+}

@@ -133,6 +133,19 @@ fn triangles_past_the_target_are_not_clipped() {
 /// it passes under the restatement (SPEC.md §16.9): each pass's viewport
 /// moves with its shift. The foil, each pass through a viewport that
 /// stays while the scene moves (what the adapter did before), is caught.
+/// Far triangles with attributes, clipped by the driver at its viewport,
+/// pass under the restatement whose pieces take their values from the
+/// whole triangles (SPEC.md §16.9; `tests/data/far_values_clipped.json`,
+/// found by `fuzz -r gl`); the frame fails the case judged unclipped and
+/// the pieces judged without values.
+#[test]
+fn far_values_clipped_at_the_viewport_pass() {
+    let Some(_record) = available() else {
+        return;
+    };
+    common::viewport_drivers::assert_far_values_judged_clipped(&VULKAN);
+}
+
 #[test]
 fn shifted_passes_are_clipped_at_one_rectangle() {
     let Some(_record) = available() else {

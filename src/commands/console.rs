@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use crate::harness::golden::GoldenStatus;
 use crate::harness::judge;
 use crate::harness::judge::Verdict;
+use crate::harness::profile::OwnConventions;
 use crate::harness::runner::{CaseOutcome, Problem};
 use crate::rasterizer::Rasterizer;
 
@@ -109,8 +110,12 @@ pub(crate) fn print_outcome(
             ));
         }
         if let Some(viewport) = result.judged.viewport {
+            let values = match result.judged.viewport_values {
+                true => format!(", {}", OwnConventions::WHOLE_VALUES),
+                false => String::new(),
+            };
             method.push_str(&format!(
-                " (judged under its own clip-then-snap at {}; the case is drawn unclipped)",
+                " (judged under its own clip-then-snap at {}{values}; the case is drawn unclipped)",
                 viewport.words()
             ));
         } else if let (Some(clip), Some(scene)) = (result.judged.clip, &outcome.scene) {

@@ -168,12 +168,21 @@ pub fn run_candidate(
             .map_err(|panic| pass_on_deadline(panic, "panicked")),
             false => Ok(None),
         };
+        // A case clipped at a viewport: its pieces' values are the whole
+        // triangles' (SPEC.md §16.9).
+        let whole = own.whole_values(scene);
         let restated = match own.any() {
             true => Some(catch_oracle_run(|| {
-                run_reference_planned(&under, plan.clone())
+                let mut run = run_reference_planned(&under, plan.clone());
+                if let Some((whole, pieces)) = &whole {
+                    let allowed = run.depth_allowed.as_mut();
+                    reference::take_whole_values(&mut run.frame, allowed, whole, pieces, &plan);
+                }
+                run
             })),
             false => None,
         };
+        let magnitudes = whole.as_ref().map(|(whole, _)| whole);
         let mut run = match (restated, ties.transpose(), lines) {
             (Some(Err(why)), _, _) | (_, Err(why), _) | (_, _, Err(why)) => {
                 let why = format!(
@@ -188,6 +197,7 @@ pub fn run_candidate(
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
                     conservative: super::conservative::judged_under(&under, candidate),
+                    magnitudes,
                 };
                 judge(&under, &restated, frame, name, elapsed, oracle)
             }
@@ -196,6 +206,7 @@ pub fn run_candidate(
                     ties: ties.as_ref(),
                     lines: lines.as_deref(),
                     conservative: super::conservative::judged_under(&under, candidate),
+                    magnitudes: None,
                 };
                 judge(&under, reference, frame, name, elapsed, oracle)
             }
@@ -220,6 +231,10 @@ struct Oracle<'a> {
     /// A conservative case: the state the candidate is judged under (the
     /// case's, restated under what it declares, SPEC.md §19.6).
     conservative: Option<Conservative>,
+    /// The scene whose vertices give SPEC.md §6.3's magnitudes where the
+    /// judged one's do not: a case restated clipped at a viewport, whose
+    /// pieces carry no values, has them from its whole triangles (§16.9).
+    magnitudes: Option<&'a Scene>,
 }
 
 /// The restated case with its antialiasing bounds (`max_coverage_error`,
@@ -246,6 +261,7 @@ fn bounds_met_by(mut under: Scene, reference: &ReferenceRun) -> Scene {
         depth_allowed: reference.depth_allowed.as_deref(),
         ties: None,
         latitude: None,
+        magnitudes: None,
     };
     // The exact mask, box-resolved: what a rasterizer exact at these
     // conventions resolves (the reference's own resolved value is the
@@ -338,6 +354,7 @@ fn judge(
         depth_allowed: reference.depth_allowed.as_deref(),
         ties,
         latitude: oracle.lines,
+        magnitudes: oracle.magnitudes,
     };
     let m = metrics::measure_known(scene, &reference.frame, &frame, &known);
     // Without the oracle's values there is nothing to measure against: the

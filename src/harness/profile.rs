@@ -12,7 +12,7 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use super::clipped;
+use super::clipped::{self, Clipped};
 use super::line_parameters::LineParameters;
 use crate::frame::Frame;
 use crate::plan::Plan;
@@ -479,6 +479,11 @@ pub struct OwnConventions {
     /// With `viewport`: its own subpixel bits where the case states fewer,
     /// at which it snaps the new vertices (`clipped::clip_scene_on_grid`).
     pub viewport_bits: Option<u32>,
+    /// With `viewport`, for a case whose plan interpolates depth or
+    /// attributes: the clipped triangles' values are judged as the whole
+    /// triangles' planes at the samples their pieces cover
+    /// ([`OwnConventions::whole_values`], SPEC.md §16.9).
+    pub viewport_values: bool,
 }
 
 impl OwnConventions {
@@ -561,6 +566,7 @@ impl OwnConventions {
                     .any(|p| matches!(p, Primitive::Line(l) if l.rule == LineRule::Rectangle)),
             viewport: None,
             viewport_bits: None,
+            viewport_values: false,
         }
     }
 
@@ -568,8 +574,10 @@ impl OwnConventions {
     /// viewport too small to hold it and clips at (its declared `clip_xy`
     /// is `clip-then-snap`), that viewport: the case is then judged clipped
     /// there (`clipped.rs`, SPEC.md §16.9), its clipping reported as the
-    /// candidate's own (`clip_xy clip-then-snap`). A case `clipped.rs`
-    /// cannot restate (lines, points, values, motion) is judged as stated.
+    /// candidate's own (`clip_xy clip-then-snap`); where its plan
+    /// interpolates, its clipped triangles' values are the whole
+    /// triangles' (`viewport_values`). A case `clipped.rs` cannot restate
+    /// (lines, points, motion) is judged as stated.
     pub fn with_viewport(mut self, candidate: &dyn Rasterizer, scene: &Scene, plan: &Plan) -> Self {
         let clips = matches!(
             candidate.fixed_clip_rules(),
@@ -588,6 +596,7 @@ impl OwnConventions {
                 xy: ClipXy::ClipThenSnap,
                 ..self.clip.unwrap_or(scene.rules.clip)
             });
+            self.viewport_values = plan.interpolates();
         }
         self
     }
@@ -668,11 +677,31 @@ impl OwnConventions {
     /// `area` (the exact area of the snapped primitives) when the vertices
     /// move (other bits, no snapping, truncation, another pixel centre).
     pub fn restate(&self, scene: &Scene) -> Scene {
+        self.restate_as(scene, Clipped::Pieces).0
+    }
+
+    /// Where the values of the pieces of the case restated come from, when
+    /// it is restated clipped at a viewport and its plan interpolates
+    /// (`viewport_values`): the case restated alike with each clipped
+    /// triangle whole, and the indices of those triangles, for
+    /// `reference::take_whole_values` (SPEC.md §16.9). `None` otherwise,
+    /// or when no triangle is clipped.
+    pub fn whole_values(&self, scene: &Scene) -> Option<(Scene, Vec<usize>)> {
+        if self.viewport.is_none() || !self.viewport_values {
+            return None;
+        }
+        Some(self.restate_as(scene, Clipped::Whole)).filter(|(_, pieces)| !pieces.is_empty())
+    }
+
+    /// [`OwnConventions::restate`], each triangle clipped at the viewport
+    /// restated `as_` its pieces or whole; with their indices.
+    fn restate_as(&self, scene: &Scene, as_: Clipped) -> (Scene, Vec<usize>) {
         let mut s = scene.clone();
+        let mut clipped = Vec::new();
         if let Some(viewport) = self.viewport {
             // First, from the positions the adapter sent: the case's own.
             let bits = scene.rules.subpixel_bits;
-            clipped::clip_scene_on_grid(&mut s, viewport, bits, self.viewport_bits);
+            clipped = clipped::clip_scene_on_grid(&mut s, viewport, bits, self.viewport_bits, as_);
         }
         if let Some(rule) = self.fill_rule {
             s.rules.fill_rule = rule;
@@ -732,8 +761,13 @@ impl OwnConventions {
         }
         s.expect.samples_covered = None;
         s.expect.time_coverage.clear();
-        s
+        (s, clipped)
     }
+
+    /// How a case clipped at a viewport with values is judged, in words
+    /// (`viewport_values`): the console's and [`OwnConventions::describe`]'s.
+    pub const WHOLE_VALUES: &'static str =
+        "the values of a clipped triangle's pieces from its whole planes";
 
     /// In words, for a failure of the reference under them.
     pub fn describe(&self) -> String {
@@ -746,7 +780,10 @@ impl OwnConventions {
         }
         match (self.viewport, self.clip) {
             (Some(viewport), _) => {
-                words.push(format!("clip_xy clip-then-snap at {}", viewport.words()))
+                words.push(format!("clip_xy clip-then-snap at {}", viewport.words()));
+                if self.viewport_values {
+                    words.push(Self::WHOLE_VALUES.to_owned());
+                }
             }
             (None, Some(clip)) => words.push(clip.words()),
             (None, None) => {}

@@ -75,6 +75,11 @@ pub struct Known<'a> {
     /// draws them with its API's latitude (`reference::diamond_lines`):
     /// judged under it.
     pub latitude: Option<&'a [DiamondLine]>,
+    /// The scene whose vertices give the magnitudes M of SPEC.md §6.3's
+    /// bounds, where the judged scene's do not: a case restated clipped
+    /// at a viewport has them from its whole triangles (§16.9); `None`:
+    /// the judged scene's.
+    pub magnitudes: Option<&'a Scene>,
 }
 
 /// Measures a candidate against the reference. `interior` is given for
@@ -199,7 +204,7 @@ pub fn measure_known(
                 candidate,
                 exact,
                 values,
-                bounds(scene.depth_magnitude()),
+                bounds(known.magnitudes.unwrap_or(scene).depth_magnitude()),
             ));
         }
         _ => {}
@@ -210,7 +215,9 @@ pub fn measure_known(
         .zip(&candidate.attributes)
         .enumerate()
     {
-        let m = largest(scene.vertices().map(|v| &v.attributes[k]));
+        // A polygon's vertices carry no attributes.
+        let vertices = known.magnitudes.unwrap_or(scene).vertices();
+        let m = largest(vertices.filter_map(|v| v.attributes.get(k)));
         channels.push(interpolation::channel_error(
             &format!("attribute {k}"),
             reference,

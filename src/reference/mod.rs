@@ -18,6 +18,8 @@
 //! `ties.rs` the samples exactly on an edge (for a rasterizer with no tie rule),
 //! `latitude.rs` each diamond-exit line's own fragments (for one that draws
 //! them with its API's latitude);
+//! `pieces.rs` writes the whole triangle's values at the samples its
+//! pieces cover, for a case restated clipped at a driver's viewport;
 //! `conservative/` classes every pixel of a conservative scene (SPEC.md §19):
 //! required, allowed or forbidden;
 //! `rasterizer.rs` is the reference behind the one trait.
@@ -32,6 +34,7 @@ pub mod grid;
 pub mod latitude;
 pub mod line;
 pub mod motion;
+pub mod pieces;
 pub mod point;
 pub mod polygon;
 pub mod rasterizer;
@@ -44,6 +47,7 @@ mod visit;
 pub use area::{exact_areas, primitive_area, primitive_pixel_areas};
 pub use coverage::{coverage_under, mesh_interior};
 pub use latitude::{diamond_lines, DiamondLine};
+pub use pieces::take_whole_values;
 pub use rasterizer::Reference;
 pub use render::{depth_allowed, render, render_judged, render_with};
 pub use ties::{tie_set, TieOutcome, TieSample, TieSet};

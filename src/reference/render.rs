@@ -2,6 +2,8 @@
 //! attributes rounded once, the depths a format allows (SPEC.md §18), and
 //! an antialiased scene's exact areas.
 
+use dashu_int::IBig;
+
 use super::area::{self, exact_areas};
 use super::depth;
 use super::exact;
@@ -81,11 +83,7 @@ pub fn render_judged(
                     let values = values[index].as_ref().expect("prepared for triangles");
                     values.write(&mut frame, slot, plan, &e, &area);
                     if let Some(rules) = &depth_rules {
-                        let z = values.depth(&e, &area);
-                        let stored = match rules.offset(index) {
-                            Some([lo, hi]) => rules.store([&(&z + lo), &(&z + hi)]),
-                            None => rules.store([&z, &z]),
-                        };
+                        let stored = triangle_stored(rules, index, values, &e, &area);
                         store(&mut frame, allowed.as_mut(), slot, stored);
                     }
                 }
@@ -149,8 +147,25 @@ pub fn depth_allowed(scene: &Scene, plan: &Plan) -> Option<Vec<[f64; 2]>> {
     render_judged(scene, plan, Arithmetic::Auto).1
 }
 
+/// What a screen-space triangle's sample stores under the depth rules:
+/// its exact depth (`e`, `area` its edge values and twice its area there),
+/// widened by primitive `index`'s offset interval when it is offset.
+pub(super) fn triangle_stored(
+    rules: &depth::DepthRules,
+    index: usize,
+    values: &triangle::VertexValues,
+    e: &[IBig; 3],
+    area: &IBig,
+) -> depth::Stored {
+    let z = values.depth(e, area);
+    match rules.offset(index) {
+        Some([lo, hi]) => rules.store([&(&z + lo), &(&z + hi)]),
+        None => rules.store([&z, &z]),
+    }
+}
+
 /// Writes a slot's stored depth and what it allows.
-fn store(
+pub(super) fn store(
     frame: &mut Frame,
     allowed: Option<&mut Vec<[f64; 2]>>,
     slot: usize,

@@ -345,6 +345,23 @@ impl VertexValues {
         RBig::from_parts_signed(self.z.sum(&weights), area * &self.z.den)
     }
 
+    /// Whether its perspective channels have a value at the sample of
+    /// these edge values: Σ b_i/w_i > 0 there (the sum carries the area's
+    /// sign), as it is inside a triangle whose w are all positive, and no
+    /// longer need be where its planes are extended beyond its edges
+    /// (`pieces.rs`). Without a perspective channel, always.
+    pub fn defined_at(&self, e: &[IBig; 3], area: &IBig) -> bool {
+        if !self
+            .attributes
+            .iter()
+            .any(|c| matches!(c, Channel::Perspective(_)))
+        {
+            return true;
+        }
+        let q = self.inv_w.sum(&[&e[1], &e[2], &e[0]]);
+        q != IBig::ZERO && (q > IBig::ZERO) == (*area > IBig::ZERO)
+    }
+
     /// Writes exact depth and attributes at a covered sample. `e[i]` is the
     /// edge value of edge v[i]→v[i+1], which is the area-weighted barycentric
     /// weight of the opposite vertex v[i+2].

@@ -260,6 +260,12 @@ pub struct ClipInfo {
     /// rasterizer's, where no viewport it allows holds the case.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub viewport: Option<[i64; 4]>,
+    /// With `viewport`, for a case with depth or attributes:
+    /// `"whole-triangle"`, the values of a clipped triangle's pieces judged
+    /// as its whole planes (SPEC.md §16.9).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(deserialize_with = "maybe_name")]
+    pub piece_values: Option<Word>,
 }
 
 impl ClipInfo {
@@ -272,6 +278,7 @@ impl ClipInfo {
             clip_points: clip.points.name(),
             point_bounds: clip.bounds.name(),
             viewport: None,
+            piece_values: None,
         }
     }
 }
@@ -668,6 +675,7 @@ impl CaseEntry {
                         .judged
                         .viewport
                         .map(|v| [v.origin[0], v.origin[1], v.size[0].into(), v.size[1].into()]),
+                    piece_values: run.judged.viewport_values.then_some("whole-triangle"),
                     ..ClipInfo::of(&c)
                 }),
                 judged_subpixel_bits: run.judged.subpixel_bits,

@@ -118,3 +118,61 @@ fn through_the_target(
         h = scene.canvas.height,
     )
 }
+
+/// A case under `tests/data/` by name.
+fn data(name: &str) -> rastercheck::scene::Scene {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/data/{name}.json"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+    rastercheck::scene::parse_case(
+        &text,
+        &path.display().to_string(),
+        &rastercheck::scene::Limits::default(),
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+/// Why `frame` fails `scene` as the reference draws it, restated as
+/// given; empty when it passes.
+fn failures_against(
+    scene: &rastercheck::scene::Scene,
+    frame: &rastercheck::frame::Frame,
+) -> Vec<String> {
+    let reference = oracle::run_reference(scene);
+    let m = rastercheck::metrics::measure(scene, &reference.frame, frame, None);
+    rastercheck::metrics::failures(scene, &reference.frame, &m)
+}
+
+/// Far triangles with attributes that the driver clips at its viewport
+/// (`tests/data/far_values_clipped.json`, found by `fuzz -r gl`, SPEC.md
+/// §16.9): judged `pass`, restated clipped with the pieces' values taken
+/// from the whole triangles' planes, and said so. The same frame fails
+/// both restatements that fall short: the case judged unclipped (under
+/// the candidate's other conventions: how it was judged before, coverage
+/// departing on the clipped edges), and the pieces judged without their
+/// values (a polygon carries none).
+pub fn assert_far_values_judged_clipped(candidate: &dyn Rasterizer) {
+    use rastercheck::harness::profile::OwnConventions;
+    let scene = data("far_values_clipped");
+    let reference = oracle::run_reference(&scene);
+    let run = judge::run_candidate(&scene, &reference, candidate);
+    assert_eq!(run.verdict, Verdict::Pass, "{}", judge::describe(&run));
+    assert!(run.judged.viewport.is_some(), "not restated clipped");
+    assert!(run.judged.viewport_values, "its values not restated");
+    let frame = run.frame.as_ref().expect("a frame");
+
+    let own = OwnConventions::of(candidate, &scene);
+    let unclipped = failures_against(&own.restate(&scene), frame);
+    eprintln!("judged unclipped: {unclipped:?}");
+    assert!(
+        unclipped.iter().any(|f| f.contains("sample")),
+        "judged unclipped, its coverage does not depart: {unclipped:?}"
+    );
+    let own = own.with_viewport(candidate, &scene, &reference.plan);
+    let without_values = failures_against(&own.restate(&scene), frame);
+    eprintln!("judged without the pieces' values: {without_values:?}");
+    assert!(
+        without_values.iter().any(|f| f.contains("attribute 0")),
+        "the pieces judged without values pass: {without_values:?}"
+    );
+}
