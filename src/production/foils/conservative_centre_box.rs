@@ -7,13 +7,12 @@
 //! as a required pixel missing (SPEC.md §19.1). It draws overestimation
 //! only, under the case's uncertainty.
 
-use super::conservative_parts::{capabilities, drawn_with};
+use super::conservative_parts::{capabilities, drawn_with, overestimation_only};
 use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
-use crate::production::conservative;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ConservativeSupport, Scene};
+use crate::scene::Scene;
 use dashu_ratio::RBig;
 
 foil!(
@@ -21,10 +20,7 @@ foil!(
     ConservativeCentreBox,
     "foil-conservative-centre-box",
     capabilities: capabilities(),
-    conservative: ConservativeSupport {
-        underestimate: false,
-        ..conservative::support()
-    },
+    conservative: overestimation_only(),
     draw
 );
 

@@ -6,13 +6,13 @@
 //! triangle is drawn. Caught as a forbidden pixel drawn (SPEC.md §19.1).
 //! It draws overestimation only.
 
-use super::conservative_parts::capabilities;
+use super::conservative_parts::{capabilities, overestimation_only};
 use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::conservative;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ConservativeSupport, Number, Scene};
+use crate::scene::{Number, Scene};
 
 /// How much more it grows than it declares: ⅛ px.
 const EXCESS: (i64, i64) = (1, 8);
@@ -22,10 +22,7 @@ foil!(
     ConservativeOvergrow,
     "foil-conservative-overgrow",
     capabilities: capabilities(),
-    conservative: ConservativeSupport {
-        underestimate: false,
-        ..conservative::support()
-    },
+    conservative: overestimation_only(),
     draw
 );
 
