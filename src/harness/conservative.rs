@@ -114,6 +114,12 @@ pub fn broken_promises(scene: &Scene, classes: &ConservativeClasses) -> Vec<Stri
 
 /// The conservative state `candidate` is judged under: the case's,
 /// restated under what it declares it cannot choose (SPEC.md §19.6).
+/// Asked after the candidate has drawn, though [`refusal`] restated the
+/// case before: an external program declares its uncertainty in its
+/// hello, read only when the program is started for its first draw
+/// (`a_declared_uncertainty_is_judged_under_and_said_so` in
+/// `tests/conservative_external.rs` fails when the state asked before
+/// the draw is kept).
 pub fn judged_under(scene: &Scene, candidate: &dyn Rasterizer) -> Option<Conservative> {
     let case = scene.effects.conservative.as_ref()?;
     Some(match candidate.conservative_for(scene) {

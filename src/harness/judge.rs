@@ -398,8 +398,8 @@ fn judge(
 /// A conservative candidate's frame judged against the oracle's classes
 /// (SPEC.md §19.5): against `classes`, the reference's for the case, or,
 /// where the candidate declares an uncertainty or properties of its own
-/// (`under` differs from the case's), against the classes under those,
-/// reported as such.
+/// (`under` differs from the case's in what the scene has), against the
+/// classes under those, reported as such.
 fn judge_conservative(
     scene: &Scene,
     classes: &Result<ConservativeClasses, RasterError>,
@@ -432,13 +432,15 @@ fn judge_conservative(
     // The case's promises hold of the case's classes, whatever the
     // candidate is judged under.
     let promises = super::conservative::broken_promises(scene, classes);
+    // Classified again only where the candidate's state differs from the
+    // case's in what the scene has (the test the words below use too).
+    let judged = under.unwrap_or(case);
     let own;
-    let (judged, classes) = match under {
-        Some(under) if under != case => {
-            own = reference::conservative::classify_under(scene, under);
-            (under, &own)
-        }
-        _ => (case, classes),
+    let classes = if judged.restates(case, scene.has_points_or_lines()) {
+        own = reference::conservative::classify_under(scene, judged);
+        &own
+    } else {
+        classes
     };
     let samples = scene.effects.antialias.as_ref().map_or(1, |aa| aa.samples);
     if let Some(why) = metrics::conservative::shape_problem(classes, &frame, samples) {

@@ -68,3 +68,68 @@ pub fn observed(report: &Report, pairs: &[(String, String)]) -> Observed {
 pub fn rows(report: &Report) -> Vec<String> {
     report.rasterizers.iter().map(|r| r.name.clone()).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::metrics_of_entry;
+    use crate::harness::baseline::metrics_of;
+    use crate::harness::judge::run_candidate;
+    use crate::harness::oracle::run_reference;
+    use crate::production::foils::{DdaF32, EmptyAntialias, FloatF32, Truncate};
+    use crate::production::Production;
+    use crate::rasterizer::Rasterizer;
+    use crate::report::json::MetricsEntry;
+    use crate::scene::{parse_case, Limits};
+
+    /// A run's metrics and the report's entry for them are read apart (the
+    /// harness cannot see the report's types); both must give a baseline
+    /// the same names and values, so a baseline holds a report as it holds
+    /// the run that wrote it. Over cases with every part a baseline
+    /// records: watertight meshes, midpoint lines, channels, antialiasing,
+    /// motion.
+    #[test]
+    fn a_report_entry_records_what_its_run_records() {
+        let cases = [
+            "clip/mesh_across_near",
+            "lines/diamond_colour_interpolation",
+            "lines/interpolation_major_linear",
+            "antialias/probe_standard4",
+            "motion/aa_standard4_time_random",
+        ];
+        // Production, and foils that miss samples and draw extra ones.
+        let candidates: [&dyn Rasterizer; 5] = [
+            &Production,
+            &DdaF32,
+            &FloatF32,
+            &Truncate::UNDECLARED,
+            &EmptyAntialias,
+        ];
+        let mut parts = std::collections::BTreeSet::new();
+        for case in cases {
+            let path = format!("{}/cases/{case}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(&path).expect("the case file");
+            let scene = parse_case(&text, &path, &Limits::default()).expect("a valid case");
+            let reference = run_reference(&scene);
+            for candidate in candidates {
+                let run = run_candidate(&scene, &reference, candidate);
+                let Some(m) = &run.metrics else { continue };
+                let recorded = metrics_of(m);
+                assert_eq!(
+                    metrics_of_entry(&MetricsEntry::from_metrics(m)),
+                    recorded,
+                    "{} on {case}",
+                    candidate.name()
+                );
+                parts.extend(
+                    recorded
+                        .keys()
+                        .map(|k| k.split('.').next().unwrap().to_owned()),
+                );
+            }
+        }
+        for part in ["coverage", "watertight", "lines", "antialias", "time"] {
+            assert!(parts.contains(part), "no case recorded {part}: {parts:?}");
+        }
+        assert!(parts.len() > 5, "no channel recorded: {parts:?}");
+    }
+}

@@ -75,17 +75,18 @@ impl Conservative {
         }
     }
 
-    /// Whether a candidate judged under `self` is judged under other
-    /// conventions than `case` states, in what matters to a scene (its
-    /// points and lines only where it has them, `has_points_or_lines`), and
-    /// the words for both: "overestimate, uncertainty 1/4 px,
-    /// degenerate_lines true" against what the case states. `None` when
-    /// they agree.
-    pub fn restated_words(
+    /// The properties in which `self` differs from `case` in what matters
+    /// to a scene (points and lines only where it has them,
+    /// `has_points_or_lines`), each with its value in both; `None` when
+    /// they agree in those and in mode and uncertainty (the flag asked for
+    /// is the case's in any restatement). The one relevance
+    /// test: [`Conservative::restates`] and
+    /// [`Conservative::restated_words`] both read it.
+    fn differences(
         &self,
         case: &Conservative,
         has_points_or_lines: bool,
-    ) -> Option<(String, String)> {
+    ) -> Option<Vec<(&'static str, bool, bool)>> {
         let mut properties: Vec<(&str, bool, bool)> = vec![(
             "degenerate_triangles",
             self.degenerate_triangles,
@@ -104,9 +105,29 @@ impl Conservative {
             ));
         }
         properties.retain(|(_, own, stated)| own != stated);
-        if self.mode == case.mode && self.uncertainty == case.uncertainty && properties.is_empty() {
-            return None;
-        }
+        let same = self.mode == case.mode && self.uncertainty == case.uncertainty;
+        (!same || !properties.is_empty()).then_some(properties)
+    }
+
+    /// Whether a candidate judged under `self` is judged under other
+    /// conventions than `case` states, in what matters to a scene that has
+    /// points or lines or not (`has_points_or_lines`): where it is not,
+    /// the case's own classes serve.
+    pub fn restates(&self, case: &Conservative, has_points_or_lines: bool) -> bool {
+        self.differences(case, has_points_or_lines).is_some()
+    }
+
+    /// Whether a candidate judged under `self` is judged under other
+    /// conventions than `case` states, in what matters to a scene
+    /// ([`Conservative::restates`]), and the words for both:
+    /// "overestimate, uncertainty 1/4 px, degenerate_lines true" against
+    /// what the case states. `None` when they agree.
+    pub fn restated_words(
+        &self,
+        case: &Conservative,
+        has_points_or_lines: bool,
+    ) -> Option<(String, String)> {
+        let properties = self.differences(case, has_points_or_lines)?;
         let (mut own, mut stated) = (self.words(), case.words());
         for (name, o, c) in properties {
             own.push_str(&format!(", {name} {o}"));
@@ -233,6 +254,8 @@ mod tests {
         // A declared property of points and lines is no restatement of a
         // scene of triangles.
         assert_eq!(own.restated_words(&case, false), None);
+        assert!(!own.restates(&case, false));
+        assert!(own.restates(&case, true));
         assert_eq!(
             own.restated_words(&case, true),
             Some((
@@ -241,6 +264,7 @@ mod tests {
             ))
         );
         own.uncertainty = Number::ratio(1, 4);
+        assert!(own.restates(&case, false));
         let (mine, stated) = own.restated_words(&case, false).unwrap();
         assert_eq!(mine, "overestimate, uncertainty 1/4 px");
         assert_eq!(stated, "overestimate, uncertainty 0 px");

@@ -7,37 +7,27 @@
 //! draws the pixels production draws, in both modes.
 
 use super::conservative_parts::{capabilities, drawn_with, Snapped};
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::conservative;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
-use crate::scene::{ConservativeSupport, Scene};
+use crate::scene::Scene;
 use dashu_ratio::RBig;
 
-/// Conservative rasterization with the centre's coverage as its flag.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct ConservativeCentreFlag;
+foil!(
+    /// Conservative rasterization with the centre's coverage as its flag.
+    ConservativeCentreFlag,
+    "foil-conservative-centre-flag",
+    capabilities: capabilities(),
+    conservative: conservative::support(),
+    draw
+);
 
-impl Rasterizer for ConservativeCentreFlag {
-    fn name(&self) -> &str {
-        "foil-conservative-centre-flag"
-    }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        capabilities()
-    }
-
-    fn conservative(&self) -> Option<ConservativeSupport> {
-        Some(conservative::support())
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        drawn_with(scene, plan, |v, x, y, _| Some(centre_inside(v, x, y)))
-    }
+/// Production's conservative pixels, each flagged fully covered when its
+/// centre is inside.
+fn draw(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+    drawn_with(scene, plan, |v, x, y, _| Some(centre_inside(v, x, y)))
 }
 
 /// Whether the centre of pixel (x, y) lies in the closed triangle `v` of

@@ -9,57 +9,47 @@
 //! production.
 
 use super::conservative_parts::capabilities;
+use super::declare::foil;
 use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::conservative;
 use crate::rasterizer::{Capabilities, RasterError, Rasterizer};
 use crate::scene::depth::DepthFormat;
-use crate::scene::{ConservativeSupport, Scene};
+use crate::scene::Scene;
 
-/// Conservative rasterization whose depth is not clamped to [0, 1].
-#[derive(Clone, Copy, Debug, Default)]
-pub struct ConservativeDepthUnclamped;
+foil!(
+    /// Conservative rasterization whose depth is not clamped to [0, 1].
+    ConservativeDepthUnclamped,
+    "foil-conservative-depth-unclamped",
+    // The conservative foils' triangles, with depth into an attachment of
+    // the case's format (the clamp it skips is the format's).
+    capabilities: Capabilities {
+        depth: true,
+        depth_attachment: true,
+        ..capabilities()
+    },
+    conservative: conservative::support(),
+    draw
+);
 
-impl Rasterizer for ConservativeDepthUnclamped {
-    fn name(&self) -> &str {
-        "foil-conservative-depth-unclamped"
+/// Production's conservative frame, with the plane's unclamped value
+/// written wherever it lies outside [0, 1].
+fn draw(scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
+    let mut frame = conservative::rasterize(scene, plan)?;
+    if scene.rules.depth_format == DepthFormat::Exact {
+        return Ok(frame);
     }
-
-    fn is_foil(&self) -> bool {
-        true
-    }
-
-    /// The conservative foils' triangles, with depth into an attachment of
-    /// the case's format (the clamp it skips is the format's).
-    fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            depth: true,
-            depth_attachment: true,
-            ..capabilities()
-        }
-    }
-
-    fn conservative(&self) -> Option<ConservativeSupport> {
-        Some(conservative::support())
-    }
-
-    fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
-        let mut frame = conservative::rasterize(scene, plan)?;
-        if scene.rules.depth_format == DepthFormat::Exact {
-            return Ok(frame);
-        }
-        // The same scene with `exact` depth: the plane's values as they
-        // come, before any format.
-        let mut raw_scene = scene.clone();
-        raw_scene.rules.depth_format = DepthFormat::Exact;
-        let raw = conservative::rasterize(&raw_scene, plan)?;
-        if let (Some(depth), Some(raw)) = (frame.depth.as_mut(), raw.depth.as_ref()) {
-            for (i, z) in depth.iter_mut().enumerate() {
-                if frame.last[i] > 0 && !(0.0..=1.0).contains(&raw[i]) {
-                    *z = f64::from(raw[i] as f32);
-                }
+    // The same scene with `exact` depth: the plane's values as they
+    // come, before any format.
+    let mut raw_scene = scene.clone();
+    raw_scene.rules.depth_format = DepthFormat::Exact;
+    let raw = conservative::rasterize(&raw_scene, plan)?;
+    if let (Some(depth), Some(raw)) = (frame.depth.as_mut(), raw.depth.as_ref()) {
+        for (i, z) in depth.iter_mut().enumerate() {
+            if frame.last[i] > 0 && !(0.0..=1.0).contains(&raw[i]) {
+                *z = f64::from(raw[i] as f32);
             }
         }
-        Ok(frame)
     }
+    Ok(frame)
 }

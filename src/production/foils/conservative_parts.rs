@@ -1,8 +1,9 @@
 //! What the three conservative foils share: production's conservative
 //! frame drawn one triangle at a time, each triangle's pixels passed
 //! through the foil's own change (a pixel dropped, a flag set otherwise),
-//! then laid down in scene order as production lays them; and the
-//! triangle's snapped vertices in rationals, for the foil's own tests.
+//! then laid down in scene order as production lays them; the
+//! triangle's snapped vertices in rationals, for the foil's own tests; and
+//! what they declare.
 
 use dashu_ratio::RBig;
 
@@ -10,7 +11,7 @@ use crate::frame::Frame;
 use crate::plan::Plan;
 use crate::production::conservative;
 use crate::rasterizer::{Capabilities, RasterError};
-use crate::scene::{Number, Primitive, Scene};
+use crate::scene::{ConservativeSupport, Number, Primitive, Scene};
 
 /// A triangle's vertices after snapping, exact.
 pub(super) type Snapped = [[RBig; 2]; 3];
@@ -21,6 +22,15 @@ pub(super) fn capabilities() -> Capabilities {
         triangles: true,
         ideal_geometry: true,
         ..Capabilities::none()
+    }
+}
+
+/// What the overestimating foils declare: production's conservative
+/// support, overestimation only.
+pub(super) fn overestimation_only() -> ConservativeSupport {
+    ConservativeSupport {
+        underestimate: false,
+        ..conservative::support()
     }
 }
 

@@ -1,28 +1,15 @@
 //! The declarations foils share: `foil!`, a unit struct drawing with its
-//! own function under production's capabilities, less those it lacks; and
+//! own function under production's capabilities, less those it lacks (or
+//! the ones given, and the conservative support given); and
 //! `coverage_foil!`, one that draws triangles' coverage and nothing else.
 
 /// Declares a foil: a unit struct whose `Rasterizer` impl gives its name,
 /// says it is a foil, takes production's capabilities (or, after
-/// `capabilities:`, the ones given), and draws with the given function of
-/// the scene and plan.
+/// `capabilities:`, the ones given), declares no conservative support (or,
+/// after `conservative:`, the `ConservativeSupport` given), and draws with
+/// the given function of the scene and plan.
 macro_rules! foil {
-    ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
-        $crate::production::foils::declare::foil!(
-            $(#[$doc])* $name,
-            $label,
-            capabilities: Capabilities {
-                polygons: false,
-                antialias: false,
-                motion_blur: false,
-                clip_space: false,
-                points: false,
-                ..Production.capabilities()
-            },
-            $draw
-        );
-    };
-    ($(#[$doc:meta])* $name:ident, $label:literal, capabilities: $capabilities:expr, $draw:expr) => {
+    (@declare $(#[$doc:meta])* $name:ident, $label:literal, $capabilities:expr, $conservative:expr, $draw:expr) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, Default)]
         pub struct $name;
@@ -40,10 +27,39 @@ macro_rules! foil {
                 $capabilities
             }
 
+            fn conservative(&self) -> Option<$crate::scene::ConservativeSupport> {
+                $conservative
+            }
+
             fn rasterize(&self, scene: &Scene, plan: &Plan) -> Result<Frame, RasterError> {
                 $draw(scene, plan)
             }
         }
+    };
+    ($(#[$doc:meta])* $name:ident, $label:literal, capabilities: $capabilities:expr, conservative: $conservative:expr, $draw:expr) => {
+        $crate::production::foils::declare::foil!(
+            @declare $(#[$doc])* $name, $label, $capabilities, Some($conservative), $draw
+        );
+    };
+    ($(#[$doc:meta])* $name:ident, $label:literal, $draw:expr) => {
+        $crate::production::foils::declare::foil!(
+            $(#[$doc])* $name,
+            $label,
+            capabilities: Capabilities {
+                polygons: false,
+                antialias: false,
+                motion_blur: false,
+                clip_space: false,
+                points: false,
+                ..Production.capabilities()
+            },
+            $draw
+        );
+    };
+    ($(#[$doc:meta])* $name:ident, $label:literal, capabilities: $capabilities:expr, $draw:expr) => {
+        $crate::production::foils::declare::foil!(
+            @declare $(#[$doc])* $name, $label, $capabilities, None, $draw
+        );
     };
 }
 

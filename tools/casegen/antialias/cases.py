@@ -143,10 +143,11 @@ for n in (1, 2, 4, 8, 16):
          "Probes of the standard %dx sample positions: pixel i of row 1 holds a 1/16 px square (two "
          "triangles, half-size 1/32) centred on the standard location of sample i, so each square "
          "covers exactly that one sample (its centre lies on the squares' shared diagonal, which "
-         "gives it to exactly one triangle) and no other: the %d samples covered prove that the "
+         "gives it to exactly one triangle) and no other: %s covered prove%s that the "
          "pattern's positions are Vulkan's, in Vulkan's order, since sample slot i must be the one "
          "covered in pixel i.%s %s"
-         % (n, n, " The 16x pattern puts two samples on the pixel border, (0, 0.5) and (0.0625, 0): "
+         % (n, "the one sample" if n == 1 else "the %d samples" % n, "s" if n == 1 else "",
+            " The 16x pattern puts two samples on the pixel border, (0, 0.5) and (0.0625, 0): "
             "their probes reach into the neighbouring pixels, where they cover no sample." if n == 16
             else "", PROBE_NOTE),
          max(n, 1), 3, prims, aa=AA(n), max_error="probe", rms="probe",
