@@ -247,6 +247,34 @@ mod tests {
         );
     }
 
+    #[test]
+    fn a_case_found_by_a_walk_costs_its_id_and_8_bytes() {
+        // As a walk over `gen/` (RELIABILITY.md's generated cases) and over
+        // `cases/` gives them.
+        let n = 10_000;
+        let cases: Vec<(String, PathBuf)> = (0..n)
+            .map(|k| format!("gen/c{k:07}"))
+            .map(|id| (id.clone(), format!("{id}.json").into()))
+            .chain((0..n).map(|k| {
+                let id = format!("triangles/t{k:07}");
+                (id.clone(), format!("cases/{id}.json").into())
+            }))
+            .collect();
+        let list = list(&cases);
+        let ids: usize = cases.iter().map(|c| c.0.len()).sum();
+        let bytes = list.text.len()
+            + 4 * (list.ends.len() + list.order.len() + list.wraps.len())
+            + 8 * list.runs.len()
+            + list.prefixes.iter().map(String::len).sum::<usize>()
+            + list.odd.len() * std::mem::size_of::<(u32, PathBuf)>();
+        // Two runs of one prefix each (8 bytes and the prefix), no path
+        // kept whole.
+        assert_eq!((list.runs.len(), list.odd.len()), (2, 0));
+        assert_eq!(bytes, ids + 8 * cases.len() + 2 * 8 + "cases/".len());
+        let sorted = list.sorted();
+        assert_eq!(sorted.into_vec(), cases);
+    }
+
     #[cfg(unix)]
     #[test]
     fn keeps_a_path_that_is_not_utf8() {

@@ -174,6 +174,15 @@ mod tests {
     }
 
     #[test]
+    fn a_name_costs_10_bytes_of_table() {
+        for n in [0, 1, 4, 1_000_000] {
+            let bytes = std::mem::size_of_val(&*UniqueNames::for_cases(n).slots);
+            assert_eq!(bytes, 8 * (n + n / 4 + 1), "{n} cases");
+            assert!(bytes <= 10 * n + 8, "{n} cases");
+        }
+    }
+
+    #[test]
     fn a_full_table_still_finds_every_duplicate() {
         // As many distinct names as cases, then the same again: the table
         // is at its fullest, every probe wraps past its end somewhere.
