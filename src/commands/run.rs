@@ -242,7 +242,7 @@ pub fn run(args: RunArgs) -> Exit {
     let mut digest = Digest::new(&report.rasterizers);
     // Case names already used, by hash, and by which file (names identify
     // cases in reports and baselines, so they must be unique in a run).
-    let mut names = UniqueNames::with_capacity(files.len());
+    let mut names = UniqueNames::for_cases(files.len());
     let name_of = |j| runner::name_in_file(&files, j, &limits);
     let colour = std::io::stdout().is_terminal();
     let width = files.ids().map(str::len).max().unwrap_or(0);

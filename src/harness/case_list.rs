@@ -1,34 +1,43 @@
-//! A compact list of case files (id and path): every case's id and path
-//! back to back in one text buffer, with one packed number and one place
-//! per case, so that a selection of a million cases costs tens of bytes a
-//! case, not a `CaseFile` (two heap strings) each.
+//! A compact list of case files (id and path): every case's id back to
+//! back in one text buffer, its path rebuilt from the id and a prefix
+//! shared by a run of cases, and 8 bytes more per case, so that a
+//! selection of a million cases costs its ids and 8 bytes a case, not a
+//! `CaseFile` (two heap strings) each.
 
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::path::{Path, PathBuf};
 
-/// Bits of a packed bound that hold the end of a case's text; the bits
-/// above hold the length of its id. 2^40 bytes of text and ids of up to
-/// 2^24 bytes: far past what memory or a file system holds.
-const END_BITS: u32 = 40;
-const END_MASK: u64 = (1 << END_BITS) - 1;
+/// The extension a case file found by a walk has: a path that is its
+/// prefix, its id and this is kept as the prefix alone.
+const EXTENSION: &str = ".json";
 
-/// Case files in order, compactly: each case file found has its id and
-/// then its path (when the path is UTF-8) in `text`, and one `u64` in
-/// `bounds`: where its text ends and how long its id is; `order` lists the
-/// ones in the list, in its order, by their place in `bounds`. Sorting and
-/// selecting reorder and shorten `order` alone, in place, so a list never
-/// needs a second copy of its text: a case costs its id and path, 8 bytes
-/// of bounds and 4 of order. A path that is not UTF-8 (rare) is kept whole
-/// in `odd`, by its place in `bounds`.
+/// Case files in order, compactly. Each case file found has a place (the
+/// order it was pushed in) and its id in `text`; `ends` holds where each
+/// place's id ends, modulo 2^32 (`wraps`: the places at which the true
+/// end passed another multiple of 2^32, so that the text may pass 4 GiB);
+/// `order` lists the places in the list, in its order. A path is almost
+/// always a prefix, the id and `.json` (`cases/` + `triangles/fan` +
+/// `.json`): `runs` names, for each run of places that share a prefix,
+/// its first place and its prefix in `prefixes`; a path that is not so
+/// (given by hand with another extension, not UTF-8, rare) is kept whole
+/// in `odd`, by its place. Sorting and selecting reorder and shorten
+/// `order` alone, in place, so a list never needs a second copy of its
+/// text: a case costs its id, 4 bytes of end and 4 of order.
 #[derive(Clone, Debug, Default)]
 pub struct CaseList {
     text: String,
-    bounds: Vec<u64>,
+    ends: Vec<u32>,
+    wraps: Vec<u32>,
+    prefixes: Vec<String>,
+    runs: Vec<(u32, u32)>,
     odd: Vec<(u32, PathBuf)>,
     order: Vec<u32>,
 }
 
-/// The most case files one list holds (its places are `u32`s).
+/// The most case files one list holds (its places are `u32`s; a run
+/// names a case by its place plus one in 32 bits,
+/// `harness/unique_names.rs`).
 pub const MAX_CASES: usize = u32::MAX as usize;
 
 impl CaseList {
@@ -41,53 +50,80 @@ impl CaseList {
     }
 
     /// Adds a case file by its id and path; `false`, and nothing added,
-    /// when the list holds [`MAX_CASES`].
+    /// when the list holds [`MAX_CASES`] (or the id is 4 GiB long).
     pub fn push(&mut self, id: &str, path: &Path) -> bool {
-        let Ok(place) = u32::try_from(self.bounds.len()) else {
+        if self.ends.len() >= MAX_CASES || u32::try_from(id.len()).is_err() {
             return false;
-        };
+        }
+        let place = self.ends.len() as u32;
+        let before = self.text.len() as u64;
         self.text.push_str(id);
-        match path.to_str() {
-            Some(path) => self.text.push_str(path),
+        let end = self.text.len() as u64;
+        if end >> 32 != before >> 32 {
+            self.wraps.push(place);
+        }
+        self.ends.push(end as u32);
+        self.order.push(place);
+        // The prefix, when the path is one, the id and `.json`.
+        let prefix = path
+            .to_str()
+            .and_then(|p| p.strip_suffix(EXTENSION))
+            .and_then(|p| p.strip_suffix(id));
+        match prefix {
+            Some(prefix) => {
+                let same = self
+                    .runs
+                    .last()
+                    .is_some_and(|&(_, k)| self.prefixes[k as usize] == prefix);
+                if !same {
+                    self.runs.push((place, self.prefixes.len() as u32));
+                    self.prefixes.push(prefix.to_owned());
+                }
+            }
             None => self.odd.push((place, path.to_owned())),
         }
-        self.bounds
-            .push(self.text.len() as u64 | ((id.len() as u64) << END_BITS));
-        self.order.push(place);
         true
     }
 
-    /// The byte range of the text at `place` in `bounds`, and its id's
-    /// length.
-    fn span(&self, place: u32) -> (usize, usize, usize) {
-        let place = place as usize;
+    /// The id at `place`.
+    fn id_at(&self, place: u32) -> &str {
+        let end_at = |place: u32| {
+            let high = self.wraps.partition_point(|&w| w <= place) as u64;
+            ((high << 32) | self.ends[place as usize] as u64) as usize
+        };
         let start = match place {
             0 => 0,
-            _ => (self.bounds[place - 1] & END_MASK) as usize,
+            _ => end_at(place - 1),
         };
-        let end = (self.bounds[place] & END_MASK) as usize;
-        (start, end, (self.bounds[place] >> END_BITS) as usize)
+        &self.text[start..end_at(place)]
+    }
+
+    /// The path at `place`: its prefix, id and `.json`, or kept whole.
+    fn path_at(&self, place: u32) -> Cow<'_, Path> {
+        if let Ok(i) = self.odd.binary_search_by_key(&place, |(p, _)| *p) {
+            return Cow::Borrowed(self.odd[i].1.as_path());
+        }
+        let run = self.runs.partition_point(|&(first, _)| first <= place) - 1;
+        let prefix = &self.prefixes[self.runs[run].1 as usize];
+        Cow::Owned(PathBuf::from(format!(
+            "{prefix}{}{EXTENSION}",
+            self.id_at(place)
+        )))
     }
 
     /// Case `k`'s id. Panics past the end, as indexing does.
     pub fn id(&self, k: usize) -> &str {
-        let (start, _, id_len) = self.span(self.order[k]);
-        &self.text[start..start + id_len]
+        self.id_at(self.order[k])
     }
 
     /// Case `k`'s path. Panics past the end, as indexing does.
-    pub fn path(&self, k: usize) -> &Path {
-        let place = self.order[k];
-        let (start, end, id_len) = self.span(place);
-        match self.odd.binary_search_by_key(&place, |(i, _)| *i) {
-            Ok(i) => &self.odd[i].1,
-            Err(_) => Path::new(&self.text[start + id_len..end]),
-        }
+    pub fn path(&self, k: usize) -> Cow<'_, Path> {
+        self.path_at(self.order[k])
     }
 
     /// Case `k`'s id and path, or `None` past the end.
     pub fn get(&self, k: usize) -> Option<(String, PathBuf)> {
-        (k < self.len()).then(|| (self.id(k).to_owned(), self.path(k).to_owned()))
+        (k < self.len()).then(|| (self.id(k).to_owned(), self.path(k).into_owned()))
     }
 
     /// Every id, in order.
@@ -109,20 +145,12 @@ impl CaseList {
     }
 
     /// Case `a` against case `b` by their places, as (id, path) pairs
-    /// (and `CaseFile`s) compare: by id, then by path (component by component).
+    /// (and `CaseFile`s) compare: by id, then by path (component by
+    /// component; built only when the ids are equal).
     fn compare_places(&self, a: u32, b: u32) -> Ordering {
-        let id = |place| {
-            let (start, _, id_len) = self.span(place);
-            &self.text[start..start + id_len]
-        };
-        let path = |place| {
-            let (start, end, id_len) = self.span(place);
-            match self.odd.binary_search_by_key(&place, |(i, _)| *i) {
-                Ok(i) => self.odd[i].1.as_path(),
-                Err(_) => Path::new(&self.text[start + id_len..end]),
-            }
-        };
-        id(a).cmp(id(b)).then_with(|| path(a).cmp(path(b)))
+        self.id_at(a)
+            .cmp(self.id_at(b))
+            .then_with(|| self.path_at(a).cmp(&self.path_at(b)))
     }
 
     /// Sorted as a `Vec` of (id, path) pairs (or of `CaseFile`s) sorts, each (id, path) pair once, as
@@ -187,6 +215,9 @@ mod tests {
             case("a/1", "cases/./a/1.json"),
             case("", ""),
             case("é/ü", "cases/é/ü.json"),
+            case("a/2", "cases/a/2.txt"),
+            case("a/3", "other/a/3.json"),
+            case("b/3", "cases/b/3.json"),
         ];
         let mut expected = cases.clone();
         expected.sort();
@@ -214,6 +245,34 @@ mod tests {
                 .map(|(_, c)| c.clone())
                 .collect::<Vec<_>>()
         );
+    }
+
+    #[test]
+    fn a_case_found_by_a_walk_costs_its_id_and_8_bytes() {
+        // As a walk over `gen/` (RELIABILITY.md's generated cases) and over
+        // `cases/` gives them.
+        let n = 10_000;
+        let cases: Vec<(String, PathBuf)> = (0..n)
+            .map(|k| format!("gen/c{k:07}"))
+            .map(|id| (id.clone(), format!("{id}.json").into()))
+            .chain((0..n).map(|k| {
+                let id = format!("triangles/t{k:07}");
+                (id.clone(), format!("cases/{id}.json").into())
+            }))
+            .collect();
+        let list = list(&cases);
+        let ids: usize = cases.iter().map(|c| c.0.len()).sum();
+        let bytes = list.text.len()
+            + 4 * (list.ends.len() + list.order.len() + list.wraps.len())
+            + 8 * list.runs.len()
+            + list.prefixes.iter().map(String::len).sum::<usize>()
+            + list.odd.len() * std::mem::size_of::<(u32, PathBuf)>();
+        // Two runs of one prefix each (8 bytes and the prefix), no path
+        // kept whole.
+        assert_eq!((list.runs.len(), list.odd.len()), (2, 0));
+        assert_eq!(bytes, ids + 8 * cases.len() + 2 * 8 + "cases/".len());
+        let sorted = list.sorted();
+        assert_eq!(sorted.into_vec(), cases);
     }
 
     #[cfg(unix)]

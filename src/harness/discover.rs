@@ -117,7 +117,7 @@ fn keep_each_id_once(found: &mut Discovery<CaseList>) {
     let mut last: Option<(usize, Option<(u64, u64)>)> = None;
     let mut errors = Vec::new();
     found.cases = cases.retain(|list, k| {
-        let this = identity(list.path(k));
+        let this = identity(&list.path(k));
         if let Some((first, kept_identity)) = last.filter(|(f, _)| list.id(*f) == list.id(k)) {
             if this.is_none() || this != kept_identity {
                 errors.push(format!(

@@ -720,7 +720,7 @@ pub fn reject_duplicate_names(outcomes: &mut [CaseOutcome]) -> Vec<usize> {
         .iter()
         .map(|o| o.scene.as_ref().map(|s| s.name.clone()))
         .collect();
-    let mut names = UniqueNames::new();
+    let mut names = UniqueNames::for_cases(outcomes.len());
     let mut marked = Vec::new();
     for (k, outcome) in outcomes.iter_mut().enumerate() {
         if reject_duplicate_name(outcome, k, &files[..], &mut names, &|j| spelled[j].clone()) {
