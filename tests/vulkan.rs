@@ -709,7 +709,11 @@ const FAILING_ON_SWIFTSHADER: &[(&str, &str)] = &[
 
 /// Every test of this binary again, in a process of its own on SwiftShader
 /// (`VK_DRIVER_FILES` at its ICD, `RASTERCHECK_VULKAN_DEVICE=SwiftShader`),
-/// with the validation layer: each must pass there too, but those of
+/// with the validation layer (asked for by the tests, and turned on the
+/// loader's way too, `VK_INSTANCE_LAYERS`, as a user would: the loader's
+/// notice that it added the layer is no message about the calls, and once
+/// marked every verdict as resting on undefined behaviour): each must pass
+/// there too, but those of
 /// [`FAILING_ON_SWIFTSHADER`], which must fail (each is printed with what
 /// it showed). Its output is shown when it departs from that. Without
 /// the ICD it says it skipped (under `CI=true`, fails).
@@ -733,6 +737,7 @@ fn the_same_tests_pass_on_swiftshader() {
         .args(["--skip", "the_same_tests_pass_on_swiftshader"])
         .env("VK_DRIVER_FILES", &icd)
         .env("RASTERCHECK_VULKAN_DEVICE", "SwiftShader")
+        .env("VK_INSTANCE_LAYERS", "VK_LAYER_KHRONOS_validation")
         .env(ON_SWIFTSHADER, "1")
         .output()
         .expect("this test binary runs again");

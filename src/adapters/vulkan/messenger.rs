@@ -9,7 +9,8 @@
 //! this adapter to enable it; asked and absent, the device is not made and
 //! the error says why. Without the layer the messenger still counts what
 //! the loader and the driver say, and the record says it was not
-//! validated. Performance and informational messages are not counted.
+//! validated. Performance and informational messages are not counted, nor
+//! the loader's own warnings about its set-up ([`counted`]).
 
 use std::ffi::{c_char, c_void, CStr};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -193,16 +194,43 @@ impl Messenger {
     }
 }
 
+/// The loader's id for the messages it writes about itself.
+const LOADER_MESSAGE: &str = "Loader Message";
+
+/// Whether a message counts against the record: every error, and every
+/// warning but the loader's general ones about its own set-up (which layers
+/// an environment variable such as `VK_INSTANCE_LAYERS` added, a driver it
+/// passed over), which say nothing of this process's calls. Without this,
+/// turning the layer on the loader's usual way marked every verdict as
+/// resting on undefined behaviour.
+fn counted(
+    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+    types: vk::DebugUtilsMessageTypeFlagsEXT,
+    id: Option<&str>,
+) -> bool {
+    severity.contains(vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
+        || types.contains(vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION)
+        || id != Some(LOADER_MESSAGE)
+}
+
 /// Counts one message into the record behind `user`; never asks the
 /// driver to abort the call (the layer passes it on, and the record says
 /// what followed).
 unsafe extern "system" fn on_message(
     severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
+    types: vk::DebugUtilsMessageTypeFlagsEXT,
     data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
     user: *mut c_void,
 ) -> vk::Bool32 {
     if user.is_null() {
+        return vk::FALSE;
+    }
+    // SAFETY: the callback data and its strings are valid for the call.
+    let id = data
+        .as_ref()
+        .filter(|d| !d.p_message_id_name.is_null())
+        .map(|d| CStr::from_ptr(d.p_message_id_name).to_string_lossy());
+    if !counted(severity, types, id.as_deref()) {
         return vk::FALSE;
     }
     // SAFETY: `user` is the boxed record of `Record::create_info`, alive
@@ -241,4 +269,45 @@ unsafe extern "system" fn on_message(
         record.first = Some(first);
     }
     vk::FALSE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    use vk::DebugUtilsMessageSeverityFlagsEXT as Severity;
+    use vk::DebugUtilsMessageTypeFlagsEXT as Type;
+
+    /// The loader's warning that `VK_INSTANCE_LAYERS` added the layer is not
+    /// counted; the same severity from the layer (a VUID), a general
+    /// warning from anyone else, and any error are.
+    #[test]
+    fn only_the_loaders_own_warnings_are_passed_over() {
+        assert!(!counted(
+            Severity::WARNING,
+            Type::GENERAL,
+            Some(LOADER_MESSAGE)
+        ));
+        assert!(counted(
+            Severity::ERROR,
+            Type::GENERAL,
+            Some(LOADER_MESSAGE)
+        ));
+        assert!(counted(
+            Severity::WARNING,
+            Type::VALIDATION,
+            Some("VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605")
+        ));
+        assert!(counted(
+            Severity::WARNING,
+            Type::GENERAL,
+            Some("WARNING-something")
+        ));
+        assert!(counted(Severity::WARNING, Type::GENERAL, None));
+        assert!(counted(
+            Severity::WARNING,
+            Type::GENERAL | Type::VALIDATION,
+            Some(LOADER_MESSAGE)
+        ));
+    }
 }
