@@ -312,25 +312,28 @@ pub(super) fn support_for(
     declared
 }
 
+/// An NVIDIA H100's properties (shared/GPU.md, ANCHORS.md), for the
+/// adapter's unit tests: base 2^-9 px, extra up to 0.75 px in steps of
+/// 2^-8, underestimation, degenerate triangles rasterized, the
+/// fully-covered input.
+#[cfg(test)]
+pub(super) fn h100() -> ConservativeOffers {
+    ConservativeOffers::of(
+        &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default()
+            .primitive_overestimation_size(1.0 / 512.0)
+            .max_extra_primitive_overestimation_size(0.75)
+            .extra_primitive_overestimation_size_granularity(1.0 / 256.0)
+            .primitive_underestimation(true)
+            .degenerate_triangles_rasterized(true)
+            .fully_covered_fragment_shader_input_variable(true),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scene::{parse_case, Limits};
     use serde_json::json;
-
-    /// An NVIDIA H100's properties (shared/GPU.md, ANCHORS.md): base
-    /// 2^-9 px, extra up to 0.75 px in steps of 2^-8.
-    fn h100() -> ConservativeOffers {
-        ConservativeOffers::of(
-            &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default()
-                .primitive_overestimation_size(1.0 / 512.0)
-                .max_extra_primitive_overestimation_size(0.75)
-                .extra_primitive_overestimation_size_granularity(1.0 / 256.0)
-                .primitive_underestimation(true)
-                .degenerate_triangles_rasterized(true)
-                .fully_covered_fragment_shader_input_variable(true),
-        )
-    }
 
     fn scene(conservative: serde_json::Value) -> Scene {
         parse_case(

@@ -568,21 +568,8 @@ impl Drop for Pipelines {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::adapters::vulkan::conservative::h100;
     use crate::scene::{parse_case, Limits};
-
-    /// A device offering the extension as an NVIDIA H100 does
-    /// (ANCHORS.md): base 2^-9 px, extra up to 3/4 px in steps of 2^-8,
-    /// underestimation, degenerate triangles rasterized.
-    fn h100() -> ConservativeOffers {
-        ConservativeOffers::of(
-            &vk::PhysicalDeviceConservativeRasterizationPropertiesEXT::default()
-                .primitive_overestimation_size(1.0 / 512.0)
-                .max_extra_primitive_overestimation_size(0.75)
-                .extra_primitive_overestimation_size_granularity(1.0 / 256.0)
-                .primitive_underestimation(true)
-                .degenerate_triangles_rasterized(true),
-        )
-    }
 
     fn case(name: &str) -> Scene {
         let path = format!(
