@@ -226,10 +226,9 @@ unsafe extern "system" fn on_message(
         return vk::FALSE;
     }
     // SAFETY: the callback data and its strings are valid for the call.
-    let id = data
-        .as_ref()
-        .filter(|d| !d.p_message_id_name.is_null())
-        .map(|d| CStr::from_ptr(d.p_message_id_name).to_string_lossy());
+    let text = |p: *const c_char| (!p.is_null()).then(|| CStr::from_ptr(p).to_string_lossy());
+    let data = data.as_ref();
+    let id = data.and_then(|d| text(d.p_message_id_name));
     if !counted(severity, types, id.as_deref()) {
         return vk::FALSE;
     }
@@ -243,14 +242,7 @@ unsafe extern "system" fn on_message(
         record.warnings += 1;
     }
     if record.first.is_none() {
-        // SAFETY: the callback data and its strings are valid for the call.
-        let text = |p: *const c_char| {
-            (!p.is_null()).then(|| CStr::from_ptr(p).to_string_lossy().into_owned())
-        };
-        let (id, message) = match data.as_ref() {
-            Some(d) => (text(d.p_message_id_name), text(d.p_message)),
-            None => (None, None),
-        };
+        let message = data.and_then(|d| text(d.p_message));
         // The layer's text repeats the id and lists handles before its
         // last " | "; what follows is the rule broken.
         let message = message.map(|m| match m.rsplit_once(" | ") {
@@ -259,7 +251,7 @@ unsafe extern "system" fn on_message(
         });
         let mut first = match (id, message) {
             (Some(id), Some(m)) => format!("{id}: {m}"),
-            (Some(id), None) => id,
+            (Some(id), None) => id.into_owned(),
             (None, Some(m)) => m.trim().to_owned(),
             (None, None) => "(no text)".to_owned(),
         };
